@@ -1,0 +1,43 @@
+// The arguments after a subcommand's name, consumed flag by flag; whatever is left at
+// finish() is a usage error, so a mistyped flag is never silently ignored.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace needle::cli {
+
+class ArgList {
+ public:
+  explicit ArgList(std::vector<std::string> args);
+
+  // "--flag VALUE" or "--flag=VALUE"; nullopt when absent. Throws UsageError when the value
+  // is missing or the flag is given twice.
+  std::optional<std::string> value(const std::string& flag);
+  std::string required(const std::string& flag);
+  // A flag without a value ("--headless").
+  bool flag(const std::string& flag);
+  // Throws UsageError naming every argument nobody asked for.
+  void finish() const;
+
+  bool wants_help() const;
+
+ private:
+  std::vector<std::string> args_;
+  std::vector<bool> used_;
+};
+
+// Parses "WxH" (e.g. "1280x720") into positive width and height; UsageError otherwise.
+struct Size2 {
+  unsigned width = 0;
+  unsigned height = 0;
+};
+Size2 parse_size(const std::string& text, const std::string& flag);
+
+// Parses a decimal number with nothing after it; UsageError naming the flag otherwise.
+double parse_number(const std::string& text, const std::string& flag);
+// Comma-separated numbers, "0.1,0.2,-1".
+std::vector<double> parse_number_list(const std::string& text, const std::string& flag);
+
+}  // namespace needle::cli

@@ -1,0 +1,88 @@
+// needle-sim: one executable, subcommands registered by the cmd_*.cpp files beside this one.
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <sstream>
+
+#include "arg_list.hpp"
+#include "command.hpp"
+
+namespace needle::cli {
+namespace {
+
+std::vector<Command>& registry() {
+  static std::vector<Command> commands;
+  return commands;
+}
+
+std::vector<std::string> split_words(const std::string& s) {
+  std::istringstream in(s);
+  std::vector<std::string> words;
+  for (std::string w; in >> w;) words.push_back(w);
+  return words;
+}
+
+void print_overview() {
+  std::printf("needle-sim: needle-procedure training simulator with force feedback\n\nusage: needle-sim COMMAND [options]   (needle-sim COMMAND --help for its options)\n\ncommands:\n");
+  for (const auto& c : registered_commands()) {
+    std::string first_line = c.usage.substr(0, c.usage.find('\n'));
+    std::printf("  %s\n", first_line.c_str());
+  }
+}
+
+// The registered command whose name words match the longest prefix of argv.
+const Command* find_command(const std::vector<std::string>& argv, size_t& words_used) {
+  const Command* best = nullptr;
+  words_used = 0;
+  for (const auto& c : registered_commands()) {
+    auto words = split_words(c.name);
+    if (words.size() <= argv.size() && std::equal(words.begin(), words.end(), argv.begin()) &&
+        words.size() > words_used) {
+      best = &c;
+      words_used = words.size();
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+CommandRegistrar::CommandRegistrar(Command command) { registry().push_back(std::move(command)); }
+
+const std::vector<Command>& registered_commands() {
+  auto& r = registry();
+  std::sort(r.begin(), r.end(), [](const Command& a, const Command& b) { return a.name < b.name; });
+  return r;
+}
+
+}  // namespace needle::cli
+
+int main(int argc, char** argv) {
+  using namespace needle::cli;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    print_overview();
+    return args.empty() ? 2 : 0;
+  }
+  size_t used = 0;
+  const Command* command = find_command(args, used);
+  if (!command) {
+    std::fprintf(stderr, "needle-sim: unknown command '%s' (needle-sim --help lists them)\n", args[0].c_str());
+    return 2;
+  }
+  ArgList rest(std::vector<std::string>(args.begin() + static_cast<long>(used), args.end()));
+  if (rest.wants_help()) {
+    std::printf("%s\n", command->usage.c_str());
+    return 0;
+  }
+  try {
+    return command->run(rest);
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "needle-sim %s: %s (needle-sim %s --help shows the options)\n", command->name.c_str(),
+                 e.what(), command->name.c_str());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "needle-sim %s: error: %s\n", command->name.c_str(), e.what());
+    return 1;
+  }
+}
