@@ -1,0 +1,18 @@
+// Joint-space dynamics (2.20)/(2.21): H(q) q̈ + C(q, q̇) q̇ + D q̇ + g(q) = τ, from the
+// centre-of-mass Jacobians. C is the factorization for which Ḣ − 2C is skew-symmetric.
+#pragma once
+
+#include "haptics/model/robot_data.hpp"
+
+namespace needle::haptics {
+
+// H, C and g at the state of the last update_kinematics. Allocation-free.
+void update_dynamics(const RobotModel& model, RobotData& data);
+
+// q̈ = H⁻¹ (τ − C q̇ − D q̇ − g); τ includes every external torque. Needs update_dynamics.
+void forward_dynamics(const RobotModel& model, RobotData& data, const VecN& tau, VecN& ddq);
+
+double kinetic_energy(const RobotData& data);  // ½ q̇ᵀ H q̇, needs update_dynamics
+double potential_energy(const RobotModel& model, const RobotData& data);  // −Σ mᵢ gᵀ cᵢ
+
+}  // namespace needle::haptics

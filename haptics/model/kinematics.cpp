@@ -1,0 +1,58 @@
+#include "haptics/model/kinematics.hpp"
+
+namespace needle::haptics {
+
+void point_jacobian(const RobotData& data, int body, const Eigen::Vector3d& p, const Eigen::Vector3d& p_velocity,
+                    Mat6N& J, Mat6N& Jdot) {
+  J.setZero(6, data.n);
+  Jdot.setZero(6, data.n);
+  for (int j = 0; j <= body; ++j) {
+    const Eigen::Vector3d& z = data.axis[j];
+    const Eigen::Vector3d r = p - data.origin[j];
+    // The axis is fixed in body j, so it turns with that body's angular velocity.
+    const Eigen::Vector3d z_dot = data.omega[j].cross(z);
+    J.col(j) << z.cross(r), z;
+    Jdot.col(j) << z_dot.cross(r) + z.cross(p_velocity - data.origin_velocity[j]), z_dot;
+  }
+}
+
+void update_kinematics(const RobotModel& model, RobotData& data, const VecN& q, const VecN& dq) {
+  data.q = q;
+  data.dq = dq;
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  Eigen::Vector3d omega_prev = Eigen::Vector3d::Zero();
+  for (int i = 0; i < data.n; ++i) {
+    const JointModel& joint = model.joints[static_cast<size_t>(i)];
+    t = t * joint.origin;
+    data.origin[i] = t.translation();
+    data.axis[i] = t.linear() * joint.axis;
+    // p_i is fixed in body i-1 (it lies on the axis of joint i).
+    data.origin_velocity[i] = i == 0 ? Eigen::Vector3d::Zero().eval()
+                                     : (data.origin_velocity[i - 1] + omega_prev.cross(data.origin[i] - data.origin[i - 1])).eval();
+    t.rotate(Eigen::AngleAxisd(q[i], joint.axis));
+    data.frame[i] = t;
+    data.omega[i] = omega_prev + data.axis[i] * dq[i];
+    omega_prev = data.omega[i];
+    data.com[i] = t * joint.body.com;
+    const Eigen::Vector3d com_velocity = data.origin_velocity[i] + data.omega[i].cross(data.com[i] - data.origin[i]);
+    point_jacobian(data, i, data.com[i], com_velocity, data.J_com[i], data.Jdot_com[i]);
+  }
+  const int last = data.n - 1;
+  data.tip = data.frame[last] * model.tool;
+  const Eigen::Vector3d p = data.tip.translation();
+  const Eigen::Vector3d v = data.origin_velocity[last] + data.omega[last].cross(p - data.origin[last]);
+  point_jacobian(data, last, p, v, data.J, data.Jdot);
+  data.tip_twist << v, data.omega[last];
+}
+
+Eigen::Isometry3d tip_pose(const RobotModel& model, const VecN& q) {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  for (int i = 0; i < model.dof(); ++i) {
+    const JointModel& joint = model.joints[static_cast<size_t>(i)];
+    t = t * joint.origin;
+    t.rotate(Eigen::AngleAxisd(q[i], joint.axis));
+  }
+  return t * model.tool;
+}
+
+}  // namespace needle::haptics

@@ -1,0 +1,14 @@
+// The model at one state as JSON, for `needle-sim model` (keys fixed by issue 3): pose {p, R},
+// J (6×n, rows [linear; angular]), H, Cdq, g, gravity (base frame), tau_id. Not for the servo loop.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "haptics/model/robot_model.hpp"
+
+namespace needle::haptics {
+
+// q, dq, ddq must have model.dof() entries (std::invalid_argument otherwise).
+nlohmann::json model_report(const RobotModel& model, const VecN& q, const VecN& dq, const VecN& ddq);
+
+}  // namespace needle::haptics

@@ -1,0 +1,74 @@
+// Malformed or physically impossible URDFs are errors that name the file and the element.
+#include <gtest/gtest.h>
+
+#include "haptics/model/urdf_loader.hpp"
+
+namespace needle::haptics {
+namespace {
+
+std::string one_joint(const std::string& joint_type, const std::string& inertial, const std::string& extra = "") {
+  return R"(<?xml version="1.0"?><robot name="r"><link name="base"/>
+    <joint name="j1" type=")" + joint_type + R"("><parent link="base"/><child link="arm"/><axis xyz="0 0 1"/>
+    <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+    <link name="arm">)" + inertial + "</link>" + extra + "</robot>";
+}
+
+std::string inertial(const std::string& mass, const std::string& ixx, const std::string& iyy, const std::string& izz) {
+  return R"(<inertial><mass value=")" + mass + R"("/><inertia ixx=")" + ixx + R"(" ixy="0" ixz="0" iyy=")" + iyy +
+         R"(" iyz="0" izz=")" + izz + R"("/></inertial>)";
+}
+
+void expect_error(const std::string& xml, const std::string& fragment, std::optional<int> dof = std::nullopt) {
+  try {
+    parse_robot_urdf(xml, "robot.urdf", dof);
+    FAIL() << "expected an error containing '" << fragment << "'";
+  } catch (const UrdfError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("robot.urdf: ", 0), 0u) << what;
+    EXPECT_NE(what.find(fragment), std::string::npos) << what;
+  }
+}
+
+TEST(ModelUrdf, AcceptsAWellFormedRevoluteJoint) {
+  const RobotModel m = parse_robot_urdf(one_joint("revolute", inertial("1", "1", "1", "1")), "robot.urdf", 1);
+  EXPECT_EQ(m.dof(), 1);
+  EXPECT_EQ(m.joints[0].name, "j1");
+  EXPECT_EQ(m.tip_link, "arm");
+}
+
+TEST(ModelUrdf, RejectsNegativeMass) { expect_error(one_joint("revolute", inertial("-1", "1", "1", "1")), "link 'arm' <inertial>: mass must be positive"); }
+
+TEST(ModelUrdf, RejectsInertiaNotPositiveDefinite) {
+  expect_error(one_joint("revolute", inertial("1", "1", "-1", "1")), "link 'arm' <inertial>: inertia tensor must be positive definite");
+}
+
+TEST(ModelUrdf, RejectsInertiaViolatingTriangleInequality) {
+  expect_error(one_joint("revolute", inertial("1", "1", "1", "3")), "triangle inequality");
+}
+
+TEST(ModelUrdf, RejectsUnsupportedJointType) {
+  expect_error(one_joint("prismatic", inertial("1", "1", "1", "1")), "joint 'j1': unsupported type");
+}
+
+TEST(ModelUrdf, RejectsWrongDofCount) { expect_error(one_joint("revolute", inertial("1", "1", "1", "1")), "1 movable joints, expected 5", 5); }
+
+TEST(ModelUrdf, RejectsMasslessMovingBody) { expect_error(one_joint("revolute", ""), "joint 'j1' moves no mass"); }
+
+TEST(ModelUrdf, RejectsBranchingTree) {
+  const std::string branch = R"(<joint name="j2" type="fixed"><parent link="base"/><child link="other"/></joint><link name="other"/>)";
+  expect_error(one_joint("revolute", inertial("1", "1", "1", "1"), branch), "link 'base' has 2 child joints");
+}
+
+TEST(ModelUrdf, RejectsMalformedXml) { expect_error("<robot name='r'><link name='a'>", "not a valid URDF document"); }
+
+TEST(ModelUrdf, MissingFileIsNamed) {
+  try {
+    load_robot_urdf("/nonexistent/robot.urdf");
+    FAIL();
+  } catch (const UrdfError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/robot.urdf: cannot open"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace needle::haptics
