@@ -1,0 +1,121 @@
+#include "haptics/realtime/haptic_loop.hpp"
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+namespace needle::haptics {
+namespace {
+
+int64_t period_of(double hz) { return static_cast<int64_t>(1e9 / hz + 0.5); }
+
+void sleep_briefly() { std::this_thread::sleep_for(std::chrono::microseconds(200)); }
+
+}  // namespace
+
+void check_loop_rate(double hz) {
+  if (!(hz >= kMinLoopRateHz && hz <= kMaxLoopRateHz))
+    throw std::invalid_argument("haptic loop rate " + std::to_string(hz) + " Hz: expected 250 to 10000 Hz");
+}
+
+HapticLoop::HapticLoop(HapticDevice& device, const SafetyLimits& limits, const LoopConfig& config)
+    : device_(device),
+      config_(config),
+      safety_(limits),
+      samples_(config.sample_capacity),
+      tick_(device, safety_, snapshots_, samples_),
+      dt_s_(1.0 / config.rate_hz) {
+  check_loop_rate(config.rate_hz);
+  stats_.set_nominal_rate(config.rate_hz);
+}
+
+HapticLoop::~HapticLoop() { shutdown(); }
+
+std::string HapticLoop::launch() {
+  if (thread_.joinable()) throw std::runtime_error("haptic loop: already launched");
+  ready_.store(false);
+  thread_ = std::thread([this] { run(); });
+  while (!ready_.load(std::memory_order_acquire)) sleep_briefly();
+  return realtime_line_;
+}
+
+void HapticLoop::shutdown() {
+  if (!thread_.joinable()) return;
+  LoopCommand quit;
+  quit.type = LoopCommandType::kShutdown;
+  submit(quit);
+  thread_.join();
+}
+
+uint64_t HapticLoop::submit(LoopCommand command) {
+  if (command.type == LoopCommandType::kSetRate) check_loop_rate(command.rate_hz);
+  command.id = ++next_id_;
+  if (!commands_.push(command)) {
+    --next_id_;
+    throw std::runtime_error("haptic loop: command queue full (is the loop running?)");
+  }
+  return command.id;
+}
+
+void HapticLoop::wait_applied(uint64_t id) const {
+  while (applied_id_.load(std::memory_order_acquire) < id) sleep_briefly();
+}
+
+void HapticLoop::apply(LoopCommand command) { wait_applied(submit(command)); }
+
+bool HapticLoop::apply_pending(PeriodicTimer& timer) noexcept {
+  LoopCommand c;
+  bool keep_running = true;
+  while (commands_.pop(c)) {
+    switch (c.type) {
+      case LoopCommandType::kStart: servo_enabled_ = true; break;
+      case LoopCommandType::kStop: servo_enabled_ = false; break;
+      case LoopCommandType::kSetRate:
+        timer.set_period(period_of(c.rate_hz));
+        dt_s_ = 1.0 / c.rate_hz;
+        stats_.set_nominal_rate(c.rate_hz);
+        stats_.clear();  // old-rate periods would read as errors
+        break;
+      case LoopCommandType::kSetStep: tick_.set_step(c.step); break;
+      case LoopCommandType::kResetFault: safety_.reset(); break;
+      case LoopCommandType::kResetStats: stats_.clear(); break;
+      case LoopCommandType::kShutdown: keep_running = false; break;
+    }
+    applied_id_.store(c.id, std::memory_order_release);
+  }
+  return keep_running;
+}
+
+void HapticLoop::run() noexcept {
+  realtime_line_ = request_realtime(config_.realtime).line;
+  ready_.store(true, std::memory_order_release);
+
+  PeriodicTimer timer(period_of(config_.rate_hz));
+  timer.start();
+  int64_t last_wake = 0;
+  bool overran = false;
+  DeviceCommand idle_command;
+  idle_command.space = device_.capabilities().command_space;
+  idle_command.joint_count = device_.capabilities().joint_count;
+  for (uint64_t tick = 0;; ++tick) {
+    const int64_t wake = timer.wait();
+    const auto period = static_cast<uint64_t>(last_wake ? wake - last_wake : timer.period_ns());
+    last_wake = wake;
+    if (!apply_pending(timer)) break;
+
+    uint64_t compute_ns = 0;
+    if (servo_enabled_) {
+      compute_ns = tick_.run(TickTiming{tick, wake, period, overran}, dt_s_);
+    } else {
+      device_.read(idle_reading_);
+      device_.write(idle_command);
+      compute_ns = static_cast<uint64_t>(monotonic_ns() - wake);
+    }
+    overran = timer.advance(monotonic_ns());
+    stats_.record(period, static_cast<uint64_t>(timer.period_ns()), compute_ns, overran);
+    stats_.set_fault(static_cast<uint32_t>(safety_.fault()));
+    stats_.set_samples_dropped(samples_.overflowed());
+  }
+}
+
+}  // namespace needle::haptics

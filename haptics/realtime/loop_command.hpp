@@ -1,0 +1,28 @@
+// Requests to the haptic loop from the control thread. The loop applies them between
+// ticks, so a scene change never touches live state from another thread.
+#pragma once
+
+#include <cstdint>
+
+namespace needle::haptics {
+
+class ServoStep;
+
+enum class LoopCommandType : uint32_t {
+  kStart,       // run the step and command the device
+  kStop,        // keep ticking (device read, zero force) without stepping or recording
+  kSetRate,     // rate_hz
+  kSetStep,     // step (nullptr: none); the old step is no longer used once applied
+  kResetFault,  // clear the latched safety fault
+  kResetStats,
+  kShutdown,    // leave the thread
+};
+
+struct LoopCommand {
+  LoopCommandType type = LoopCommandType::kStop;
+  double rate_hz = 0.0;
+  ServoStep* step = nullptr;
+  uint64_t id = 0;  // assigned by HapticLoop::submit
+};
+
+}  // namespace needle::haptics

@@ -1,0 +1,67 @@
+// Safety in the loop: every command passes through here between the controller and the
+// device. Saturation to the device's limit and a rate limit on force change always apply;
+// on a fault the monitor latches, ramps the output linearly to zero within ramp_ticks ticks
+// and keeps it there until reset() (the loop's ResetFault command). Allocation-free.
+#pragma once
+
+#include <cstdint>
+
+#include "haptics/devices/device_io.hpp"
+#include "haptics/realtime/tool_snapshot.hpp"
+#include "haptics/safety/fault_cause.hpp"
+
+namespace needle::haptics {
+
+struct SafetyLimits {
+  double max_force_n = 0.0;                          // norm of the task-space force
+  double max_torque_nm[kMaxDeviceJoints] = {};       // per joint
+  double max_force_rate_n_per_s = 1000.0;            // 1 N per tick at 1 kHz
+  double max_torque_rate_nm_per_s = 100.0;
+  uint32_t ramp_ticks = 20;                          // output is zero this many ticks after the fault
+  uint32_t stale_ticks = 20;                         // consecutive ticks without a fresh reading
+  uint32_t frozen_ticks = 2000;                      // consecutive identical readings ...
+  double frozen_min_force_n = 1.0;                   // ... while pushing at least this hard
+  uint32_t missed_deadline_streak = 10;
+  double max_generated_energy_j = 1.0;               // passivity observer bound
+};
+
+class SafetyMonitor {
+ public:
+  explicit SafetyMonitor(const SafetyLimits& limits);
+
+  // One tick: checks the tick's inputs, latches a fault if one is found, and replaces
+  // `command` by what may be sent (saturated and rate-limited, or the fault ramp).
+  // `deadline_missed` tells whether the previous tick overran.
+  void apply(uint64_t tick, const DeviceReading& reading, const ToolSnapshot& state,
+             bool deadline_missed, double dt_s, DeviceCommand& command) noexcept;
+
+  void reset() noexcept;
+
+  FaultCause fault() const noexcept { return fault_; }
+  uint64_t fault_tick() const noexcept { return fault_tick_; }
+  // Net work the device has done on the operator since the last reset, in joules
+  // (Hannaford and Ryu's passivity observer; positive means the simulation generated energy).
+  double generated_energy_j() const noexcept { return energy_j_; }
+  const SafetyLimits& limits() const noexcept { return limits_; }
+
+ private:
+  FaultCause detect(const DeviceReading& reading, const ToolSnapshot& state, bool deadline_missed,
+                    const DeviceCommand& command) noexcept;
+  void observe_energy(const DeviceReading& reading) noexcept;
+  void shape(double dt_s, DeviceCommand& command) const noexcept;
+
+  SafetyLimits limits_;
+  FaultCause fault_ = FaultCause::kNone;
+  uint64_t fault_tick_ = 0;
+  uint32_t ticks_since_fault_ = 0;
+  DeviceCommand ramp_from_{};
+  DeviceCommand last_output_{};
+  DeviceReading last_reading_{};
+  bool have_last_reading_ = false;
+  uint32_t stale_count_ = 0;
+  uint32_t frozen_count_ = 0;
+  uint32_t missed_count_ = 0;
+  double energy_j_ = 0.0;
+};
+
+}  // namespace needle::haptics

@@ -1,0 +1,109 @@
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+
+#include "haptics/realtime/haptic_loop.hpp"
+#include "test_realtime_fakes.hpp"
+
+namespace needle::haptics {
+namespace {
+
+using testing::ScriptedDevice;
+using testing::SpringStep;
+
+class CountingStep : public ServoStep {
+ public:
+  void step(const DeviceReading&, double, DeviceCommand&, ToolSnapshot&) noexcept override { calls.fetch_add(1); }
+  std::atomic<uint64_t> calls{0};
+};
+
+LoopConfig quiet_config(double hz) {
+  LoopConfig c;
+  c.rate_hz = hz;
+  c.realtime.fifo = false;  // tests share the machine; no priority games
+  c.realtime.lock_memory = false;
+  c.sample_capacity = 1 << 16;
+  return c;
+}
+
+void wait_ticks(const HapticLoop& loop, uint64_t n) {
+  const uint64_t target = loop.stats().ticks + n;
+  while (loop.stats().ticks < target) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+}
+
+SafetyLimits roomy_limits() {
+  SafetyLimits l;
+  l.max_force_n = 5.0;
+  l.stale_ticks = 1000000;  // a busy test machine must not trip the loop under test
+  l.missed_deadline_streak = 1000000;
+  l.max_generated_energy_j = 1e9;
+  return l;
+}
+
+TEST(RealtimeLoop, RateOutsideTheRangeIsRejected) {
+  EXPECT_THROW(check_loop_rate(249.0), std::invalid_argument);
+  EXPECT_THROW(check_loop_rate(10001.0), std::invalid_argument);
+  EXPECT_NO_THROW(check_loop_rate(250.0));
+  EXPECT_NO_THROW(check_loop_rate(10000.0));
+  ScriptedDevice device;
+  EXPECT_THROW(HapticLoop(device, roomy_limits(), quiet_config(100.0)), std::invalid_argument);
+}
+
+TEST(RealtimeLoop, DeliversEveryTickInOrderAndPublishesTheNewestSnapshot) {
+  ScriptedDevice device;
+  SpringStep step;
+  HapticLoop loop(device, roomy_limits(), quiet_config(2000.0));
+  const std::string report = loop.launch();
+  EXPECT_EQ(report.rfind("real-time: ", 0), 0u) << report;
+  EXPECT_EQ(report.find('\n'), std::string::npos);
+
+  wait_ticks(loop, 20);
+  TickSample sample;
+  EXPECT_FALSE(loop.samples().pop(sample)) << "stopped: nothing is stepped or recorded";
+
+  loop.apply({LoopCommandType::kSetStep, 0.0, &step});
+  loop.apply({LoopCommandType::kStart});
+  wait_ticks(loop, 300);
+  loop.apply({LoopCommandType::kStop});
+
+  uint64_t count = 0, previous = 0, gaps = 0;
+  while (loop.samples().pop(sample)) {
+    if (count > 0 && sample.tick != previous + 1) ++gaps;
+    previous = sample.tick;
+    ++count;
+  }
+  EXPECT_GE(count, 300u);
+  EXPECT_EQ(gaps, 0u);
+  EXPECT_EQ(loop.samples().overflowed(), 0u);
+  const ToolSnapshot snap = loop.snapshot();
+  EXPECT_EQ(snap.tick, previous) << "the snapshot is the last stepped tick";
+  EXPECT_EQ(snap.needle_tip_m[2], step.x[2]);
+  EXPECT_GE(device.writes, count);
+  loop.shutdown();
+  EXPECT_FALSE(loop.running());
+}
+
+TEST(RealtimeLoop, CommandsApplyBetweenTicks) {
+  ScriptedDevice device;
+  CountingStep a, b;
+  HapticLoop loop(device, roomy_limits(), quiet_config(1000.0));
+  loop.launch();
+  loop.apply({LoopCommandType::kSetStep, 0.0, &a});
+  loop.apply({LoopCommandType::kStart});
+  wait_ticks(loop, 20);
+  loop.apply({LoopCommandType::kSetStep, 0.0, &b});
+  const uint64_t a_calls = a.calls.load();
+  wait_ticks(loop, 20);
+  EXPECT_EQ(a.calls.load(), a_calls) << "once applied, the old step is never called again";
+  EXPECT_GE(b.calls.load(), 19u);
+
+  loop.apply({LoopCommandType::kSetRate, 4000.0});
+  EXPECT_EQ(loop.stats().nominal_rate_hz, 4000.0);
+  EXPECT_THROW(loop.submit({LoopCommandType::kSetRate, 20000.0}), std::invalid_argument);
+  loop.shutdown();
+}
+
+}  // namespace
+}  // namespace needle::haptics
