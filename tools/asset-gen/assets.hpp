@@ -1,0 +1,41 @@
+// The committed assets (assets/*.gltf), built in memory. Frame: metres, z up (the thesis's
+// robot base frame), so they are placed in scenes without a Y-up to Z-up turn.
+#pragma once
+
+#include <tiny_gltf.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace needle::asset_gen {
+
+constexpr double kThesisSphereRadius = 0.1;   // m, thesis section 4.2
+constexpr double kThesisSphereCenterX = 0.4;  // m, centre (0.4, 0, 0)
+
+// Thesis sphere (shapes.hpp, sphere_mesh) of radius 0.1 m, its node at (0.4, 0, 0);
+// buffer file "sphere_P.bin" (or "sphere_PxM.bin" when P != M).
+tinygltf::Model make_sphere(int parallels, int meridians);
+
+// Needle along the x axis: tip (a short cone) at the node origin pointing +x like the thesis's
+// x5 axis, shaft and coloured hub along -x.
+tinygltf::Model make_needle();
+
+// Tissue block 0.1 x 0.1 m, top (skin) at z = 0: skin (textured), fat, muscle, bone plate.
+tinygltf::Model make_tissue_block();
+
+// Guidance marker: a 3 mm sphere at the origin.
+tinygltf::Model make_marker();
+
+struct GeneratedAsset {
+  std::string file;  // e.g. "sphere_100.gltf"; its .bin (and .png) sit next to it
+  tinygltf::Model model;
+};
+
+// Every asset committed under assets/.
+std::vector<GeneratedAsset> committed_assets();
+
+// Writes `asset` (glTF + external buffer and images) into `folder`; throws on failure.
+void write_asset(const GeneratedAsset& asset, const std::filesystem::path& folder);
+
+}  // namespace needle::asset_gen

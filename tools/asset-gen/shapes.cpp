@@ -1,0 +1,86 @@
+#include "asset-gen/shapes.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace needle::asset_gen {
+
+MeshData sphere_mesh(double radius, int parallels, int meridians) {
+  if (parallels < 2 || meridians < 3)
+    throw std::invalid_argument("sphere: needs at least 2 parallels and 3 meridians, got " +
+                                std::to_string(parallels) + " x " + std::to_string(meridians));
+  const auto p = static_cast<uint32_t>(parallels);
+  const auto m = static_cast<uint32_t>(meridians);
+  MeshData mesh;
+  const double pi = std::numbers::pi;
+  for (uint32_t i = 0; i <= p; ++i) {
+    const double alpha = -pi / 2 + pi * i / p;
+    for (uint32_t j = 0; j <= m; ++j) {
+      const double beta = 2 * pi * j / m;
+      const glm::dvec3 n(std::cos(alpha) * std::cos(beta), std::cos(alpha) * std::sin(beta), std::sin(alpha));
+      mesh.positions.emplace_back(radius * n);
+      mesh.normals.emplace_back(n);
+      mesh.uvs.emplace_back(double(j) / m, 1.0 - double(i) / p);  // north pole at the image's top
+    }
+  }
+  // Quad (i, j): a = (i, j), b = (i, j+1), c = (i+1, j+1), d = (i+1, j); (a, b, c) and (a, c, d)
+  // turn counter-clockwise seen from outside. At the poles one of them is degenerate: skipped.
+  auto at = [m](uint32_t i, uint32_t j) { return i * (m + 1) + j; };
+  for (uint32_t i = 0; i < p; ++i)
+    for (uint32_t j = 0; j < m; ++j) {
+      const uint32_t a = at(i, j), b = at(i, j + 1), c = at(i + 1, j + 1), d = at(i + 1, j);
+      if (i != 0) mesh.indices.insert(mesh.indices.end(), {a, b, c});
+      if (i + 1 != p) mesh.indices.insert(mesh.indices.end(), {a, c, d});
+    }
+  return mesh;
+}
+
+MeshData revolution_mesh(const std::vector<ProfilePoint>& profile, int segments) {
+  MeshData mesh;
+  const double pi = std::numbers::pi;
+  const auto n = static_cast<uint32_t>(segments);
+  for (size_t s = 0; s + 1 < profile.size(); ++s) {
+    const ProfilePoint p0 = profile[s], p1 = profile[s + 1];
+    // P(x, t) = (x, r cos t, r sin t); with the profile direction (dx, dr) the outward normal
+    // is (dr, -dx cos t, -dx sin t) normalized, and (ds, dt) is counter-clockwise from outside.
+    const double dx = p1.x - p0.x, dr = p1.radius - p0.radius, length = std::hypot(dx, dr);
+    const auto base = static_cast<uint32_t>(mesh.positions.size());
+    for (const ProfilePoint& p : {p0, p1})
+      for (uint32_t k = 0; k <= n; ++k) {
+        const double t = 2 * pi * k / n;
+        mesh.positions.emplace_back(p.x, p.radius * std::cos(t), p.radius * std::sin(t));
+        mesh.normals.emplace_back(dr / length, -dx / length * std::cos(t), -dx / length * std::sin(t));
+        mesh.uvs.emplace_back(double(k) / n, double(s) / double(profile.size() - 1));
+      }
+    for (uint32_t k = 0; k < n; ++k) {
+      const uint32_t a = base + k, d = base + k + 1, b = base + n + 1 + k, c = base + n + 2 + k;
+      if (p1.radius > 0) mesh.indices.insert(mesh.indices.end(), {a, b, c});
+      if (p0.radius > 0) mesh.indices.insert(mesh.indices.end(), {a, c, d});
+    }
+  }
+  return mesh;
+}
+
+MeshData box_mesh(const glm::vec3& min, const glm::vec3& max) {
+  const glm::vec3 center = (min + max) * 0.5f, half = (max - min) * 0.5f;
+  const glm::vec3 X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1);
+  // (u, v) per face with u x v = the face's outward normal.
+  const glm::vec3 faces[6][2] = {{Y, Z}, {Z, Y}, {Z, X}, {X, Z}, {X, Y}, {Y, X}};
+  MeshData mesh;
+  for (const auto& [u, v] : faces) {
+    const glm::vec3 normal = glm::cross(u, v);
+    const auto base = static_cast<uint32_t>(mesh.positions.size());
+    const glm::vec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (const glm::vec2& c : corners) {
+      mesh.positions.push_back(center + half * (normal + c.x * u + c.y * v));
+      mesh.normals.push_back(normal);
+      mesh.uvs.emplace_back((c.x + 1) / 2, (1 - c.y) / 2);
+    }
+    mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+  }
+  return mesh;
+}
+
+}  // namespace needle::asset_gen
