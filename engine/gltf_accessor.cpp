@@ -61,7 +61,7 @@ ByteSpan view_buffer_view(const tinygltf::Model& gltf, int index, const std::str
     asset_fail(file, usage, "bufferView " + std::to_string(index) + " does not exist (" +
                                 std::to_string(gltf.bufferViews.size()) + " bufferViews)");
   const tinygltf::BufferView& view = gltf.bufferViews[static_cast<size_t>(index)];
-  const std::string name = element_name("bufferViews", static_cast<size_t>(index));
+  const std::string name = element_name("bufferViews", static_cast<size_t>(index)) + " of " + usage;
   if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= gltf.buffers.size())
     asset_fail(file, name, "buffer " + std::to_string(view.buffer) + " does not exist");
   const std::vector<unsigned char>& data = gltf.buffers[static_cast<size_t>(view.buffer)].data;
