@@ -1,0 +1,27 @@
+// C++ mirror of shaders/frame.glsl (std140 uniform block and the push-constant block).
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace needle::engine {
+
+constexpr int kMaxDirectionalLights = 4;
+
+struct FrameUniforms {
+  glm::mat4 view_proj;
+  glm::vec4 camera_position;
+  glm::vec4 ambient;
+  glm::vec4 light_direction[kMaxDirectionalLights];
+  glm::vec4 light_radiance[kMaxDirectionalLights];
+  glm::ivec4 light_count;
+};
+static_assert(sizeof(FrameUniforms) == 64 + 16 + 16 + 64 + 64 + 16, "std140 layout of Frame");
+
+struct DrawPushConstants {
+  glm::mat4 model;
+  glm::vec4 base_color;
+  glm::vec4 material;  // alpha cutoff (<0: none), metallic, roughness, has texture
+};
+static_assert(sizeof(DrawPushConstants) == 96, "push-constant layout of Draw");
+
+}  // namespace needle::engine

@@ -1,0 +1,58 @@
+// A Model uploaded to the GPU: vertex and index buffers per primitive, textures, and one
+// material descriptor set per material. Vertex buffers are also storage buffers so a compute
+// pass may rewrite them in place (tissue deformation).
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <vector>
+
+#include "engine/gpu_buffer.hpp"
+#include "engine/gpu_image.hpp"
+#include "engine/model.hpp"
+
+namespace needle::engine {
+
+class VulkanContext;
+
+// What a GpuModel needs from the renderer to build its material descriptor sets.
+struct MaterialBinding {
+  VkDescriptorSetLayout layout = VK_NULL_HANDLE;  // set 1: combined image sampler at binding 0
+  VkSampler sampler = VK_NULL_HANDLE;
+  VkImageView white_texture = VK_NULL_HANDLE;  // bound when a material has no texture
+};
+
+struct GpuPrimitive {
+  GpuBuffer vertices;
+  GpuBuffer indices;
+  uint32_t vertex_count = 0;
+  uint32_t index_count = 0;
+};
+
+class GpuModel {
+ public:
+  GpuModel(const VulkanContext& context, const Model& model, const MaterialBinding& binding);
+  ~GpuModel();
+  GpuModel(const GpuModel&) = delete;
+  GpuModel& operator=(const GpuModel&) = delete;
+
+  const std::vector<GpuPrimitive>& primitives() const { return primitives_; }
+  const std::vector<MeshInstance>& instances() const { return instances_; }
+  const Bounds& world_bounds() const { return bounds_; }
+  // The material of a primitive (the glTF default material when it has none) and its set.
+  const Material& material_of(uint32_t primitive) const;
+  VkDescriptorSet descriptor_set_of(uint32_t primitive) const;
+
+ private:
+  VkDevice device_;
+  std::vector<GpuPrimitive> primitives_;
+  std::vector<int> primitive_material_;
+  std::vector<MeshInstance> instances_;
+  std::vector<Material> materials_;  // the model's, then the default material last
+  std::vector<GpuImage> textures_;
+  VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  std::vector<VkDescriptorSet> sets_;  // one per entry of materials_
+  Bounds bounds_;
+};
+
+}  // namespace needle::engine

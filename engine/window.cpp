@@ -1,0 +1,81 @@
+#include "engine/window.hpp"
+
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+
+#include <cstdlib>
+#include <stdexcept>
+
+#include "engine/vk_check.hpp"
+
+namespace needle::engine {
+namespace {
+
+// GLFW is initialised once per process and torn down at exit.
+bool glfw_ready() {
+  static const bool ready = [] {
+    glfwSetErrorCallback([](int, const char*) {});  // failures surface through return values
+    if (!glfwInit()) return false;
+    std::atexit(glfwTerminate);
+    return true;
+  }();
+  return ready;
+}
+
+}  // namespace
+
+bool Window::display_available() {
+  const char* x = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  if ((!x || !*x) && (!wayland || !*wayland)) return false;
+  return glfw_ready() && glfwVulkanSupported();
+}
+
+std::vector<std::string> Window::required_instance_extensions() {
+  if (!glfw_ready()) throw std::runtime_error("no display: GLFW could not initialise");
+  uint32_t count = 0;
+  const char** names = glfwGetRequiredInstanceExtensions(&count);
+  if (!names) throw std::runtime_error("GLFW reports that Vulkan cannot present to its windows here");
+  return std::vector<std::string>(names, names + count);
+}
+
+Window::Window(const std::string& title, int width, int height) {
+  if (!glfw_ready()) throw std::runtime_error("no display: GLFW could not initialise");
+  glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+  glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+  window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  if (!window_) throw std::runtime_error("GLFW could not create a window");
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) {
+    static_cast<Window*>(glfwGetWindowUserPointer(w))->resized_ = true;
+  });
+}
+
+Window::~Window() {
+  if (window_) glfwDestroyWindow(window_);
+}
+
+VkSurfaceKHR Window::create_surface(VkInstance instance) const {
+  VkSurfaceKHR surface;
+  VK_CHECK(glfwCreateWindowSurface(instance, window_, nullptr, &surface));
+  return surface;
+}
+
+bool Window::should_close() const { return glfwWindowShouldClose(window_); }
+void Window::request_close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+void Window::poll_events() const { glfwPollEvents(); }
+void Window::wait_events() const { glfwWaitEventsTimeout(0.1); }
+
+VkExtent2D Window::framebuffer_extent() const {
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  return {uint32_t(w), uint32_t(h)};
+}
+
+bool Window::take_resized() {
+  bool r = resized_;
+  resized_ = false;
+  return r;
+}
+
+}  // namespace needle::engine

@@ -1,0 +1,43 @@
+// A GLFW window with no client API (Vulkan draws into it).
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace needle::engine {
+
+class Window {
+ public:
+  // Throws std::runtime_error when there is no display or GLFW cannot make a window.
+  Window(const std::string& title, int width, int height);
+  ~Window();
+  Window(const Window&) = delete;
+  Window& operator=(const Window&) = delete;
+
+  // True when GLFW can reach a display (X11 or Wayland); cheap, and safe to call first.
+  static bool display_available();
+  // Instance extensions Vulkan needs to present to a GLFW window.
+  static std::vector<std::string> required_instance_extensions();
+
+  VkSurfaceKHR create_surface(VkInstance instance) const;
+  GLFWwindow* handle() const { return window_; }
+  bool should_close() const;
+  void request_close();
+  void poll_events() const;
+  // Blocks until an event arrives (used while minimised).
+  void wait_events() const;
+  // Framebuffer size in pixels; 0x0 while minimised.
+  VkExtent2D framebuffer_extent() const;
+  // True once after the framebuffer was resized.
+  bool take_resized();
+
+ private:
+  GLFWwindow* window_ = nullptr;
+  bool resized_ = false;
+};
+
+}  // namespace needle::engine

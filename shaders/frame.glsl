@@ -1,0 +1,17 @@
+// Per-frame uniforms shared by the scene shaders; mirrored by engine/frame_uniforms.hpp (std140).
+#define MAX_DIRECTIONAL_LIGHTS 4
+layout(set = 0, binding = 0, std140) uniform Frame {
+  mat4 view_proj;
+  vec4 camera_position;                          // xyz, world
+  vec4 ambient;                                  // rgb, linear
+  vec4 light_direction[MAX_DIRECTIONAL_LIGHTS];  // xyz: the way light travels, unit
+  vec4 light_radiance[MAX_DIRECTIONAL_LIGHTS];   // rgb: colour x intensity
+  ivec4 light_count;                             // x
+} frame;
+
+// Per draw: object-to-world transform and the material.
+layout(push_constant, std430) uniform Draw {
+  mat4 model;
+  vec4 base_color;
+  vec4 material;  // x alpha cutoff (<0: no cutoff), y metallic, z roughness, w has texture (0/1)
+} draw;
