@@ -18,6 +18,17 @@ std::vector<Vec3> workspace_grid() {
   return points;
 }
 
+// Central difference of the hip angles when the handle moves by +-h along `axis`.
+Vec3 hip_change(const Geometry& g, const Vec3& x, int axis, double h) {
+  Vec3 plus = x, minus = x;
+  plus[axis] += h;
+  minus[axis] -= h;
+  LegAngles ap, am;
+  EXPECT_TRUE(inverse_kinematics(g, plus, ap));
+  EXPECT_TRUE(inverse_kinematics(g, minus, am));
+  return {ap.hip[0] - am.hip[0], ap.hip[1] - am.hip[1], ap.hip[2] - am.hip[2]};
+}
+
 TEST(FalconEncoder, CountsToHipAngleThroughTheCapstan) {
   const Drive drive;
   EXPECT_NEAR(encoder_to_hip_angle(drive, 0), 35.0 * kDeg, 1e-15);
@@ -94,14 +105,9 @@ TEST(FalconKinematics, JacobianEqualsFiniteDifferencesOfTheInverse) {
     Mat3 jac;
     ASSERT_TRUE(hip_jacobian(g, x, jac));
     for (int col = 0; col < 3; ++col) {
-      Vec3 plus = x, minus = x;
-      plus[col] += h;
-      minus[col] -= h;
-      LegAngles ap, am;
-      ASSERT_TRUE(inverse_kinematics(g, plus, ap));
-      ASSERT_TRUE(inverse_kinematics(g, minus, am));
+      const Vec3 change = hip_change(g, x, col, h);
       for (int leg = 0; leg < 3; ++leg)
-        EXPECT_NEAR(jac[leg][col], (ap.hip[leg] - am.hip[leg]) / (2 * h), 1e-6 * (1.0 + std::abs(jac[leg][col])));
+        EXPECT_NEAR(jac[leg][col], change[leg] / (2 * h), 1e-6 * (1.0 + std::abs(jac[leg][col])));
     }
   }
 }
@@ -115,14 +121,9 @@ TEST(FalconKinematics, TorquesDoTheSameVirtualWorkAsTheForce) {
     // Move the handle a little along each axis: tau . dtheta must equal F . dx.
     for (int axis = 0; axis < 3; ++axis) {
       const double h = 1e-7;
-      Vec3 plus = x, minus = x;
-      plus[axis] += h;
-      minus[axis] -= h;
-      LegAngles ap, am;
-      ASSERT_TRUE(inverse_kinematics(g, plus, ap));
-      ASSERT_TRUE(inverse_kinematics(g, minus, am));
+      const Vec3 change = hip_change(g, x, axis, h);
       double work = 0.0;
-      for (int leg = 0; leg < 3; ++leg) work += tau[leg] * (ap.hip[leg] - am.hip[leg]);
+      for (int leg = 0; leg < 3; ++leg) work += tau[leg] * change[leg];
       EXPECT_NEAR(work, force[axis] * 2 * h, 1e-6 * 2 * h * (1.0 + std::abs(force[axis])));
     }
   }
