@@ -1,0 +1,56 @@
+// Writes a session to disk from the loop's sample ring, on its own non-real-time thread.
+// Each pass drains the ring, writes the records and flushes them to the kernel, every
+// kPassInterval (20 ms): a crash or kill of the process loses at most the samples of the
+// current pass, well under 100 ms. (Power loss is another matter: no fsync per pass.)
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "haptics/realtime/spsc_ring.hpp"
+#include "haptics/realtime/tick_sample.hpp"
+#include "haptics/recording/session_format.hpp"
+
+namespace needle::haptics {
+
+class SessionRecorder {
+ public:
+  static constexpr std::chrono::milliseconds kPassInterval{20};
+
+  // Creates the file and writes the header; throws RecordingError naming the file.
+  SessionRecorder(const std::string& path, const SessionHeader& header, SpscRing<TickSample>& samples);
+  ~SessionRecorder();
+  SessionRecorder(const SessionRecorder&) = delete;
+  SessionRecorder& operator=(const SessionRecorder&) = delete;
+
+  // One pass on the calling thread: drain, write, flush. Returns the records written.
+  // Throws RecordingError when the disk refuses the data.
+  std::size_t drain();
+
+  // Passes on a thread of its own until stop(); stop() does a last pass and closes.
+  void start();
+  void stop();
+
+  uint64_t written() const noexcept { return written_.load(std::memory_order_relaxed); }
+  // Samples the loop had to drop because this recorder fell behind.
+  uint64_t dropped() const noexcept { return samples_.overflowed(); }
+  // Set when the thread's pass failed (disk full...): the message, else empty.
+  std::string error() const;
+
+ private:
+  std::string path_;
+  SpscRing<TickSample>& samples_;
+  std::FILE* file_ = nullptr;
+  std::vector<uint8_t> buffer_;
+  std::atomic<uint64_t> written_{0};
+  std::atomic<bool> stop_{false};
+  std::atomic<bool> failed_{false};
+  std::string error_;  // written by the thread before failed_ is set
+  std::thread thread_;
+};
+
+}  // namespace needle::haptics
