@@ -315,6 +315,9 @@ Bounds world_bounds(const engine::Model& model) {
 }  // namespace
 
 engine::Model convert_gltf(const tinygltf::Model& gltf, const std::string& file) {
+  // A required extension changes what the data means (e.g. Draco-compressed meshes).
+  for (const std::string& extension : gltf.extensionsRequired)
+    asset_fail(file, "extensionsRequired", extension + " is not supported");
   engine::Model out;
   out.textures = convert_textures(gltf, file);
   for (size_t m = 0; m < gltf.materials.size(); ++m) out.materials.push_back(convert_material(gltf, m, file));

@@ -2,12 +2,17 @@
 // attribute formats and generated normals, each against a hand-derived expectation.
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <fstream>
+#include <iterator>
+
+#include "asset-gen/assets.hpp"
 #include "engine/gltf_loader.hpp"
 #include "test_gltf_fixtures.hpp"
 
 namespace needle::engine {
 namespace {
 using namespace testing;
+namespace fs = std::filesystem;
 
 // Flat quad in the tilted plane spanned by e1 = (1, 0, 1) and e2 = (0, 2, 0): corners 0, e1,
 // e1 + e2, e2. Its unit normal is e1 x e2 / |e1 x e2| = (-2, 0, 2) / sqrt(8).
@@ -171,6 +176,52 @@ TEST(GltfLoader, ExternalUrisArePercentDecoded) {
   std::filesystem::rename(dir / "quad.bin", dir / "my quad.bin");
   edit_json(file, [](nlohmann::json& j) { j["buffers"][0]["uri"] = "my%20quad.bin"; });
   EXPECT_EQ(load_gltf(file).primitives[0].vertices.size(), 4u);
+}
+
+// The skin texture of the tissue block as the generator made it (RGBA8, 64 x 64).
+const std::vector<unsigned char>& skin_texels() {
+  static const std::vector<unsigned char> texels = asset_gen::make_tissue_block().images[0].image;
+  return texels;
+}
+
+TEST(GltfLoader, ImagesInADataUriDecodeToTheOriginalTexels) {
+  TempDir dir("data_uri_image");
+  const tinygltf::Model gltf = asset_gen::make_tissue_block();
+  tinygltf::TinyGLTF writer;
+  const auto file = dir / "block.gltf";
+  ASSERT_TRUE(writer.WriteGltfSceneToFile(&gltf, file.string(), /*embedImages=*/true, true, true, false));
+  const Model model = load_gltf(file);
+  ASSERT_EQ(model.textures.size(), 1u);
+  EXPECT_TRUE(model.textures[0].rgba8 == skin_texels());
+}
+
+TEST(GltfLoader, ImagesInABufferViewDecodeToTheOriginalTexels) {
+  tinygltf::Model gltf = asset_gen::make_tissue_block();
+  std::ifstream png(fs::path(NEEDLE_SOURCE_DIR) / "assets" / "tissue_block_skin.png", std::ios::binary);
+  const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(png), std::istreambuf_iterator<char>()};
+  const int accessor = add_accessor(gltf, bytes, TINYGLTF_TYPE_SCALAR, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE);
+  tinygltf::Image& image = gltf.images[0];
+  image = tinygltf::Image();
+  image.bufferView = gltf.accessors[static_cast<size_t>(accessor)].bufferView;
+  image.mimeType = "image/png";
+  TempDir dir("buffer_view_image");
+  const Model model = load_gltf(write_model(gltf, dir.path(), "block.glb", Container::Glb));
+  ASSERT_EQ(model.textures.size(), 1u);
+  EXPECT_EQ(model.textures[0].width, 64u);
+  EXPECT_TRUE(model.textures[0].rgba8 == skin_texels());
+}
+
+TEST(GltfLoader, GreyAndSixteenBitImagesBecomeRgba8) {
+  tinygltf::Model gltf = asset_gen::make_tissue_block();
+  tinygltf::Image& image = gltf.images[0];
+  image.width = 2;
+  image.height = 1;
+  image.component = 2;  // grey + alpha, 16 bits each, little-endian
+  image.bits = 16;
+  image.image = {0xff, 0xff, 0x00, 0x80, 0x00, 0x00, 0xff, 0xff};
+  const Model model = convert_gltf(gltf, "grey16");
+  // 0x8000 = 32768 -> round(32768 * 255 / 65535) = 128.
+  EXPECT_EQ(model.textures[0].rgba8, (std::vector<uint8_t>{255, 255, 255, 128, 0, 0, 0, 255}));
 }
 
 }  // namespace

@@ -190,6 +190,23 @@ TEST_F(GltfMalformed, TruncatedGlb) {
   expect_error({"GLB header", "exceeds the file"});
 }
 
+TEST_F(GltfMalformed, UndecodableImage) {
+  write_text(dir / "noise.png", "this is not an image");
+  edit_json(file, [](nlohmann::json& j) {
+    j["images"] = {{{"uri", "noise.png"}}};
+    j["textures"] = {{{"source", 0}}};
+  });
+  expect_error({"glTF", "image[0]"});
+}
+
+TEST_F(GltfMalformed, RequiredExtensionsAreRefused) {
+  edit_json(file, [](nlohmann::json& j) {
+    j["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+    j["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  });
+  expect_error({"extensionsRequired", "KHR_draco_mesh_compression"});
+}
+
 TEST(GltfMalformedInMemory, ImageBufferViewOutsideItsBuffer) {
   tinygltf::Model model = triangle();
   tinygltf::BufferView view;
