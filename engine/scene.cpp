@@ -99,8 +99,10 @@ class SceneReader {
     object(value, at, {"name", "gltf", "role", "translation", "rotation", "scale"});
     SceneAsset a;
     a.name = string(member(value, at, "name"), at + "/name");
-    a.gltf = fs::weakly_canonical(folder_ / string(member(value, at, "gltf"), at + "/gltf"));
-    if (!fs::is_regular_file(a.gltf)) fail(at + "/gltf", "file not found: " + a.gltf.string());
+    const fs::path given = folder_ / string(member(value, at, "gltf"), at + "/gltf");
+    std::error_code ec;
+    a.gltf = fs::weakly_canonical(given, ec);
+    if (ec || !fs::is_regular_file(a.gltf, ec)) fail(at + "/gltf", "file not found: " + given.string());
     const std::string role = string(member(value, at, "role"), at + "/role");
     if (role == "tissue") a.role = AssetRole::Tissue;
     else if (role == "tool") a.role = AssetRole::Tool;
