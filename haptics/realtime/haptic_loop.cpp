@@ -1,6 +1,7 @@
 #include "haptics/realtime/haptic_loop.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -14,8 +15,11 @@ void sleep_briefly() { std::this_thread::sleep_for(std::chrono::microseconds(200
 }  // namespace
 
 void check_loop_rate(double hz) {
-  if (!(hz >= kMinLoopRateHz && hz <= kMaxLoopRateHz))
-    throw std::invalid_argument("haptic loop rate " + std::to_string(hz) + " Hz: expected 250 to 10000 Hz");
+  if (!(hz >= kMinLoopRateHz && hz <= kMaxLoopRateHz)) {
+    char text[96];
+    std::snprintf(text, sizeof text, "haptic loop rate %g Hz: expected 250 to 10000 Hz", hz);
+    throw std::invalid_argument(text);
+  }
 }
 
 HapticLoop::HapticLoop(HapticDevice& device, const SafetyLimits& limits, const LoopConfig& config)
