@@ -19,9 +19,14 @@ static_assert(sizeof(FrameUniforms) == 64 + 16 + 16 + 64 + 64 + 16, "std140 layo
 
 struct DrawPushConstants {
   glm::mat4 model;
-  glm::vec4 base_color;
-  glm::vec4 material;  // alpha cutoff (<0: none), metallic, roughness, has texture
+  glm::vec4 normal_matrix[3];  // std430 mat3: three columns, each padded to 16 bytes
 };
-static_assert(sizeof(DrawPushConstants) == 96, "push-constant layout of Draw");
+static_assert(sizeof(DrawPushConstants) == 112, "push-constant layout of Draw (at most 128)");
+
+struct MaterialUniforms {
+  glm::vec4 base_color;
+  glm::vec4 params;  // alpha cutoff (<0: none), metallic, roughness, has texture
+};
+static_assert(sizeof(MaterialUniforms) == 32, "std140 layout of MaterialBlock");
 
 }  // namespace needle::engine

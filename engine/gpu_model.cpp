@@ -1,5 +1,9 @@
 #include "engine/gpu_model.hpp"
 
+#include <array>
+#include <cstring>
+
+#include "engine/frame_uniforms.hpp"
 #include "engine/vk_check.hpp"
 #include "engine/vulkan_context.hpp"
 
@@ -23,11 +27,26 @@ GpuModel::GpuModel(const VulkanContext& context, const Model& model, const Mater
   }
   for (const Texture& t : model.textures) textures_.push_back(GpuImage::texture(context, t));
 
-  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, uint32_t(materials_.size())};
+  const VkDeviceSize align = context.properties().limits.minUniformBufferOffsetAlignment;
+  const VkDeviceSize stride = (sizeof(MaterialUniforms) + align - 1) / align * align;
+  std::vector<uint8_t> uniforms(stride * materials_.size());
+  for (size_t i = 0; i < materials_.size(); ++i) {
+    const Material& m = materials_[i];
+    MaterialUniforms u{m.base_color_factor,
+                       glm::vec4(m.alpha_mode == AlphaMode::Mask ? m.alpha_cutoff : -1.0f, m.metallic_factor,
+                                 m.roughness_factor, m.base_color_texture >= 0 ? 1.0f : 0.0f)};
+    if (m.alpha_mode == AlphaMode::Opaque) u.base_color.a = 1.0f;
+    std::memcpy(uniforms.data() + i * stride, &u, sizeof u);
+  }
+  material_uniforms_ = GpuBuffer::device_local_with_data(context, uniforms.data(), uniforms.size(),
+                                                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+
+  std::array<VkDescriptorPoolSize, 2> sizes{{{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, uint32_t(materials_.size())},
+                                             {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uint32_t(materials_.size())}}};
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pool_info.maxSets = uint32_t(materials_.size());
-  pool_info.poolSizeCount = 1;
-  pool_info.pPoolSizes = &size;
+  pool_info.poolSizeCount = uint32_t(sizes.size());
+  pool_info.pPoolSizes = sizes.data();
   VK_CHECK(vkCreateDescriptorPool(device_, &pool_info, nullptr, &pool_));
 
   std::vector<VkDescriptorSetLayout> layouts(materials_.size(), binding.layout);
@@ -42,12 +61,19 @@ GpuModel::GpuModel(const VulkanContext& context, const Model& model, const Mater
     VkDescriptorImageInfo image{binding.sampler,
                                 t >= 0 && size_t(t) < textures_.size() ? textures_[size_t(t)].view() : binding.white_texture,
                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = sets_[i];
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    write.pImageInfo = &image;
-    vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+    VkDescriptorBufferInfo buffer{material_uniforms_.handle(), i * stride, sizeof(MaterialUniforms)};
+    std::array<VkWriteDescriptorSet, 2> writes{};
+    writes[0] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    writes[0].dstSet = sets_[i];
+    writes[0].descriptorCount = 1;
+    writes[0].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    writes[0].pImageInfo = &image;
+    writes[1] = writes[0];
+    writes[1].dstBinding = 1;
+    writes[1].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    writes[1].pImageInfo = nullptr;
+    writes[1].pBufferInfo = &buffer;
+    vkUpdateDescriptorSets(device_, uint32_t(writes.size()), writes.data(), 0, nullptr);
   }
 }
 

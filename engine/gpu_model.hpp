@@ -17,7 +17,8 @@ class VulkanContext;
 
 // What a GpuModel needs from the renderer to build its material descriptor sets.
 struct MaterialBinding {
-  VkDescriptorSetLayout layout = VK_NULL_HANDLE;  // set 1: combined image sampler at binding 0
+  // set 1: combined image sampler at binding 0, MaterialUniforms at binding 1
+  VkDescriptorSetLayout layout = VK_NULL_HANDLE;
   VkSampler sampler = VK_NULL_HANDLE;
   VkImageView white_texture = VK_NULL_HANDLE;  // bound when a material has no texture
 };
@@ -50,6 +51,7 @@ class GpuModel {
   std::vector<MeshInstance> instances_;
   std::vector<Material> materials_;  // the model's, then the default material last
   std::vector<GpuImage> textures_;
+  GpuBuffer material_uniforms_;  // one aligned MaterialUniforms slice per entry of materials_
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   std::vector<VkDescriptorSet> sets_;  // one per entry of materials_
   Bounds bounds_;

@@ -143,15 +143,17 @@ void SceneRenderer::create_layouts_and_sampler() {
   frame_info.pBindings = &frame_binding;
   VK_CHECK(vkCreateDescriptorSetLayout(device_, &frame_info, nullptr, &frame_layout_));
 
-  VkDescriptorSetLayoutBinding texture_binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-                                               VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+  std::array<VkDescriptorSetLayoutBinding, 2> material_bindings{{
+      {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+      {1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+  }};
   VkDescriptorSetLayoutCreateInfo material_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  material_info.bindingCount = 1;
-  material_info.pBindings = &texture_binding;
+  material_info.bindingCount = uint32_t(material_bindings.size());
+  material_info.pBindings = material_bindings.data();
   VK_CHECK(vkCreateDescriptorSetLayout(device_, &material_info, nullptr, &material_layout_));
 
   std::array<VkDescriptorSetLayout, 2> sets{frame_layout_, material_layout_};
-  VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(DrawPushConstants)};
+  VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(DrawPushConstants)};
   VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layout_info.setLayoutCount = uint32_t(sets.size());
   layout_info.pSetLayouts = sets.data();
@@ -478,12 +480,10 @@ void SceneRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, uint
       vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_layout_, 1, 1, &set, 0, nullptr);
       DrawPushConstants push{};
       push.model = d.transform;
-      push.base_color = m.base_color_factor;
-      push.material = glm::vec4(m.alpha_mode == AlphaMode::Mask ? m.alpha_cutoff : -1.0f, m.metallic_factor,
-                                m.roughness_factor, m.base_color_texture >= 0 ? 1.0f : 0.0f);
-      if (m.alpha_mode == AlphaMode::Opaque) push.base_color.a = 1.0f;
-      vkCmdPushConstants(cmd, pipeline_layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                         sizeof push, &push);
+      // Inverse-transpose keeps normals perpendicular under non-uniform scale.
+      glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(d.transform)));
+      for (int c = 0; c < 3; ++c) push.normal_matrix[c] = glm::vec4(normal_matrix[c], 0.0f);
+      vkCmdPushConstants(cmd, pipeline_layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
       VkDeviceSize offset = 0;
       VkBuffer vb = p.vertices.handle();
       vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);

@@ -9,9 +9,15 @@ layout(set = 0, binding = 0, std140) uniform Frame {
   ivec4 light_count;                             // x
 } frame;
 
-// Per draw: object-to-world transform and the material.
+// Per draw: object-to-world transform and its inverse-transpose for normals (computed once on
+// the CPU rather than per vertex: llvmpipe shades vertices on one thread).
 layout(push_constant, std430) uniform Draw {
   mat4 model;
-  vec4 base_color;
-  vec4 material;  // x alpha cutoff (<0: no cutoff), y metallic, z roughness, w has texture (0/1)
+  mat3 normal_matrix;
 } draw;
+
+// Per material (set 1): base colour texture and factors; mirrored by engine/frame_uniforms.hpp.
+layout(set = 1, binding = 1, std140) uniform MaterialBlock {
+  vec4 base_color;
+  vec4 params;  // x alpha cutoff (<0: no cutoff), y metallic, z roughness, w has texture (0/1)
+} material;

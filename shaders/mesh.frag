@@ -14,15 +14,15 @@ layout(location = 0) out vec4 out_color;
 // Blinn-Phong with the metallic-roughness parameters mapped onto it: enough shading for a
 // trainee to judge depth and curvature, cheap enough for lavapipe at 1280x720.
 void main() {
-  vec4 base = draw.base_color * in_color;
-  if (draw.material.w > 0.5) base *= texture(base_color_texture, in_uv);  // sRGB decoded by the sampler
-  if (draw.material.x >= 0.0 && base.a < draw.material.x) discard;
+  vec4 base = material.base_color * in_color;
+  if (material.params.w > 0.5) base *= texture(base_color_texture, in_uv);  // sRGB decoded by the sampler
+  if (material.params.x >= 0.0 && base.a < material.params.x) discard;
 
   vec3 n = normalize(in_world_normal);
   if (!gl_FrontFacing) n = -n;  // double-sided materials light their back faces too
   vec3 v = normalize(frame.camera_position.xyz - in_world_position);
-  float metallic = clamp(draw.material.y, 0.0, 1.0);
-  float roughness = clamp(draw.material.z, 0.04, 1.0);
+  float metallic = clamp(material.params.y, 0.0, 1.0);
+  float roughness = clamp(material.params.z, 0.04, 1.0);
   float shininess = 2.0 / (roughness * roughness * roughness * roughness) - 2.0;
   vec3 specular_color = mix(vec3(0.04), base.rgb, metallic);
   vec3 diffuse_color = base.rgb * (1.0 - metallic);

@@ -14,10 +14,8 @@ layout(location = 3) out vec4 out_color;
 
 void main() {
   vec4 world = draw.model * vec4(in_position, 1.0);
-  // Inverse-transpose keeps normals perpendicular under non-uniform scale.
-  mat3 normal_matrix = transpose(inverse(mat3(draw.model)));
   out_world_position = world.xyz;
-  out_world_normal = normal_matrix * in_normal;
+  out_world_normal = draw.normal_matrix * in_normal;
   out_uv = in_uv;
   out_color = in_color;
   gl_Position = frame.view_proj * world;

@@ -29,7 +29,10 @@ int run_window(const engine::Scene& scene, const RunOptions& options) {
   context_options.make_surface = [&](VkInstance instance) { return window.create_surface(instance); };
   engine::VulkanContext context(context_options);
   engine::WindowTarget target(context, window);
-  engine::SceneRenderer renderer(context, target);
+  // On a CPU device (lavapipe) 4x MSAA costs about 5x the frame time (docs/BENCHMARKS.md):
+  // the interactive window keeps its frame rate instead; stills keep MSAA.
+  const bool cpu_device = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  engine::SceneRenderer renderer(context, target, {cpu_device ? VK_SAMPLE_COUNT_1_BIT : VK_SAMPLE_COUNT_4_BIT});
   engine::GpuScene gpu_scene(renderer, scene);
 
   long drawn = 0;
