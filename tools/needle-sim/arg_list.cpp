@@ -73,6 +73,12 @@ double parse_number(const std::string& text, const std::string& flag) {
   return v;
 }
 
+int parse_msaa(const std::string& text, const std::string& flag) {
+  double v = parse_number(text, flag);
+  if (v != 1 && v != 2 && v != 4 && v != 8) throw UsageError(flag + ": expected 1, 2, 4 or 8, got '" + text + "'");
+  return int(v);
+}
+
 std::vector<double> parse_number_list(const std::string& text, const std::string& flag) {
   std::vector<double> out;
   size_t start = 0;

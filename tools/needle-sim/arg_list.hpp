@@ -37,6 +37,8 @@ Size2 parse_size(const std::string& text, const std::string& flag);
 
 // Parses a decimal number with nothing after it; UsageError naming the flag otherwise.
 double parse_number(const std::string& text, const std::string& flag);
+// MSAA sample count: 1, 2, 4 or 8 (the renderer caps it at what the device has).
+int parse_msaa(const std::string& text, const std::string& flag);
 // Comma-separated numbers, "0.1,0.2,-1".
 std::vector<double> parse_number_list(const std::string& text, const std::string& flag);
 

@@ -22,12 +22,12 @@ int run_bench_render(ArgList& args) {
   Size2 size = parse_size(args.value("--size").value_or("1280x720"), "--size");
   std::vector<double> resolutions = parse_number_list(args.value("--spheres").value_or("100,200,400,800"), "--spheres");
   double frames = parse_number(args.value("--frames").value_or("200"), "--frames");
-  std::vector<double> msaa_counts = parse_number_list(args.value("--msaa").value_or("1,4"), "--msaa");
+  std::vector<int> msaa_counts;
+  for (double m : parse_number_list(args.value("--msaa").value_or("1,4"), "--msaa")) {
+    msaa_counts.push_back(parse_msaa(std::to_string(int(m)), "--msaa"));
+  }
   args.finish();
   if (frames < 1 || frames != double(long(frames))) throw UsageError("--frames: expected a whole number ≥ 1");
-  for (double m : msaa_counts) {
-    if (m != 1 && m != 2 && m != 4 && m != 8) throw UsageError("--msaa: each count 1, 2, 4 or 8");
-  }
   for (double r : resolutions) {
     if (r < 3 || r > 4000 || r != double(long(r)))
       throw UsageError("--spheres: each resolution a whole number in 3..4000");
@@ -42,8 +42,8 @@ int run_bench_render(ArgList& args) {
   for (double r : resolutions) {
     int n = int(r);
     engine::Model model = engine::convert_gltf(asset_gen::make_sphere(n, n), "sphere_" + std::to_string(n));
-    for (double msaa : msaa_counts) {
-      engine::SceneRenderer renderer(context, target, {static_cast<VkSampleCountFlagBits>(int(msaa))});
+    for (int msaa : msaa_counts) {
+      engine::SceneRenderer renderer(context, target, {static_cast<VkSampleCountFlagBits>(msaa)});
       engine::GpuScene scene(renderer, model, engine::framing_view(model, extent));
       engine::FrameParams params = scene.frame_params();
       size_t vertices = 0, triangles = 0;

@@ -15,6 +15,7 @@ int run_render(ArgList& args) {
   auto gltf_file = args.value("--gltf");
   std::string out = args.required("--out");
   Size2 size = parse_size(args.value("--size").value_or("1280x720"), "--size");
+  int msaa = parse_msaa(args.value("--msaa").value_or("4"), "--msaa");
   args.finish();
   if (bool(scene_file) == bool(gltf_file)) throw UsageError("give exactly one of --scene FILE or --gltf FILE");
 
@@ -26,19 +27,22 @@ int run_render(ArgList& args) {
 
   engine::VulkanContext context(engine::ContextOptions{});
   VkExtent2D extent{size.width, size.height};
-  engine::RgbaImage image = scene ? engine::render_scene_offscreen(context, *scene, extent)
-                                  : engine::render_model_offscreen(context, *model, extent, engine::framing_view(*model, extent));
+  engine::RendererSettings settings{static_cast<VkSampleCountFlagBits>(msaa)};
+  engine::RgbaImage image =
+      scene ? engine::render_scene_offscreen(context, *scene, extent, settings)
+            : engine::render_model_offscreen(context, *model, extent, engine::framing_view(*model, extent), settings);
   engine::write_png(out, image);
   std::printf("wrote %s (%ux%u)\n", out.c_str(), image.width, image.height);
   return 0;
 }
 
 const CommandRegistrar reg{{"render",
-                            "needle-sim render (--scene FILE | --gltf FILE) --out OUT.png [--size WxH]\n"
+                            "needle-sim render (--scene FILE | --gltf FILE) --out OUT.png [--size WxH] [--msaa N]\n"
                             "  --scene FILE   scene file (JSON): assets with roles, camera, lights\n"
                             "  --gltf FILE    a .gltf or .glb model, framed by an automatic camera\n"
                             "  --out OUT.png  where to write the image\n"
-                            "  --size WxH     image size in pixels (default 1280x720)",
+                            "  --size WxH     image size in pixels (default 1280x720)\n"
+                            "  --msaa N       MSAA samples, 1/2/4/8, capped at the device's (default 4)",
                             run_render}};
 
 }  // namespace

@@ -19,6 +19,7 @@ struct RunOptions {
   std::string out;
   Size2 size;
   long frames = 0;  // window: close after this many frames (0: when the user closes it)
+  std::optional<int> msaa;
   std::optional<std::string> screenshot;
 };
 
@@ -30,9 +31,10 @@ int run_window(const engine::Scene& scene, const RunOptions& options) {
   engine::VulkanContext context(context_options);
   engine::WindowTarget target(context, window);
   // On a CPU device (lavapipe) 4x MSAA costs about 5x the frame time (docs/BENCHMARKS.md):
-  // the interactive window keeps its frame rate instead; stills keep MSAA.
+  // unless asked, the interactive window keeps its frame rate instead; stills keep MSAA.
   const bool cpu_device = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  engine::SceneRenderer renderer(context, target, {cpu_device ? VK_SAMPLE_COUNT_1_BIT : VK_SAMPLE_COUNT_4_BIT});
+  engine::SceneRenderer renderer(context, target,
+                                 {static_cast<VkSampleCountFlagBits>(options.msaa.value_or(cpu_device ? 1 : 4))});
   engine::GpuScene gpu_scene(renderer, scene);
 
   long drawn = 0;
@@ -60,7 +62,9 @@ int run_window(const engine::Scene& scene, const RunOptions& options) {
 
 int run_headless(const engine::Scene& scene, const RunOptions& options) {
   engine::VulkanContext context(engine::ContextOptions{});
-  engine::RgbaImage image = engine::render_scene_offscreen(context, scene, {options.size.width, options.size.height});
+  engine::RgbaImage image =
+      engine::render_scene_offscreen(context, scene, {options.size.width, options.size.height},
+                                     {static_cast<VkSampleCountFlagBits>(options.msaa.value_or(4))});
   engine::write_png(options.out, image);
   std::printf("wrote %s (%ux%u)\n", options.out.c_str(), image.width, image.height);
   return 0;
@@ -77,9 +81,11 @@ int run_run(ArgList& args) {
     options.frames = long(n);
   }
   options.screenshot = args.value("--screenshot");
+  if (auto msaa = args.value("--msaa")) options.msaa = parse_msaa(*msaa, "--msaa");
   bool headless = args.flag("--headless");
   args.finish();
-  if (options.screenshot && options.frames == 0) throw UsageError("--screenshot needs --frames N (the frame to capture)");
+  if (options.screenshot && options.frames == 0)
+    throw UsageError("--screenshot needs --frames N (the frame to capture)");
 
   engine::Scene scene = engine::load_scene(options.scene);
   if (!headless && engine::Window::display_available()) return run_window(scene, options);
@@ -88,11 +94,13 @@ int run_run(ArgList& args) {
 }
 
 const CommandRegistrar reg{{"run",
-                            "needle-sim run [--scene FILE] [--headless] [--out FILE] [--size WxH] [--frames N] [--screenshot FILE]\n"
+                            "needle-sim run [--scene FILE] [--headless] [--out FILE] [--size WxH] [--msaa N] [--frames "
+                            "N] [--screenshot FILE]\n"
                             "  --scene FILE       scene to show (default: assets/scenes/thesis_sphere.json)\n"
                             "  --headless         render offscreen even when a display is available\n"
                             "  --out FILE         headless: where to write the PNG (default out/run.png)\n"
                             "  --size WxH         window or image size (default 1280x720)\n"
+                            "  --msaa N           MSAA samples (default 4; 1 in a window on a CPU device)\n"
                             "  --frames N         window: close after N frames\n"
                             "  --screenshot FILE  window: save frame N as presented (needs --frames)",
                             run_run}};
