@@ -68,7 +68,7 @@ SurfaceSample SurfacePrimitive::evaluate(const Eigen::Vector3d& x) const {
   return {};
 }
 
-ImplicitSurface::ImplicitSurface(std::initializer_list<SurfacePrimitive> primitives, Combine combine) : combine_(combine) {
+ImplicitSurface::ImplicitSurface(std::span<const SurfacePrimitive> primitives, Combine combine) : combine_(combine) {
   if (primitives.size() > static_cast<size_t>(kMaxPrimitives)) throw std::invalid_argument("too many surface primitives");
   for (const auto& p : primitives) primitives_[static_cast<size_t>(count_++)] = p;
 }

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <initializer_list>
+#include <span>
 
 namespace needle::haptics {
 
@@ -37,7 +38,9 @@ class ImplicitSurface {
   enum class Combine { Union, Intersection };
 
   ImplicitSurface() = default;
-  ImplicitSurface(std::initializer_list<SurfacePrimitive> primitives, Combine combine = Combine::Union);
+  ImplicitSurface(std::span<const SurfacePrimitive> primitives, Combine combine = Combine::Union);
+  ImplicitSurface(std::initializer_list<SurfacePrimitive> primitives, Combine combine = Combine::Union)
+      : ImplicitSurface(std::span<const SurfacePrimitive>(primitives.begin(), primitives.size()), combine) {}
 
   bool empty() const { return count_ == 0; }
   // The sample of the primitive that decides the combination (min for union, max for intersection).

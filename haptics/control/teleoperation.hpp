@@ -1,0 +1,64 @@
+// One servo tick of the master/virtual teleoperation scheme (thesis 3.2): tracking terms,
+// contact-dependent force terms, the virtual robot's integration, and the master torque.
+// Free motion (3.13)-(3.14); rigid contact (3.17)-(3.21); tissue (3.24)-(3.28); signs corrected
+// where printed ones feed velocity back positively (docs/CONTROLLER.md). Contact terms blend in
+// and out over gains.switch_time_s. step() allocates nothing and throws nothing.
+#pragma once
+
+#include "haptics/control/gains.hpp"
+#include "haptics/control/tracking.hpp"
+#include "haptics/control/virtual_world.hpp"
+
+namespace needle::haptics {
+
+using Wrench = Eigen::Matrix<double, 6, 1>;
+
+struct TickInput {
+  VecN q_m, dq_m;  // measured master joints
+  Wrench wrench_h = Wrench::Zero();  // [force; torque] of the hand on the master's tip, base frame
+};
+
+struct TickOutput {
+  VecN tau_m, tau_v;             // master command (all joints; the device applies what it can)
+  ContactMode mode = ContactMode::Free;
+  double blend = 0.0;            // 0 free ... 1 contact terms fully on
+  Eigen::Vector3d force_h_normal = Eigen::Vector3d::Zero();  // F_h along the rigid normal
+  VecK lambda_m;                 // (3.24), hand's push along the needle constraints
+};
+
+class Teleoperation {
+ public:
+  Teleoperation(const RobotModel& master, const RobotModel& virt, Scene scene, TeleoperationGains gains, double period,
+                int virtual_substeps);
+
+  // Both robots at the master's state, integrals cleared.
+  void reset(const VecN& q_m, const VecN& dq_m);
+  // Moves the virtual robot alone (e.g. to start it away from the master).
+  void place_virtual(const VecN& q_v, const VecN& dq_v) { world_.reset(q_v, dq_v); }
+  const TickOutput& step(const TickInput& in);
+
+  const VirtualWorld& world() const { return world_; }
+  const RobotData& master_data() const { return master_data_; }
+  const TeleoperationGains& gains() const { return gains_; }
+  double period() const { return period_; }
+
+ private:
+  const RobotModel& master_;
+  TeleoperationGains gains_;
+  double period_;
+  int substeps_;
+  RobotData master_data_;
+  VirtualWorld world_;
+  ParamVec theta_m_;
+  TrackingState track_m_, track_v_;
+  TrackingTerms terms_m_, terms_v_;
+  ContactMode contact_kind_ = ContactMode::Free;  // the kind whose terms are blending
+  Eigen::Vector3d momentum_h_, momentum_v_;         // Δp_h, Δp_v (3.19)
+  VecK lambda_integral_;                            // ∫(λ_m + λ_v), (3.26)
+  VecN bias_m_, zero_n_, velocity_gain_v_;
+  Eigen::Matrix<double, kMaxConstraints, kMaxConstraints> aat_scratch_;
+  Wrench wrench_filtered_ = Wrench::Zero();
+  TickOutput out_;
+};
+
+}  // namespace needle::haptics

@@ -1,0 +1,57 @@
+// The master device in the loop (2.20), integrated at a finer step than the controller: motors on
+// the first `actuated_joints` joints only, their torques scaled down together when the force they
+// produce at the tip would exceed the device's limit, and the operator's hand (operator_model.hpp)
+// attached at the tip. Default limit: 3.3 N, the "maximum exertable force at nominal position" of
+// the Geomagic Touch specification sheet (3D Systems).
+#pragma once
+
+#include "haptics/model/robot_data.hpp"
+#include "haptics/sim/integrator.hpp"
+#include "haptics/sim/operator_model.hpp"
+
+namespace needle::haptics {
+
+struct DeviceParams {
+  double force_limit_N = 3.3;
+  int actuated_joints = 3;
+};
+
+class MasterPlant {
+ public:
+  MasterPlant(const RobotModel& model, DeviceParams device, HandImpedance hand, Integrator integrator, int substeps);
+
+  void reset(const VecN& q, const VecN& dq);
+  // Applies the command for `period` from time t while the hand follows `trajectory`.
+  void advance(const VecN& tau_command, const HandTrajectory& trajectory, double t, double period);
+
+  const VecN& q() const { return q_; }
+  const VecN& dq() const { return dq_; }
+  const RobotData& data() const { return data_; }
+  const VecN& applied_torque() const { return applied_; }
+  bool saturated() const { return saturated_; }
+  // What a sensor between hand and stylus feels: impedance wrench minus the hand's inertial force.
+  const Wrench& hand_wrench() const { return hand_wrench_; }
+  // Device plus hand: ½q̇ᵀHq̇ + V + ½M|v_tip|² + ½I|ω_tip|².
+  double energy() const;
+  // Work done on it by motors and hand impedance, minus joint damping, since reset.
+  double external_work() const { return work_; }
+
+ private:
+  void saturate(const VecN& tau_command);
+  void acceleration(const VecN& q, const VecN& dq, double t, VecN& ddq);
+
+  const RobotModel& model_;
+  DeviceParams device_;
+  HandImpedance hand_;
+  Integrator integrator_;
+  int substeps_;
+  RobotData data_;
+  const HandTrajectory* trajectory_ = nullptr;
+  VecN q_, dq_, applied_, ddq_, damping_;
+  MatN h_eff_;
+  Wrench impedance_ = Wrench::Zero(), hand_wrench_ = Wrench::Zero();
+  bool saturated_ = false;
+  double work_ = 0.0;
+};
+
+}  // namespace needle::haptics

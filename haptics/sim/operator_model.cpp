@@ -1,0 +1,51 @@
+#include "haptics/sim/operator_model.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace needle::haptics {
+
+HandTrajectory::HandTrajectory(std::vector<HandWaypoint> waypoints) : waypoints_(std::move(waypoints)) {
+  if (waypoints_.empty()) throw std::invalid_argument("hand trajectory needs at least one waypoint");
+  for (size_t i = 0; i < waypoints_.size(); ++i) {
+    if (!(waypoints_[i].direction.norm() > 1e-9)) throw std::invalid_argument("waypoint " + std::to_string(i) + ": direction must be nonzero");
+    waypoints_[i].direction.normalize();
+    if (i > 0 && !(waypoints_[i].t > waypoints_[i - 1].t))
+      throw std::invalid_argument("waypoint " + std::to_string(i) + ": times must strictly increase");
+  }
+}
+
+HandTarget HandTrajectory::at(double t) const {
+  size_t i = 0;
+  while (i + 1 < waypoints_.size() && waypoints_[i + 1].t <= t) ++i;
+  const HandWaypoint& a = waypoints_[i];
+  HandTarget out{a.position, Eigen::Vector3d::Zero(), a.direction, Eigen::Vector3d::Zero()};
+  if (i + 1 == waypoints_.size() || t <= a.t) return out;
+  const HandWaypoint& b = waypoints_[i + 1];
+  const double span = b.t - a.t, u = (t - a.t) / span;
+  const double s = u * u * u * (10 - 15 * u + 6 * u * u);      // minimum jerk
+  const double s_dot = 30 * u * u * (1 - u) * (1 - u) / span;
+  out.position = a.position + s * (b.position - a.position);
+  out.velocity = s_dot * (b.position - a.position);
+  const Eigen::Vector3d axis = a.direction.cross(b.direction);
+  const double angle = std::atan2(axis.norm(), a.direction.dot(b.direction));
+  if (angle > 1e-12) {
+    const Eigen::Vector3d unit = axis.normalized();
+    out.direction = Eigen::AngleAxisd(s * angle, unit) * a.direction;
+    out.omega = s_dot * angle * unit;
+  }
+  return out;
+}
+
+Wrench hand_impedance_wrench(const HandImpedance& hand, const HandTarget& target, const Eigen::Isometry3d& tip,
+                             const Eigen::Matrix<double, 6, 1>& tip_twist) {
+  Wrench w;
+  w.head<3>() = hand.stiffness_N_per_m * (target.position - tip.translation()) +
+                hand.damping_Ns_per_m * (target.velocity - tip_twist.head<3>());
+  // Turns the stylus axis x₅ toward the target direction (small-angle spring on sin θ).
+  w.tail<3>() = hand.rotational_stiffness() * tip.linear().col(0).cross(target.direction) +
+                hand.rotational_damping() * (target.omega - tip_twist.tail<3>());
+  return w;
+}
+
+}  // namespace needle::haptics

@@ -1,0 +1,45 @@
+// A closed-loop experiment as data (assets/scenarios/*.json): robots, scene, gains, operator,
+// sensor, device and run length. Loading converts world coordinates to the robots' base frame.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "haptics/control/teleoperation.hpp"
+#include "haptics/model/robot_model.hpp"
+#include "haptics/sim/force_sensor.hpp"
+#include "haptics/sim/integrator.hpp"
+#include "haptics/sim/master_plant.hpp"
+#include "haptics/sim/operator_model.hpp"
+
+namespace needle::haptics {
+
+// Messages start with the file and name the key and what was expected.
+struct ScenarioError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Scenario {
+  std::string name;
+  std::string source;  // file it came from
+  RobotModel master, virt;
+  Eigen::Vector3d base_in_world = Eigen::Vector3d::Zero();  // both robots share this base
+  double period_s = 0.002;                                  // thesis: T = 2 ms
+  double duration_s = 1.0;
+  int master_substeps = 8;
+  int virtual_substeps = 4;
+  Integrator master_integrator = Integrator::SemiImplicitEuler;
+  TeleoperationGains gains;
+  Scene scene;  // base frame
+  VecN q0;
+  HandImpedance hand;
+  HandTrajectory trajectory;  // base frame
+  ForceSensorParams sensor;
+  DeviceParams device;
+  double energy_bound_J = 5.0;         // a run whose total energy leaves ±bound is a fault
+  double divergence_bound_m = 0.1;     // master/virtual tip distance beyond this is a fault
+};
+
+Scenario load_scenario(const std::string& path);
+
+}  // namespace needle::haptics
