@@ -54,6 +54,13 @@ const double* displacement_coordinates(const DeviceReading& r, CommandSpace spac
 
 }  // namespace
 
+SafetyLimits safety_limits_for(const DeviceCapabilities& capabilities) {
+  SafetyLimits limits;
+  limits.max_force_n = capabilities.max_force_n;
+  std::copy(capabilities.max_torque_nm, capabilities.max_torque_nm + kMaxDeviceJoints, limits.max_torque_nm);
+  return limits;
+}
+
 SafetyMonitor::SafetyMonitor(const SafetyLimits& limits) : limits_(limits) {}
 
 void SafetyMonitor::reset() noexcept {

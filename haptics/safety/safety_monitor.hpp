@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "haptics/devices/device_io.hpp"
+#include "haptics/devices/haptic_device.hpp"
 #include "haptics/realtime/tool_snapshot.hpp"
 #include "haptics/safety/fault_cause.hpp"
 
@@ -24,6 +25,9 @@ struct SafetyLimits {
   uint32_t missed_deadline_streak = 10;
   double max_generated_energy_j = 1.0;               // passivity observer bound
 };
+
+// The device's own limits with the default fault thresholds.
+SafetyLimits safety_limits_for(const DeviceCapabilities& capabilities);
 
 class SafetyMonitor {
  public:

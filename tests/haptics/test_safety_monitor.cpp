@@ -230,3 +230,22 @@ TEST(SafetyFault, PassiveSpringOnlyShowsTheZeroOrderHoldLeak) {
 
 }  // namespace
 }  // namespace needle::haptics
+
+namespace needle::haptics {
+namespace {
+
+TEST(SafetyLimitsFor, TakesTheDevicesForceAndTorqueLimits) {
+  DeviceCapabilities caps;
+  caps.max_force_n = 9.0;
+  caps.max_torque_nm[0] = 3.0;
+  caps.max_torque_nm[2] = 1.5;
+  const SafetyLimits l = safety_limits_for(caps);
+  EXPECT_EQ(l.max_force_n, 9.0);
+  EXPECT_EQ(l.max_torque_nm[0], 3.0);
+  EXPECT_EQ(l.max_torque_nm[1], 0.0);
+  EXPECT_EQ(l.max_torque_nm[2], 1.5);
+  EXPECT_EQ(l.ramp_ticks, SafetyLimits{}.ramp_ticks);
+}
+
+}  // namespace
+}  // namespace needle::haptics
