@@ -493,6 +493,7 @@ void SceneRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, uint
   };
   draw_list(opaque, 0);
   draw_list(blended, 1);
+  if (params.overlay) params.overlay(cmd);
   vkCmdEndRenderPass(cmd);
 }
 

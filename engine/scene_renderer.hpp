@@ -6,6 +6,7 @@
 #include <vulkan/vulkan.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -30,6 +31,8 @@ struct FrameParams {
   Lights lights;
   glm::vec3 background{0.0f};
   std::vector<DrawItem> items;
+  // Recorded last inside the scene's render pass (the UI pass), when set.
+  std::function<void(VkCommandBuffer)> overlay;
 };
 
 struct RendererSettings {
@@ -55,6 +58,8 @@ class SceneRenderer {
   void wait_idle() const;
 
   VkSampleCountFlagBits samples() const { return samples_; }
+  // For passes drawn inside the scene's render pass (the UI pass).
+  VkRenderPass render_pass() const { return render_pass_; }
 
  private:
   static constexpr size_t kFramesInFlight = 2;

@@ -67,7 +67,7 @@ TEST(CliRun, WindowUnderXvfbPresentsWhatHeadlessRenders) {
   auto scene = quoted(kAssets / "scenes" / "thesis_sphere.json");
   ProcessResult window = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' " +
                                      std::string(NEEDLE_SIM_EXE) + " run --scene " + scene +
-                                     " --size 320x240 --msaa 1 --frames 3 --screenshot " + quoted(shot));
+                                     " --size 320x240 --msaa 1 --no-hud --frames 3 --screenshot " + quoted(shot));
   ASSERT_EQ(window.exit_code, 0) << window.output;
   EXPECT_NE(window.output.find("presented 3 frames"), std::string::npos) << window.output;
   EXPECT_EQ(window.output.find("Vulkan validation"), std::string::npos) << window.output;

@@ -7,9 +7,11 @@
 #include "command.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/offscreen.hpp"
+#include "engine/ui_pass.hpp"
 #include "engine/vulkan_context.hpp"
 #include "engine/window.hpp"
 #include "engine/window_target.hpp"
+#include "ui/status_panel.hpp"
 
 namespace needle::cli {
 namespace {
@@ -20,6 +22,7 @@ struct RunOptions {
   Size2 size;
   long frames = 0;  // window: close after this many frames (0: when the user closes it)
   std::optional<int> msaa;
+  bool hud = true;
   std::optional<std::string> screenshot;
 };
 
@@ -36,13 +39,24 @@ int run_window(const engine::Scene& scene, const RunOptions& options) {
   engine::SceneRenderer renderer(context, target,
                                  {static_cast<VkSampleCountFlagBits>(options.msaa.value_or(cpu_device ? 1 : 4))});
   engine::GpuScene gpu_scene(renderer, scene);
+  std::optional<engine::UiPass> ui_pass;
+  if (options.hud) ui_pass.emplace(context, renderer, &window);
+  ui::FrameClock clock;
 
   long drawn = 0;
   while (!window.should_close()) {
     window.poll_events();
     bool last = options.frames > 0 && drawn + 1 == options.frames;
+    engine::FrameParams params = gpu_scene.frame_params();
+    float dt = clock.tick();
+    if (ui_pass) {
+      ui_pass->begin_frame(target.extent(), dt);
+      ui::draw_status_panel({context.device_description(), options.scene.filename().string(),
+                             int(renderer.samples()), clock.mean_frame_ms()});
+      params.overlay = ui_pass->end_frame();
+    }
     engine::RgbaImage shot;
-    if (!renderer.draw(target, gpu_scene.frame_params(), last && options.screenshot ? &shot : nullptr)) {
+    if (!renderer.draw(target, params, last && options.screenshot ? &shot : nullptr)) {
       window.wait_events();  // minimised or resizing: nothing to draw into
       continue;
     }
@@ -83,6 +97,7 @@ int run_run(ArgList& args) {
   options.screenshot = args.value("--screenshot");
   if (auto msaa = args.value("--msaa")) options.msaa = parse_msaa(*msaa, "--msaa");
   bool headless = args.flag("--headless");
+  options.hud = !args.flag("--no-hud");
   args.finish();
   if (options.screenshot && options.frames == 0)
     throw UsageError("--screenshot needs --frames N (the frame to capture)");
@@ -102,7 +117,8 @@ const CommandRegistrar reg{{"run",
                             "  --size WxH         window or image size (default 1280x720)\n"
                             "  --msaa N           MSAA samples (default 4; 1 in a window on a CPU device)\n"
                             "  --frames N         window: close after N frames\n"
-                            "  --screenshot FILE  window: save frame N as presented (needs --frames)",
+                            "  --screenshot FILE  window: save frame N as presented (needs --frames)\n"
+                            "  --no-hud           window: no status panel",
                             run_run}};
 
 }  // namespace
