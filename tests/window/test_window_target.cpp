@@ -1,0 +1,70 @@
+// The swapchain target under Xvfb: frames are presented, a resize recreates the swapchain at
+// the new size (new generation, new framebuffers), and none of it draws a validation message.
+#include <GLFW/glfw3.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+#include "engine/gpu_scene.hpp"
+#include "engine/vulkan_context.hpp"
+#include "engine/window.hpp"
+#include "engine/window_target.hpp"
+
+namespace needle::test {
+namespace {
+
+// Draws until a frame is accepted (a resize may make the target skip some), capturing it.
+engine::RgbaImage draw_until_presented(engine::SceneRenderer& renderer, engine::WindowTarget& target,
+                                       engine::Window& window, const engine::FrameParams& params) {
+  engine::RgbaImage image;
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    window.poll_events();
+    if (renderer.draw(target, params, &image)) return image;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ADD_FAILURE() << "no frame accepted in 100 attempts";
+  return image;
+}
+
+TEST(WindowTarget, PresentsAndFollowsAResize) {
+  ASSERT_TRUE(engine::Window::display_available()) << "run under xvfb-run";
+  engine::Window window("needle-sim test", 320, 240);
+  engine::ContextOptions options;
+  options.validation = true;
+  options.announce_device = false;
+  options.instance_extensions = engine::Window::required_instance_extensions();
+  options.make_surface = [&](VkInstance instance) { return window.create_surface(instance); };
+  engine::VulkanContext context(options);
+  {
+    engine::WindowTarget target(context, window);
+    engine::SceneRenderer renderer(context, target, {VK_SAMPLE_COUNT_1_BIT});
+    engine::Scene view;
+    view.background = {1.0f, 0.0f, 0.0f};
+    engine::GpuScene scene(renderer, engine::Model{}, view);
+
+    engine::RgbaImage first = draw_until_presented(renderer, target, window, scene.frame_params());
+    EXPECT_EQ(first.width, 320u);
+    EXPECT_EQ(first.height, 240u);
+    EXPECT_EQ(first.at(10, 10)[0], 255);  // red background, channels swizzled back from BGRA
+    EXPECT_EQ(first.at(10, 10)[2], 0);
+    const uint64_t generation = target.generation();
+
+    glfwSetWindowSize(window.handle(), 400, 300);
+    for (int i = 0; i < 100 && window.framebuffer_extent().width != 400; ++i) {
+      window.poll_events();
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    ASSERT_EQ(window.framebuffer_extent().width, 400u);
+    engine::RgbaImage second = draw_until_presented(renderer, target, window, scene.frame_params());
+    EXPECT_EQ(second.width, 400u);
+    EXPECT_EQ(second.height, 300u);
+    EXPECT_GT(target.generation(), generation);
+    for (int i = 0; i < 5; ++i) draw_until_presented(renderer, target, window, scene.frame_params());
+    renderer.wait_idle();
+  }
+  for (const auto& m : context.validation_messages()) ADD_FAILURE() << "Vulkan validation " << m;
+}
+
+}  // namespace
+}  // namespace needle::test
