@@ -9,20 +9,25 @@
 
 namespace needle::engine {
 
+GpuPrimitive upload_primitive(const VulkanContext& context, const Primitive& p) {
+  GpuPrimitive gpu;
+  gpu.vertex_count = static_cast<uint32_t>(p.vertices.size());
+  gpu.index_count = static_cast<uint32_t>(p.indices.size());
+  if (gpu.vertex_count && gpu.index_count) {
+    gpu.vertices = GpuBuffer::device_local_with_data(
+        context, p.vertices.data(), p.vertices.size() * sizeof(MeshVertex),
+        VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    gpu.indices = GpuBuffer::device_local_with_data(context, p.indices.data(), p.indices.size() * sizeof(uint32_t),
+                                                    VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  }
+  return gpu;
+}
+
 GpuModel::GpuModel(const VulkanContext& context, const Model& model, const MaterialBinding& binding)
     : device_(context.device()), instances_(model.instances), materials_(model.materials), bounds_(model.world_bounds) {
   materials_.push_back(Material{});  // glTF's default material, for primitives without one
   for (const Primitive& p : model.primitives) {
-    GpuPrimitive gpu;
-    gpu.vertex_count = static_cast<uint32_t>(p.vertices.size());
-    gpu.index_count = static_cast<uint32_t>(p.indices.size());
-    if (gpu.vertex_count && gpu.index_count) {
-      gpu.vertices = GpuBuffer::device_local_with_data(context, p.vertices.data(), p.vertices.size() * sizeof(MeshVertex),
-                                                       VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-      gpu.indices = GpuBuffer::device_local_with_data(context, p.indices.data(), p.indices.size() * sizeof(uint32_t),
-                                                      VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-    }
-    primitives_.push_back(std::move(gpu));
+    primitives_.push_back(upload_primitive(context, p));
     primitive_material_.push_back(p.material >= 0 ? p.material : int(materials_.size()) - 1);
   }
   for (const Texture& t : model.textures) textures_.push_back(GpuImage::texture(context, t));

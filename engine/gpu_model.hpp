@@ -1,6 +1,6 @@
 // A Model uploaded to the GPU: vertex and index buffers per primitive, textures, and one
-// material descriptor set per material. Vertex buffers are also storage buffers so a compute
-// pass may rewrite them in place (tissue deformation).
+// material descriptor set per material. Vertex buffers are also storage buffers, so a compute
+// pass may rewrite them in place (tissue deformation), and transfer sources, so tests can read them.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -29,6 +29,9 @@ struct GpuPrimitive {
   uint32_t vertex_count = 0;
   uint32_t index_count = 0;
 };
+
+// Uploads one primitive's vertices and indices to device-local buffers.
+GpuPrimitive upload_primitive(const VulkanContext& context, const Primitive& primitive);
 
 class GpuModel {
  public:

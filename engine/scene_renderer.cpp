@@ -427,6 +427,7 @@ RgbaImage SceneRenderer::read_capture(const RenderTarget& target) const {
 }
 
 void SceneRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, uint32_t image, const FrameParams& params) {
+  if (params.before_pass) params.before_pass(cmd);
   VkExtent2D extent = target.extent();
   std::array<VkClearValue, 3> clears{};
   clears[0].color = {{params.background.r, params.background.g, params.background.b, 1.0f}};

@@ -31,6 +31,8 @@ struct FrameParams {
   Lights lights;
   glm::vec3 background{0.0f};
   std::vector<DrawItem> items;
+  // Recorded before the scene's render pass (compute passes such as tissue deformation), when set.
+  std::function<void(VkCommandBuffer)> before_pass;
   // Recorded last inside the scene's render pass (the UI pass), when set.
   std::function<void(VkCommandBuffer)> overlay;
 };
