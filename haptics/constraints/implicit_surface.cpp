@@ -87,10 +87,10 @@ SurfaceMotion surface_motion(const SurfaceSample& s, const Eigen::Vector3d& velo
   return {s.phi, s.gradient.dot(velocity), s.gradient.dot(acceleration) + velocity.dot(s.hessian * velocity)};
 }
 
-ContactState classify_contact(double phi, double tolerance) {
-  if (phi > tolerance) return ContactState::Free;
-  if (phi >= -tolerance) return ContactState::OnSurface;
-  return ContactState::Penetrating;
+SurfaceContact classify_contact(double phi, double tolerance) {
+  if (phi > tolerance) return SurfaceContact::Free;
+  if (phi >= -tolerance) return SurfaceContact::OnSurface;
+  return SurfaceContact::Penetrating;
 }
 
 }  // namespace needle::haptics

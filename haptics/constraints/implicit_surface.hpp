@@ -59,7 +59,7 @@ struct SurfaceMotion {
 SurfaceMotion surface_motion(const SurfaceSample& s, const Eigen::Vector3d& velocity, const Eigen::Vector3d& acceleration);
 
 // Thesis section 3.1: φ > 0 free, φ = 0 on the surface, φ < 0 constraint violated.
-enum class ContactState { Free, OnSurface, Penetrating };
-ContactState classify_contact(double phi, double tolerance);
+enum class SurfaceContact { Free, OnSurface, Penetrating };
+SurfaceContact classify_contact(double phi, double tolerance);
 
 }  // namespace needle::haptics

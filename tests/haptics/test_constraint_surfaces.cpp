@@ -66,9 +66,9 @@ TEST(ConstraintSurfaces, SecondDerivativeAlongAPathMatchesFiniteDifferences) {
 }
 
 TEST(ConstraintSurfaces, ContactClassificationFollowsTheSignOfPhi) {
-  EXPECT_EQ(classify_contact(1e-3, 1e-6), ContactState::Free);
-  EXPECT_EQ(classify_contact(5e-7, 1e-6), ContactState::OnSurface);
-  EXPECT_EQ(classify_contact(-1e-3, 1e-6), ContactState::Penetrating);
+  EXPECT_EQ(classify_contact(1e-3, 1e-6), SurfaceContact::Free);
+  EXPECT_EQ(classify_contact(5e-7, 1e-6), SurfaceContact::OnSurface);
+  EXPECT_EQ(classify_contact(-1e-3, 1e-6), SurfaceContact::Penetrating);
 }
 
 TEST(ConstraintSurfaces, GpmMultiplierIsPrintedFormulaWithThesisGains) {
