@@ -17,10 +17,13 @@ struct DeviceReading {
   uint32_t connected = 0;
   uint32_t joint_count = 0;
   uint32_t buttons = 0;
-  uint32_t has_sensed_force = 0;
+  uint32_t has_sensed_force = 0;     // sensed_force_n and sensed_torque_nm are valid
+  uint32_t has_joint_velocity = 0;   // joint_velocity_rad_s is valid (else the step differentiates)
   double position_m[3] = {0.0, 0.0, 0.0};  // handle position, device frame
   double joint_rad[kMaxDeviceJoints] = {};
-  double sensed_force_n[3] = {0.0, 0.0, 0.0};
+  double joint_velocity_rad_s[kMaxDeviceJoints] = {};
+  double sensed_force_n[3] = {0.0, 0.0, 0.0};   // operator on the handle, device frame
+  double sensed_torque_nm[3] = {0.0, 0.0, 0.0};
 };
 
 struct DeviceCommand {

@@ -18,8 +18,8 @@ template <typename Visitor>
 void visit_record(Visitor& v, TickSample& s) {
   v(s.tick), v(s.time_ns), v(s.period_ns), v(s.compute_ns);
   DeviceReading& r = s.reading;
-  v(r.sequence), v(r.connected), v(r.joint_count), v(r.buttons), v(r.has_sensed_force);
-  v(r.position_m), v(r.joint_rad), v(r.sensed_force_n);
+  v(r.sequence), v(r.connected), v(r.joint_count), v(r.buttons), v(r.has_sensed_force), v(r.has_joint_velocity);
+  v(r.position_m), v(r.joint_rad), v(r.joint_velocity_rad_s), v(r.sensed_force_n), v(r.sensed_torque_nm);
   DeviceCommand& c = s.command;
   v(c.space), v(c.joint_count), v(c.force_n), v(c.torque_nm);
   ToolSnapshot& t = s.state;

@@ -16,8 +16,9 @@ bool all_finite(const double* values, int n) noexcept {
 int joints_of(uint32_t count) noexcept { return static_cast<int>(std::min<uint32_t>(count, kMaxDeviceJoints)); }
 
 bool reading_finite(const DeviceReading& r) noexcept {
-  return all_finite(r.position_m, 3) && all_finite(r.joint_rad, joints_of(r.joint_count)) &&
-         all_finite(r.sensed_force_n, 3);
+  const int joints = joints_of(r.joint_count);
+  return all_finite(r.position_m, 3) && all_finite(r.joint_rad, joints) && all_finite(r.joint_velocity_rad_s, joints) &&
+         all_finite(r.sensed_force_n, 3) && all_finite(r.sensed_torque_nm, 3);
 }
 
 bool state_finite(const ToolSnapshot& s) noexcept {

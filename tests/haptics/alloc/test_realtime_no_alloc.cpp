@@ -9,7 +9,9 @@
 #include <thread>
 
 #include "haptics/realtime/haptic_loop.hpp"
+#include "haptics/devices/sim_device.hpp"
 #include "haptics/realtime/servo_tick.hpp"
+#include "haptics/realtime/teleoperation_step.hpp"
 #include "test_realtime_fakes.hpp"
 
 namespace {
@@ -62,6 +64,22 @@ TEST(RealtimeNoAlloc, ServoTickAllocatesNothingOverManyTicks) {
   for (uint64_t k = 0; k < 100000; ++k) tick.run(TickTiming{k, 0, 1000000, false}, 0.001);
   EXPECT_EQ(g_allocations.load(), before);
   EXPECT_GT(samples.overflowed(), 0u);
+}
+
+TEST(RealtimeNoAlloc, SimDeviceWithTheControllerAllocatesNothing) {
+  const Scenario scenario = load_scenario(std::string(NEEDLE_SOURCE_DIR) + "/assets/scenarios/nonholonomic_needle.json");
+  SimDevice device(scenario, scenario.period_s);
+  device.open();
+  TeleoperationStep step(scenario, scenario.period_s);
+  SafetyMonitor safety(safety_limits_for(device.capabilities()));
+  SeqLock<ToolSnapshot> snapshots;
+  SpscRing<TickSample> samples(1024);
+  ServoTick tick(device, safety, snapshots, samples);
+  tick.set_step(&step);
+  const uint64_t before = g_allocations.load();
+  for (uint64_t k = 0; k < 6000; ++k) tick.run(TickTiming{k, 0, 2000000, false}, scenario.period_s);  // 12 s: into the tissue
+  EXPECT_EQ(g_allocations.load(), before);
+  EXPECT_EQ(safety.fault(), FaultCause::kNone);
 }
 
 TEST(RealtimeNoAlloc, LoopThreadAllocatesNothingWhileTicking) {
