@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "haptics/devices/sim_device.hpp"
-#include "haptics/realtime/servo_tick.hpp"
-#include "haptics/realtime/teleoperation_step.hpp"
+#include "haptics/realtime/sim_session.hpp"
 #include "haptics/sim/closed_loop.hpp"
+#include "test_realtime_fakes.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -21,26 +20,21 @@ void expect_loop_reproduces_closed_loop(const char* scenario_file, double second
   const SimResult reference = run_closed_loop(scenario, true);
   ASSERT_TRUE(reference.summary.faults.empty());
 
-  SimDevice device(scenario, scenario.period_s);
-  device.open();
-  TeleoperationStep step(scenario, scenario.period_s);
-  SafetyMonitor safety(safety_limits_for(device.capabilities()));
-  SeqLock<ToolSnapshot> snapshots;
-  SpscRing<TickSample> samples(16);
-  ServoTick tick(device, safety, snapshots, samples);
-  tick.set_step(&step);
+  SimSession sim(scenario, 1.0 / scenario.period_s);
+  sim.device().open();
+  testing::TickRig rig(sim.device(), sim.step(), safety_limits_for(sim.device().capabilities()), 16);
 
   const int n = scenario.master.dof();
   const int actuated = scenario.device.actuated_joints;
   int mismatches = 0;
   bool touched = false;
   for (std::size_t k = 0; k < reference.ticks.size(); ++k) {
-    tick.run(TickTiming{k, 0, 0, false}, scenario.period_s);
-    const TickSample& s = tick.last_sample();
+    rig.run(k, 1, scenario.period_s);
+    const TickSample& s = rig.tick.last_sample();
     const TickRecord& r = reference.ticks[k];
     for (int j = 0; j < n; ++j) {
       mismatches += s.state.virtual_q[j] != r.q_v[j];
-      mismatches += device.plant().q()[j] != r.q_m[j];
+      mismatches += sim.device().plant().q()[j] != r.q_m[j];
       mismatches += s.command.torque_nm[j] != (j < actuated ? r.tau_m[j] : 0.0);
     }
     for (int i = 0; i < 3; ++i) mismatches += s.state.needle_tip_m[i] != r.x_v[i];
@@ -48,7 +42,7 @@ void expect_loop_reproduces_closed_loop(const char* scenario_file, double second
     ASSERT_EQ(mismatches, 0) << "first difference at tick " << k;
   }
   EXPECT_TRUE(touched) << "the run reached the constraint";
-  EXPECT_EQ(safety.fault(), FaultCause::kNone);
+  EXPECT_EQ(rig.safety.fault(), FaultCause::kNone);
 }
 
 TEST(DeviceSim, LoopTickReproducesTheClosedLoopSimulationOnTheSphere) {
@@ -60,8 +54,9 @@ TEST(DeviceSim, LoopTickReproducesTheClosedLoopSimulationInTissue) {
 }
 
 TEST(DeviceSim, ReadsJointStateAndSensedWrench) {
-  const Scenario scenario = load_scenario(std::string(NEEDLE_SOURCE_DIR) + "/assets/scenarios/holonomic_sphere.json");
-  SimDevice device(scenario, scenario.period_s);
+  SimSession sim(std::string(NEEDLE_SOURCE_DIR) + "/assets/scenarios/holonomic_sphere.json", 1000.0);
+  const Scenario& scenario = sim.scenario();
+  SimDevice& device = sim.device();
   device.open();
   DeviceReading r;
   device.read(r);

@@ -5,6 +5,7 @@
 
 #include "haptics/devices/haptic_device.hpp"
 #include "haptics/realtime/servo_step.hpp"
+#include "haptics/realtime/servo_tick.hpp"
 
 namespace needle::haptics::testing {
 
@@ -82,6 +83,25 @@ class SpringStep : public ServoStep {
 
   double x[3] = {0.0, 0.0, 0.1};
   double v[3] = {0.0, 0.0, 0.0};
+};
+
+// A ServoTick with everything it hands data to: one device, one step, one safety monitor.
+struct TickRig {
+  TickRig(HapticDevice& device, ServoStep& step, const SafetyLimits& limits, std::size_t ring = 1024)
+      : safety(limits), samples(ring), tick(device, safety, snapshots, samples) {
+    tick.set_step(&step);
+  }
+  // Ticks k = first .. first + count - 1 at period dt, stamped as if on time.
+  void run(uint64_t first, uint64_t count, double dt_s) {
+    const auto period_ns = static_cast<uint64_t>(dt_s * 1e9 + 0.5);
+    for (uint64_t k = first; k < first + count; ++k)
+      tick.run(TickTiming{k, static_cast<int64_t>(k * period_ns), period_ns, false}, dt_s);
+  }
+
+  SafetyMonitor safety;
+  SeqLock<ToolSnapshot> snapshots;
+  SpscRing<TickSample> samples;
+  ServoTick tick;
 };
 
 }  // namespace needle::haptics::testing

@@ -9,9 +9,7 @@
 #include <thread>
 
 #include "haptics/realtime/haptic_loop.hpp"
-#include "haptics/devices/sim_device.hpp"
-#include "haptics/realtime/servo_tick.hpp"
-#include "haptics/realtime/teleoperation_step.hpp"
+#include "haptics/realtime/sim_session.hpp"
 #include "test_realtime_fakes.hpp"
 
 namespace {
@@ -40,6 +38,7 @@ namespace {
 
 using testing::ScriptedDevice;
 using testing::SpringStep;
+using testing::TickRig;
 
 TEST(RealtimeNoAlloc, TheCounterSeesAnAllocation) {
   const uint64_t before = g_allocations.load();
@@ -54,32 +53,21 @@ TEST(RealtimeNoAlloc, ServoTickAllocatesNothingOverManyTicks) {
   SpringStep step;
   SafetyLimits limits;
   limits.max_force_n = 5.0;
-  SafetyMonitor safety(limits);
-  SeqLock<ToolSnapshot> snapshots;
-  SpscRing<TickSample> samples(1024);  // overflows after 1024 ticks: the drop path is exercised too
-  ServoTick tick(device, safety, snapshots, samples);
-  tick.set_step(&step);
-
+  TickRig rig(device, step, limits);  // the ring overflows after 1024 ticks: the drop path runs too
   const uint64_t before = g_allocations.load();
-  for (uint64_t k = 0; k < 100000; ++k) tick.run(TickTiming{k, 0, 1000000, false}, 0.001);
+  rig.run(0, 100000, 0.001);
   EXPECT_EQ(g_allocations.load(), before);
-  EXPECT_GT(samples.overflowed(), 0u);
+  EXPECT_GT(rig.samples.overflowed(), 0u);
 }
 
 TEST(RealtimeNoAlloc, SimDeviceWithTheControllerAllocatesNothing) {
-  const Scenario scenario = load_scenario(std::string(NEEDLE_SOURCE_DIR) + "/assets/scenarios/nonholonomic_needle.json");
-  SimDevice device(scenario, scenario.period_s);
-  device.open();
-  TeleoperationStep step(scenario, scenario.period_s);
-  SafetyMonitor safety(safety_limits_for(device.capabilities()));
-  SeqLock<ToolSnapshot> snapshots;
-  SpscRing<TickSample> samples(1024);
-  ServoTick tick(device, safety, snapshots, samples);
-  tick.set_step(&step);
+  SimSession sim(std::string(NEEDLE_SOURCE_DIR) + "/assets/scenarios/nonholonomic_needle.json", 500.0);
+  sim.device().open();
+  TickRig rig(sim.device(), sim.step(), safety_limits_for(sim.device().capabilities()));
   const uint64_t before = g_allocations.load();
-  for (uint64_t k = 0; k < 6000; ++k) tick.run(TickTiming{k, 0, 2000000, false}, scenario.period_s);  // 12 s: into the tissue
+  rig.run(0, 6000, 0.002);  // 12 s: into the tissue
   EXPECT_EQ(g_allocations.load(), before);
-  EXPECT_EQ(safety.fault(), FaultCause::kNone);
+  EXPECT_EQ(rig.safety.fault(), FaultCause::kNone);
 }
 
 TEST(RealtimeNoAlloc, LoopThreadAllocatesNothingWhileTicking) {
