@@ -1,64 +1,22 @@
-// The servo tick allocates nothing: the C allocator itself is interposed (glibc allows the
-// executable to define malloc and friends; these forward to __libc_*), so operator new, Eigen's
-// aligned_malloc and anything else that reaches the heap is counted while ticks run.
+// The servo tick allocates nothing: every call into the C allocator is counted while ticks run
+// (haptics/sim/allocation_counter.hpp), so operator new and Eigen's heap storage are both seen.
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
-#include <atomic>
 #include <functional>
 #include <vector>
 
+#include "haptics/sim/allocation_counter.hpp"
 #include "haptics/sim/tick_workload.hpp"
 #include "sim_fixtures.hpp"
-
-namespace {
-std::atomic<long> g_allocations{0};
-std::atomic<bool> g_counting{false};
-void count() {
-  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
-}
-}  // namespace
-
-extern "C" {
-void* __libc_malloc(size_t);
-void* __libc_calloc(size_t, size_t);
-void* __libc_realloc(void*, size_t);
-void* __libc_memalign(size_t, size_t);
-void __libc_free(void*);
-
-void* malloc(size_t size) {
-  count();
-  return __libc_malloc(size);
-}
-void* calloc(size_t n, size_t size) {
-  count();
-  return __libc_calloc(n, size);
-}
-void* realloc(void* p, size_t size) {
-  count();
-  return __libc_realloc(p, size);
-}
-void* memalign(size_t alignment, size_t size) {
-  count();
-  return __libc_memalign(alignment, size);
-}
-void* aligned_alloc(size_t alignment, size_t size) { return memalign(alignment, size); }
-int posix_memalign(void** out, size_t alignment, size_t size) {
-  *out = memalign(alignment, size);
-  return *out ? 0 : 12;  // ENOMEM
-}
-void free(void* p) { __libc_free(p); }
-}
 
 namespace needle::haptics {
 namespace {
 
 long allocations_during(const std::function<void()>& work) {
-  g_allocations = 0;
-  g_counting = true;
+  allocation_counter::start();
   work();
-  g_counting = false;
-  return g_allocations.load();
+  return allocation_counter::stop();
 }
 
 TEST(BenchTickAllocations, CounterSeesAllocations) {
