@@ -31,7 +31,8 @@ std::unique_ptr<HapticDevice> make_device(const std::string& spec, const DeviceO
     if (spec.size() == 7) throw DeviceError("device replay:: expected a recording file after replay:");
     return std::make_unique<ReplayDevice>(spec.substr(7));
   }
-  if (spec == "sim") throw DeviceError("device sim: built by the app from the scene's master model, not by make_device");
+  if (spec == "sim" || starts_with(spec, "sim:"))
+    throw DeviceError("device " + spec + ": built with its controller step from a scenario by haptics::SimSession, not by make_device");
   throw DeviceError("device " + spec + ": unknown, " + kKnown);
 }
 
@@ -52,7 +53,8 @@ std::vector<BackendStatus> list_backends() {
        "and after each power-up --firmware FILE: Novint's firmware image (not shipped, its licence forbids it)"},
       {"mouse", "available", "a window (needle-sim run): cursor moves the tool, scroll sets depth; forces shown, not felt"},
       {"replay:FILE", "available", "a session recording written by an earlier run"},
-      {"sim", "built by the app from the scene (not by this catalog)", "nothing: the master model and a simulated operator step with the loop"},
+      {"sim:SCENARIO", "available",
+       "a scenario file (assets/scenarios/*.json): the master model and a simulated operator step with the loop"},
   };
 }
 

@@ -15,7 +15,7 @@ TEST(DeviceCatalog, SpecsBuildTheirBackends) {
 }
 
 TEST(DeviceCatalog, UnknownOrMalformedSpecsAreNamed) {
-  for (const std::string spec : {"phantom", "falcon:x", "replay:", "sim"}) {
+  for (const std::string spec : {"phantom", "falcon:x", "replay:", "sim:a.json"}) {
     try {
       make_device(spec, {});
       FAIL() << spec;

@@ -6,15 +6,19 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <thread>
 
 #include "arg_list.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
+#include "asset_path.hpp"
 #include "haptics/devices/mouse_device.hpp"
 #include "haptics/realtime/haptic_loop.hpp"
 #include "haptics/realtime/periodic_timer.hpp"
+#include "haptics/realtime/sim_session.hpp"
 #include "haptics/recording/session_recorder.hpp"
+#include "haptics/safety/fault_cause.hpp"
 #include "render_load_hook.hpp"
 
 namespace needle::cli {
@@ -35,28 +39,44 @@ using haptics::LoopStatsSummary;
 
 void sleep_seconds(double seconds) { std::this_thread::sleep_for(std::chrono::duration<double>(seconds)); }
 
-// The haptic loop as the app runs it: a device without I/O of its own (mouse), the safety
-// monitor, snapshot and sample ring, and the recorder thread writing the session.
-LoopStatsSummary time_haptic_loop(double rate_hz, double seconds, std::string& realtime_line) {
-  haptics::MouseDevice device;
-  haptics::SafetyLimits limits;
+struct HapticRun {
+  LoopStatsSummary stats;
+  std::string realtime_line;
+};
+
+// The haptic loop as the app runs it: the device ("mouse", no step; or "sim:SCENARIO", the
+// simulated master with the controller), the safety monitor at the device's limits, snapshot
+// and sample ring, and the recorder thread writing the session to a temporary file.
+HapticRun time_haptic_loop(const std::string& device_spec, double rate_hz, double seconds) {
+  std::unique_ptr<haptics::SimSession> sim;
+  haptics::MouseDevice mouse;
+  haptics::HapticDevice* device = &mouse;
+  haptics::ServoStep* step = nullptr;
+  if (device_spec.rfind("sim:", 0) == 0) {
+    sim = std::make_unique<haptics::SimSession>(device_spec.substr(4), rate_hz);
+    device = &sim->device();
+    step = &sim->step();
+  }
+  device->open();
   haptics::LoopConfig config;
   config.rate_hz = rate_hz;
-  haptics::HapticLoop loop(device, limits, config);
+  haptics::HapticLoop loop(*device, haptics::safety_limits_for(device->capabilities()), config);
   const std::string path = (std::filesystem::temp_directory_path() /
                             ("needle_bench_loop_" + std::to_string(::getpid()) + ".nsrec")).string();
-  haptics::SessionRecorder recorder(path, {haptics::kSessionFormatVersion, rate_hz, 0, "mouse"}, loop.samples());
-  realtime_line = loop.launch();
+  haptics::SessionRecorder recorder(path, {haptics::kSessionFormatVersion, rate_hz, 0, device_spec}, loop.samples());
+  HapticRun run;
+  run.realtime_line = loop.launch();
   recorder.start();
+  loop.apply({haptics::LoopCommandType::kSetStep, 0.0, step});
   loop.apply({haptics::LoopCommandType::kStart});
   sleep_seconds(0.2);  // settle: the first periods include thread start-up
   loop.apply({haptics::LoopCommandType::kResetStats});
   sleep_seconds(seconds);
-  const LoopStatsSummary stats = loop.stats();
+  run.stats = loop.stats();
   loop.shutdown();
   recorder.stop();
   std::filesystem::remove(path);
-  return stats;
+  return run;
 }
 
 // The baseline this machine allows: the same timer and statistics, no work at all.
@@ -94,7 +114,11 @@ int run_bench_loop(ArgList& args) {
   const std::vector<double> rates = parse_number_list(args.value("--rates").value_or("1000,2000,4000"), "--rates");
   const double seconds = parse_number(args.value("--seconds").value_or("30"), "--seconds");
   const bool with_load = args.flag("--render-load");
+  const std::string device_spec =
+      args.value("--device").value_or("sim:" + (asset_dir() / "scenarios" / "nonholonomic_needle.json").string());
   args.finish();
+  if (device_spec != "mouse" && device_spec.rfind("sim:", 0) != 0)
+    throw UsageError("--device: expected mouse or sim:SCENARIO.json, got " + device_spec);
   if (!(seconds > 0.0 && seconds <= 3600.0)) throw UsageError("--seconds: expected a duration in (0, 3600]");
   for (double r : rates) {
     try {
@@ -106,19 +130,22 @@ int run_bench_loop(ArgList& args) {
   if (with_load && render_load() == nullptr)
     throw UsageError("--render-load: this build registers no renderer load (see render_load_hook.hpp)");
 
-  BenchTable table({"loop", "rate_hz", "render_load", "seconds", "ticks", "period_err_p50_us", "period_err_p99_us",
+  BenchTable table({"loop", "device", "rate_hz", "render_load", "seconds", "ticks", "period_err_p50_us", "period_err_p99_us",
                     "period_err_p999_us", "period_err_max_us", "overruns", "compute_p50_us", "compute_p99_us",
-                    "rate_measured_hz"});
+                    "rate_measured_hz", "fault"});
   std::string realtime_line;
-  auto add = [&](const char* loop, double rate, bool load, const LoopStatsSummary& s) {
-    table.add_row({loop, rate, load, seconds, s.period_error.count, us(s.period_error.p50_ns), us(s.period_error.p99_ns),
+  auto add = [&](const char* loop, const std::string& device, double rate, bool load, const LoopStatsSummary& s) {
+    table.add_row({loop, device, rate, load, seconds, s.period_error.count, us(s.period_error.p50_ns), us(s.period_error.p99_ns),
                    us(s.period_error.p999_ns), us(s.period_error.max_ns), s.overruns, us(s.compute.p50_ns),
-                   us(s.compute.p99_ns), s.rate_hz});
+                   us(s.compute.p99_ns), s.rate_hz,
+                   haptics::fault_cause_name(static_cast<haptics::FaultCause>(s.fault))});
   };
   auto run_all = [&](bool load) {
     for (double rate : rates) {
-      add("haptic", rate, load, time_haptic_loop(rate, seconds, realtime_line));
-      add("bare", rate, load, time_bare_loop(rate, seconds, haptics::LoopConfig{}.realtime));
+      const HapticRun run = time_haptic_loop(device_spec, rate, seconds);
+      realtime_line = run.realtime_line;
+      add("haptic", device_spec.substr(0, device_spec.find(':')), rate, load, run.stats);
+      add("bare", "-", rate, load, time_bare_loop(rate, seconds, haptics::LoopConfig{}.realtime));
     }
   };
   run_all(false);
@@ -136,8 +163,11 @@ int run_bench_loop(ArgList& args) {
 
 const CommandRegistrar reg{
     {"bench loop",
-     "needle-sim bench loop [--rates 1000,2000,4000] [--seconds 30] [--render-load] [--json FILE]\n"
+     "needle-sim bench loop [--rates 1000,2000,4000] [--seconds 30] [--device sim:FILE|mouse] [--render-load]\n"
+     "                      [--json FILE]\n"
      "  --rates        loop rates in Hz, each 250..10000\n"
+     "  --device       sim:SCENARIO.json (default: the nonholonomic scenario, master simulated, controller\n"
+     "                 stepping) or mouse (no step: the loop's own machinery only)\n"
      "  --seconds      measuring time per row (after 0.2 s of settling)\n"
      "  --render-load  repeat every row while the renderer draws as fast as it can\n"
      "  --json FILE    also write the rows as JSON",
