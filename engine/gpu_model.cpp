@@ -23,6 +23,27 @@ GpuPrimitive upload_primitive(const VulkanContext& context, const Primitive& p) 
   return gpu;
 }
 
+std::vector<MeshVertex> read_back_vertices(const VulkanContext& context, const GpuPrimitive& gpu) {
+  GpuBuffer host = GpuBuffer::host_visible(context, gpu.vertex_count * sizeof(MeshVertex), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  context.submit_and_wait([&](VkCommandBuffer cmd) {
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+    VkBufferCopy region{0, 0, host.size()};
+    vkCmdCopyBuffer(cmd, gpu.vertices.handle(), host.handle(), 1, &region);
+    VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0,
+                         nullptr);
+  });
+  std::vector<MeshVertex> out(gpu.vertex_count);
+  std::memcpy(out.data(), host.mapped(), host.size());
+  return out;
+}
+
 GpuModel::GpuModel(const VulkanContext& context, const Model& model, const MaterialBinding& binding)
     : device_(context.device()), instances_(model.instances), materials_(model.materials), bounds_(model.world_bounds) {
   materials_.push_back(Material{});  // glTF's default material, for primitives without one

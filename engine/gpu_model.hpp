@@ -32,6 +32,8 @@ struct GpuPrimitive {
 
 // Uploads one primitive's vertices and indices to device-local buffers.
 GpuPrimitive upload_primitive(const VulkanContext& context, const Primitive& primitive);
+// Copies a primitive's vertex buffer back to the host after compute or transfer writes, and waits.
+std::vector<MeshVertex> read_back_vertices(const VulkanContext& context, const GpuPrimitive& primitive);
 
 class GpuModel {
  public:

@@ -96,7 +96,7 @@ class SceneReader {
   }
 
   SceneAsset asset(const json& value, const std::string& at) const {
-    object(value, at, {"name", "gltf", "role", "translation", "rotation", "scale"});
+    object(value, at, {"name", "gltf", "role", "translation", "rotation", "scale", "deformation"});
     SceneAsset a;
     a.name = string(member(value, at, "name"), at + "/name");
     const fs::path given = folder_ / string(member(value, at, "gltf"), at + "/gltf");
@@ -119,7 +119,35 @@ class SceneReader {
       a.scale = vector<3>(value["scale"], at + "/scale");
       if (glm::any(glm::equal(a.scale, glm::vec3(0.0f)))) fail(at + "/scale", "a zero scale flattens the asset");
     }
+    if (value.contains("deformation")) {
+      if (a.role != AssetRole::Tissue) fail(at + "/deformation", "only tissue deforms");
+      if (a.scale.x != a.scale.y || a.scale.y != a.scale.z)
+        fail(at + "/scale", "a deformable tissue needs a uniform scale (its field is isotropic)");
+      a.deformation = tissue(value["deformation"], at + "/deformation");
+    }
     return a;
+  }
+
+  // Every key optional: TissueParams' defaults are a soft tissue of a few kPa.
+  TissueParams tissue(const json& value, const std::string& at) const {
+    object(value, at, {"shear_modulus_Pa", "poisson_ratio", "radius_m", "falloff", "lateral_loads"});
+    TissueParams t;
+    auto read = [&](const char* key, double& into, double lo, double hi, const char* range) {
+      if (!value.contains(key)) return;
+      into = number(value[key], at + "/" + key);
+      if (!(into > lo && into <= hi)) fail(at + "/" + key, std::string("must be in ") + range);
+    };
+    read("shear_modulus_Pa", t.material.shear_modulus_Pa, 0.0, 1e9, "(0, 1e9] Pa");
+    read("poisson_ratio", t.material.poisson_ratio, -1e-12, 0.5, "[0, 0.5]");
+    read("radius_m", t.radius_m, 0.0, 1.0, "(0, 1] m");
+    read("falloff", t.falloff, 1.0, 100.0, "(1, 100]");
+    if (value.contains("lateral_loads")) {
+      const json& n = value["lateral_loads"];
+      if (!n.is_number_integer() || n.get<int>() < 0 || n.get<int>() > 7)
+        fail(at + "/lateral_loads", "expected a whole number from 0 to 7");
+      t.lateral_loads = n.get<int>();
+    }
+    return t;
   }
 
   Camera camera(const json& value, const std::string& at) const {

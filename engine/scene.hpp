@@ -5,9 +5,11 @@
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "engine/deformation_field.hpp"
 #include "engine/model.hpp"
 
 namespace needle::engine {
@@ -21,6 +23,8 @@ struct SceneAsset {
   glm::vec3 translation{0.0f};
   glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
   glm::vec3 scale{1.0f};
+  // Tissue that deforms around the needle (GPU deformation pass); none: it stays rigid.
+  std::optional<TissueParams> deformation;
   glm::mat4 transform() const;
 };
 

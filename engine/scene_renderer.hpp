@@ -60,6 +60,7 @@ class SceneRenderer {
   void wait_idle() const;
 
   VkSampleCountFlagBits samples() const { return samples_; }
+  const VulkanContext& context() const { return context_; }
   // For passes drawn inside the scene's render pass (the UI pass).
   VkRenderPass render_pass() const { return render_pass_; }
 

@@ -34,9 +34,11 @@ inline GpuSphere make_gpu_sphere(const engine::VulkanContext& context, int resol
 }
 
 // A needle touching (pushing a dimple) or inserted into the sphere, entering along the inward
-// normal at the surface point in direction `dir`, pivoted by `pivot_rad` about its tip.
+// normal at the surface point in direction `dir`, pivoted by `pivot_rad` about its tip towards
+// `towards` (made perpendicular to the normal), the tissue pushed that way by `lateral_N`.
 inline engine::NeedleLoad sphere_load(engine::NeedleContact contact, const glm::dvec3& dir, double depth_m,
-                                      double pivot_rad = 0.0, double lateral_N = 0.0) {
+                                      double pivot_rad = 0.0, double lateral_N = 0.0,
+                                      const glm::dvec3& towards = {0.0, 1.0, 0.0}) {
   engine::NeedleLoad load;
   load.contact = contact;
   glm::dvec3 n = glm::normalize(dir);
@@ -44,33 +46,10 @@ inline engine::NeedleLoad sphere_load(engine::NeedleContact contact, const glm::
   load.surface_normal = n;
   glm::dvec3 inward = -n;
   load.tip = load.surface_point + inward * depth_m;
-  glm::dvec3 side = glm::normalize(glm::cross(n, std::abs(n.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0)));
+  glm::dvec3 side = glm::normalize(towards - n * glm::dot(towards, n));
   load.axis = std::cos(pivot_rad) * inward + std::sin(pivot_rad) * side;
   load.lateral_force_on_tissue_N = side * lateral_N;
   return load;
-}
-
-// Copies a device vertex buffer back to the host, after the compute writes.
-inline std::vector<engine::MeshVertex> read_vertices(const engine::VulkanContext& context, const engine::GpuPrimitive& gpu) {
-  engine::GpuBuffer host = engine::GpuBuffer::host_visible(context, gpu.vertex_count * sizeof(engine::MeshVertex),
-                                                           VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-  context.submit_and_wait([&](VkCommandBuffer cmd) {
-    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
-    barrier.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
-    VkBufferCopy region{0, 0, host.size()};
-    vkCmdCopyBuffer(cmd, gpu.vertices.handle(), host.handle(), 1, &region);
-    VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0,
-                         nullptr);
-  });
-  std::vector<engine::MeshVertex> out(gpu.vertex_count);
-  std::memcpy(out.data(), host.mapped(), host.size());
-  return out;
 }
 
 // Fills the vertex buffer with NaN so that a vertex the pass should write and does not is seen.

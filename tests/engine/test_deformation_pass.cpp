@@ -82,7 +82,7 @@ TEST_F(DeformationPassTest, EveryVertexMatchesTheCpuReference) {
         engine::DeformationField field = engine::build_field(load, engine::TissueParams{});
         poison(context(), sphere.gpu);
         run(context(), pass, field, true);
-        Comparison c = compare(sphere, read_vertices(context(), sphere.gpu), field);
+        Comparison c = compare(sphere, engine::read_back_vertices(context(), sphere.gpu), field);
         EXPECT_EQ(c.written, sphere.rest.vertices.size()) << "resolution " << resolution;
         EXPECT_EQ(c.mismatched, 0u) << "resolution " << resolution << " trial " << trial << ": worst position "
                                     << c.worst_position << " m, worst normal " << c.worst_angle << " rad";
@@ -99,7 +99,7 @@ TEST_F(DeformationPassTest, CulledPassWritesWhatItReportsAndAllTheFieldReaches) 
       engine::build_field(sphere_load(NeedleContact::Touching, {-1, 0.2, 0.1}, 0.005), engine::TissueParams{});
   poison(context(), sphere.gpu);
   run(context(), pass, field);
-  std::vector<engine::MeshVertex> gpu = read_vertices(context(), sphere.gpu);
+  std::vector<engine::MeshVertex> gpu = engine::read_back_vertices(context(), sphere.gpu);
   Comparison c = compare(sphere, gpu, field);
   EXPECT_EQ(c.mismatched, 0u) << "worst position " << c.worst_position << " m";
   EXPECT_EQ(c.written, pass.last_frame().processed);
@@ -141,7 +141,7 @@ TEST_F(DeformationPassTest, WithdrawnNeedleLeavesTheSurfaceAtRest) {
   run(context(), pass, engine::build_field(sphere_load(NeedleContact::Inserted, {-1, 0.3, 0}, 0.02, 0.5, 1.0), {}));
   run(context(), pass, engine::DeformationField{});  // withdrawn
   EXPECT_TRUE(pass.last_frame().dispatched);         // once, to put the touched vertices back
-  std::vector<engine::MeshVertex> gpu = read_vertices(context(), sphere.gpu);
+  std::vector<engine::MeshVertex> gpu = engine::read_back_vertices(context(), sphere.gpu);
   for (size_t i = 0; i < gpu.size(); ++i) {
     ASSERT_EQ(gpu[i].position, sphere.rest.vertices[i].position) << "vertex " << i;
     ASSERT_LT(glm::length(gpu[i].normal - sphere.rest.vertices[i].normal), 1e-6f) << "vertex " << i;
