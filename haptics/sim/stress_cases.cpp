@@ -1,0 +1,95 @@
+#include "haptics/sim/stress_cases.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "haptics/model/kinematics.hpp"
+
+namespace needle::haptics {
+namespace {
+
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+void scale(RobotGains& g, double k) {
+  g.Ka *= k;
+  g.Kp *= k;
+  g.Kf *= k;
+}
+
+}  // namespace
+
+double passivity_stiffness_bound(const Scenario& s) { return 2.0 * (s.hand.damping_Ns_per_m - 0.0) / s.period_s; }
+
+Scenario with_gain_scale(Scenario s, double k) {
+  scale(s.gains.master, k);
+  scale(s.gains.virt, k);
+  return s;
+}
+
+Scenario with_period_scale(Scenario s, double k) {
+  s.period_s *= k;
+  return s;
+}
+
+Scenario holding_pose(Scenario s, const VecN& q0, bool in_tissue) {
+  // The hand holds the tip where q0 puts it, then moves it 1 cm along the needle and back.
+  const Eigen::Isometry3d tip = tip_pose(s.master, q0);
+  const Eigen::Vector3d axis = tip.linear().col(0);
+  s.q0 = q0;
+  s.trajectory = HandTrajectory({{0.0, tip.translation(), axis},
+                                 {2.0, tip.translation(), axis},
+                                 {4.0, tip.translation() + 0.01 * axis, axis},
+                                 {6.0, tip.translation(), axis}});
+  s.scene = Scene{};
+  if (in_tissue) s.scene.tissue = ImplicitSurface{SurfacePrimitive::sphere(tip.translation(), 0.05)};
+  s.duration_s = 8.0;
+  return s;
+}
+
+Scenario pressing(Scenario s, double force_N, double hold_until_s) {
+  // Approach the sphere's contact point of the holonomic scenario, then hold the hand a spring
+  // stretch of force_N / K_h inside the surface.
+  const Eigen::Vector3d start = s.trajectory.at(0.0).position, dir0 = s.trajectory.at(0.0).direction;
+  const HandTarget press_target = s.trajectory.at(8.0);  // on the surface, pressing lightly
+  const SurfaceSample at = s.scene.rigid.evaluate(press_target.position);
+  const Eigen::Vector3d surface_point = press_target.position - at.phi * at.gradient;
+  const Eigen::Vector3d deep = surface_point - force_N / s.hand.stiffness_N_per_m * at.gradient;
+  s.trajectory = HandTrajectory({{0.0, start, dir0},
+                                 {4.0, surface_point + 0.02 * at.gradient, -at.gradient},
+                                 {8.0, deep, -at.gradient},
+                                 {hold_until_s, deep, -at.gradient}});
+  s.duration_s = hold_until_s + 2.0;
+  return s;
+}
+
+std::vector<StressCase> stress_cases(const Scenario& h, const Scenario& nh, double sustained_s) {
+  std::vector<StressCase> cases;
+  for (const Scenario* base : {&h, &nh}) {
+    for (double k : {0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0})
+      cases.push_back({"gains x (" + base->name + ")", number(k), with_gain_scale(*base, k)});
+    for (double k : {1.0, 2.0, 4.0, 8.0})
+      cases.push_back({"period x (" + base->name + ")", number(k), with_period_scale(*base, k)});
+  }
+  cases.push_back({"singular pose", "arm stretched", holding_pose(nh, (VecN(5) << 0.0, 0.0, 0.0, 0.0, 0.5).finished(), false)});
+  cases.push_back({"singular pose", "wrist roll along needle, in tissue",
+                   holding_pose(nh, (VecN(5) << 0.0, 1.0, -1.6, 0.0, 0.0).finished(), true)});
+  const double limit = h.device.force_limit_N;
+  cases.push_back({"operator push", number(2 * limit) + " N (2x limit)", pressing(h, 2 * limit, 20.0)});
+  cases.push_back({"sustained contact", number(sustained_s) + " s at 1 N", pressing(h, 1.0, sustained_s)});
+  const double k_crit = passivity_stiffness_bound(h);
+  for (double k : {0.1, 0.3, 1.0, 3.0, 10.0}) {
+    Scenario s = pressing(h, 1.0, 14.0);
+    // Stiffness α ω² = k K_crit; ξω kept, so the penalty damping 2αξω stays the thesis's.
+    const double xi_omega = s.gains.gpm.xi * s.gains.gpm.omega;
+    s.gains.gpm.omega = std::sqrt(k * k_crit / s.gains.gpm.alpha);
+    s.gains.gpm.xi = xi_omega / s.gains.gpm.omega;
+    cases.push_back({"penalty stiffness x K_crit", number(k) + " (" + number(k * k_crit) + " N/m)", s});
+  }
+  return cases;
+}
+
+}  // namespace needle::haptics
