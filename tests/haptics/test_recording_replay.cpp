@@ -8,6 +8,7 @@
 
 #include "haptics/devices/replay_device.hpp"
 #include "haptics/realtime/servo_tick.hpp"
+#include "haptics/realtime/sim_session.hpp"
 #include "haptics/recording/session_recorder.hpp"
 #include "test_realtime_fakes.hpp"
 
@@ -144,6 +145,40 @@ TEST(RecordingReplay, ThreadedRecorderWritesEverySampleByStop) {
   EXPECT_EQ(recorder.error(), "");
   EXPECT_EQ(recorder.written() + recorder.dropped(), 5000u);
   EXPECT_EQ(read_session(path).records.size(), recorder.written());
+  std::filesystem::remove(path);
+}
+
+// The same with the thesis controller: record a `sim` session into the tissue, replay its
+// device stream into a fresh controller, and every tick's state must match bit for bit.
+TEST(RecordingReplay, ControllerReplayIsBitForBit) {
+  const std::string path = temp_path("sim.nsrec");
+  const std::string scenario = std::string(NEEDLE_SOURCE_DIR) + "/assets/scenarios/nonholonomic_needle.json";
+  constexpr double kSimRate = 500.0;
+  constexpr uint64_t kTicks = 3000;  // 6 s
+  std::vector<ToolSnapshot> live;
+  {
+    SimSession sim(scenario, kSimRate);
+    sim.device().open();
+    testing::TickRig rig(sim.device(), sim.step(), safety_limits_for(sim.device().capabilities()), 4096);
+    SessionRecorder recorder(path, {kSessionFormatVersion, kSimRate, 0, "sim:" + scenario}, rig.samples);
+    for (uint64_t k = 0; k < kTicks; ++k) {
+      rig.run(k, 1, 1.0 / kSimRate);
+      live.push_back(rig.tick.last_sample().state);
+    }
+  }
+  ReplayDevice replay(path);
+  replay.open();
+  SimSession fresh(scenario, kSimRate);  // only its controller step is used
+  testing::TickRig rig(replay, fresh.step(), safety_limits_for(replay.capabilities()), 4096);
+  uint64_t differing = 0;
+  bool entered_tissue = false;
+  for (uint64_t k = 0; k < kTicks; ++k) {
+    rig.run(k, 1, 1.0 / kSimRate);
+    differing += !same_bits(rig.tick.last_sample().state, live[k]);
+    entered_tissue = entered_tissue || live[k].contact == ContactState::kTissue;
+  }
+  EXPECT_EQ(differing, 0u);
+  EXPECT_TRUE(entered_tissue);
   std::filesystem::remove(path);
 }
 
