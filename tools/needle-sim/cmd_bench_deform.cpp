@@ -2,7 +2,6 @@
 // per frame against the same field evaluated on the CPU in one thread (double precision), with
 // the vertices processed and skipped, and the largest GPU-vs-CPU position error.
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 
 #include "arg_list.hpp"
@@ -11,6 +10,7 @@
 #include "command.hpp"
 #include "engine/deformation_pass.hpp"
 #include "engine/gltf_loader.hpp"
+#include "engine/scripted_needle.hpp"
 #include "engine/vulkan_context.hpp"
 #include "sample_stats.hpp"
 
@@ -20,27 +20,10 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
-// Frame f of a press-insert-pivot sequence on the thesis sphere (r = 0.1 m at (0.4, 0, 0)):
-// the field changes every frame, so every frame dispatches.
+// Frame f of the scripted experiment between the press (2 s) and the end of the second
+// insertion (9.5 s): the field changes every frame, so every frame dispatches.
 engine::NeedleLoad needle_at_frame(int f, int frames) {
-  const glm::dvec3 centre(0.4, 0.0, 0.0), n = glm::normalize(glm::dvec3(-1.0, 0.0, 0.35));
-  double s = double(f) / double(frames);
-  engine::NeedleLoad load;
-  load.surface_point = centre + 0.1 * n;
-  load.surface_normal = n;
-  if (s < 0.3) {  // pressing a dimple up to 8 mm
-    load.contact = engine::NeedleContact::Touching;
-    load.axis = -n;
-    load.tip = load.surface_point - n * (0.008 * s / 0.3);
-  } else {  // inserted 3 cm, pivoting about the tip up to 45 degrees
-    load.contact = engine::NeedleContact::Inserted;
-    double pivot = glm::radians(45.0) * (s - 0.3) / 0.7;
-    glm::dvec3 up = glm::normalize(glm::dvec3(0, 0, 1) - n * n.z);
-    load.tip = load.surface_point - n * 0.03;
-    load.axis = std::cos(pivot) * -n + std::sin(pivot) * up;
-    load.lateral_force_on_tissue_N = up * (1.5 * std::sin(pivot));
-  }
-  return load;
+  return engine::scripted_needle(engine::ScriptedSphere{}, 2.0 + 7.5 * double(f) / double(frames - 1));
 }
 
 int run_bench_deform(ArgList& args) {
@@ -121,7 +104,7 @@ const CommandRegistrar reg{{"bench deform",
                             "needle-sim bench deform [--json FILE] [--spheres 100,316,400,1000] [--frames N]\n"
                             "  --json FILE     also write the rows as JSON\n"
                             "  --spheres LIST  sphere resolutions p = m ((p+1)^2 vertices; default 100,316,400,1000)\n"
-                            "  --frames N      frames of the press-insert-pivot sequence per sphere (default 60)",
+                            "  --frames N      frames of the scripted press-insert-pivot per sphere (default 60)",
                             run_bench_deform}};
 
 }  // namespace

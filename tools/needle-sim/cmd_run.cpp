@@ -1,12 +1,15 @@
 // needle-sim run: the main job. With a display it opens the simulator window; without one
-// (or with --headless) it renders the scene offscreen to a PNG.
+// (or with --headless) it renders the scene offscreen to a PNG. Until the haptic loop drives it,
+// a scripted needle performs the thesis's insertion on the scene's first deformable tissue.
+#include <chrono>
 #include <cstdio>
 
 #include "arg_list.hpp"
 #include "asset_path.hpp"
 #include "command.hpp"
 #include "engine/gpu_scene.hpp"
-#include "engine/offscreen.hpp"
+#include "engine/headless_target.hpp"
+#include "engine/scripted_needle.hpp"
 #include "engine/ui_pass.hpp"
 #include "engine/vulkan_context.hpp"
 #include "engine/window.hpp"
@@ -15,6 +18,23 @@
 
 namespace needle::cli {
 namespace {
+
+// The scripted needle's target: the first deformable tissue's bounding sphere, if any.
+std::optional<engine::ScriptedSphere> script_target(const engine::GpuScene& scene) {
+  const auto& assets = scene.scene().assets;
+  for (size_t i = 0; i < assets.size(); ++i) {
+    if (!assets[i].deformation) continue;
+    const engine::Bounds& b = scene.asset_model(i).world_bounds();
+    engine::ScriptedSphere sphere;
+    sphere.centre = glm::dvec3(assets[i].transform() * glm::vec4((b.min + b.max) * 0.5f, 1.0f));
+    sphere.radius = 0.5 * double(b.max.x - b.min.x) * double(assets[i].scale.x);
+    return sphere;
+  }
+  return std::nullopt;
+}
+
+// The moment of the script a headless run shows: the needle pivoted in the tissue.
+constexpr double kHeadlessMoment_s = 7.0;
 
 struct RunOptions {
   std::filesystem::path scene;
@@ -39,6 +59,8 @@ int run_window(const engine::Scene& scene, const RunOptions& options) {
   engine::SceneRenderer renderer(context, target,
                                  {static_cast<VkSampleCountFlagBits>(options.msaa.value_or(cpu_device ? 1 : 4))});
   engine::GpuScene gpu_scene(renderer, scene);
+  const std::optional<engine::ScriptedSphere> script = script_target(gpu_scene);
+  const auto start = std::chrono::steady_clock::now();
   std::optional<engine::UiPass> ui_pass;
   if (options.hud) ui_pass.emplace(context, renderer, &window);
   ui::FrameClock clock;
@@ -47,12 +69,17 @@ int run_window(const engine::Scene& scene, const RunOptions& options) {
   while (!window.should_close()) {
     window.poll_events();
     bool last = options.frames > 0 && drawn + 1 == options.frames;
-    engine::FrameParams params = gpu_scene.frame_params();
+    std::optional<engine::NeedleLoad> needle;
+    if (script) {
+      needle = engine::scripted_needle(*script,
+                                       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    engine::FrameParams params = gpu_scene.frame_params(needle ? &*needle : nullptr);
     float dt = clock.tick();
     if (ui_pass) {
       ui_pass->begin_frame(target.extent(), dt);
-      ui::draw_status_panel({context.device_description(), options.scene.filename().string(),
-                             int(renderer.samples()), clock.mean_frame_ms()});
+      ui::draw_status_panel({context.device_description(), options.scene.filename().string(), int(renderer.samples()),
+                             clock.mean_frame_ms()});
       params.overlay = ui_pass->end_frame();
     }
     engine::RgbaImage shot;
@@ -76,9 +103,13 @@ int run_window(const engine::Scene& scene, const RunOptions& options) {
 
 int run_headless(const engine::Scene& scene, const RunOptions& options) {
   engine::VulkanContext context(engine::ContextOptions{});
-  engine::RgbaImage image =
-      engine::render_scene_offscreen(context, scene, {options.size.width, options.size.height},
-                                     {static_cast<VkSampleCountFlagBits>(options.msaa.value_or(4))});
+  engine::HeadlessTarget target(context, {options.size.width, options.size.height});
+  engine::SceneRenderer renderer(context, target, {static_cast<VkSampleCountFlagBits>(options.msaa.value_or(4))});
+  engine::GpuScene gpu_scene(renderer, scene);
+  std::optional<engine::NeedleLoad> needle;
+  if (auto script = script_target(gpu_scene)) needle = engine::scripted_needle(*script, kHeadlessMoment_s);
+  engine::RgbaImage image;
+  renderer.draw(target, gpu_scene.frame_params(needle ? &*needle : nullptr), &image);
   engine::write_png(options.out, image);
   std::printf("wrote %s (%ux%u)\n", options.out.c_str(), image.width, image.height);
   return 0;
@@ -86,7 +117,7 @@ int run_headless(const engine::Scene& scene, const RunOptions& options) {
 
 int run_run(ArgList& args) {
   RunOptions options;
-  options.scene = args.value("--scene").value_or((asset_dir() / "scenes" / "thesis_sphere.json").string());
+  options.scene = args.value("--scene").value_or((asset_dir() / "scenes" / "penetrable_sphere.json").string());
   options.out = args.value("--out").value_or("out/run.png");
   options.size = parse_size(args.value("--size").value_or("1280x720"), "--size");
   if (auto frames = args.value("--frames")) {
@@ -111,7 +142,7 @@ int run_run(ArgList& args) {
 const CommandRegistrar reg{{"run",
                             "needle-sim run [--scene FILE] [--headless] [--out FILE] [--size WxH] [--msaa N] [--frames "
                             "N] [--screenshot FILE]\n"
-                            "  --scene FILE       scene to show (default: assets/scenes/thesis_sphere.json)\n"
+                            "  --scene FILE       scene to show (default: assets/scenes/penetrable_sphere.json)\n"
                             "  --headless         render offscreen even when a display is available\n"
                             "  --out FILE         headless: where to write the PNG (default out/run.png)\n"
                             "  --size WxH         window or image size (default 1280x720)\n"
