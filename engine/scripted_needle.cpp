@@ -35,7 +35,8 @@ NeedleLoad scripted_needle(const ScriptedSphere& sphere, double t_s) {
   } else if (t < 9.5) {  // punctured: insert, pivot about the tip, insert deeper
     load.contact = NeedleContact::Inserted;
     const double pivot = kPivot_rad * ramp(t, 5.0, 8.0);
-    const glm::dvec3 first_tip = load.surface_point - n * (kFirstDepth_m * ramp(t, 3.0, 5.0));
+    // At puncture the tip is where the dimple took it; the tissue closes around the shaft.
+    const glm::dvec3 first_tip = load.surface_point - n * (kDimple_m + (kFirstDepth_m - kDimple_m) * ramp(t, 3.0, 5.0));
     load.axis = std::cos(pivot) * -n + std::sin(pivot) * side;
     load.tip = first_tip + load.axis * ((kSecondDepth_m - kFirstDepth_m) * ramp(t, 8.0, 9.5));
     // The tissue resists the shaft sweeping sideways while it pivots.
