@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <numbers>
 
-#include "haptics/sim/allocation_counter.hpp"
 #include "tool_states.hpp"
 #include "ui/tasks/condition.hpp"
 #include "ui/tasks/task_progress.hpp"
@@ -168,15 +167,6 @@ TEST(TaskProgress, MovingTheTipInAFixedTipStepFailsIt) {
   p.feed(state(3.0, {0.1, 0.0031, 0.0}));
   EXPECT_EQ(p.records()[0].outcome, StepOutcome::kTipMoved);
   EXPECT_EQ(p.current_step(), 1u);
-}
-
-TEST(TaskProgress, FeedingAllocatesNothing) {
-  const Task t = two_steps();
-  TaskProgress p(t);
-  haptics::allocation_counter::start();
-  for (int k = 0; k < 2000; ++k) p.feed(state(k * 0.001, {0.001 * std::sin(k * 0.01), 0, -1e-4 * std::max(0, k - 600)}));
-  EXPECT_EQ(haptics::allocation_counter::stop(), 0);
-  EXPECT_TRUE(p.finished());  // held near the point, then went down through the band
 }
 
 TEST(TaskProgress, OutcomesHaveNames) {
