@@ -17,6 +17,16 @@ const char* step_outcome_name(StepOutcome outcome) {
   return "unknown";
 }
 
+bool step_outcome_from_name(const std::string& name, StepOutcome& outcome) {
+  for (const StepOutcome o : {StepOutcome::kPending, StepOutcome::kActive, StepOutcome::kCompleted,
+                              StepOutcome::kTimedOut, StepOutcome::kTipMoved})
+    if (name == step_outcome_name(o)) {
+      outcome = o;
+      return true;
+    }
+  return false;
+}
+
 TaskProgress::TaskProgress(const Task& task) : task_(task), records_(task.steps.size()) {}
 
 void TaskProgress::end_step(StepOutcome outcome, const haptics::ToolSnapshot& state) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "haptics/realtime/tool_snapshot.hpp"
@@ -20,6 +21,7 @@ enum class StepOutcome {
 };
 
 const char* step_outcome_name(StepOutcome outcome);  // "pending", "completed", ...
+bool step_outcome_from_name(const std::string& name, StepOutcome& outcome);  // false if unknown
 
 struct StepRecord {
   StepOutcome outcome = StepOutcome::kPending;
