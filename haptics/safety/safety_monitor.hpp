@@ -20,8 +20,12 @@ struct SafetyLimits {
   double max_torque_rate_nm_per_s = 100.0;
   uint32_t ramp_ticks = 20;                          // output is zero this many ticks after the fault
   uint32_t stale_ticks = 20;                         // consecutive ticks without a fresh reading
-  uint32_t frozen_ticks = 2000;                      // consecutive identical readings ...
-  double frozen_min_force_n = 1.0;                   // ... while pushing at least this hard
+  // Consecutive bit-identical readings while pushing at least frozen_min_force_n: a hand
+  // holding a handle against a force trembles (0.05 to 0.5 mm at 8 to 12 Hz) by more than an
+  // encoder count (0.04 mm on the Falcon), so 5 s (at 1 kHz) without a change means the
+  // encoders or their transport stopped.
+  uint32_t frozen_ticks = 5000;
+  double frozen_min_force_n = 1.0;
   uint32_t missed_deadline_streak = 10;
   double max_generated_energy_j = 1.0;               // passivity observer bound
 };

@@ -9,7 +9,9 @@
 #include <thread>
 
 #include "haptics/realtime/haptic_loop.hpp"
+#include "haptics/devices/mouse_device.hpp"
 #include "haptics/realtime/sim_session.hpp"
+#include "haptics/realtime/task_space_step.hpp"
 #include "test_realtime_fakes.hpp"
 
 namespace {
@@ -68,6 +70,19 @@ TEST(RealtimeNoAlloc, SimDeviceWithTheControllerAllocatesNothing) {
   rig.run(0, 6000, 0.002);  // 12 s: into the tissue
   EXPECT_EQ(g_allocations.load(), before);
   EXPECT_EQ(rig.safety.fault(), FaultCause::kNone);
+}
+
+TEST(RealtimeNoAlloc, TaskSpaceCouplingAllocatesNothing) {
+  const Scenario scenario = load_scenario(std::string(NEEDLE_SOURCE_DIR) + "/assets/scenarios/holonomic_sphere.json");
+  MouseDevice mouse;
+  TaskSpaceStep step(scenario, TaskCoupling{});
+  TickRig rig(mouse, step, safety_limits_for(mouse.capabilities()));
+  const uint64_t before = g_allocations.load();
+  for (int k = 0; k < 2000; ++k) {
+    mouse.set_pointer(-0.001 * k / 2000.0, 0.0);  // the app's setter, as from the UI thread
+    rig.run(static_cast<uint64_t>(k), 1, 0.001);
+  }
+  EXPECT_EQ(g_allocations.load(), before);
 }
 
 TEST(RealtimeNoAlloc, LoopThreadAllocatesNothingWhileTicking) {

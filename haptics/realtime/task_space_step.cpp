@@ -1,0 +1,58 @@
+#include "haptics/realtime/task_space_step.hpp"
+
+#include "haptics/model/dynamics.hpp"
+#include "haptics/model/kinematics.hpp"
+#include "haptics/realtime/virtual_state.hpp"
+
+namespace needle::haptics {
+
+TaskSpaceStep::TaskSpaceStep(const Scenario& scenario, const TaskCoupling& coupling)
+    : scenario_(scenario),
+      coupling_(coupling),
+      substeps_(scenario.virtual_substeps),
+      world_(scenario.virt, scenario.scene, scenario.gains.gpm, scenario.gains.nonholonomic),
+      data_(scenario.virt),
+      device_start_(Eigen::Vector3d::Zero()),
+      target_(Eigen::Vector3d::Zero()) {
+  const int n = scenario.virt.dof();
+  world_.reset(scenario.q0.head(n), VecN::Zero(n));
+  update_kinematics(scenario.virt, data_, world_.q(), world_.dq());
+  tip_start_ = data_.tip.translation();
+  direction_start_ = data_.tip.linear().col(0);
+  target_ = tip_start_;
+  tau_ = VecN::Zero(n);
+  damping_ = VecN::Constant(n, coupling.joint_damping_nms_per_rad);
+}
+
+void TaskSpaceStep::step(const DeviceReading& reading, double dt_s, DeviceCommand& command,
+                         ToolSnapshot& state) noexcept {
+  const Eigen::Vector3d handle(reading.position_m[0], reading.position_m[1], reading.position_m[2]);
+  if (!started_) {
+    device_start_ = handle;
+    started_ = true;
+  }
+  target_ = tip_start_ + coupling_.workspace_scale * (handle - device_start_);
+
+  // Kinematics and gravity evaluated here rather than read from the world, whose data may
+  // hold only what its own integration needed.
+  update_kinematics(scenario_.virt, data_, world_.q(), world_.dq());
+  update_dynamics(scenario_.virt, data_);
+  const RobotData& data = data_;
+  const Eigen::Vector3d force = coupling_.stiffness_n_per_m * (target_ - data.tip.translation());
+  // A torque about x5 x d0 turns the needle axis x5 towards its start direction d0.
+  const Eigen::Vector3d axis = data.tip.linear().col(0);
+  const Eigen::Vector3d torque = coupling_.orientation_stiffness_nm_per_rad * axis.cross(direction_start_);
+  Eigen::Matrix<double, 6, 1> wrench;
+  wrench << force, torque;
+  tau_ = data.J.transpose() * wrench + data.g;
+  world_.advance(tau_, damping_, dt_s, substeps_);
+
+  // The handle feels the spring's reaction.
+  command.space = CommandSpace::kTaskForce;
+  for (int i = 0; i < 3; ++i) command.force_n[i] = -coupling_.force_scale * force[i];
+
+  publish_virtual_state(world_, scenario_.base_in_world, dt_s, state);
+  for (int i = 0; i < 3; ++i) state.operator_force_n[i] = force[i];
+}
+
+}  // namespace needle::haptics
