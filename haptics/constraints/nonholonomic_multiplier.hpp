@@ -21,7 +21,7 @@ class NonholonomicMultiplier {
   const VecK& psi_integral() const { return psi_integral_; }
   const NonholonomicGains& gains() const { return gains_; }
 
-  // λ (3.22) at the state of `data` (update_dynamics done), for the applied torque τ; writes q̈
+  // λ (3.22) at the state of `data` (H and bias up to date), for the applied torque τ; writes q̈
   // of the constrained dynamics. Allocation-free.
   void solve(const RobotModel& model, RobotData& data, const MatKN& A, const MatKN& A_dot, const VecN& tau, VecK& lambda,
              VecN& ddq);

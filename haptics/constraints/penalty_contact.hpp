@@ -27,7 +27,7 @@ Eigen::Vector3d gpm_force(const SurfaceSample& s, double lambda);
 // q̈): (H + α' J_φᵀJ_φ) q̈ = τ − C q̇ − D q̇ − g − J_φᵀ α γ. With step > 0 the damping and
 // stiffness terms are taken at the end of a semi-implicit Euler step of that length
 // (φ̇ → φ̇ + h φ̈, φ → φ + h φ̇ + h² φ̈), which keeps the stiff penalty stable at any step;
-// step = 0 is (3.15) in continuous time. Needs update_kinematics and update_dynamics at the state.
+// step = 0 is (3.15) in continuous time. Needs the kinematics (J, J̇) and H, bias at the state.
 struct PenaltyResult {
   double lambda = 0.0;
   bool active = false;  // false: φ > 0 or λ would pull; q̈ is then the free acceleration

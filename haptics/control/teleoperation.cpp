@@ -45,8 +45,7 @@ const TickOutput& Teleoperation::step(const TickInput& in) {
   const double T = period_;
   const RobotGains& gm = gains_.master;
   const RobotGains& gv = gains_.virt;
-  update_kinematics(master_, master_data_, in.q_m, in.dq_m);
-  update_dynamics(master_, master_data_);
+  update_frames(master_, master_data_, in.q_m, in.dq_m);  // J_m and the state Newton-Euler needs
   const RobotData& vd = world_.data();
   const ContactReport& contact = world_.report();
 

@@ -32,8 +32,8 @@ void VirtualWorld::reset(const VecN& q, const VecN& dq) {
 }
 
 void VirtualWorld::sense() {
-  update_kinematics(model_, data_, q_, dq_);
-  update_dynamics(model_, data_);
+  update_frames(model_, data_, q_, dq_);
+  update_tick_dynamics(model_, data_);
   const Eigen::Vector3d tip = data_.tip.translation();
   const ContactMode previous = report_.mode;
   report_.mode = ContactMode::Free;

@@ -6,10 +6,14 @@
 
 namespace needle::haptics {
 
-// H, C and g at the state of the last update_kinematics. Allocation-free.
+// H, C, g and bias = C q̇ + g at the state of the last update_kinematics. Allocation-free.
 void update_dynamics(const RobotModel& model, RobotData& data);
+// H (composite rigid bodies) and bias = C q̇ + g (Newton-Euler) only, after update_frames: the
+// servo tick's cheaper path; C and g are left as they were.
+void update_tick_dynamics(const RobotModel& model, RobotData& data);
 
-// q̈ = H⁻¹ (τ − C q̇ − D q̇ − g); τ includes every external torque. Needs update_dynamics.
+// q̈ = H⁻¹ (τ − C q̇ − D q̇ − g) = H⁻¹ (τ − bias − D q̇); τ includes every external torque.
+// Needs update_dynamics or update_tick_dynamics.
 void forward_dynamics(const RobotModel& model, RobotData& data, const VecN& tau, VecN& ddq);
 
 double kinetic_energy(const RobotData& data);  // ½ q̇ᵀ H q̇, needs update_dynamics

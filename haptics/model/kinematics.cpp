@@ -16,7 +16,10 @@ void point_jacobian(const RobotData& data, int body, const Eigen::Vector3d& p, c
   }
 }
 
-void update_kinematics(const RobotModel& model, RobotData& data, const VecN& q, const VecN& dq) {
+namespace {
+
+template <bool with_com_jacobians>
+void kinematics(const RobotModel& model, RobotData& data, const VecN& q, const VecN& dq) {
   data.q = q;
   data.dq = dq;
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
@@ -34,8 +37,10 @@ void update_kinematics(const RobotModel& model, RobotData& data, const VecN& q, 
     data.omega[i] = omega_prev + data.axis[i] * dq[i];
     omega_prev = data.omega[i];
     data.com[i] = t * joint.body.com;
-    const Eigen::Vector3d com_velocity = data.origin_velocity[i] + data.omega[i].cross(data.com[i] - data.origin[i]);
-    point_jacobian(data, i, data.com[i], com_velocity, data.J_com[i], data.Jdot_com[i]);
+    if constexpr (with_com_jacobians) {
+      const Eigen::Vector3d com_velocity = data.origin_velocity[i] + data.omega[i].cross(data.com[i] - data.origin[i]);
+      point_jacobian(data, i, data.com[i], com_velocity, data.J_com[i], data.Jdot_com[i]);
+    }
   }
   const int last = data.n - 1;
   data.tip = data.frame[last] * model.tool;
@@ -43,6 +48,16 @@ void update_kinematics(const RobotModel& model, RobotData& data, const VecN& q, 
   const Eigen::Vector3d v = data.origin_velocity[last] + data.omega[last].cross(p - data.origin[last]);
   point_jacobian(data, last, p, v, data.J, data.Jdot);
   data.tip_twist << v, data.omega[last];
+}
+
+}  // namespace
+
+void update_kinematics(const RobotModel& model, RobotData& data, const VecN& q, const VecN& dq) {
+  kinematics<true>(model, data, q, dq);
+}
+
+void update_frames(const RobotModel& model, RobotData& data, const VecN& q, const VecN& dq) {
+  kinematics<false>(model, data, q, dq);
 }
 
 Eigen::Isometry3d tip_pose(const RobotModel& model, const VecN& q) {

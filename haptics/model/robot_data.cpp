@@ -1,5 +1,7 @@
 #include "haptics/model/robot_data.hpp"
 
+#include "haptics/model/regressor.hpp"
+
 namespace needle::haptics {
 
 RobotData::RobotData(const RobotModel& model)
@@ -13,8 +15,11 @@ RobotData::RobotData(const RobotModel& model)
       H(MatN::Zero(n, n)),
       C(MatN::Zero(n, n)),
       g(VecN::Zero(n)),
+      bias(VecN::Zero(n)),
+      theta(parameter_vector(model)),
       llt(n),
-      unit_params(ParamVec::Zero((kParamsPerBody + 1) * n)) {
+      unit_params(ParamVec::Zero((kParamsPerBody + 1) * n)),
+      zero_n(VecN::Zero(n)) {
   frame.fill(Eigen::Isometry3d::Identity());
   for (auto* a : {&axis, &origin, &origin_velocity, &omega, &com, &omega_dot, &accel, &force, &moment})
     a->fill(Eigen::Vector3d::Zero());

@@ -35,14 +35,18 @@ struct RobotData {
   Eigen::Matrix<double, 6, 1> tip_twist;  // [ṗ; ω]
   Mat6N J, Jdot;                          // tip geometric Jacobian [linear; angular] and its rate
 
-  // Filled by update_dynamics.
+  // Filled by update_dynamics (H, C, g, bias) or update_tick_dynamics (H, bias).
   MatN H, C;
   VecN g;
+  VecN bias;  // C q̇ + g
+
+  ParamVec theta;  // the model's inertial parameters (regressor.hpp), cached for Newton-Euler
 
   // Scratch.
   Eigen::LLT<MatN> llt;
   std::array<Eigen::Vector3d, kMaxDof> omega_dot, accel, force, moment;
   ParamVec unit_params;
+  VecN zero_n;
 };
 
 }  // namespace needle::haptics

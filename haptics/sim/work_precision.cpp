@@ -27,8 +27,8 @@ Run integrate(const PrecisionProblem& p, Integrator integrator, double dt) {
   VecK lambda;
   Run run{p.q0, p.dq0};
   auto accel = [&](const VecN& q, const VecN& dq, VecN& ddq) {
-    update_kinematics(model, data, q, dq);
-    update_dynamics(model, data);
+    update_frames(model, data, q, dq);
+    update_tick_dynamics(model, data);  // the servo tick's path
     needle_pfaffian(data.tip.linear(), data.tip_twist.tail<3>(), task);
     project_pfaffian(task, data.J, data.Jdot, A, A_dot);
     multiplier.solve(model, data, A, A_dot, p.tau, lambda, ddq);

@@ -99,6 +99,21 @@ TEST_P(ModelProperties, JacobianRateMatchesFiniteDifferenceAlongMotion) {
   }
 }
 
+TEST_P(ModelProperties, TickPathMatchesTheFullDynamics) {
+  // Composite-rigid-body H and Newton-Euler bias against the centre-of-mass-Jacobian route.
+  RobotData fast(model);
+  for (int trial = 0; trial < 20; ++trial) {
+    const VecN q = test::random_vector(rng, n, 3.0), dq = test::random_vector(rng, n, 2.0);
+    at(q, dq);
+    update_frames(model, fast, q, dq);
+    update_tick_dynamics(model, fast);
+    EXPECT_LT((fast.H - data.H).norm(), 1e-13 * (1.0 + data.H.norm()));
+    EXPECT_LT((fast.bias - (data.C * dq + data.g)).norm(), 1e-12 * (1.0 + data.g.norm()));
+    EXPECT_TRUE(fast.J.isApprox(data.J, 1e-15));
+    EXPECT_TRUE(fast.Jdot.isApprox(data.Jdot, 1e-15));
+  }
+}
+
 TEST_P(ModelProperties, InverseThenForwardDynamicsRoundTrips) {
   const ParamVec theta = parameter_vector(model);
   for (int trial = 0; trial < 20; ++trial) {

@@ -33,8 +33,9 @@ TEST(SimNonholonomic, NeedleEntersTheTissueAroundFourSecondsAndStaysIn) {
     }
   EXPECT_GT(first, 3.0);
   EXPECT_LT(first, 4.5);
-  for (const TickRecord& r : run().ticks)
+  for (const TickRecord& r : run().ticks) {
     if (r.t > 5.5) ASSERT_EQ(r.mode, ContactMode::Nonholonomic) << "left the tissue at t = " << r.t;
+  }
 }
 
 TEST(SimNonholonomic, TipPathStaysAlongTheNeedleAxis) {
