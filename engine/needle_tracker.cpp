@@ -1,0 +1,42 @@
+#include "engine/needle_tracker.hpp"
+
+#include <glm/gtc/quaternion.hpp>
+
+namespace needle::engine {
+
+NeedleLoad NeedleTracker::update(const haptics::ToolSnapshot& s) {
+  NeedleLoad load;
+  const double* q = s.needle_orientation;
+  load.tip = {s.needle_tip_m[0], s.needle_tip_m[1], s.needle_tip_m[2]};
+  load.axis = glm::normalize(glm::dquat(q[0], q[1], q[2], q[3]) * glm::dvec3(1.0, 0.0, 0.0));  // the needle's x5
+  const glm::dvec3 force(s.environment_force_n[0], s.environment_force_n[1], s.environment_force_n[2]);
+
+  switch (s.contact) {
+    case haptics::ContactState::kFree:
+      entry_.reset();
+      load.contact = NeedleContact::Free;
+      break;
+    case haptics::ContactState::kRigidSurface:
+      // The penalty keeps the tip within micrometres of the surface, and the surface pushes back
+      // along its normal.
+      entry_.reset();
+      load.contact = NeedleContact::Touching;
+      load.surface_point = load.tip;
+      load.surface_normal = glm::length(force) > 0.0 ? glm::normalize(force) : -load.axis;
+      load.normal_force_N = glm::length(force);
+      break;
+    case haptics::ContactState::kTissue: {
+      if (!entry_) entry_ = load.tip;
+      load.contact = NeedleContact::Inserted;
+      load.surface_point = *entry_;
+      load.surface_normal = -load.axis;
+      // The constraint force holds the needle against sideways motion; the tissue takes the
+      // opposite of its lateral part.
+      load.lateral_force_on_tissue_N = -(force - load.axis * glm::dot(force, load.axis));
+      break;
+    }
+  }
+  return load;
+}
+
+}  // namespace needle::engine
