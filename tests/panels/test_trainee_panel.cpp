@@ -1,0 +1,81 @@
+// The trainee panel drawn headless over an empty view: mid-task (step, instruction, force
+// gauge, live metrics, loop rate) and at the end (score, breakdown, advice), against goldens.
+#include <gtest/gtest.h>
+#include <imgui.h>
+
+#include "engine/gpu_scene.hpp"
+#include "engine/headless_target.hpp"
+#include "engine/ui_pass.hpp"
+#include "image_compare.hpp"
+#include "ui/trainee_panel.hpp"
+#include "vulkan_fixture.hpp"
+
+namespace needle::test {
+namespace {
+
+const std::filesystem::path kTask = std::filesystem::path(NEEDLE_SOURCE_DIR) / "assets/tasks/penetrable_sphere.json";
+
+class TraineePanel : public VulkanTest {
+ protected:
+  engine::RgbaImage draw(const ui::TraineeView& view) {
+    const VkExtent2D extent{480, 420};
+    engine::HeadlessTarget target(context(), extent);
+    engine::SceneRenderer renderer(context(), target, {VK_SAMPLE_COUNT_1_BIT});
+    engine::GpuScene scene(renderer, engine::Model{}, engine::Scene{});
+    engine::UiPass ui(context(), renderer, nullptr);
+    engine::RgbaImage image;
+    for (int frame = 0; frame < 2; ++frame) {  // ImGui sizes auto-fitting windows on the first frame
+      ui.begin_frame(extent, 1.0f / 60.0f);
+      ui::draw_trainee_panel(view);
+      engine::FrameParams params = scene.frame_params();
+      params.overlay = ui.end_frame();
+      renderer.draw(target, params, frame == 1 ? &image : nullptr);
+    }
+    return image;
+  }
+};
+
+TEST_F(TraineePanel, MidTaskMatchesGolden) {
+  ui::Task task = ui::load_task(kTask);
+  ui::TaskProgress progress(task);
+  haptics::ToolSnapshot start;
+  progress.feed(start);  // step 1 active
+  ui::TraineeView view{&task, &progress};
+  view.step_metrics.tip_error_m = 0.0123;
+  view.step_metrics.axis_deviation_deg = 4.5;
+  view.step_metrics.lateral_load_Ns = 0.08;
+  view.step_metrics.peak_force_N = 1.4;
+  view.step_metrics.path_length_m = 0.052;
+  view.force_N = 1.1;
+  view.loop_rate_hz = 1000.0;
+  EXPECT_TRUE(matches_golden(draw(view), "panel_trainee_running"));
+}
+
+TEST_F(TraineePanel, ResultMatchesGolden) {
+  ui::Task task = ui::load_task(kTask);
+  ui::TaskProgress progress(task);
+  ui::SessionResult result;
+  result.score.total = 62.0;
+  result.score.passed = false;
+  result.score.components = {{"completion", 1.0, 30}, {"tip_error", 0.4, 15}, {"axis_deviation", 0.2, 10},
+                             {"lateral_load", 0.9, 10}, {"peak_force", 1.0, 10}, {"time", 0.8, 25}};
+  result.score.reasons_failed = {"score 62 is below the pass mark 70"};
+  ui::TraineeView view{&task, &progress};
+  view.result = &result;
+  view.loop_rate_hz = 999.8;
+  view.fault = "energy growth";
+  EXPECT_TRUE(matches_golden(draw(view), "panel_trainee_result"));
+}
+
+TEST(WhatToImprove, TheTwoCostliestComponentsFirst) {
+  ui::Score score;
+  score.components = {{"completion", 1.0, 30}, {"tip_error", 0.4, 15}, {"axis_deviation", 0.2, 10}, {"time", 0.95, 5}};
+  // Lost: tip_error 9, axis_deviation 8, time 0.25 (under a point: not worth a word).
+  EXPECT_EQ(ui::what_to_improve(score),
+            (std::vector<std::string>{"Bring the tip closer to the target", "Keep the needle on the planned axis"}));
+  score.components = {{"completion", 1.0, 30}};
+  EXPECT_TRUE(ui::what_to_improve(score).empty());
+}
+
+}  // namespace
+}  // namespace needle::test

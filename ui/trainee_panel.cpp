@@ -1,0 +1,141 @@
+#include "ui/trainee_panel.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace needle::ui {
+namespace {
+
+const ImVec4 kGood(0.35f, 0.8f, 0.4f, 1.0f), kBad(0.9f, 0.3f, 0.25f, 1.0f), kDim(0.6f, 0.6f, 0.6f, 1.0f);
+
+// A horizontal gauge from 0 to `full`: the safe band (0 to safe) shaded, the step's target band
+// outlined when it has one, the current value as a bar, red beyond the safe limit.
+void force_gauge(double force, double safe, double band_min, double band_max) {
+  const double full = std::max({safe * 1.5, band_max * 1.2, force * 1.05, 1e-6});
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const float width = ImGui::GetContentRegionAvail().x, height = 18.0f;
+  auto x_of = [&](double v) { return origin.x + float(std::clamp(v / full, 0.0, 1.0)) * width; };
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height), IM_COL32(40, 40, 46, 255));
+  draw->AddRectFilled(origin, ImVec2(x_of(safe), origin.y + height), IM_COL32(40, 80, 50, 255));
+  const bool over = force > safe;
+  draw->AddRectFilled(ImVec2(origin.x, origin.y + 4), ImVec2(x_of(force), origin.y + height - 4),
+                      over ? IM_COL32(220, 70, 60, 255) : IM_COL32(120, 200, 255, 255));
+  if (band_max > band_min) {
+    draw->AddRect(ImVec2(x_of(band_min), origin.y), ImVec2(x_of(band_max), origin.y + height), IM_COL32(255, 220, 80, 255),
+                  0.0f, 0, 2.0f);
+  }
+  ImGui::Dummy(ImVec2(width, height));
+  ImGui::Text("force %.2f N   safe < %.1f N", force, safe);
+}
+
+void metric_line(const char* name, double value, const char* unit, double scale = 1.0) {
+  if (std::isnan(value)) {
+    ImGui::TextColored(kDim, "%-16s -", name);
+  } else {
+    ImGui::Text("%-16s %.2f %s", name, value * scale, unit);
+  }
+}
+
+void draw_running(const TraineeView& v) {
+  const Task& task = *v.task;
+  const size_t current = v.progress->current_step();
+  const Step& step = task.steps[std::min(current, task.steps.size() - 1)];
+  ImGui::Text("Step %zu of %zu: %s", current + 1, task.steps.size(), step.id.c_str());
+  ImGui::ProgressBar(float(current) / float(task.steps.size()), ImVec2(-1, 0));
+  ImGui::Separator();
+  ImGui::TextWrapped("%s", step.instruction.c_str());
+  if (step.time_limit_s > 0.0) ImGui::TextColored(kDim, "time limit %.0f s", step.time_limit_s);
+  if (v.progress->condition_met()) ImGui::TextColored(kGood, "holding... %.1f s", v.progress->held_s());
+  ImGui::Separator();
+  const bool force_band = step.condition.type == ConditionType::kForceHeld;
+  force_gauge(v.force_N, task.scoring.safe_force_N, force_band ? step.condition.min : 0.0,
+              force_band ? step.condition.max : 0.0);
+  ImGui::Separator();
+  const Metrics& m = v.step_metrics;
+  metric_line("tip to target", m.tip_error_m, "mm", 1000.0);
+  metric_line("off axis", m.axis_deviation_deg, "deg");
+  metric_line("lateral load", m.lateral_load_Ns, "N s");
+  metric_line("peak force", m.peak_force_N, "N");
+  metric_line("path", m.path_length_m, "mm", 1000.0);
+}
+
+void draw_result(const SessionResult& r) {
+  ImGui::TextColored(r.score.passed ? kGood : kBad, "Score %.0f / 100  %s", r.score.total,
+                     r.score.passed ? "PASSED" : "NOT PASSED");
+  ImGui::Separator();
+  if (ImGui::BeginTable("breakdown", 2, ImGuiTableFlags_SizingStretchProp)) {
+    for (const ScoreComponent& c : r.score.components) {
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      ImGui::TextUnformatted(c.name.c_str());
+      ImGui::TableSetColumnIndex(1);
+      ImGui::Text("%4.1f / %4.1f", c.points(), c.weight);
+    }
+    ImGui::EndTable();
+  }
+  std::vector<std::string> advice = what_to_improve(r.score);
+  for (const std::string& why : r.score.reasons_failed) advice.push_back(why);
+  if (!advice.empty()) {
+    ImGui::Separator();
+    ImGui::TextUnformatted("What to improve:");
+    for (const std::string& a : advice) ImGui::BulletText("%s", a.c_str());
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> what_to_improve(const Score& score) {
+  static const std::map<std::string, std::string> advice = {
+      {"completion", "Finish every step before its time runs out"},
+      {"tip_error", "Bring the tip closer to the target"},
+      {"axis_deviation", "Keep the needle on the planned axis"},
+      {"lateral_load", "Do not push the needle sideways in the tissue"},
+      {"peak_force", "Press more gently: stay inside the safe force band"},
+      {"force_steadiness", "Hold the force steadier"},
+      {"path_efficiency", "Move more directly to the target"},
+      {"smoothness", "Move more smoothly"},
+      {"time", "Work a little faster"},
+      {"retries", "Avoid withdrawing and re-inserting"},
+  };
+  std::vector<const ScoreComponent*> lost;
+  for (const ScoreComponent& c : score.components) {
+    if (c.weight - c.points() > 1.0) lost.push_back(&c);
+  }
+  std::sort(lost.begin(), lost.end(),
+            [](const ScoreComponent* a, const ScoreComponent* b) { return a->weight - a->points() > b->weight - b->points(); });
+  std::vector<std::string> out;
+  for (size_t i = 0; i < lost.size() && i < 2; ++i) {
+    auto it = advice.find(lost[i]->name);
+    out.push_back(it != advice.end() ? it->second : "Improve " + lost[i]->name);
+  }
+  return out;
+}
+
+void draw_trainee_panel(const TraineeView& v) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x - 10.0f, 10.0f), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+  ImGui::SetNextWindowSize(ImVec2(340.0f, 0.0f), ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
+                                 ImGuiWindowFlags_NoSavedSettings;
+  if (ImGui::Begin(v.task->title.c_str(), nullptr, flags)) {
+    if (v.result) {
+      draw_result(*v.result);
+    } else {
+      draw_running(v);
+    }
+    ImGui::Separator();
+    if (v.fault) {
+      ImGui::TextColored(kBad, "haptic loop %.0f Hz   FAULT: %s", v.loop_rate_hz, v.fault);
+    } else {
+      ImGui::TextColored(kDim, "haptic loop %.0f Hz   no fault", v.loop_rate_hz);
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace needle::ui

@@ -1,0 +1,26 @@
+// The trainee's panel: the current step and its instruction, progress through the task, a live
+// force gauge with the safe band, live metrics, the haptic loop's rate and faults; at the end,
+// the score with its breakdown and what to improve. Draws into the current ImGui frame.
+#pragma once
+
+#include "ui/scoring/session_scorer.hpp"
+
+namespace needle::ui {
+
+struct TraineeView {
+  const Task* task = nullptr;
+  const TaskProgress* progress = nullptr;
+  Metrics step_metrics;        // the current step's, live
+  double force_N = 0.0;        // |environment force| now
+  double loop_rate_hz = 0.0;   // measured rate of the haptic loop
+  const char* fault = nullptr; // latched safety fault, nullptr when none
+  const SessionResult* result = nullptr;  // set once the task is over
+};
+
+void draw_trainee_panel(const TraineeView& view);
+
+// The two score components that lost the most points, as advice ("Keep the needle on the
+// planned axis"), most costly first; empty when nothing lost more than a point.
+std::vector<std::string> what_to_improve(const Score& score);
+
+}  // namespace needle::ui
