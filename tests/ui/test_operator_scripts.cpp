@@ -49,8 +49,9 @@ haptics::ToolSnapshot snapshot(const haptics::TickRecord& r) {
   s.needle_orientation[0] = q.w(), s.needle_orientation[1] = q.x();
   s.needle_orientation[2] = q.y(), s.needle_orientation[3] = q.z();
   using haptics::ContactMode, haptics::ContactState;
-  s.contact = r.mode == ContactMode::Free ? ContactState::kFree
-              : r.mode == ContactMode::Holonomic ? ContactState::kRigidSurface : ContactState::kTissue;
+  s.contact = r.mode == ContactMode::Free        ? ContactState::kFree
+              : r.mode == ContactMode::Holonomic ? ContactState::kRigidSurface
+                                                 : ContactState::kTissue;
   s.multiplier_count = r.mode == ContactMode::Free ? 0 : r.mode == ContactMode::Holonomic ? 1 : 2;
   s.multipliers[0] = r.lambda_v[0], s.multipliers[1] = r.lambda_v[1];
   return s;

@@ -39,10 +39,14 @@ std::vector<std::string> fields(const std::string& line) {
   bool quoted = false;
   for (size_t i = 0; i < line.size(); ++i) {
     const char c = line[i];
-    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') out.back() += '"', ++i;
-    else if (c == '"') quoted = !quoted;
-    else if (c == ',' && !quoted) out.emplace_back();
-    else out.back() += c;
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+      out.back() += '"', ++i;
+    else if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted)
+      out.emplace_back();
+    else
+      out.back() += c;
   }
   return out;
 }
@@ -104,7 +108,7 @@ TEST(SessionExport, CsvHasOneRowPerMetricPerStepAndForTheSession) {
   EXPECT_EQ(peak[2], "touch, then \"hold\"");
   EXPECT_EQ(peak[3], "completed");
   EXPECT_DOUBLE_EQ(std::stod(peak[7]), 1.5);
-  EXPECT_EQ(find("0", "force_sd_N")[7], "");  // does not apply
+  EXPECT_EQ(find("0", "force_sd_N")[7], "");      // does not apply
   EXPECT_EQ(find("1", "force_sd_N")[5], "26.5");  // the step's end
   EXPECT_EQ(find("1", "force_sd_N")[7], "0.125");
   const auto session = find("-1", "duration_s");

@@ -93,7 +93,8 @@ TEST(StepMetrics, TipErrorPathAndIdealPath) {
   // An L: 3 cm along x, then 4 cm along y, ending (0.03, 0.04, 0) - (0, 0, 0) ... 5 cm from the
   // start; the target is at the origin, the start at (0, 0, 0.003).
   for (int k = 0; k <= 300; ++k) scorer.feed(sample(state(k * 0.01, {k * 1e-4, 0, 0.003}, 0, ContactState::kTissue)));
-  for (int k = 1; k <= 400; ++k) scorer.feed(sample(state(3 + k * 0.01, {0.03, k * 1e-4, 0.003}, 0, ContactState::kTissue)));
+  for (int k = 1; k <= 400; ++k)
+    scorer.feed(sample(state(3 + k * 0.01, {0.03, k * 1e-4, 0.003}, 0, ContactState::kTissue)));
   const Metrics m = scorer.step_metrics(0);
   EXPECT_NEAR(m.path_length_m, 0.07, 1e-12);
   EXPECT_NEAR(m.ideal_path_m, 0.05, 1e-12);
@@ -113,12 +114,12 @@ TEST(StepMetrics, ContactEventsIgnoreChatterAndCountFaultsOnce) {
     }
   };
   run(ContactState::kFree, 0.5);
-  run(ContactState::kTissue, 1.0);   // insertion
-  run(ContactState::kFree, 0.05);    // chatter: shorter than the debounce
+  run(ContactState::kTissue, 1.0);  // insertion
+  run(ContactState::kFree, 0.05);   // chatter: shorter than the debounce
   run(ContactState::kTissue, 1.0);
-  run(ContactState::kFree, 0.5);     // withdrawal
-  run(ContactState::kTissue, 1.0);   // re-insertion
-  run(ContactState::kFree, 0.5);     // withdrawal
+  run(ContactState::kFree, 0.5);          // withdrawal
+  run(ContactState::kTissue, 1.0);        // re-insertion
+  run(ContactState::kFree, 0.5);          // withdrawal
   run(ContactState::kRigidSurface, 0.2);  // a rigid contact the step did not ask for
   run(ContactState::kFree, 0.03);
   run(ContactState::kRigidSurface, 0.2);  // the same contact (chatter)

@@ -56,8 +56,10 @@ void expect_same_metrics(const Metrics& got, const Metrics& want) {
     for_each_metric(want, [&](const char* other, const auto& w) {
       if (std::string(name) != other) return;
       if constexpr (std::is_floating_point_v<std::decay_t<decltype(w)>>) {
-        if (std::isnan(w)) EXPECT_TRUE(std::isnan(g)) << name;
-        else EXPECT_DOUBLE_EQ(g, w) << name;
+        if (std::isnan(w))
+          EXPECT_TRUE(std::isnan(g)) << name;
+        else
+          EXPECT_DOUBLE_EQ(g, w) << name;
       } else {
         EXPECT_EQ(g, w) << name;
       }
@@ -124,7 +126,8 @@ TEST(SessionStore, ErrorsNameTheFileAndWhatFailed) {
     store.finish_session(id, a_result());
     ADD_FAILURE() << "finished twice";
   } catch (const SessionStoreError& e) {
-    EXPECT_NE(std::string(e.what()).find(file.string() + ": finishing session " + std::to_string(id)), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find(file.string() + ": finishing session " + std::to_string(id)),
+              std::string::npos)
         << e.what();
   }
   EXPECT_EQ(store.load(id).steps.size(), 2u);  // the failed second finish changed nothing
@@ -151,16 +154,20 @@ void raw_exec(sqlite3* db, const std::string& sql) {
 
 TEST(SessionStore, MigratesASchemaOneFile) {
   const fs::path file = fresh_db();
-  { SessionStore old(file, 1); EXPECT_EQ(old.schema_version(), 1); }
+  {
+    SessionStore old(file, 1);
+    EXPECT_EQ(old.schema_version(), 1);
+  }
   // What a schema-1 program wrote: a finished session, one step, two metrics.
   sqlite3* db = nullptr;
   ASSERT_EQ(sqlite3_open(file.c_str(), &db), SQLITE_OK);
-  raw_exec(db, "INSERT INTO trainees VALUES (1, 'old timer');"
-               "INSERT INTO tasks VALUES (1, 'rigid_sphere', 'Rigid sphere', 'rigid_sphere.json');"
-               "INSERT INTO sessions VALUES (1, 1, 1, '2026-01-02T03:04:05Z', '2026-01-02T03:05:00Z', 'complete',"
-               "  82.5, 1, 55.0, '/runs/old.nsr');"
-               "INSERT INTO step_results VALUES (1, 0, 'touch', 'completed', 0.0, 6.0);"
-               "INSERT INTO metrics VALUES (1, 0, 'peak_force_N', 1.25), (1, -1, 'tip_error_m', NULL);");
+  raw_exec(db,
+           "INSERT INTO trainees VALUES (1, 'old timer');"
+           "INSERT INTO tasks VALUES (1, 'rigid_sphere', 'Rigid sphere', 'rigid_sphere.json');"
+           "INSERT INTO sessions VALUES (1, 1, 1, '2026-01-02T03:04:05Z', '2026-01-02T03:05:00Z', 'complete',"
+           "  82.5, 1, 55.0, '/runs/old.nsr');"
+           "INSERT INTO step_results VALUES (1, 0, 'touch', 'completed', 0.0, 6.0);"
+           "INSERT INTO metrics VALUES (1, 0, 'peak_force_N', 1.25), (1, -1, 'tip_error_m', NULL);");
   sqlite3_close(db);
 
   SessionStore store(file);
@@ -213,8 +220,11 @@ TEST(SessionStore, AKilledRunLeavesAnIncompleteSessionAndAReadableFile) {
     // Die in the middle of a write transaction: half of a finish, never committed.
     sqlite3* db = nullptr;
     sqlite3_open(file.c_str(), &db);
-    sqlite3_exec(db, ("BEGIN IMMEDIATE; INSERT INTO step_results VALUES (" + std::to_string(dying) +
-                      ", 0, 'touch', 'completed', 0, 1)").c_str(), nullptr, nullptr, nullptr);
+    sqlite3_exec(db,
+                 ("BEGIN IMMEDIATE; INSERT INTO step_results VALUES (" + std::to_string(dying) +
+                  ", 0, 'touch', 'completed', 0, 1)")
+                     .c_str(),
+                 nullptr, nullptr, nullptr);
     _exit(0);
   }
   int status = 0;
@@ -246,8 +256,8 @@ TEST(SessionStore, AReaderIsNotBlockedByAnOpenWriteTransaction) {
   const int64_t id = reader.begin_session("ana", small_task(), "sim", "");
   sqlite3* writer = nullptr;
   ASSERT_EQ(sqlite3_open(file.c_str(), &writer), SQLITE_OK);
-  raw_exec(writer, "BEGIN IMMEDIATE; UPDATE sessions SET status = 'complete', score = 99 WHERE id = " +
-                       std::to_string(id));
+  raw_exec(writer,
+           "BEGIN IMMEDIATE; UPDATE sessions SET status = 'complete', score = 99 WHERE id = " + std::to_string(id));
   // The write transaction is open: the reader sees the last committed state, at once.
   EXPECT_FALSE(reader.load(id).info.complete);
   EXPECT_EQ(reader.sessions().size(), 1u);
@@ -286,7 +296,8 @@ TEST(SessionStore, ConcurrentReaderSeesWholeSessionsOnly) {
   std::string reader_error;
   std::thread writer_thread([&] {
     SessionStore writer(file);
-    for (int i = 0; i < kSessions; ++i) writer.finish_session(writer.begin_session("w", small_task(), "sim", ""), a_result());
+    for (int i = 0; i < kSessions; ++i)
+      writer.finish_session(writer.begin_session("w", small_task(), "sim", ""), a_result());
     writing = false;
   });
   std::thread reader_thread([&] {

@@ -76,7 +76,8 @@ TEST(TaskFiles, NormalMarkersStandOnTheOutwardNormalAtTheContact) {
 // A small valid task, written next to the test output so that "../" paths resolve.
 json valid_task() {
   return json::parse(R"({
-    "name": "t", "scene": ")" + (kTasks / "../scenes/thesis_sphere.json").string() + R"(",
+    "name": "t", "scene": ")" +
+                     (kTasks / "../scenes/thesis_sphere.json").string() + R"(",
     "markers": [{"name": "p", "point": [0, 0, 0]}, {"name": "a", "axis": {"origin": [0, 0, 0], "direction": [0, 0, 2]}}],
     "steps": [
       {"id": "s0", "instruction": "go", "condition": {"type": "tip_near", "marker": "p", "within_m": 0.01}},
@@ -176,9 +177,17 @@ TEST(TaskFiles, ErrorsNameTheFileAndThePointer) {
   expect_error(j, "no_steps", "/steps", "non-empty array");
 
   j = valid_task();
-  j["scoring"] = {{"weights", {{"completion", 0}, {"tip_error", 0}, {"axis_deviation", 0}, {"lateral_load", 0},
-                               {"peak_force", 0}, {"force_steadiness", 0}, {"path_efficiency", 0},
-                               {"smoothness", 0}, {"time", 0}, {"retries", 0}}}};
+  j["scoring"] = {{"weights",
+                   {{"completion", 0},
+                    {"tip_error", 0},
+                    {"axis_deviation", 0},
+                    {"lateral_load", 0},
+                    {"peak_force", 0},
+                    {"force_steadiness", 0},
+                    {"path_efficiency", 0},
+                    {"smoothness", 0},
+                    {"time", 0},
+                    {"retries", 0}}}};
   expect_error(j, "zero_weights", "/scoring/weights", "add up to 0");
 
   j = valid_task();
@@ -192,9 +201,17 @@ TEST(TaskFiles, ErrorsNameTheFileAndThePointer) {
 
 TEST(TaskFiles, WeightsAreNormalizedToOneHundred) {
   json j = valid_task();
-  j["scoring"] = {{"weights", {{"completion", 1}, {"tip_error", 1}, {"axis_deviation", 0}, {"lateral_load", 0},
-                               {"peak_force", 0}, {"force_steadiness", 0}, {"path_efficiency", 0},
-                               {"smoothness", 0}, {"time", 0}, {"retries", 2}}}};
+  j["scoring"] = {{"weights",
+                   {{"completion", 1},
+                    {"tip_error", 1},
+                    {"axis_deviation", 0},
+                    {"lateral_load", 0},
+                    {"peak_force", 0},
+                    {"force_steadiness", 0},
+                    {"path_efficiency", 0},
+                    {"smoothness", 0},
+                    {"time", 0},
+                    {"retries", 2}}}};
   const Task t = load_task(write_task(j, "weights"));
   EXPECT_DOUBLE_EQ(t.scoring.weights.completion, 25.0);
   EXPECT_DOUBLE_EQ(t.scoring.weights.retries, 50.0);

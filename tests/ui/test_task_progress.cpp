@@ -36,7 +36,7 @@ TEST(Conditions, TipNearIsADistanceAndNeedsTheContact) {
   const Task t = three_markers();
   Condition c = condition(ConditionType::kTipNear, 0);
   c.within_m = 0.01;
-  EXPECT_TRUE(condition_holds(t, c, state(0, {0.006, 0.008, 0})));   // 10 mm exactly
+  EXPECT_TRUE(condition_holds(t, c, state(0, {0.006, 0.008, 0})));  // 10 mm exactly
   EXPECT_FALSE(condition_holds(t, c, state(0, {0.006, 0.0081, 0})));
   c.contact = ContactRequirement::kRigidSurface;
   EXPECT_FALSE(condition_holds(t, c, state(0, {0, 0, 0})));
@@ -115,7 +115,7 @@ TEST(TaskProgress, AStepCompletesWhenItsConditionHoldsWithoutABreakForItsHoldTim
   p.feed(state(1.0, {0.05, 0, 0}));  // starts step 0, far away
   EXPECT_EQ(p.records()[0].outcome, StepOutcome::kActive);
   EXPECT_DOUBLE_EQ(p.records()[0].start_s, 1.0);
-  p.feed(state(1.25, {0, 0, 0}));   // near from 1.25 s
+  p.feed(state(1.25, {0, 0, 0}));  // near from 1.25 s
   p.feed(state(1.5, {0, 0, 0}));
   EXPECT_TRUE(p.condition_met());
   EXPECT_DOUBLE_EQ(p.held_s(), 0.25);
@@ -162,7 +162,7 @@ TEST(TaskProgress, MovingTheTipInAFixedTipStepFailsIt) {
   p.feed(state(0.0, {0.1, 0, 0}));
   p.feed(state(1.0, {0.1, 0.002, 0.002}));  // 2.8 mm from the start: still fine
   EXPECT_EQ(p.current_step(), 0u);
-  p.feed(state(2.0, {0.1, 0.003, 0.0}));    // 3 mm exactly: fine
+  p.feed(state(2.0, {0.1, 0.003, 0.0}));  // 3 mm exactly: fine
   EXPECT_EQ(p.current_step(), 0u);
   p.feed(state(3.0, {0.1, 0.0031, 0.0}));
   EXPECT_EQ(p.records()[0].outcome, StepOutcome::kTipMoved);

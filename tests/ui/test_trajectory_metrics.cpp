@@ -32,8 +32,10 @@ TEST(TrajectoryMetrics, CircleAtConstantSpeed) {
   // R = 5 cm, omega = 0.15 pi rad/s for 10 s (three quarters of a turn): |jerk| = R omega^3,
   // L = R omega T, so NJ = sqrt(T^5 / (2 L^2) * R^2 omega^6 T) = omega^2 T^2 / sqrt(2).
   const double R = 0.05, w = 0.15 * kPi, T = 10.0;
-  const PathAccumulator path = sampled(T, [&](double t) { return Vec3{R * std::cos(w * t), R * std::sin(w * t), 0.3}; });
-  EXPECT_NEAR(path.length_m(), R * w * T, 1e-8);        // chords of 1 ms: relative error (w dt)^2 / 24
+  const PathAccumulator path = sampled(T, [&](double t) {
+    return Vec3{R * std::cos(w * t), R * std::sin(w * t), 0.3};
+  });
+  EXPECT_NEAR(path.length_m(), R * w * T, 1e-8);           // chords of 1 ms: relative error (w dt)^2 / 24
   EXPECT_NEAR(path.chord_m(), R * std::sqrt(2.0), 1e-12);  // start to end across a quarter-turn gap
   EXPECT_NEAR(path.normalized_jerk(), w * w * T * T / std::sqrt(2.0), 1e-3 * w * w * T * T);
 }
@@ -64,8 +66,11 @@ TEST(TrajectoryMetrics, MinimumJerkReachGivesSqrt360) {
 TEST(TrajectoryMetrics, ServoRateJitterIsNotJerk) {
   // 1 um of jitter at 250 Hz on a slow straight line: differenced at 1 kHz it would be a jerk
   // of 1e-6 (2 pi 250)^3 = 3.9e3 m/s^3; decimated to 50 Hz it stays a small fraction of that.
-  const PathAccumulator path = sampled(4.0, [](double t) { return Vec3{0.02 * t + 1e-6 * std::sin(2 * kPi * 250 * t), 0, 0}; });
-  const double at_servo_rate = std::sqrt(0.5 * std::pow(2 * kPi * 250, 6) * 0.5e-12 * 4.0 * std::pow(4.0, 5) / (0.08 * 0.08));
+  const PathAccumulator path = sampled(4.0, [](double t) {
+    return Vec3{0.02 * t + 1e-6 * std::sin(2 * kPi * 250 * t), 0, 0};
+  });
+  const double at_servo_rate =
+      std::sqrt(0.5 * std::pow(2 * kPi * 250, 6) * 0.5e-12 * 4.0 * std::pow(4.0, 5) / (0.08 * 0.08));
   EXPECT_LT(path.normalized_jerk(), 1e-3 * at_servo_rate);
 }
 

@@ -12,9 +12,9 @@
 namespace needle::ui {
 
 struct ScoreComponent {
-  std::string name;    // "completion", "tip_error", ... (the ScoreWeights names)
-  double value = 0.0;  // in [0, 1]
-  double weight = 0.0; // points it is worth (the weights add up to 100)
+  std::string name;     // "completion", "tip_error", ... (the ScoreWeights names)
+  double value = 0.0;   // in [0, 1]
+  double weight = 0.0;  // points it is worth (the weights add up to 100)
   double points() const { return value * weight; }
 };
 

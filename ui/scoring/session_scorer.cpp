@@ -14,8 +14,10 @@ ContactEvents SessionScorer::contact_events(const haptics::ToolSnapshot& s) {
   const bool was_tissue = started_ && contact_ == ContactState::kTissue;
   const bool was_rigid = started_ && contact_ == ContactState::kRigidSurface;
   if (s.contact == ContactState::kTissue && !was_tissue) {
-    if (withdrawal_pending_) withdrawal_pending_ = false;  // chatter: the same insertion
-    else e.reinsertion = inserted_;
+    if (withdrawal_pending_)
+      withdrawal_pending_ = false;  // chatter: the same insertion
+    else
+      e.reinsertion = inserted_;
     inserted_ = true;
   }
   if (was_tissue && s.contact != ContactState::kTissue) {

@@ -20,7 +20,8 @@ void StepMetricsAccumulator::add(const haptics::ToolSnapshot& state, const Conta
   tip_ = vec3(state.needle_tip_m);
   path_.add(t, tip_);
   if (axis_ >= 0) {
-    last_deviation_rad_ = angle_between(needle_axis(state.needle_orientation), planned_direction(task_.markers[axis_], tip_));
+    last_deviation_rad_ =
+        angle_between(needle_axis(state.needle_orientation), planned_direction(task_.markers[axis_], tip_));
     deviation_sq_sum_ += last_deviation_rad_ * last_deviation_rad_;
   }
   // Lateral load: the nonholonomic multipliers are the tissue's sideways reaction (thesis 3.22).

@@ -25,8 +25,8 @@ class StepMetricsAccumulator {
  private:
   const Task& task_;
   const Step& step_;
-  int target_ = -1;  // point marker the tip error is measured to
-  int axis_ = -1;    // axis marker the deviation is measured from
+  int target_ = -1;                // point marker the tip error is measured to
+  int axis_ = -1;                  // axis marker the deviation is measured from
   bool deviation_at_end_ = false;  // alignment steps: how well aligned at the end, not on the way
   bool planned_rigid_ = false;
   long samples_ = 0;

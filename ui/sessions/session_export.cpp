@@ -17,8 +17,10 @@ json number(double x) { return std::isnan(x) ? json(nullptr) : json(x); }
 json metrics_json(const Metrics& m) {
   json out = json::object();
   for_each_metric(m, [&](const char* name, const auto& value) {
-    if constexpr (std::is_floating_point_v<std::decay_t<decltype(value)>>) out[name] = number(value);
-    else out[name] = value;
+    if constexpr (std::is_floating_point_v<std::decay_t<decltype(value)>>)
+      out[name] = number(value);
+    else
+      out[name] = value;
   });
   return out;
 }
@@ -77,9 +79,15 @@ json result_json(const SessionResult& result) {
 json session_json(const StoredSession& s) {
   const SessionInfo& i = s.info;
   return {{"session",
-           {{"id", i.id}, {"trainee", i.trainee}, {"task", i.task}, {"device", i.device},
-            {"started_at", i.started_at}, {"ended_at", i.ended_at}, {"complete", i.complete},
-            {"duration_s", i.duration_s}, {"recording_path", i.recording_path}}},
+           {{"id", i.id},
+            {"trainee", i.trainee},
+            {"task", i.task},
+            {"device", i.device},
+            {"started_at", i.started_at},
+            {"ended_at", i.ended_at},
+            {"complete", i.complete},
+            {"duration_s", i.duration_s},
+            {"recording_path", i.recording_path}}},
           {"score", i.score},
           {"passed", i.passed},
           {"components", components_json(s.components)},
@@ -101,7 +109,7 @@ std::string session_csv(const StoredSession& s) {
              csv_number(step.record.start_s) + "," + csv_number(step.record.end_s) + ",",
          step.metrics);
   }
-  rows(id + ",-1,session," + (s.info.complete ? "complete" : "incomplete") + ",,," , s.overall);
+  rows(id + ",-1,session," + (s.info.complete ? "complete" : "incomplete") + ",,,", s.overall);
   return out;
 }
 

@@ -114,7 +114,9 @@ class Statement {
     return value;
   }
   void reset() { sqlite3_reset(stmt_); }
-  double real(int c) const { return sqlite3_column_type(stmt_, c) == SQLITE_NULL ? kNotApplicable : sqlite3_column_double(stmt_, c); }
+  double real(int c) const {
+    return sqlite3_column_type(stmt_, c) == SQLITE_NULL ? kNotApplicable : sqlite3_column_double(stmt_, c);
+  }
   int64_t integer(int c) const { return sqlite3_column_int64(stmt_, c); }
   std::string text(int c) const {
     const unsigned char* t = sqlite3_column_text(stmt_, c);
@@ -133,14 +135,43 @@ class Statement {
   sqlite3_stmt* stmt_ = nullptr;
 };
 
+// BEGIN on construction, ROLLBACK on destruction unless commit() ran: an exception anywhere in
+// between leaves the file as it was.
+class Transaction {
+ public:
+  Transaction(sqlite3* db, std::string where, const char* begin = "BEGIN IMMEDIATE")
+      : db_(db), where_(std::move(where)) {
+    run(begin);
+  }
+  ~Transaction() {
+    if (open_) sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+  }
+  Transaction(const Transaction&) = delete;
+  Transaction& operator=(const Transaction&) = delete;
+  void commit() {
+    run("COMMIT");
+    open_ = false;
+  }
+
+ private:
+  void run(const char* sql) {
+    if (sqlite3_exec(db_, sql, nullptr, nullptr, nullptr) != SQLITE_OK)
+      throw SessionStoreError(where_ + ": " + sql + ": " + sqlite3_errmsg(db_));
+  }
+  sqlite3* db_;
+  std::string where_;
+  bool open_ = true;
+};
+
 }  // namespace
 
-void SessionStore::exec(const char* sql) const {
+void SessionStore::exec(const char* sql, const std::string& what) const {
   char* message = nullptr;
   if (sqlite3_exec(db_, sql, nullptr, nullptr, &message) != SQLITE_OK) {
     const std::string text = message ? message : "unknown error";
     sqlite3_free(message);
-    throw SessionStoreError(file_ + ": running \"" + std::string(sql).substr(0, 60) + "\": " + text);
+    throw SessionStoreError(file_ + ": " + (what.empty() ? "running \"" + std::string(sql) + "\"" : what) + ": " +
+                            text);
   }
 }
 
@@ -162,21 +193,16 @@ SessionStore::SessionStore(const std::filesystem::path& file, int schema_version
     }
     exec("PRAGMA synchronous = FULL");
     // Migrate under the write lock, re-reading the version: another process may have done it.
-    exec("BEGIN IMMEDIATE");
-    try {
-      const int found = this->schema_version();
-      if (found > kSessionSchemaVersion)
-        throw SessionStoreError(file_ + ": schema version " + std::to_string(found) + " is newer than this program's " +
-                                std::to_string(kSessionSchemaVersion));
-      for (int v = found; v < schema_version; ++v) {
-        exec(kMigrations[v]);
-        exec(("PRAGMA user_version = " + std::to_string(v + 1)).c_str());
-      }
-      exec("COMMIT");
-    } catch (...) {
-      sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
-      throw;
+    Transaction migration(db_, file_ + ": migrating the schema");
+    const int found = this->schema_version();
+    if (found > kSessionSchemaVersion)
+      throw SessionStoreError(file_ + ": schema version " + std::to_string(found) + " is newer than this program's " +
+                              std::to_string(kSessionSchemaVersion));
+    for (int v = found; v < schema_version; ++v) {
+      exec(kMigrations[v], "migrating to schema version " + std::to_string(v + 1));
+      exec(("PRAGMA user_version = " + std::to_string(v + 1)).c_str());
     }
+    migration.commit();
   } catch (...) {
     sqlite3_close(db_);
     throw;
@@ -186,15 +212,13 @@ SessionStore::SessionStore(const std::filesystem::path& file, int schema_version
 SessionStore::~SessionStore() { sqlite3_close(db_); }
 
 int SessionStore::schema_version() const {
-  const std::string f = file_;
-  Statement s(db_, f, "PRAGMA user_version");
+  Statement s(db_, file_, "PRAGMA user_version");
   s.step();
   return static_cast<int>(s.integer(0));
 }
 
 std::string SessionStore::journal_mode() const {
-  const std::string f = file_;
-  Statement s(db_, f, "PRAGMA journal_mode");
+  Statement s(db_, file_, "PRAGMA journal_mode");
   s.step();
   return s.text(0);
 }
@@ -202,59 +226,59 @@ std::string SessionStore::journal_mode() const {
 int64_t SessionStore::begin_session(const std::string& trainee, const Task& task, const std::string& device,
                                     const std::string& recording_path) {
   const std::string f = file_ + ": starting a session";
-  exec("BEGIN IMMEDIATE");
-  try {
-    Statement t(db_, f, "INSERT INTO trainees(name) VALUES (?) ON CONFLICT(name) DO UPDATE SET name = excluded.name RETURNING id");
-    const int64_t trainee_id = t.bind(1, trainee).single_integer();
-    Statement k(db_, f, "INSERT INTO tasks(name, title, source) VALUES (?, ?, ?) ON CONFLICT(name) DO UPDATE SET "
-                     "title = excluded.title, source = excluded.source RETURNING id");
-    const int64_t task_id = k.bind(1, task.name).bind(2, task.title).bind(3, task.source).single_integer();
-    Statement s(db_, f, "INSERT INTO sessions(trainee_id, task_id, started_at, status, recording_path, device) "
-                     "VALUES (?, ?, ?, 'incomplete', ?, ?) RETURNING id");
-    const int64_t id =
-        s.bind(1, trainee_id).bind(2, task_id).bind(3, now_utc()).bind(4, recording_path).bind(5, device).single_integer();
-    exec("COMMIT");
-    return id;
-  } catch (...) {
-    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
-    throw;
-  }
+  Transaction transaction(db_, f);
+  Statement t(
+      db_, f,
+      "INSERT INTO trainees(name) VALUES (?) ON CONFLICT(name) DO UPDATE SET name = excluded.name RETURNING id");
+  const int64_t trainee_id = t.bind(1, trainee).single_integer();
+  Statement k(db_, f,
+              "INSERT INTO tasks(name, title, source) VALUES (?, ?, ?) ON CONFLICT(name) DO UPDATE SET "
+              "title = excluded.title, source = excluded.source RETURNING id");
+  const int64_t task_id = k.bind(1, task.name).bind(2, task.title).bind(3, task.source).single_integer();
+  Statement s(db_, f,
+              "INSERT INTO sessions(trainee_id, task_id, started_at, status, recording_path, device) "
+              "VALUES (?, ?, ?, 'incomplete', ?, ?) RETURNING id");
+  const int64_t id = s.bind(1, trainee_id)
+                         .bind(2, task_id)
+                         .bind(3, now_utc())
+                         .bind(4, recording_path)
+                         .bind(5, device)
+                         .single_integer();
+  transaction.commit();
+  return id;
 }
 
 void SessionStore::finish_session(int64_t id, const SessionResult& result) {
   const std::string session = "finishing session " + std::to_string(id);
   const std::string f = file_ + ": " + session;
-  exec("BEGIN IMMEDIATE");
-  try {
-    Statement done(db_, f, "UPDATE sessions SET status = 'complete', ended_at = ?, score = ?, passed = ?, duration_s = ? "
-                        "WHERE id = ? AND status = 'incomplete'");
-    done.bind(1, now_utc()).bind(2, result.score.total).bind(3, int64_t{result.score.passed});
-    done.bind(4, result.overall.duration_s).bind(5, id).run();
-    if (sqlite3_changes(db_) != 1) throw SessionStoreError(file_ + ": " + session + ": no incomplete session with that id");
-    Statement step(db_, f, "INSERT INTO step_results VALUES (?, ?, ?, ?, ?, ?)");
-    Statement metric(db_, f, "INSERT INTO metrics VALUES (?, ?, ?, ?)");
-    const auto write_metrics = [&](int64_t index, const Metrics& m) {
-      for_each_metric(m, [&](const char* name, auto value) {
-        metric.bind(1, id).bind(2, index).bind(3, std::string(name)).bind(4, static_cast<double>(value)).run();
-      });
-    };
-    for (size_t i = 0; i < result.steps.size(); ++i) {
-      const StepResult& s = result.steps[i];
-      step.bind(1, id).bind(2, int64_t(i)).bind(3, s.id).bind(4, std::string(step_outcome_name(s.record.outcome)));
-      step.bind(5, s.record.start_s).bind(6, s.record.end_s).run();
-      write_metrics(int64_t(i), s.metrics);
-    }
-    write_metrics(-1, result.overall);
-    Statement component(db_, f, "INSERT INTO score_components VALUES (?, ?, ?, ?, ?)");
-    for (size_t i = 0; i < result.score.components.size(); ++i) {
-      const ScoreComponent& c = result.score.components[i];
-      component.bind(1, id).bind(2, int64_t(i)).bind(3, c.name).bind(4, c.value).bind(5, c.weight).run();
-    }
-    exec("COMMIT");
-  } catch (...) {
-    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
-    throw;
+  Transaction transaction(db_, f);
+  Statement done(db_, f,
+                 "UPDATE sessions SET status = 'complete', ended_at = ?, score = ?, passed = ?, duration_s = ? "
+                 "WHERE id = ? AND status = 'incomplete'");
+  done.bind(1, now_utc()).bind(2, result.score.total).bind(3, int64_t{result.score.passed});
+  done.bind(4, result.overall.duration_s).bind(5, id).run();
+  if (sqlite3_changes(db_) != 1)
+    throw SessionStoreError(file_ + ": " + session + ": no incomplete session with that id");
+  Statement step(db_, f, "INSERT INTO step_results VALUES (?, ?, ?, ?, ?, ?)");
+  Statement metric(db_, f, "INSERT INTO metrics VALUES (?, ?, ?, ?)");
+  const auto write_metrics = [&](int64_t index, const Metrics& m) {
+    for_each_metric(m, [&](const char* name, auto value) {
+      metric.bind(1, id).bind(2, index).bind(3, std::string(name)).bind(4, static_cast<double>(value)).run();
+    });
+  };
+  for (size_t i = 0; i < result.steps.size(); ++i) {
+    const StepResult& s = result.steps[i];
+    step.bind(1, id).bind(2, int64_t(i)).bind(3, s.id).bind(4, std::string(step_outcome_name(s.record.outcome)));
+    step.bind(5, s.record.start_s).bind(6, s.record.end_s).run();
+    write_metrics(int64_t(i), s.metrics);
   }
+  write_metrics(-1, result.overall);
+  Statement component(db_, f, "INSERT INTO score_components VALUES (?, ?, ?, ?, ?)");
+  for (size_t i = 0; i < result.score.components.size(); ++i) {
+    const ScoreComponent& c = result.score.components[i];
+    component.bind(1, id).bind(2, int64_t(i)).bind(3, c.name).bind(4, c.value).bind(5, c.weight).run();
+  }
+  transaction.commit();
 }
 
 namespace {
@@ -305,45 +329,42 @@ StoredSession SessionStore::load(int64_t id) const {
   const std::string session = "reading session " + std::to_string(id);
   const std::string f = file_ + ": " + session;
   // One read transaction: a writer finishing this session meanwhile is seen wholly or not at all.
-  exec("BEGIN");
-  try {
-    StoredSession out;
-    Statement s(db_, f, std::string(kSessionColumns) + "WHERE s.id = ?");
-    s.bind(1, id);
-    if (!s.step()) throw SessionStoreError(file_ + ": " + session + ": no such session");
-    out.info = session_info(s);
-    s.reset();
-    Statement steps(db_, f, "SELECT step_id, outcome, start_s, end_s FROM step_results WHERE session_id = ? ORDER BY step_index");
-    steps.bind(1, id);
-    while (steps.step()) {
-      StepResult r;
-      r.id = steps.text(0);
-      if (!step_outcome_from_name(steps.text(1), r.record.outcome))
-        throw SessionStoreError(file_ + ": " + session + ": unknown step outcome \"" + steps.text(1) + "\"");
-      r.record.start_s = steps.real(2);
-      r.record.end_s = steps.real(3);
-      out.steps.push_back(r);
-    }
-    Statement metrics(db_, f, "SELECT step_index, name, value FROM metrics WHERE session_id = ?");
-    metrics.bind(1, id);
-    while (metrics.step()) {
-      const int64_t index = metrics.integer(0);
-      if (index < -1 || index >= int64_t(out.steps.size()))
-        throw SessionStoreError(file_ + ": " + session + ": a metric of step " + std::to_string(index) + ", which it has not");
-      // Names this program does not know (from a newer one) are skipped.
-      set_metric(index < 0 ? out.overall : out.steps[size_t(index)].metrics, metrics.text(1), metrics.real(2));
-    }
-    if (schema_version() >= 2) {
-      Statement c(db_, f, "SELECT name, value, weight FROM score_components WHERE session_id = ? ORDER BY position");
-      c.bind(1, id);
-      while (c.step()) out.components.push_back({c.text(0), c.real(1), c.real(2)});
-    }
-    exec("COMMIT");
-    return out;
-  } catch (...) {
-    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
-    throw;
+  Transaction snapshot(db_, f, "BEGIN");
+  StoredSession out;
+  Statement s(db_, f, std::string(kSessionColumns) + "WHERE s.id = ?");
+  s.bind(1, id);
+  if (!s.step()) throw SessionStoreError(file_ + ": " + session + ": no such session");
+  out.info = session_info(s);
+  s.reset();
+  Statement steps(db_, f,
+                  "SELECT step_id, outcome, start_s, end_s FROM step_results WHERE session_id = ? ORDER BY step_index");
+  steps.bind(1, id);
+  while (steps.step()) {
+    StepResult r;
+    r.id = steps.text(0);
+    if (!step_outcome_from_name(steps.text(1), r.record.outcome))
+      throw SessionStoreError(file_ + ": " + session + ": unknown step outcome \"" + steps.text(1) + "\"");
+    r.record.start_s = steps.real(2);
+    r.record.end_s = steps.real(3);
+    out.steps.push_back(r);
   }
+  Statement metrics(db_, f, "SELECT step_index, name, value FROM metrics WHERE session_id = ?");
+  metrics.bind(1, id);
+  while (metrics.step()) {
+    const int64_t index = metrics.integer(0);
+    if (index < -1 || index >= int64_t(out.steps.size()))
+      throw SessionStoreError(file_ + ": " + session + ": a metric of step " + std::to_string(index) +
+                              ", which it has not");
+    // Names this program does not know (from a newer one) are skipped.
+    set_metric(index < 0 ? out.overall : out.steps[size_t(index)].metrics, metrics.text(1), metrics.real(2));
+  }
+  if (schema_version() >= 2) {
+    Statement c(db_, f, "SELECT name, value, weight FROM score_components WHERE session_id = ? ORDER BY position");
+    c.bind(1, id);
+    while (c.step()) out.components.push_back({c.text(0), c.real(1), c.real(2)});
+  }
+  snapshot.commit();
+  return out;
 }
 
 }  // namespace needle::ui

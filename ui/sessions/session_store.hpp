@@ -29,15 +29,15 @@ inline constexpr int kSessionSchemaVersion = 2;
 struct SessionInfo {
   int64_t id = 0;
   std::string trainee;
-  std::string task;             // Task::name
-  std::string device;           // "" when not recorded (sessions from schema 1)
-  std::string started_at;       // ISO 8601 UTC, "2026-11-21T12:00:00Z"
-  std::string ended_at;         // "" while incomplete
+  std::string task;        // Task::name
+  std::string device;      // "" when not recorded (sessions from schema 1)
+  std::string started_at;  // ISO 8601 UTC, "2026-11-21T12:00:00Z"
+  std::string ended_at;    // "" while incomplete
   bool complete = false;
-  double score = 0.0;           // valid when complete
+  double score = 0.0;  // valid when complete
   bool passed = false;
   double duration_s = 0.0;
-  std::string recording_path;   // "" when none
+  std::string recording_path;  // "" when none
 };
 
 struct StoredSession {
@@ -69,7 +69,7 @@ class SessionStore {
   StoredSession load(int64_t id) const;       // throws if there is no such session
 
  private:
-  void exec(const char* sql) const;
+  void exec(const char* sql, const std::string& what = "") const;  // what failed, for the error
 
   std::string file_;
   sqlite3* db_ = nullptr;

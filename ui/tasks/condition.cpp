@@ -4,10 +4,14 @@ namespace needle::ui {
 
 bool contact_matches(ContactRequirement required, haptics::ContactState contact) {
   switch (required) {
-    case ContactRequirement::kAny: return true;
-    case ContactRequirement::kFree: return contact == haptics::ContactState::kFree;
-    case ContactRequirement::kRigidSurface: return contact == haptics::ContactState::kRigidSurface;
-    case ContactRequirement::kTissue: return contact == haptics::ContactState::kTissue;
+    case ContactRequirement::kAny:
+      return true;
+    case ContactRequirement::kFree:
+      return contact == haptics::ContactState::kFree;
+    case ContactRequirement::kRigidSurface:
+      return contact == haptics::ContactState::kRigidSurface;
+    case ContactRequirement::kTissue:
+      return contact == haptics::ContactState::kTissue;
   }
   return false;
 }

@@ -26,9 +26,9 @@ enum class MarkerKind {
 struct Marker {
   std::string name;
   MarkerKind kind = MarkerKind::kPoint;
-  Vec3 position{};     // point; axis origin; sphere centre
-  Vec3 direction{};    // axis: unit direction the needle should point along
-  double radius_m = 0; // surface normal: the sphere's radius
+  Vec3 position{};      // point; axis origin; sphere centre
+  Vec3 direction{};     // axis: unit direction the needle should point along
+  double radius_m = 0;  // surface normal: the sphere's radius
 };
 
 enum class ConditionType {
@@ -44,11 +44,11 @@ enum class ContactRequirement { kAny, kFree, kRigidSurface, kTissue };
 
 struct Condition {
   ConditionType type = ConditionType::kTipNear;
-  int marker = -1;          // index in Task::markers (every type but force_held)
-  double within_m = 0.0;    // tip_near, target_reached, withdrawn
-  double within_rad = 0.0;  // axis_aligned
+  int marker = -1;              // index in Task::markers (every type but force_held)
+  double within_m = 0.0;        // tip_near, target_reached, withdrawn
+  double within_rad = 0.0;      // axis_aligned
   double min = 0.0, max = 0.0;  // depth (m) or force (N) band
-  double hold_s = 0.0;      // the condition must hold this long without a break
+  double hold_s = 0.0;          // the condition must hold this long without a break
   ContactRequirement contact = ContactRequirement::kAny;
 };
 
@@ -72,8 +72,8 @@ struct Step {
 
 // Component weights of the overall score (docs/SCORING.md); normalized to 100 on load.
 struct ScoreWeights {
-  double completion = 30, tip_error = 15, axis_deviation = 10, lateral_load = 10, peak_force = 10,
-         force_steadiness = 5, path_efficiency = 5, smoothness = 5, time = 5, retries = 5;
+  double completion = 30, tip_error = 15, axis_deviation = 10, lateral_load = 10, peak_force = 10, force_steadiness = 5,
+         path_efficiency = 5, smoothness = 5, time = 5, retries = 5;
 };
 
 // References at which a component's score reaches 0 (or, for time, starts to drop).
@@ -96,9 +96,9 @@ struct ScoringSpec {
 struct Task {
   std::string name;
   std::string title;
-  std::string source;                // the file it came from
-  std::filesystem::path scene;       // scene file (docs/SCENE_FORMAT.md), resolved
-  std::filesystem::path scenario;    // haptics scenario (assets/scenarios), resolved; may be empty
+  std::string source;              // the file it came from
+  std::filesystem::path scene;     // scene file (docs/SCENE_FORMAT.md), resolved
+  std::filesystem::path scenario;  // haptics scenario (assets/scenarios), resolved; may be empty
   double normal_marker_spacing_m = 0.02;
   std::vector<Marker> markers;
   std::vector<Step> steps;

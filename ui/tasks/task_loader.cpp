@@ -34,7 +34,8 @@ class TaskReader {
     for (size_t i = 0; i < markers.size(); ++i) {
       const std::string at = "/markers/" + std::to_string(i);
       t.markers.push_back(marker(markers[i], at));
-      if (std::count_if(t.markers.begin(), t.markers.end(), [&](const Marker& m) { return m.name == t.markers.back().name; }) > 1)
+      if (std::count_if(t.markers.begin(), t.markers.end(),
+                        [&](const Marker& m) { return m.name == t.markers.back().name; }) > 1)
         fail(at + "/name", "\"" + t.markers.back().name + "\" is used twice");
     }
     const json& steps = member(root, "", "steps");
@@ -114,7 +115,8 @@ class TaskReader {
     object(value, at, {"name", "point", "axis", "surface_normal"});
     Marker m;
     m.name = string(member(value, at, "name"), at + "/name");
-    const int kinds = int(value.contains("point")) + int(value.contains("axis")) + int(value.contains("surface_normal"));
+    const int kinds =
+        int(value.contains("point")) + int(value.contains("axis")) + int(value.contains("surface_normal"));
     if (kinds != 1) fail(at, "expected exactly one of point, axis or surface_normal");
     if (value.contains("point")) {
       m.kind = MarkerKind::kPoint;
@@ -169,8 +171,9 @@ class TaskReader {
     Condition c;
     if (type == "tip_near" || type == "target_reached" || type == "withdrawn") {
       object(value, at, {"type", "marker", "within_m", "hold_s", "contact"});
-      c.type = type == "tip_near" ? ConditionType::kTipNear
-               : type == "target_reached" ? ConditionType::kTargetReached : ConditionType::kWithdrawn;
+      c.type = type == "tip_near"         ? ConditionType::kTipNear
+               : type == "target_reached" ? ConditionType::kTargetReached
+                                          : ConditionType::kWithdrawn;
       c.marker = point_ref(t, member(value, at, "marker"), at + "/marker");
       c.within_m = positive(member(value, at, "within_m"), at + "/within_m");
     } else if (type == "axis_aligned") {
@@ -191,18 +194,24 @@ class TaskReader {
       band(c, value, at);
       if (!value.contains("hold_s")) fail(at + "/hold_s", "missing (a held force needs a time)");
     } else {
-      fail(at + "/type", "unknown step type \"" + type +
-                             "\" (expected tip_near, axis_aligned, depth_in_band, force_held, target_reached or withdrawn)");
+      fail(at + "/type",
+           "unknown step type \"" + type +
+               "\" (expected tip_near, axis_aligned, depth_in_band, force_held, target_reached or withdrawn)");
     }
     if (value.contains("hold_s")) c.hold_s = non_negative(value["hold_s"], at + "/hold_s");
     if (c.type == ConditionType::kForceHeld && c.hold_s <= 0.0) fail(at + "/hold_s", "must be > 0 for force_held");
     if (value.contains("contact")) {
       const std::string contact = string(value["contact"], at + "/contact");
-      if (contact == "any") c.contact = ContactRequirement::kAny;
-      else if (contact == "free") c.contact = ContactRequirement::kFree;
-      else if (contact == "rigid") c.contact = ContactRequirement::kRigidSurface;
-      else if (contact == "tissue") c.contact = ContactRequirement::kTissue;
-      else fail(at + "/contact", "\"" + contact + "\", expected any, free, rigid or tissue");
+      if (contact == "any")
+        c.contact = ContactRequirement::kAny;
+      else if (contact == "free")
+        c.contact = ContactRequirement::kFree;
+      else if (contact == "rigid")
+        c.contact = ContactRequirement::kRigidSurface;
+      else if (contact == "tissue")
+        c.contact = ContactRequirement::kTissue;
+      else
+        fail(at + "/contact", "\"" + contact + "\", expected any, free, rigid or tissue");
     }
     if (c.type == ConditionType::kTargetReached) c.contact = ContactRequirement::kTissue;
     if (c.type == ConditionType::kWithdrawn) c.contact = ContactRequirement::kFree;
@@ -253,14 +262,20 @@ class TaskReader {
   }
 
   ScoreWeights weights(const json& value, const std::string& at) const {
-    object(value, at, {"completion", "tip_error", "axis_deviation", "lateral_load", "peak_force", "force_steadiness",
-                       "path_efficiency", "smoothness", "time", "retries"});
+    object(value, at,
+           {"completion", "tip_error", "axis_deviation", "lateral_load", "peak_force", "force_steadiness",
+            "path_efficiency", "smoothness", "time", "retries"});
     ScoreWeights w;
-    const std::pair<const char*, double*> fields[] = {
-        {"completion", &w.completion}, {"tip_error", &w.tip_error}, {"axis_deviation", &w.axis_deviation},
-        {"lateral_load", &w.lateral_load}, {"peak_force", &w.peak_force}, {"force_steadiness", &w.force_steadiness},
-        {"path_efficiency", &w.path_efficiency}, {"smoothness", &w.smoothness}, {"time", &w.time},
-        {"retries", &w.retries}};
+    const std::pair<const char*, double*> fields[] = {{"completion", &w.completion},
+                                                      {"tip_error", &w.tip_error},
+                                                      {"axis_deviation", &w.axis_deviation},
+                                                      {"lateral_load", &w.lateral_load},
+                                                      {"peak_force", &w.peak_force},
+                                                      {"force_steadiness", &w.force_steadiness},
+                                                      {"path_efficiency", &w.path_efficiency},
+                                                      {"smoothness", &w.smoothness},
+                                                      {"time", &w.time},
+                                                      {"retries", &w.retries}};
     double total = 0.0;
     for (const auto& [key, field] : fields) {
       if (value.contains(key)) *field = non_negative(value[key], at + "/" + key);
@@ -272,10 +287,11 @@ class TaskReader {
   }
 
   ScoreReferences references(const json& value, const std::string& at) const {
-    object(value, at, {"tip_error_m", "axis_deviation_deg", "lateral_load_Ns", "force_sd_N", "normalized_jerk", "time_s"});
+    object(value, at,
+           {"tip_error_m", "axis_deviation_deg", "lateral_load_Ns", "force_sd_N", "normalized_jerk", "time_s"});
     ScoreReferences r;
     const std::pair<const char*, double*> fields[] = {
-        {"tip_error_m", &r.tip_error_m}, {"axis_deviation_deg", &r.axis_deviation_deg},
+        {"tip_error_m", &r.tip_error_m},         {"axis_deviation_deg", &r.axis_deviation_deg},
         {"lateral_load_Ns", &r.lateral_load_Ns}, {"force_sd_N", &r.force_sd_N},
         {"normalized_jerk", &r.normalized_jerk}, {"time_s", &r.time_s}};
     for (const auto& [key, field] : fields)

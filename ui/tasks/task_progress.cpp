@@ -8,11 +8,16 @@ namespace needle::ui {
 
 const char* step_outcome_name(StepOutcome outcome) {
   switch (outcome) {
-    case StepOutcome::kPending: return "pending";
-    case StepOutcome::kActive: return "active";
-    case StepOutcome::kCompleted: return "completed";
-    case StepOutcome::kTimedOut: return "timed_out";
-    case StepOutcome::kTipMoved: return "tip_moved";
+    case StepOutcome::kPending:
+      return "pending";
+    case StepOutcome::kActive:
+      return "active";
+    case StepOutcome::kCompleted:
+      return "completed";
+    case StepOutcome::kTimedOut:
+      return "timed_out";
+    case StepOutcome::kTipMoved:
+      return "tip_moved";
   }
   return "unknown";
 }

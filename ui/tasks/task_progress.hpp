@@ -20,7 +20,7 @@ enum class StepOutcome {
   kTipMoved,   // the tip drifted beyond tip_fixed_within_m first
 };
 
-const char* step_outcome_name(StepOutcome outcome);  // "pending", "completed", ...
+const char* step_outcome_name(StepOutcome outcome);                          // "pending", "completed", ...
 bool step_outcome_from_name(const std::string& name, StepOutcome& outcome);  // false if unknown
 
 struct StepRecord {
