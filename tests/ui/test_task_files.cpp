@@ -107,6 +107,16 @@ void expect_error(const json& task, const std::string& name, const std::string& 
   }
 }
 
+// A weights block with every weight 0 but these three (an absent key keeps its default).
+json weights(double completion, double tip_error, double retries) {
+  json w;
+  for (const char* key :
+       {"axis_deviation", "lateral_load", "peak_force", "force_steadiness", "path_efficiency", "smoothness", "time"})
+    w[key] = 0;
+  w["completion"] = completion, w["tip_error"] = tip_error, w["retries"] = retries;
+  return w;
+}
+
 TEST(TaskFiles, TheSmallValidTaskLoads) {
   const Task t = load_task(write_task(valid_task(), "valid"));
   EXPECT_NEAR(t.markers[1].direction[2], 1.0, 1e-15);  // normalized
@@ -177,17 +187,7 @@ TEST(TaskFiles, ErrorsNameTheFileAndThePointer) {
   expect_error(j, "no_steps", "/steps", "non-empty array");
 
   j = valid_task();
-  j["scoring"] = {{"weights",
-                   {{"completion", 0},
-                    {"tip_error", 0},
-                    {"axis_deviation", 0},
-                    {"lateral_load", 0},
-                    {"peak_force", 0},
-                    {"force_steadiness", 0},
-                    {"path_efficiency", 0},
-                    {"smoothness", 0},
-                    {"time", 0},
-                    {"retries", 0}}}};
+  j["scoring"] = {{"weights", weights(0, 0, 0)}};
   expect_error(j, "zero_weights", "/scoring/weights", "add up to 0");
 
   j = valid_task();
@@ -201,17 +201,7 @@ TEST(TaskFiles, ErrorsNameTheFileAndThePointer) {
 
 TEST(TaskFiles, WeightsAreNormalizedToOneHundred) {
   json j = valid_task();
-  j["scoring"] = {{"weights",
-                   {{"completion", 1},
-                    {"tip_error", 1},
-                    {"axis_deviation", 0},
-                    {"lateral_load", 0},
-                    {"peak_force", 0},
-                    {"force_steadiness", 0},
-                    {"path_efficiency", 0},
-                    {"smoothness", 0},
-                    {"time", 0},
-                    {"retries", 2}}}};
+  j["scoring"] = {{"weights", weights(1, 1, 2)}};
   const Task t = load_task(write_task(j, "weights"));
   EXPECT_DOUBLE_EQ(t.scoring.weights.completion, 25.0);
   EXPECT_DOUBLE_EQ(t.scoring.weights.retries, 50.0);
