@@ -30,9 +30,14 @@ NeedleLoad NeedleTracker::update(const haptics::ToolSnapshot& s) {
       load.contact = NeedleContact::Inserted;
       load.surface_point = *entry_;
       load.surface_normal = -load.axis;
-      // The constraint force holds the needle against sideways motion; the tissue takes the
-      // opposite of its lateral part.
-      load.lateral_force_on_tissue_N = -(force - load.axis * glm::dot(force, load.axis));
+      // The constraint holds the needle against sideways motion with Aᵀλ = λ₁ y₅ + λ₂ z₅ (thesis
+      // 4.2); the tissue takes the opposite. Without multipliers, the lateral part of the force.
+      glm::dvec3 on_needle = force - load.axis * glm::dot(force, load.axis);
+      if (s.multiplier_count >= 2) {
+        const glm::dquat frame(q[0], q[1], q[2], q[3]);
+        on_needle = s.multipliers[0] * (frame * glm::dvec3(0, 1, 0)) + s.multipliers[1] * (frame * glm::dvec3(0, 0, 1));
+      }
+      load.lateral_force_on_tissue_N = -on_needle;
       break;
     }
   }

@@ -2,7 +2,9 @@
 // The snapshot says where the needle is and which constraint holds it, not where it entered the
 // tissue, so the tracker remembers that: the tip where the first snapshot in tissue found it (at
 // 60 frames a second against a 1 kHz loop, within a few hundred micrometres of the true entry
-// at insertion speeds). The engine depends on haptics through tool_snapshot.hpp alone.
+// at insertion speeds). The lateral multipliers are read along the y and z axes of the
+// snapshot's orientation, taken to be the needle frame's y5 and z5. The engine depends on
+// haptics through tool_snapshot.hpp alone.
 #pragma once
 
 #include <optional>

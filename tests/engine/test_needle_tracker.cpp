@@ -53,6 +53,19 @@ TEST(NeedleTracker, TissueTakesTheOppositeOfTheLateralConstraintForce) {
   EXPECT_NEAR(load.lateral_force_on_tissue_N.y, 0.7, 1e-12);
 }
 
+TEST(NeedleTracker, LateralMultipliersActAlongTheNeedleFramesYAndZ) {
+  engine::NeedleTracker tracker;
+  // Needle turned a quarter about z: x5 = +y, y5 = -x, z5 = +z.
+  haptics::ToolSnapshot s = snapshot(haptics::ContactState::kTissue, {0.33, 0, 0}, M_PI / 2);
+  s.multiplier_count = 2;
+  s.multipliers[0] = 0.5;   // along y5
+  s.multipliers[1] = -0.2;  // along z5
+  engine::NeedleLoad load = tracker.update(s);
+  EXPECT_NEAR(load.lateral_force_on_tissue_N.x, 0.5, 1e-12);  // −(0.5 · (−x))
+  EXPECT_NEAR(load.lateral_force_on_tissue_N.y, 0.0, 1e-12);
+  EXPECT_NEAR(load.lateral_force_on_tissue_N.z, 0.2, 1e-12);
+}
+
 TEST(NeedleTracker, RigidContactTouchesAlongTheSurfaceReaction) {
   engine::NeedleTracker tracker;
   engine::NeedleLoad load = tracker.update(snapshot(haptics::ContactState::kRigidSurface, {0.3, 0, 0}, 0, {-2.0, 0, 0}));

@@ -1,0 +1,78 @@
+#include "ui/tasks/scripted_operator.hpp"
+
+#include <Eigen/Geometry>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+namespace needle::ui {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+json read_json(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw TaskError(file.string() + ": /: cannot read");
+  try {
+    return json::parse(in);
+  } catch (const json::exception& e) {
+    throw TaskError(file.string() + ": /: not valid JSON (" + e.what() + ")");
+  }
+}
+
+}  // namespace
+
+fs::path operator_script_path(const Task& task, const std::string& spec) {
+  fs::path path = (spec == "good" || spec == "sloppy") ? fs::path(task.source).parent_path() / (task.name + "_" + spec + ".json")
+                                                        : fs::path(spec);
+  if (!fs::is_regular_file(path)) throw TaskError(path.string() + ": /: operator script not found");
+  return path;
+}
+
+haptics::Scenario scenario_with_operator(const Task& task, const fs::path& script, const fs::path& merged_file) {
+  if (task.scenario.empty()) throw TaskError(task.source + ": /scenario: the task names no haptics scenario to run");
+  json scenario = read_json(task.scenario);
+  const json operator_script = read_json(script);
+  if (!operator_script.contains("hand") || !operator_script["hand"].contains("waypoints") ||
+      !operator_script["hand"]["waypoints"].is_array() || operator_script["hand"]["waypoints"].empty()) {
+    throw TaskError(script.string() + ": /hand/waypoints: expected a non-empty array of waypoints");
+  }
+  scenario["hand"] = operator_script["hand"];
+  const json& last = operator_script["hand"]["waypoints"].back();
+  if (!last.contains("t") || !last["t"].is_number()) {
+    throw TaskError(script.string() + ": /hand/waypoints/" + std::to_string(operator_script["hand"]["waypoints"].size() - 1) +
+                    "/t: expected a time in seconds");
+  }
+  scenario["duration_s"] = last["t"].get<double>() + 4.0;
+  for (const char* key : {"master_urdf", "virtual_urdf"}) {  // relative to the task's scenario, not the copy
+    scenario[key] = fs::absolute(task.scenario.parent_path() / scenario[key].get<std::string>()).string();
+  }
+  if (merged_file.has_parent_path()) fs::create_directories(merged_file.parent_path());
+  std::ofstream(merged_file) << scenario.dump(2) << "\n";
+  return haptics::load_scenario(merged_file.string());
+}
+
+haptics::ToolSnapshot snapshot_of(const haptics::TickRecord& r) {
+  haptics::ToolSnapshot s;
+  s.time_s = r.t;
+  for (int i = 0; i < 3; ++i) {
+    s.needle_tip_m[i] = r.x_v[i];
+    s.environment_force_n[i] = r.force_v[i];
+    s.operator_force_n[i] = r.force_h[i];
+  }
+  const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), r.needle_v);
+  s.needle_orientation[0] = q.w();
+  s.needle_orientation[1] = q.x();
+  s.needle_orientation[2] = q.y();
+  s.needle_orientation[3] = q.z();
+  using haptics::ContactMode, haptics::ContactState;
+  s.contact = r.mode == ContactMode::Free         ? ContactState::kFree
+              : r.mode == ContactMode::Holonomic ? ContactState::kRigidSurface
+                                                  : ContactState::kTissue;
+  s.multiplier_count = r.mode == ContactMode::Free ? 0 : r.mode == ContactMode::Holonomic ? 1 : 2;
+  s.multipliers[0] = r.lambda_v[0];
+  s.multipliers[1] = r.lambda_v[1];
+  return s;
+}
+
+}  // namespace needle::ui

@@ -1,0 +1,28 @@
+// A task done by a scripted operator in the closed-loop simulation, no device: the task's haptics
+// scenario with its hand replaced by the operator's script (assets/tasks/<task>_good.json,
+// <task>_sloppy.json, or a file), run tick by tick; each tick becomes the state the haptic loop
+// would publish, so scoring and rendering see what they see in a live session.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "haptics/realtime/tool_snapshot.hpp"
+#include "haptics/sim/closed_loop.hpp"
+#include "ui/tasks/task.hpp"
+
+namespace needle::ui {
+
+// "good" and "sloppy" name the task's own scripts; anything else is a script file.
+// TaskError when the file does not exist.
+std::filesystem::path operator_script_path(const Task& task, const std::string& spec);
+
+// The task's scenario with the script's hand, running until 4 s after its last waypoint. The
+// merged scenario is written to `merged_file` (kept beside the run's results: what exactly ran).
+haptics::Scenario scenario_with_operator(const Task& task, const std::filesystem::path& script,
+                                         const std::filesystem::path& merged_file);
+
+// The state the haptic loop would publish for one simulated tick.
+haptics::ToolSnapshot snapshot_of(const haptics::TickRecord& record);
+
+}  // namespace needle::ui
