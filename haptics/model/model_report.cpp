@@ -37,11 +37,7 @@ nlohmann::json model_report(const RobotModel& model, const VecN& q, const VecN& 
   update_dynamics(model, data);
   VecN tau(n);
   inverse_dynamics(model, data, parameter_vector(model), ddq, tau);
-  nlohmann::json joints = nlohmann::json::array();
-  for (const auto& j : model.joints) joints.push_back(j.name);
-  return {{"robot", model.name},
-          {"joints", joints},
-          {"pose", {{"p", vec(data.tip.translation())}, {"R", rows(data.tip.linear())}}},
+  return {{"pose", {{"p", vec(data.tip.translation())}, {"R", rows(data.tip.linear())}}},
           {"J", rows(data.J)},
           {"H", rows(data.H)},
           {"Cdq", vec(VecN(data.C * dq))},

@@ -27,6 +27,8 @@ TEST(ModelReport, HasTheIssueKeysAndConsistentValues) {
   ddq << 1.0, 2.0, -1.0, 0.5, 0.0;
   const nlohmann::json r = model_report(model, q, dq, ddq);
   for (const char* key : {"pose", "J", "H", "Cdq", "g", "gravity", "tau_id"}) EXPECT_TRUE(r.contains(key)) << key;
+  EXPECT_EQ(r.size(), 7u) << "exactly the issue's keys";
+  EXPECT_EQ(r["pose"].size(), 2u);
   EXPECT_TRUE(r["pose"].contains("p"));
   EXPECT_TRUE(r["pose"].contains("R"));
   EXPECT_EQ(r["J"].size(), 6u);

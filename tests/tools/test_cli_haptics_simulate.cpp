@@ -23,6 +23,7 @@ TEST(CliHapticsSimulate, WritesTicksCsvAndSummaryWithTheIssueKeys) {
                           "force_rms_N", "force_max_N", "max_penetration_m", "max_lateral_speed_mps", "max_axis_deviation_m",
                           "energy_error_J", "faults"})
     EXPECT_TRUE(summary.contains(key)) << key;
+  EXPECT_EQ(summary.size(), 11u) << "exactly the issue's keys";
   EXPECT_TRUE(summary["faults"].empty());
   std::ifstream csv(out + "/ticks.csv");
   std::string header, line;
