@@ -31,7 +31,7 @@ void TaskSpaceStep::step(const DeviceReading& reading, double dt_s, DeviceComman
     device_start_ = handle;
     started_ = true;
   }
-  target_ = tip_start_ + coupling_.workspace_scale * (handle - device_start_);
+  target_ = tip_start_ + coupling_.workspace_scale * (coupling_.device_to_scene * (handle - device_start_));
 
   // Kinematics and gravity evaluated here rather than read from the world, whose data may
   // hold only what its own integration needed.
@@ -47,9 +47,10 @@ void TaskSpaceStep::step(const DeviceReading& reading, double dt_s, DeviceComman
   tau_ = data.J.transpose() * wrench + data.g;
   world_.advance(tau_, damping_, dt_s, substeps_);
 
-  // The handle feels the spring's reaction.
+  // The handle feels the spring's reaction, in device axes.
+  const Eigen::Vector3d reaction = -coupling_.force_scale * (coupling_.device_to_scene.transpose() * force);
   command.space = CommandSpace::kTaskForce;
-  for (int i = 0; i < 3; ++i) command.force_n[i] = -coupling_.force_scale * force[i];
+  for (int i = 0; i < 3; ++i) command.force_n[i] = reaction[i];
 
   publish_virtual_state(world_, scenario_.base_in_world, dt_s, state);
   for (int i = 0; i < 3; ++i) state.operator_force_n[i] = force[i];

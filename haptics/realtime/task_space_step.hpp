@@ -9,6 +9,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "haptics/control/virtual_world.hpp"
 #include "haptics/realtime/servo_step.hpp"
@@ -17,6 +18,8 @@
 namespace needle::haptics {
 
 struct TaskCoupling {
+  // Device axes to scene axes (the Falcon's z points at the user, the scene's may not).
+  Eigen::Matrix3d device_to_scene = Eigen::Matrix3d::Identity();
   double workspace_scale = 1.0;          // scene metres per device metre
   double stiffness_n_per_m = 300.0;      // coupling spring, scene side
   double orientation_stiffness_nm_per_rad = 0.5;

@@ -37,8 +37,10 @@ class HeldHandle : public HapticDevice {
 };
 
 struct Coupled {
-  Coupled() : scenario(load_scenario(std::string(NEEDLE_SOURCE_DIR) + "/assets/scenarios/holonomic_sphere.json")),
-              step(scenario, TaskCoupling{}), rig(handle, step, limits()) {
+  explicit Coupled(const TaskCoupling& coupling = {})
+      : scenario(load_scenario(std::string(NEEDLE_SOURCE_DIR) + "/assets/scenarios/holonomic_sphere.json")),
+        step(scenario, coupling),
+        rig(handle, step, limits()) {
     tip_start_world = step.start_tip() + scenario.base_in_world;
     direction_start = step.start_direction();
     rig.run(0, 1, kDt);  // the first reading fixes the mapping
@@ -106,6 +108,20 @@ TEST(RealtimeTaskSpace, PushingIntoTheRigidSphereIsFeltAlongItsNormal) {
   EXPECT_GT(f.normalized().dot(normal), std::cos(5.0 * M_PI / 180.0));
   EXPECT_NEAR(f.norm(), k * sink, 0.05 * k * sink);
   EXPECT_EQ(c.rig.safety.fault(), FaultCause::kNone);
+}
+
+TEST(RealtimeTaskSpace, DeviceAxesAreTurnedIntoTheSceneAndTheForceBack) {
+  TaskCoupling coupling;
+  coupling.device_to_scene = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  Coupled c(coupling);
+  const Eigen::Vector3d centre(0.4, 0.0, 0.0);
+  const Eigen::Vector3d outward = (c.tip_start_world - centre).normalized();
+  const Eigen::Vector3d target = centre + (0.1 - 0.01) * outward;
+  // Scene x is device -y and scene y is device x: move the handle by R^T times the scene move.
+  c.hold(coupling.device_to_scene.transpose() * (target - c.tip_start_world), 4.0);
+  EXPECT_EQ(c.rig.tick.last_sample().state.contact, ContactState::kRigidSurface);
+  const Eigen::Vector3d normal_in_device = coupling.device_to_scene.transpose() * (c.tip() - centre).normalized();
+  EXPECT_GT(c.device_force().normalized().dot(normal_in_device), std::cos(5.0 * M_PI / 180.0));
 }
 
 }  // namespace
