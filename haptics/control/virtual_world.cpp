@@ -71,7 +71,8 @@ void VirtualWorld::advance(const VecN& tau0, const VecN& velocity_gain, double p
   for (int i = 0; i < substeps; ++i) {
     // (H + h B) q̈ = τ₀ − B q̇ − … is the semi-implicit Euler step with −B q̇ at the new velocity.
     data_.H.diagonal() += h * velocity_gain;
-    const VecN& tau = tau_ = tau0 - velocity_gain.cwiseProduct(dq_);
+    tau_ = tau0 - velocity_gain.cwiseProduct(dq_);
+    const VecN& tau = tau_;
     switch (report_.mode) {
       case ContactMode::Free:
         forward_dynamics(model_, data_, tau, ddq_);
