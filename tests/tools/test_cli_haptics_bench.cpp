@@ -18,7 +18,7 @@ nlohmann::json rows_of(const std::string& command, const std::string& json_path)
 
 TEST(CliHapticsBench, TickReportsMedianP99AndNoAllocations) {
   const auto rows = rows_of("bench tick --ticks 2000", std::string(NEEDLE_TEST_OUTPUT_DIR) + "/bench_tick.json");
-  ASSERT_EQ(rows.size(), 2u);
+  ASSERT_EQ(rows.size(), 3u);
   for (const auto& row : rows) {
     EXPECT_GT(row["median_us"].get<double>(), 0.0);
     EXPECT_GE(row["p99_us"].get<double>(), row["median_us"].get<double>());
