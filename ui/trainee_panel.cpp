@@ -42,14 +42,19 @@ void metric_line(const char* name, double value, const char* unit, double scale 
 
 void draw_running(const TraineeView& v) {
   const Task& task = *v.task;
-  const size_t current = v.progress->current_step();
-  const Step& step = task.steps[std::min(current, task.steps.size() - 1)];
-  ImGui::Text("Step %zu of %zu: %s", current + 1, task.steps.size(), step.id.c_str());
-  ImGui::ProgressBar(float(current) / float(task.steps.size()), ImVec2(-1, 0));
+  const size_t shown = std::min(v.step.value_or(v.progress->current_step()), task.steps.size() - 1);
+  const Step& step = task.steps[shown];
+  const StepOutcome outcome = v.progress->records()[shown].outcome;
+  ImGui::Text("Step %zu of %zu: %s", shown + 1, task.steps.size(), step.id.c_str());
+  ImGui::ProgressBar(float(v.progress->current_step()) / float(task.steps.size()), ImVec2(-1, 0));
   ImGui::Separator();
   ImGui::TextWrapped("%s", step.instruction.c_str());
-  if (step.time_limit_s > 0.0) ImGui::TextColored(kDim, "time limit %.0f s", step.time_limit_s);
-  if (v.progress->condition_met()) ImGui::TextColored(kGood, "holding... %.1f s", v.progress->held_s());
+  if (outcome == StepOutcome::kActive) {
+    if (step.time_limit_s > 0.0) ImGui::TextColored(kDim, "time limit %.0f s", step.time_limit_s);
+    if (v.progress->condition_met()) ImGui::TextColored(kGood, "holding... %.1f s", v.progress->held_s());
+  } else {
+    ImGui::TextColored(outcome == StepOutcome::kCompleted ? kGood : kBad, "%s", step_outcome_name(outcome));
+  }
   ImGui::Separator();
   const bool force_band = step.condition.type == ConditionType::kForceHeld;
   force_gauge(v.force_N, task.scoring.safe_force_N, force_band ? step.condition.min : 0.0,
@@ -82,7 +87,10 @@ void draw_result(const SessionResult& r) {
   if (!advice.empty()) {
     ImGui::Separator();
     ImGui::TextUnformatted("What to improve:");
-    for (const std::string& a : advice) ImGui::BulletText("%s", a.c_str());
+    for (const std::string& a : advice) {
+      ImGui::Bullet();
+      ImGui::TextWrapped("%s", a.c_str());
+    }
   }
 }
 
@@ -122,7 +130,9 @@ void draw_trainee_panel(const TraineeView& v) {
   ImGui::SetNextWindowBgAlpha(0.85f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
                                  ImGuiWindowFlags_NoSavedSettings;
-  if (ImGui::Begin(v.task->title.c_str(), nullptr, flags)) {
+  if (ImGui::Begin("Task", nullptr, flags)) {
+    ImGui::TextWrapped("%s", v.task->title.c_str());
+    ImGui::Separator();
     if (v.result) {
       draw_result(*v.result);
     } else {

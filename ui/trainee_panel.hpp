@@ -3,6 +3,8 @@
 // the score with its breakdown and what to improve. Draws into the current ImGui frame.
 #pragma once
 
+#include <optional>
+
 #include "ui/scoring/session_scorer.hpp"
 
 namespace needle::ui {
@@ -15,6 +17,8 @@ struct TraineeView {
   double loop_rate_hz = 0.0;   // measured rate of the haptic loop
   const char* fault = nullptr; // latched safety fault, nullptr when none
   const SessionResult* result = nullptr;  // set once the task is over
+  // The step to describe (a picture taken as a step ends shows that step); default: the current one.
+  std::optional<size_t> step;
 };
 
 void draw_trainee_panel(const TraineeView& view);

@@ -48,13 +48,14 @@ TEST(CliRender, SceneRendersToAPngOfTheRequestedSize) {
   EXPECT_EQ(image.height, 100u);
 }
 
-TEST(CliRun, HeadlessRunWritesTheDefaultScene) {
-  auto out = test_output_dir("cli_run") / "run.png";
-  std::filesystem::remove(out);
-  ProcessResult r = run_needle_sim("run --headless --size 160x120 --out " + quoted(out));
+TEST(CliRun, HeadlessSceneRunWritesItsPicture) {
+  auto dir = test_output_dir("cli_run_scene");
+  std::filesystem::remove(dir / "scene.png");
+  ProcessResult r = run_needle_sim("run --headless --scene " + quoted(kAssets / "scenes" / "penetrable_sphere.json") +
+                                   " --size 160x120 --out " + quoted(dir));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
-  EXPECT_EQ(engine::read_png(out).width, 160u);
+  EXPECT_EQ(engine::read_png(dir / "scene.png").width, 160u);
 }
 
 // The window path under Xvfb: one frame presented through the swapchain, captured before

@@ -1,0 +1,57 @@
+// `needle-sim run` headless, the README's main job: a scripted operator does the guided task on
+// the simulated device; the run writes score.json (the keys other tools read), the pictures of
+// its key moments and of the score panel, and a complete session in the database. The good
+// script passes; the sloppy one fails.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli_process.hpp"
+#include "ui/sessions/session_store.hpp"
+
+namespace needle::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+nlohmann::json run_task(const std::string& operator_spec, const fs::path& dir) {
+  fs::remove_all(dir);
+  ProcessResult r = run_needle_sim("run --headless --size 320x240 --operator " + operator_spec + " --trainee ana --out " +
+                                   quoted(dir) + " --db " + quoted(dir / "sessions.db"));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  return nlohmann::json::parse(std::ifstream(dir / "score.json"));
+}
+
+TEST(CliRunTask, GoodOperatorPassesAndEverythingIsWritten) {
+  const fs::path dir = test_output_dir("cli_run_task") / "good";
+  nlohmann::json score = run_task("good", dir);
+  for (const char* key : {"score", "passed", "metrics", "steps"}) EXPECT_TRUE(score.contains(key)) << key;
+  EXPECT_TRUE(score["passed"].get<bool>()) << score.dump(2);
+  for (const char* picture : {"final.png", "score_panel.png", "step_1_approach.png"}) {
+    EXPECT_TRUE(fs::is_regular_file(dir / picture)) << picture;
+  }
+  ui::SessionStore store(dir / "sessions.db");
+  std::vector<ui::SessionInfo> sessions = store.sessions();
+  ASSERT_EQ(sessions.size(), 1u);
+  EXPECT_TRUE(sessions[0].complete);
+  EXPECT_EQ(sessions[0].trainee, "ana");
+  EXPECT_DOUBLE_EQ(sessions[0].score, score["score"].get<double>());
+}
+
+TEST(CliRunTask, SloppyOperatorFailsThePassMark) {
+  nlohmann::json score = run_task("sloppy", test_output_dir("cli_run_task") / "sloppy");
+  EXPECT_FALSE(score["passed"].get<bool>()) << score.dump(2);
+}
+
+TEST(CliRunTask, UnknownOperatorAndDeviceAreClearErrors) {
+  ProcessResult missing = run_needle_sim("run --headless --operator /nonexistent/script.json --out " +
+                                         quoted(test_output_dir("cli_run_task") / "bad"));
+  EXPECT_EQ(missing.exit_code, 1) << missing.output;
+  EXPECT_NE(missing.output.find("/nonexistent/script.json"), std::string::npos) << missing.output;
+  EXPECT_EQ(run_needle_sim("run --headless --device mouse").exit_code, 2);
+}
+
+}  // namespace
+}  // namespace needle::test
