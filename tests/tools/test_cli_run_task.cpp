@@ -45,6 +45,22 @@ TEST(CliRunTask, SloppyOperatorFailsThePassMark) {
   EXPECT_FALSE(score["passed"].get<bool>()) << score.dump(2);
 }
 
+// In a window the task plays in real time; closed after a few frames, long before the task ends,
+// it leaves its session incomplete and the database readable.
+TEST(CliRunTask, WindowClosedMidTaskLeavesAnIncompleteSession) {
+  const fs::path dir = test_output_dir("cli_run_task") / "window";
+  fs::remove_all(dir);
+  ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' " + std::string(NEEDLE_SIM_EXE) +
+                                " run --size 480x360 --frames 5 --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("presented 5 frames"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  ui::SessionStore store(dir / "sessions.db");
+  ASSERT_EQ(store.sessions().size(), 1u);
+  EXPECT_FALSE(store.sessions()[0].complete);
+  EXPECT_FALSE(fs::exists(dir / "score.json"));
+}
+
 TEST(CliRunTask, UnknownOperatorAndDeviceAreClearErrors) {
   ProcessResult missing = run_needle_sim("run --headless --operator /nonexistent/script.json --out " +
                                          quoted(test_output_dir("cli_run_task") / "bad"));
