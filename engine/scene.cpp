@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "engine/gltf_errors.hpp"
+#include "engine/strict_json.hpp"
 
 namespace needle::engine {
 namespace fs = std::filesystem;
@@ -19,9 +20,9 @@ using nlohmann::json;
 namespace {
 
 // Reads one scene file; every error names the file and the JSON pointer of the culprit.
-class SceneReader {
+class SceneReader : StrictJsonReader<AssetError> {
  public:
-  SceneReader(std::string file, fs::path folder) : file_(std::move(file)), folder_(std::move(folder)) {}
+  SceneReader(std::string file, fs::path folder) : StrictJsonReader(std::move(file)), folder_(std::move(folder)) {}
 
   Scene scene(const json& root) {
     object(root, "", {"assets", "camera", "lights", "background"});
@@ -41,39 +42,6 @@ class SceneReader {
   }
 
  private:
-  [[noreturn]] void fail(const std::string& pointer, const std::string& what) const {
-    asset_fail(file_, pointer.empty() ? "/" : pointer, what);
-  }
-
-  // Checks `value` is an object with no keys but `allowed`.
-  void object(const json& value, const std::string& at, std::initializer_list<const char*> allowed) const {
-    if (!value.is_object()) fail(at, "expected an object, got " + std::string(value.type_name()));
-    for (const auto& [key, _] : value.items())
-      if (std::none_of(allowed.begin(), allowed.end(), [&](const char* k) { return key == k; })) {
-        std::string keys;
-        for (const char* k : allowed) keys += (keys.empty() ? "" : ", ") + std::string(k);
-        fail(at + (json::json_pointer() / key).to_string(), "unknown key (allowed: " + keys + ")");
-      }
-  }
-
-  const json& member(const json& value, const std::string& at, const char* key) const {
-    if (!value.contains(key)) fail(at + "/" + key, "missing");
-    return value[key];
-  }
-
-  double number(const json& value, const std::string& at) const {
-    if (!value.is_number()) fail(at, "expected a number, got " + std::string(value.type_name()));
-    const double x = value.get<double>();
-    if (!std::isfinite(x)) fail(at, "not a finite number");
-    return x;
-  }
-
-  std::string string(const json& value, const std::string& at) const {
-    if (!value.is_string() || value.get<std::string>().empty())
-      fail(at, "expected a non-empty string, got " + std::string(value.type_name()));
-    return value.get<std::string>();
-  }
-
   template <int N>
   glm::vec<N, float> vector(const json& value, const std::string& at) const {
     if (!value.is_array() || value.size() != N)
@@ -190,7 +158,6 @@ class SceneReader {
     return lights;
   }
 
-  std::string file_;
   fs::path folder_;
 };
 

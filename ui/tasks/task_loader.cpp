@@ -1,5 +1,5 @@
-// Task files (docs/TASKS.md): strict JSON reading; every error names the file and the JSON
-// pointer of the culprit, in the style of engine/scene.cpp.
+// Task files (docs/TASKS.md): strict JSON reading (engine/strict_json.hpp, shared with scene
+// files); every error names the file and the JSON pointer of the culprit.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -7,6 +7,7 @@
 #include <numbers>
 #include <set>
 
+#include "engine/strict_json.hpp"
 #include "ui/tasks/task.hpp"
 
 namespace needle::ui {
@@ -15,9 +16,9 @@ using nlohmann::json;
 
 namespace {
 
-class TaskReader {
+class TaskReader : engine::StrictJsonReader<TaskError> {
  public:
-  TaskReader(std::string file, fs::path folder) : file_(std::move(file)), folder_(std::move(folder)) {}
+  TaskReader(std::string file, fs::path folder) : StrictJsonReader(std::move(file)), folder_(std::move(folder)) {}
 
   Task task(const json& root) {
     object(root, "", {"name", "title", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps", "scoring"});
@@ -51,33 +52,6 @@ class TaskReader {
   }
 
  private:
-  [[noreturn]] void fail(const std::string& pointer, const std::string& what) const {
-    throw TaskError(file_ + ": " + (pointer.empty() ? "/" : pointer) + ": " + what);
-  }
-
-  // Checks `value` is an object with no keys but `allowed`.
-  void object(const json& value, const std::string& at, std::initializer_list<const char*> allowed) const {
-    if (!value.is_object()) fail(at, "expected an object, got " + std::string(value.type_name()));
-    for (const auto& [key, _] : value.items())
-      if (std::none_of(allowed.begin(), allowed.end(), [&](const char* k) { return key == k; })) {
-        std::string keys;
-        for (const char* k : allowed) keys += (keys.empty() ? "" : ", ") + std::string(k);
-        fail(at + (json::json_pointer() / key).to_string(), "unknown key (allowed: " + keys + ")");
-      }
-  }
-
-  const json& member(const json& value, const std::string& at, const char* key) const {
-    if (!value.contains(key)) fail(at + "/" + key, "missing");
-    return value[key];
-  }
-
-  double number(const json& value, const std::string& at) const {
-    if (!value.is_number()) fail(at, "expected a number, got " + std::string(value.type_name()));
-    const double x = value.get<double>();
-    if (!std::isfinite(x)) fail(at, "not a finite number");
-    return x;
-  }
-
   double positive(const json& value, const std::string& at) const {
     const double x = number(value, at);
     if (x <= 0.0) fail(at, "must be > 0, got " + std::to_string(x));
@@ -88,12 +62,6 @@ class TaskReader {
     const double x = number(value, at);
     if (x < 0.0) fail(at, "must be >= 0, got " + std::to_string(x));
     return x;
-  }
-
-  std::string string(const json& value, const std::string& at) const {
-    if (!value.is_string() || value.get<std::string>().empty())
-      fail(at, "expected a non-empty string, got " + std::string(value.type_name()));
-    return value.get<std::string>();
   }
 
   fs::path existing_file(const json& value, const std::string& at) const {
@@ -301,7 +269,6 @@ class TaskReader {
     return r;
   }
 
-  std::string file_;
   fs::path folder_;
 };
 
