@@ -105,5 +105,26 @@ TEST(RealtimeLoop, CommandsApplyBetweenTicks) {
   loop.shutdown();
 }
 
+TEST(RealtimeLoop, SampleOverflowIsCountedAndReportedWithoutStoppingTheLoop) {
+  ScriptedDevice device;
+  CountingStep step;
+  LoopConfig config = quiet_config(2000.0);
+  config.sample_capacity = 64;  // and nobody consumes
+  HapticLoop loop(device, roomy_limits(), config);
+  loop.launch();
+  loop.apply({LoopCommandType::kSetStep, 0.0, &step});
+  loop.apply({LoopCommandType::kStart});
+  wait_ticks(loop, 300);
+  loop.apply({LoopCommandType::kStop});
+  wait_ticks(loop, 2);  // the stats of the last stepped tick are published
+  const LoopStatsSummary stats = loop.stats();
+  EXPECT_EQ(loop.samples().pushed(), 64u);
+  EXPECT_GT(loop.samples().overflowed(), 200u);
+  EXPECT_EQ(stats.samples_dropped, loop.samples().overflowed());
+  EXPECT_EQ(step.calls.load(), loop.samples().pushed() + loop.samples().overflowed())
+      << "every stepped tick was either delivered or counted";
+  loop.shutdown();
+}
+
 }  // namespace
 }  // namespace needle::haptics
