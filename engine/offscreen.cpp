@@ -8,25 +8,25 @@ namespace {
 
 template <typename... SceneArgs>
 RgbaImage render_once(const VulkanContext& context, VkExtent2D extent, const RendererSettings& settings,
-                      const NeedleLoad* needle, SceneArgs&&... scene_args) {
+                      SceneArgs&&... scene_args) {
   HeadlessTarget target(context, extent);
   SceneRenderer renderer(context, target, settings);
   GpuScene scene(renderer, std::forward<SceneArgs>(scene_args)...);
   RgbaImage image;
-  renderer.draw(target, scene.frame_params(needle), &image);
+  renderer.draw(target, scene.frame_params(), &image);
   return image;
 }
 
 }  // namespace
 
 RgbaImage render_scene_offscreen(const VulkanContext& context, const Scene& scene, VkExtent2D extent,
-                                 const RendererSettings& settings, const NeedleLoad* needle) {
-  return render_once(context, extent, settings, needle, scene);
+                                 const RendererSettings& settings) {
+  return render_once(context, extent, settings, scene);
 }
 
 RgbaImage render_model_offscreen(const VulkanContext& context, const Model& model, VkExtent2D extent,
                                  const Scene& view, const RendererSettings& settings) {
-  return render_once(context, extent, settings, nullptr, model, view);
+  return render_once(context, extent, settings, model, view);
 }
 
 Scene framing_view(const Model& model, VkExtent2D extent) {

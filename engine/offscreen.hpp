@@ -11,9 +11,8 @@ namespace needle::engine {
 
 class VulkanContext;
 
-// With a needle state, the needle is drawn there and deformable tissue deforms around it.
 RgbaImage render_scene_offscreen(const VulkanContext& context, const Scene& scene, VkExtent2D extent,
-                                 const RendererSettings& settings = {}, const NeedleLoad* needle = nullptr);
+                                 const RendererSettings& settings = {});
 // The model at the origin seen with the view's camera, lights and background (its assets unused).
 RgbaImage render_model_offscreen(const VulkanContext& context, const Model& model, VkExtent2D extent,
                                  const Scene& view, const RendererSettings& settings = {});
