@@ -29,9 +29,9 @@ void MasterPlant::saturate(const VecN& tau_command) {
   const int m = device_.actuated_joints;
   applied_.setZero(model_.dof());
   applied_.head(m) = tau_command.head(m);
-  // Tip force the actuated joints produce: J₁₋₃ᵀ F = τ₁₋₃ (least squares when singular).
-  const Eigen::Matrix3d jt = data_.J.topLeftCorner(3, m).transpose();
-  const Eigen::Vector3d force = jt.colPivHouseholderQr().solve(Eigen::Vector3d(applied_.head<3>()));
+  // Tip force the actuated joints produce: J_aᵀ F = τ_a (least squares when singular or m ≠ 3).
+  const Eigen::Matrix<double, Eigen::Dynamic, 3, 0, kMaxDof, 3> jt = data_.J.topLeftCorner(3, m).transpose();
+  const Eigen::Vector3d force = jt.colPivHouseholderQr().solve(applied_.head(m));
   saturated_ = force.norm() > device_.force_limit_N;
   if (saturated_) applied_ *= device_.force_limit_N / force.norm();
 }
