@@ -1,5 +1,6 @@
 #include "haptics/sim/scenario.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -45,6 +46,11 @@ class Reader {
       out[static_cast<Eigen::Index>(i)] = v[i].get<double>();
     }
     return out;
+  }
+  int count(const json& j, const std::string& key, const std::string& path) const {
+    const double v = number(j, key, path);
+    if (!(v >= 1.0) || v != std::floor(v) || v > 1e6) fail(path + key, "a whole number from 1 to 1000000");
+    return static_cast<int>(v);
   }
   Eigen::Vector3d vec3(const json& j, const std::string& key, const std::string& path) const { return numbers(j, key, 3, path); }
 
@@ -106,8 +112,8 @@ Scenario load_scenario(const std::string& path) {
   s.base_in_world = r.vec3(j, "robot_base_in_world_m", "");
   s.period_s = r.positive(j, "period_s", "");
   s.duration_s = r.positive(j, "duration_s", "");
-  s.master_substeps = static_cast<int>(r.positive(j, "master_substeps", ""));
-  s.virtual_substeps = static_cast<int>(r.positive(j, "virtual_substeps", ""));
+  s.master_substeps = r.count(j, "master_substeps", "");
+  s.virtual_substeps = r.count(j, "virtual_substeps", "");
   s.q0 = r.numbers(j, "q0_rad", n, "");
 
   const json& g = r.at(j, "gains", "");

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
+#include <regex>
 
 #include "haptics/model/kinematics.hpp"
 #include "haptics/sim/force_sensor.hpp"
@@ -103,6 +105,20 @@ TEST(SimComponents, ScenarioErrorsNameTheFileAndTheKey) {
     EXPECT_EQ(std::string(e.what()), path + ": key 'robot_base_in_world_m': expected an array of 3 numbers");
   }
   EXPECT_THROW(load_scenario("/nonexistent.json"), ScenarioError);
+  std::string text;
+  {
+    std::ifstream in(test::asset("assets/scenarios/holonomic_sphere.json"));
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::string fraction = ::testing::TempDir() + "/fraction_substeps.json";
+  text = std::regex_replace(text, std::regex("\\.\\./robots/"), test::asset("assets/robots/"));
+  std::ofstream(fraction) << std::regex_replace(text, std::regex("\"master_substeps\": 8"), "\"master_substeps\": 0.5");
+  try {
+    load_scenario(fraction);
+    FAIL();
+  } catch (const ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find("key 'master_substeps': expected a whole number"), std::string::npos) << e.what();
+  }
 }
 
 TEST(SimComponents, ThesisScenariosLoadInTheBaseFrame) {
