@@ -74,7 +74,7 @@ int run_window(const engine::Scene& scene, const RunOptions& options, const std:
   context_options.make_surface = [&](VkInstance instance) { return window.create_surface(instance); };
   engine::VulkanContext context(context_options);
   engine::WindowTarget target(context, window);
-  // On a CPU device (lavapipe) 4x MSAA costs about 5x the frame time (docs/BENCHMARKS.md):
+  // On a CPU device (lavapipe) 4x MSAA costs 1.8 to 3.3x the frame time (docs/BENCHMARKS.md):
   // unless asked, the interactive window keeps its frame rate instead; stills keep MSAA.
   const bool cpu_device = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   engine::SceneRenderer renderer(context, target,
