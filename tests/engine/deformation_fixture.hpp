@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cstring>
-#include <random>
 
 #include "asset-gen/assets.hpp"
 #include "engine/deformation_pass.hpp"

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "deformation_fixture.hpp"
