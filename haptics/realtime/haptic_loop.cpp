@@ -28,9 +28,12 @@ HapticLoop::HapticLoop(HapticDevice& device, const SafetyLimits& limits, const L
       safety_(limits),
       samples_(config.sample_capacity),
       tick_(device, safety_, snapshots_, samples_),
+      timer_(period_of(config.rate_hz)),
       dt_s_(1.0 / config.rate_hz) {
   check_loop_rate(config.rate_hz);
   stats_.set_nominal_rate(config.rate_hz);
+  idle_command_.space = device.capabilities().command_space;
+  idle_command_.joint_count = device.capabilities().joint_count;
 }
 
 HapticLoop::~HapticLoop() { shutdown(); }
@@ -67,7 +70,7 @@ void HapticLoop::wait_applied(uint64_t id) const {
 
 void HapticLoop::apply(LoopCommand command) { wait_applied(submit(command)); }
 
-bool HapticLoop::apply_pending(PeriodicTimer& timer) noexcept {
+bool HapticLoop::apply_pending() noexcept {
   LoopCommand c;
   bool keep_running = true;
   while (commands_.pop(c)) {
@@ -75,7 +78,7 @@ bool HapticLoop::apply_pending(PeriodicTimer& timer) noexcept {
       case LoopCommandType::kStart: servo_enabled_ = true; break;
       case LoopCommandType::kStop: servo_enabled_ = false; break;
       case LoopCommandType::kSetRate:
-        timer.set_period(period_of(c.rate_hz));
+        timer_.set_period(period_of(c.rate_hz));
         dt_s_ = 1.0 / c.rate_hz;
         stats_.set_nominal_rate(c.rate_hz);
         stats_.clear();  // old-rate periods would read as errors
@@ -90,36 +93,46 @@ bool HapticLoop::apply_pending(PeriodicTimer& timer) noexcept {
   return keep_running;
 }
 
+uint64_t HapticLoop::serve(int64_t wake, uint64_t period_ns, bool previous_overran) noexcept {
+  const uint64_t tick = next_tick_++;
+  if (servo_enabled_) return tick_.run(TickTiming{tick, wake, period_ns, previous_overran}, dt_s_);
+  device_.read(idle_reading_);
+  device_.write(idle_command_);
+  return static_cast<uint64_t>(monotonic_ns() - wake);
+}
+
+void HapticLoop::record_stats(uint64_t period_ns, uint64_t compute_ns, bool overran) noexcept {
+  stats_.record(period_ns, static_cast<uint64_t>(timer_.period_ns()), compute_ns, overran);
+  stats_.set_fault(static_cast<uint32_t>(safety_.fault()));
+  stats_.set_samples_dropped(samples_.overflowed());
+}
+
 void HapticLoop::run() noexcept {
   realtime_line_ = request_realtime(config_.realtime).line;
   ready_.store(true, std::memory_order_release);
 
-  PeriodicTimer timer(period_of(config_.rate_hz));
-  timer.start();
+  timer_.start();
   int64_t last_wake = 0;
   bool overran = false;
-  DeviceCommand idle_command;
-  idle_command.space = device_.capabilities().command_space;
-  idle_command.joint_count = device_.capabilities().joint_count;
-  for (uint64_t tick = 0;; ++tick) {
-    const int64_t wake = timer.wait();
-    const auto period = static_cast<uint64_t>(last_wake ? wake - last_wake : timer.period_ns());
+  for (;;) {
+    const int64_t wake = timer_.wait();
+    const auto period = static_cast<uint64_t>(last_wake ? wake - last_wake : timer_.period_ns());
     last_wake = wake;
-    if (!apply_pending(timer)) break;
-
-    uint64_t compute_ns = 0;
-    if (servo_enabled_) {
-      compute_ns = tick_.run(TickTiming{tick, wake, period, overran}, dt_s_);
-    } else {
-      device_.read(idle_reading_);
-      device_.write(idle_command);
-      compute_ns = static_cast<uint64_t>(monotonic_ns() - wake);
-    }
-    overran = timer.advance(monotonic_ns());
-    stats_.record(period, static_cast<uint64_t>(timer.period_ns()), compute_ns, overran);
-    stats_.set_fault(static_cast<uint32_t>(safety_.fault()));
-    stats_.set_samples_dropped(samples_.overflowed());
+    if (!apply_pending()) break;
+    const uint64_t compute_ns = serve(wake, period, overran);
+    overran = timer_.advance(monotonic_ns());
+    record_stats(period, compute_ns, overran);
   }
+}
+
+bool HapticLoop::run_unpaced(uint64_t ticks) {
+  if (thread_.joinable()) throw std::logic_error("haptic loop: run_unpaced while the loop thread runs");
+  for (uint64_t k = 0; k < ticks; ++k) {
+    if (!apply_pending()) return false;
+    const auto period = static_cast<uint64_t>(timer_.period_ns());
+    record_stats(period, serve(monotonic_ns(), period, false), false);
+  }
+  return true;
 }
 
 }  // namespace needle::haptics

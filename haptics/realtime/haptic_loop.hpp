@@ -48,6 +48,13 @@ class HapticLoop {
   // Shutdown command, then join. Safe to call twice.
   void shutdown();
 
+  // Offline, instead of launch(): runs `ticks` ticks on the calling thread back to back (a
+  // scripted or replayed session as fast as the machine goes), applying submitted commands
+  // before each tick as the thread would. The step sees the nominal period, so the simulation
+  // is the one the thread would produce. Returns false once a kShutdown was applied; throws
+  // std::logic_error while the thread runs.
+  bool run_unpaced(uint64_t ticks);
+
   // Control thread only (one producer). Returns the command id; throws std::runtime_error
   // when the command queue is full. kSetRate is range-checked here.
   uint64_t submit(LoopCommand command);
@@ -66,7 +73,11 @@ class HapticLoop {
  private:
   void run() noexcept;
   // Applies queued commands between ticks; returns false on kShutdown.
-  bool apply_pending(PeriodicTimer& timer) noexcept;
+  bool apply_pending() noexcept;
+  // One tick woken at `wake`: the servo, or while stopped an idle read and a zero command.
+  // Returns the compute time.
+  uint64_t serve(int64_t wake, uint64_t period_ns, bool previous_overran) noexcept;
+  void record_stats(uint64_t period_ns, uint64_t compute_ns, bool overran) noexcept;
 
   HapticDevice& device_;
   LoopConfig config_;
@@ -76,9 +87,12 @@ class HapticLoop {
   SpscRing<LoopCommand> commands_{64};
   ServoTick tick_;
   LoopStats stats_;
+  PeriodicTimer timer_;              // loop thread only (the caller's in run_unpaced)
   double dt_s_;
+  uint64_t next_tick_ = 0;           // loop thread only
   bool servo_enabled_ = false;       // loop thread only
   DeviceReading idle_reading_;       // loop thread only, while stopped
+  DeviceCommand idle_command_;
   uint64_t next_id_ = 0;             // control thread only
   std::atomic<uint64_t> applied_id_{0};
   std::atomic<bool> ready_{false};

@@ -85,6 +85,8 @@ std::vector<uint8_t> encode_header(const SessionHeader& header) {
   put(out, header.unix_time_s);
   put(out, static_cast<uint32_t>(header.device.size()));
   out.insert(out.end(), header.device.begin(), header.device.end());
+  put(out, static_cast<uint32_t>(header.context.size()));
+  out.insert(out.end(), header.context.begin(), header.context.end());
   return out;
 }
 
@@ -106,8 +108,8 @@ Session read_session(const std::string& path) {
   Session session;
   uint32_t record_bytes = 0, name_length = 0;
   if (!take(data, at, session.header.version)) throw fail("header", "truncated before the version");
-  if (session.header.version != kSessionFormatVersion)
-    throw fail("header", "format version " + std::to_string(session.header.version) + ", this build reads version " +
+  if (session.header.version < 1 || session.header.version > kSessionFormatVersion)
+    throw fail("header", "format version " + std::to_string(session.header.version) + ", this build reads versions 1 to " +
                              std::to_string(kSessionFormatVersion));
   if (!take(data, at, record_bytes) || !take(data, at, session.header.rate_hz) ||
       !take(data, at, session.header.unix_time_s) || !take(data, at, name_length) || data.size() - at < name_length)
@@ -117,6 +119,12 @@ Session read_session(const std::string& path) {
                              std::to_string(session_record_bytes()));
   session.header.device.assign(reinterpret_cast<const char*>(data.data() + at), name_length);
   at += name_length;
+  if (session.header.version >= 2) {
+    uint32_t context_length = 0;
+    if (!take(data, at, context_length) || data.size() - at < context_length) throw fail("header", "truncated context");
+    session.header.context.assign(reinterpret_cast<const char*>(data.data() + at), context_length);
+    at += context_length;
+  }
 
   const std::size_t body = data.size() - at;
   // A kill can cut the last record short: everything before it is still good, so the

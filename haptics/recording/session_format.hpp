@@ -3,7 +3,8 @@
 // state. Little-endian, doubles stored bit for bit, so a replay can be compared exactly.
 //
 //   header: "NEEDLREC" | u32 version | u32 record_bytes | f64 rate_hz | i64 unix_time_s |
-//           u32 name_length | device name bytes
+//           u32 name_length | device name bytes | u32 context_length | context bytes
+//   (version 1 has no context; it is still read, with an empty context)
 //   record: see visit_record() in session_format.cpp (field order is the format)
 #pragma once
 
@@ -16,13 +17,14 @@
 
 namespace needle::haptics {
 
-inline constexpr uint32_t kSessionFormatVersion = 1;
+inline constexpr uint32_t kSessionFormatVersion = 2;
 
 struct SessionHeader {
   uint32_t version = kSessionFormatVersion;
   double rate_hz = 0.0;
   int64_t unix_time_s = 0;
-  std::string device;  // the device spec the session ran with
+  std::string device;   // the device spec the session ran with
+  std::string context;  // what the application needs to rebuild the session (opaque here)
 };
 
 // A recording that cannot be read: what() reads "FILE: ELEMENT: what is wrong".

@@ -5,8 +5,9 @@
 
 namespace needle::haptics {
 
-SessionRecorder::SessionRecorder(const std::string& path, const SessionHeader& header, SpscRing<TickSample>& samples)
-    : path_(path), samples_(samples) {
+SessionRecorder::SessionRecorder(const std::string& path, const SessionHeader& header, SpscRing<TickSample>& samples,
+                                 SampleSink sink)
+    : path_(path), samples_(samples), sink_(std::move(sink)) {
   file_ = std::fopen(path.c_str(), "wb");
   if (file_ == nullptr) throw RecordingError(path + ": cannot be created: " + std::strerror(errno));
   const std::vector<uint8_t> head = encode_header(header);
@@ -37,6 +38,7 @@ std::size_t SessionRecorder::drain() {
   while (samples_.pop(sample)) {
     encode_record(sample, buffer_);
     ++count;
+    if (sink_) sink_(sample);
     if (buffer_.size() + session_record_bytes() > buffer_.capacity()) write_buffer();
   }
   write_buffer();
@@ -52,7 +54,7 @@ void SessionRecorder::start() {
       std::this_thread::sleep_for(kPassInterval);
       try {
         drain();
-      } catch (const RecordingError& e) {
+      } catch (const std::exception& e) {
         error_ = e.what();
         failed_ = true;
         return;

@@ -2,11 +2,14 @@
 // Each pass drains the ring, writes the records and flushes them to the kernel, every
 // kPassInterval (20 ms): a crash or kill of the process loses at most the samples of the
 // current pass, well under 100 ms. (Power loss is another matter: no fsync per pass.)
+// The ring has one consumer, so whoever else needs every sample (the scoring) takes them from
+// the recorder, through its sink, on the recorder's thread.
 #pragma once
 
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -21,14 +24,18 @@ class SessionRecorder {
  public:
   static constexpr std::chrono::milliseconds kPassInterval{20};
 
+  // Called with every sample, in tick order, after it is encoded.
+  using SampleSink = std::function<void(const TickSample&)>;
+
   // Creates the file and writes the header; throws RecordingError naming the file.
-  SessionRecorder(const std::string& path, const SessionHeader& header, SpscRing<TickSample>& samples);
+  SessionRecorder(const std::string& path, const SessionHeader& header, SpscRing<TickSample>& samples,
+                  SampleSink sink = {});
   ~SessionRecorder();
   SessionRecorder(const SessionRecorder&) = delete;
   SessionRecorder& operator=(const SessionRecorder&) = delete;
 
-  // One pass on the calling thread: drain, write, flush. Returns the records written.
-  // Throws RecordingError when the disk refuses the data.
+  // One pass on the calling thread: drain, write, feed the sink, flush. Returns the records
+  // written. Throws RecordingError when the disk refuses the data, or what the sink throws.
   std::size_t drain();
 
   // Passes on a thread of its own until stop(); stop() does a last pass and closes.
@@ -38,12 +45,13 @@ class SessionRecorder {
   uint64_t written() const noexcept { return written_.load(std::memory_order_relaxed); }
   // Samples the loop had to drop because this recorder fell behind.
   uint64_t dropped() const noexcept { return samples_.overflowed(); }
-  // Set when the thread's pass failed (disk full...): the message, else empty.
+  // Set when the thread's pass failed (disk full, the sink threw): the message, else empty.
   std::string error() const;
 
  private:
   std::string path_;
   SpscRing<TickSample>& samples_;
+  SampleSink sink_;
   std::FILE* file_ = nullptr;
   std::vector<uint8_t> buffer_;
   std::atomic<uint64_t> written_{0};

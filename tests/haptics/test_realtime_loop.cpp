@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstring>
 #include <stdexcept>
 #include <thread>
 
@@ -123,6 +124,49 @@ TEST(RealtimeLoop, SampleOverflowIsCountedAndReportedWithoutStoppingTheLoop) {
   EXPECT_EQ(stats.samples_dropped, loop.samples().overflowed());
   EXPECT_EQ(step.calls.load(), loop.samples().pushed() + loop.samples().overflowed())
       << "every stepped tick was either delivered or counted";
+  loop.shutdown();
+}
+
+// Offline, the loop must produce exactly the ticks the thread would: the same device reading,
+// step and safety monitor one after another, commands applied in between.
+TEST(RealtimeLoop, UnpacedRunIsTheDirectTickSequence) {
+  ScriptedDevice offline_device;
+  SpringStep offline_step;
+  HapticLoop loop(offline_device, roomy_limits(), quiet_config(1000.0));
+  loop.submit({LoopCommandType::kSetStep, 0.0, &offline_step});
+  loop.submit({LoopCommandType::kStart});
+  ASSERT_TRUE(loop.run_unpaced(500));
+
+  ScriptedDevice direct_device;
+  SpringStep direct_step;
+  SafetyMonitor safety(roomy_limits());
+  SeqLock<ToolSnapshot> snapshots;
+  SpscRing<TickSample> ring(1024);
+  ServoTick tick(direct_device, safety, snapshots, ring);
+  tick.set_step(&direct_step);
+  TickSample offline, direct;
+  for (uint64_t k = 0; k < 500; ++k) {
+    tick.run(TickTiming{k, 0, 1000000, false}, 1e-3);
+    ASSERT_TRUE(ring.pop(direct));
+    ASSERT_TRUE(loop.samples().pop(offline));
+    EXPECT_EQ(offline.tick, k);
+    EXPECT_EQ(std::memcmp(&offline.state, &direct.state, sizeof direct.state), 0) << "tick " << k;
+    EXPECT_EQ(std::memcmp(offline.command.force_n, direct.command.force_n, sizeof direct.command.force_n), 0);
+  }
+  EXPECT_FALSE(loop.samples().pop(offline));
+  EXPECT_EQ(loop.stats().ticks, 500u);
+  EXPECT_EQ(loop.stats().overruns, 0u);
+
+  loop.submit({LoopCommandType::kShutdown});
+  EXPECT_FALSE(loop.run_unpaced(1));
+  EXPECT_FALSE(loop.samples().pop(offline));  // shut down before the tick
+}
+
+TEST(RealtimeLoop, UnpacedRunIsRefusedWhileTheThreadRuns) {
+  ScriptedDevice device;
+  HapticLoop loop(device, roomy_limits(), quiet_config(1000.0));
+  loop.launch();
+  EXPECT_THROW(loop.run_unpaced(1), std::logic_error);
   loop.shutdown();
 }
 

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 #include <vector>
 
 #include "haptics/devices/replay_device.hpp"
@@ -56,7 +57,7 @@ TEST(RecordingReplay, ReplayReproducesTheSimulationStateBitForBit) {
   std::vector<TickSample> live;
   {
     ScriptedDevice device;
-    SessionRecorder recorder(path, {kSessionFormatVersion, kRate, 1700000000, "scripted"}, ring);
+    SessionRecorder recorder(path, {kSessionFormatVersion, kRate, 1700000000, "scripted", ""}, ring);
     live = run_ticks(device, 3000, &recorder, ring);
     EXPECT_EQ(recorder.written(), 3000u);
     EXPECT_EQ(recorder.dropped(), 0u);
@@ -91,7 +92,7 @@ TEST(RecordingReplay, AChangedInputChangesTheReplayedState) {
   SpscRing<TickSample> ring(4096);
   {
     ScriptedDevice device;
-    SessionRecorder recorder(path, {kSessionFormatVersion, kRate, 0, "scripted"}, ring);
+    SessionRecorder recorder(path, {kSessionFormatVersion, kRate, 0, "scripted", ""}, ring);
     run_ticks(device, 200, &recorder, ring);
   }
   Session session = read_session(path);
@@ -117,7 +118,7 @@ TEST(RecordingReplay, AChangedInputChangesTheReplayedState) {
 TEST(RecordingReplay, EveryDrainIsOnDiskBeforeTheRecorderCloses) {
   const std::string path = temp_path("flush.nsrec");
   SpscRing<TickSample> ring(64);
-  SessionRecorder recorder(path, {kSessionFormatVersion, kRate, 0, "scripted"}, ring);
+  SessionRecorder recorder(path, {kSessionFormatVersion, kRate, 0, "scripted", ""}, ring);
   TickSample s;
   for (uint64_t k = 0; k < 10; ++k) {
     s.tick = k;
@@ -134,7 +135,7 @@ TEST(RecordingReplay, EveryDrainIsOnDiskBeforeTheRecorderCloses) {
 TEST(RecordingReplay, ThreadedRecorderWritesEverySampleByStop) {
   const std::string path = temp_path("thread.nsrec");
   SpscRing<TickSample> ring(8192);
-  SessionRecorder recorder(path, {kSessionFormatVersion, kRate, 0, "scripted"}, ring);
+  SessionRecorder recorder(path, {kSessionFormatVersion, kRate, 0, "scripted", ""}, ring);
   recorder.start();
   TickSample s;
   for (uint64_t k = 0; k < 5000; ++k) {
@@ -160,7 +161,7 @@ TEST(RecordingReplay, ControllerReplayIsBitForBit) {
     SimSession sim(scenario, kSimRate);
     sim.device().open();
     testing::TickRig rig(sim.device(), sim.step(), safety_limits_for(sim.device().capabilities()), 4096);
-    SessionRecorder recorder(path, {kSessionFormatVersion, kSimRate, 0, "sim:" + scenario}, rig.samples);
+    SessionRecorder recorder(path, {kSessionFormatVersion, kSimRate, 0, "sim:" + scenario, ""}, rig.samples);
     for (uint64_t k = 0; k < kTicks; ++k) {
       rig.run(k, 1, 1.0 / kSimRate);
       live.push_back(rig.tick.last_sample().state);
@@ -201,7 +202,7 @@ TEST(RecordingReplay, DamagedFilesAreRejectedNamingFileAndElement) {
   EXPECT_THROW(read_session(path), RecordingError);
 
   // A kill mid-record: the complete records survive, the partial one is reported.
-  std::vector<uint8_t> bytes = encode_header({kSessionFormatVersion, kRate, 0, "x"});
+  std::vector<uint8_t> bytes = encode_header({kSessionFormatVersion, kRate, 0, "x", ""});
   TickSample s;
   encode_record(s, bytes);
   encode_record(s, bytes);
@@ -212,6 +213,70 @@ TEST(RecordingReplay, DamagedFilesAreRejectedNamingFileAndElement) {
   EXPECT_EQ(cut.trailing_bytes, session_record_bytes() - 7);
   std::filesystem::remove(path);
   EXPECT_THROW(ReplayDevice(path).open(), RecordingError);
+}
+
+TEST(RecordingReplay, TheSinkSeesEverySampleInTickOrder) {
+  const std::string path = temp_path("sink.nsrec");
+  SpscRing<TickSample> ring(1024);
+  std::vector<uint64_t> seen;
+  ScriptedDevice device;
+  {
+    SessionRecorder recorder(path, {kSessionFormatVersion, kRate, 0, "scripted", ""}, ring,
+                             [&seen](const TickSample& s) { seen.push_back(s.tick); });
+    run_ticks(device, 1200, &recorder, ring);
+  }
+  ASSERT_EQ(seen.size(), 1200u);
+  for (std::size_t k = 0; k < seen.size(); ++k) EXPECT_EQ(seen[k], k);
+  std::filesystem::remove(path);
+}
+
+TEST(RecordingReplay, ASinkThatThrowsStopsTheThreadWithItsMessage) {
+  const std::string path = temp_path("sink_fails.nsrec");
+  SpscRing<TickSample> ring(64);
+  SessionRecorder recorder(path, {kSessionFormatVersion, kRate, 0, "scripted", ""}, ring,
+                           [](const TickSample&) { throw std::runtime_error("scorer refused"); });
+  TickSample s;
+  ring.push(s);
+  recorder.start();
+  while (recorder.error().empty()) std::this_thread::sleep_for(SessionRecorder::kPassInterval);
+  recorder.stop();
+  EXPECT_EQ(recorder.error(), "scorer refused");
+  std::filesystem::remove(path);
+}
+
+TEST(RecordingReplay, TheContextRoundTripsAndVersionOneFilesStillRead) {
+  const std::string path = temp_path("context.nsrec");
+  const std::string context = R"({"task": "t.json", "bytes": "\u00e9\n"})";
+  write_bytes(path, encode_header({kSessionFormatVersion, kRate, 42, "sim", context}));
+  const Session now = read_session(path);
+  EXPECT_EQ(now.header.version, 2u);
+  EXPECT_EQ(now.header.context, context);
+  EXPECT_EQ(now.header.device, "sim");
+
+  // Version 1, written byte by byte as the old build did: no context after the device name.
+  std::vector<uint8_t> old = {'N', 'E', 'E', 'D', 'L', 'R', 'E', 'C'};
+  auto put = [&old](const auto& value) {
+    const auto* p = reinterpret_cast<const uint8_t*>(&value);
+    old.insert(old.end(), p, p + sizeof value);
+  };
+  put(uint32_t{1}), put(static_cast<uint32_t>(session_record_bytes())), put(kRate), put(int64_t{7}), put(uint32_t{3});
+  old.insert(old.end(), {'s', 'i', 'm'});
+  TickSample s;
+  s.tick = 9;
+  encode_record(s, old);
+  write_bytes(path, old);
+  const Session v1 = read_session(path);
+  EXPECT_EQ(v1.header.version, 1u);
+  EXPECT_EQ(v1.header.device, "sim");
+  EXPECT_EQ(v1.header.context, "");
+  ASSERT_EQ(v1.records.size(), 1u);
+  EXPECT_EQ(v1.records[0].tick, 9u);
+
+  std::vector<uint8_t> cut = encode_header({kSessionFormatVersion, kRate, 0, "sim", context});
+  cut.resize(cut.size() - 3);
+  write_bytes(path, cut);
+  EXPECT_THROW(read_session(path), RecordingError);
+  std::filesystem::remove(path);
 }
 
 }  // namespace
