@@ -285,7 +285,8 @@ namespace {
 
 constexpr const char* kSessionColumns =
     "SELECT s.id, r.name, t.name, coalesce(s.device, ''), s.started_at, coalesce(s.ended_at, ''), s.status, "
-    "coalesce(s.score, 0), coalesce(s.passed, 0), coalesce(s.duration_s, 0), coalesce(s.recording_path, '') "
+    "coalesce(s.score, 0), coalesce(s.passed, 0), coalesce(s.duration_s, 0), coalesce(s.recording_path, ''), "
+    "t.title, t.source "
     "FROM sessions s JOIN trainees r ON r.id = s.trainee_id JOIN tasks t ON t.id = s.task_id ";
 
 SessionInfo session_info(const Statement& s) {
@@ -301,6 +302,8 @@ SessionInfo session_info(const Statement& s) {
   i.passed = s.integer(8) != 0;
   i.duration_s = s.real(9);
   i.recording_path = s.text(10);
+  i.task_title = s.text(11);
+  i.task_source = s.text(12);
   return i;
 }
 
