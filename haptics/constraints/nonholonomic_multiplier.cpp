@@ -1,7 +1,5 @@
 #include "haptics/constraints/nonholonomic_multiplier.hpp"
 
-#include <Eigen/Cholesky>
-
 #include "haptics/model/dynamics.hpp"
 
 namespace needle::haptics {
@@ -24,8 +22,8 @@ void NonholonomicMultiplier::solve(const RobotModel& model, RobotData& data, con
   const VecK psi = A * data.dq;
   const VecK psi_dot_target = -2.0 * gains_.alpha * psi - gains_.beta * psi_integral_;  // (3.23)
   lambda = psi_dot_target - A_dot * data.dq - A * ddq;                                   // (3.22) bracket
-  Eigen::LDLT<MatKK> ldlt(schur_);
-  lambda = ldlt.solve(lambda);
+  schur_factor_.compute(schur_);
+  schur_factor_.solveInPlace(lambda);
   ddq.noalias() += hinv_at_.transpose() * lambda;
 }
 

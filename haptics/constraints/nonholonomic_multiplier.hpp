@@ -4,6 +4,7 @@
 #pragma once
 
 #include "haptics/constraints/pfaffian.hpp"
+#include "haptics/model/small_cholesky.hpp"
 
 namespace needle::haptics {
 
@@ -32,7 +33,8 @@ class NonholonomicMultiplier {
   NonholonomicGains gains_;
   VecK psi_integral_;
   MatKN hinv_at_;  // H⁻¹Aᵀ, stored as (H⁻¹Aᵀ)ᵀ rows
-  MatKK schur_;
+  MatKK schur_;  // A H⁻¹ Aᵀ
+  SmallCholesky<kMaxConstraints> schur_factor_;
 };
 
 }  // namespace needle::haptics

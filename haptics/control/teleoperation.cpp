@@ -1,12 +1,10 @@
 #include "haptics/control/teleoperation.hpp"
 
-#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 
 #include "haptics/model/dynamics.hpp"
 #include "haptics/model/kinematics.hpp"
-#include "haptics/model/regressor.hpp"
 
 namespace needle::haptics {
 
@@ -18,7 +16,7 @@ Teleoperation::Teleoperation(const RobotModel& master, const RobotModel& virt, S
       substeps_(virtual_substeps),
       master_data_(master),
       world_(virt, scene, gains.gpm, gains.nonholonomic),
-      theta_m_(parameter_vector(master)) {
+      damping_m_(master.damping()) {
   reset(VecN::Zero(master.dof()), VecN::Zero(master.dof()));
 }
 
@@ -31,7 +29,6 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
   momentum_h_.setZero();
   momentum_v_.setZero();
   lambda_integral_.setZero(2);
-  zero_n_.setZero(n);
   out_ = TickOutput{};
   wrench_filtered_.setZero();
   out_.tau_m.setZero(n);
@@ -79,10 +76,12 @@ const TickOutput& Teleoperation::step(const TickInput& in) {
   out_.lambda_m.setZero(2);
 
   if (contact_kind_ != ContactMode::Free) {
-    // Y(q_m, q̇_m, 0) θ_m = C q̇ + D q̇ + g: the printed (3.20)/(3.27) also cancel H q̈_m, which
-    // needs the master's acceleration, not measured; the operator feels the device's inertia.
-    inverse_dynamics(master_, master_data_, theta_m_, zero_n_, bias_m_);
-    out_.tau_m += w * bias_m_;
+    // Y(q_m, q̇_m, 0) θ_m = C q̇ + D q̇ + g, evaluated by Newton-Euler with the model's own
+    // inertias (the same sum as the regressor's, without forming it): the printed (3.20)/(3.27)
+    // also cancel H q̈_m, which needs the master's acceleration, not measured; the operator feels
+    // the device's inertia.
+    update_bias(master_, master_data_);
+    out_.tau_m += w * (master_data_.bias + damping_m_.cwiseProduct(in.dq_m));
   }
   if (contact_kind_ == ContactMode::Holonomic) {
     // (3.17)-(3.21): F_h is the hand's force along the normal, F_v the tool's force on the surface.
@@ -95,9 +94,11 @@ const TickOutput& Teleoperation::step(const TickInput& in) {
   } else if (contact_kind_ == ContactMode::Nonholonomic) {
     // (3.24): λ_m = (A Aᵀ)⁻¹ A τ_hand with τ_hand = J_mᵀ w_h, A = A_v(q_v) (2.30).
     const MatKN& A = contact.A;
-    aat_scratch_.topLeftCorner(2, 2).noalias() = A * A.transpose();
+    aat_.noalias() = A * A.transpose();
+    aat_factor_.compute(aat_);
     const VecN tau_hand = master_data_.J.transpose() * wrench_filtered_;
-    out_.lambda_m = aat_scratch_.topLeftCorner(2, 2).ldlt().solve(A * tau_hand);
+    out_.lambda_m.noalias() = A * tau_hand;
+    aat_factor_.solveInPlace(out_.lambda_m);
     lambda_integral_ += T * w * (out_.lambda_m + contact.lambda_tissue);  // (3.26)
     out_.tau_v += w * (A.transpose() * (out_.lambda_m + gv.Kf * lambda_integral_));                  // (3.28)
     out_.tau_m += w * (A.transpose() * (contact.lambda_tissue + gm.Kf * lambda_integral_));          // (3.27)

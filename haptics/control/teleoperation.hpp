@@ -8,6 +8,7 @@
 #include "haptics/control/gains.hpp"
 #include "haptics/control/tracking.hpp"
 #include "haptics/control/virtual_world.hpp"
+#include "haptics/model/small_cholesky.hpp"
 
 namespace needle::haptics {
 
@@ -49,14 +50,14 @@ class Teleoperation {
   int substeps_;
   RobotData master_data_;
   VirtualWorld world_;
-  ParamVec theta_m_;
   TrackingState track_m_, track_v_;
   TrackingTerms terms_m_, terms_v_;
   ContactMode contact_kind_ = ContactMode::Free;  // the kind whose terms are blending
   Eigen::Vector3d momentum_h_, momentum_v_;         // Δp_h, Δp_v (3.19)
   VecK lambda_integral_;                            // ∫(λ_m + λ_v), (3.26)
-  VecN bias_m_, zero_n_, velocity_gain_v_;
-  Eigen::Matrix<double, kMaxConstraints, kMaxConstraints> aat_scratch_;
+  VecN damping_m_, velocity_gain_v_;
+  MatKK aat_;                                 // A Aᵀ of (3.24)
+  SmallCholesky<kMaxConstraints> aat_factor_;
   Wrench wrench_filtered_ = Wrench::Zero();
   TickOutput out_;
 };

@@ -1,7 +1,5 @@
 #include "haptics/model/dynamics.hpp"
 
-#include "haptics/model/regressor.hpp"
-
 namespace needle::haptics {
 
 namespace {
@@ -35,21 +33,57 @@ void update_dynamics(const RobotModel& model, RobotData& data) {
   data.bias = data.C * data.dq + data.g;
 }
 
+void update_bias(const RobotModel& model, RobotData& data) {
+  const int n = data.n;
+  // Outward pass at q̈ = 0: origin accelerations (gravity entered as a base acceleration −g),
+  // then each body's force and moment about its centre of mass.
+  Eigen::Vector3d accel = -model.gravity;
+  Eigen::Vector3d omega_prev = Eigen::Vector3d::Zero(), omega_dot_prev = Eigen::Vector3d::Zero();
+  for (int i = 0; i < n; ++i) {
+    const BodyInertia& body = model.joints[static_cast<size_t>(i)].body;
+    if (i > 0) {
+      const Eigen::Vector3d r = data.origin[i] - data.origin[i - 1];
+      accel += omega_dot_prev.cross(r) + omega_prev.cross(omega_prev.cross(r));
+    }
+    const Eigen::Vector3d& w = data.omega[i];
+    const Eigen::Vector3d wd = omega_dot_prev + omega_prev.cross(data.axis[i] * data.dq[i]);
+    const Eigen::Matrix3d& R = data.frame[i].linear();
+    Eigen::Matrix3d& inertia = data.inertia_world[i];
+    inertia.noalias() = R * body.inertia_com * R.transpose();
+    const Eigen::Vector3d c = data.com[i] - data.origin[i];
+    data.force[i] = body.mass * (accel + wd.cross(c) + w.cross(w.cross(c)));
+    data.moment[i] = inertia * wd + w.cross(inertia * w);
+    omega_prev = w;
+    omega_dot_prev = wd;
+  }
+  // Inward pass: the wrench of bodies i..n−1 about origin i, projected on axis i.
+  Eigen::Vector3d f = Eigen::Vector3d::Zero(), m = Eigen::Vector3d::Zero();
+  for (int i = n - 1; i >= 0; --i) {
+    if (i < n - 1) m += (data.origin[i + 1] - data.origin[i]).cross(f);
+    f += data.force[i];
+    m += data.moment[i] + (data.com[i] - data.origin[i]).cross(data.force[i]);
+    data.bias[i] = data.axis[i].dot(m);
+  }
+}
+
 void update_tick_dynamics(const RobotModel& model, RobotData& data) {
+  update_bias(model, data);  // also the base-frame inertias
   const int n = data.n;
   // Composite body i..n−1 (a chain): mass, centre of mass and inertia about it, base frame.
   double mass = 0.0;
   Eigen::Vector3d com = Eigen::Vector3d::Zero();
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
-  auto shifted = [](const Eigen::Matrix3d& i, double m, const Eigen::Vector3d& d) {
-    return Eigen::Matrix3d(i + m * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose()));
+  auto shift = [](Eigen::Matrix3d& i, double m, const Eigen::Vector3d& d) {
+    i.noalias() -= m * d * d.transpose();
+    i.diagonal().array() += m * d.squaredNorm();
   };
   for (int i = n - 1; i >= 0; --i) {
-    const BodyInertia& body = model.joints[static_cast<size_t>(i)].body;
-    const Eigen::Matrix3d R = data.frame[i].linear();
-    const double total = mass + body.mass;
-    const Eigen::Vector3d c = (mass * com + body.mass * data.com[i]) / total;
-    inertia = shifted(inertia, mass, com - c) + shifted(R * body.inertia_com * R.transpose(), body.mass, data.com[i] - c);
+    const double body_mass = model.joints[static_cast<size_t>(i)].body.mass;
+    const double total = mass + body_mass;
+    const Eigen::Vector3d c = (mass * com + body_mass * data.com[i]) / total;
+    shift(inertia, mass, com - c);
+    inertia += data.inertia_world[i];
+    shift(inertia, body_mass, data.com[i] - c);
     mass = total;
     com = c;
     // Unit rate of joint i moves the composite rigidly about axis z_i through p_i; H_ji is z_j
@@ -62,14 +96,12 @@ void update_tick_dynamics(const RobotModel& model, RobotData& data) {
       data.H(i, j) = data.H(j, i);
     }
   }
-  // bias = τ(q, q̇, q̈ = 0) − D q̇.
-  inverse_dynamics(model, data, data.theta, data.zero_n, data.bias);
-  data.bias -= data.theta.tail(n).cwiseProduct(data.dq);
 }
 
 void forward_dynamics(const RobotModel& model, RobotData& data, const VecN& tau, VecN& ddq) {
   data.llt.compute(data.H);
-  ddq = tau - data.bias - model.damping().cwiseProduct(data.dq);
+  ddq = tau - data.bias;
+  for (int i = 0; i < data.n; ++i) ddq[i] -= model.joints[static_cast<size_t>(i)].damping * data.dq[i];
   data.llt.solveInPlace(ddq);
 }
 

@@ -8,8 +8,11 @@ namespace needle::haptics {
 
 // H, C, g and bias = C q̇ + g at the state of the last update_kinematics. Allocation-free.
 void update_dynamics(const RobotModel& model, RobotData& data);
-// H (composite rigid bodies) and bias = C q̇ + g (Newton-Euler) only, after update_frames: the
-// servo tick's cheaper path; C and g are left as they were.
+// bias = C q̇ + g (Newton-Euler at q̈ = 0, with the model's inertias) and inertia_world, after
+// update_frames; the servo tick's master needs no more.
+void update_bias(const RobotModel& model, RobotData& data);
+// update_bias, then H (composite rigid bodies), after update_frames: the servo tick's cheaper path;
+// C and g are left as they were.
 void update_tick_dynamics(const RobotModel& model, RobotData& data);
 
 // q̈ = H⁻¹ (τ − C q̇ − D q̇ − g) = H⁻¹ (τ − bias − D q̇); τ includes every external torque.

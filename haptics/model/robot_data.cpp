@@ -1,7 +1,5 @@
 #include "haptics/model/robot_data.hpp"
 
-#include "haptics/model/regressor.hpp"
-
 namespace needle::haptics {
 
 RobotData::RobotData(const RobotModel& model)
@@ -16,11 +14,9 @@ RobotData::RobotData(const RobotModel& model)
       C(MatN::Zero(n, n)),
       g(VecN::Zero(n)),
       bias(VecN::Zero(n)),
-      theta(parameter_vector(model)),
-      llt(n),
-      unit_params(ParamVec::Zero((kParamsPerBody + 1) * n)),
-      zero_n(VecN::Zero(n)) {
+      unit_params(ParamVec::Zero((kParamsPerBody + 1) * n)) {
   frame.fill(Eigen::Isometry3d::Identity());
+  inertia_world.fill(Eigen::Matrix3d::Zero());
   for (auto* a : {&axis, &origin, &origin_velocity, &omega, &com, &omega_dot, &accel, &force, &moment})
     a->fill(Eigen::Vector3d::Zero());
   J_com.fill(Mat6N::Zero(6, n));

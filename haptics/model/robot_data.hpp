@@ -2,11 +2,11 @@
 // dynamics.hpp and regressor.hpp fill it without allocating.
 #pragma once
 
-#include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 #include <array>
 
 #include "haptics/model/robot_model.hpp"
+#include "haptics/model/small_cholesky.hpp"
 
 namespace needle::haptics {
 
@@ -35,18 +35,16 @@ struct RobotData {
   Eigen::Matrix<double, 6, 1> tip_twist;  // [ṗ; ω]
   Mat6N J, Jdot;                          // tip geometric Jacobian [linear; angular] and its rate
 
-  // Filled by update_dynamics (H, C, g, bias) or update_tick_dynamics (H, bias).
+  // Filled by update_dynamics (H, C, g, bias) or update_tick_dynamics (H, bias, inertia_world).
+  std::array<Eigen::Matrix3d, kMaxDof> inertia_world;  // body inertia about its centre of mass, base axes
   MatN H, C;
   VecN g;
   VecN bias;  // C q̇ + g
 
-  ParamVec theta;  // the model's inertial parameters (regressor.hpp), cached for Newton-Euler
-
   // Scratch.
-  Eigen::LLT<MatN> llt;
+  SmallCholesky<kMaxDof> llt;  // of H (forward_dynamics) or of what the caller factorized
   std::array<Eigen::Vector3d, kMaxDof> omega_dot, accel, force, moment;
   ParamVec unit_params;
-  VecN zero_n;
 };
 
 }  // namespace needle::haptics
