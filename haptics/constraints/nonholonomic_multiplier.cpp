@@ -6,7 +6,8 @@ namespace needle::haptics {
 
 void NonholonomicMultiplier::reset(int k) { psi_integral_.setZero(k); }
 
-void NonholonomicMultiplier::solve(const RobotModel& model, RobotData& data, const MatKN& A, const MatKN& A_dot,
+// [[gnu::flatten]]: per-tick code, Eigen calls inlined (see kinematics.cpp).
+[[gnu::flatten]] void NonholonomicMultiplier::solve(const RobotModel& model, RobotData& data, const MatKN& A, const MatKN& A_dot,
                                    const VecN& tau, VecK& lambda, VecN& ddq) {
   const int k = static_cast<int>(A.rows());
   if (psi_integral_.size() != k) reset(k);

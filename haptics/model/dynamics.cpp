@@ -33,7 +33,8 @@ void update_dynamics(const RobotModel& model, RobotData& data) {
   data.bias = data.C * data.dq + data.g;
 }
 
-void update_bias(const RobotModel& model, RobotData& data) {
+// [[gnu::flatten]]: per-tick code, Eigen calls inlined (see kinematics.cpp).
+[[gnu::flatten]] void update_bias(const RobotModel& model, RobotData& data) {
   const int n = data.n;
   // Outward pass at q̈ = 0: origin accelerations (gravity entered as a base acceleration −g),
   // then each body's force and moment about its centre of mass.
@@ -66,7 +67,7 @@ void update_bias(const RobotModel& model, RobotData& data) {
   }
 }
 
-void update_tick_dynamics(const RobotModel& model, RobotData& data) {
+[[gnu::flatten]] void update_tick_dynamics(const RobotModel& model, RobotData& data) {
   update_bias(model, data);  // also the base-frame inertias
   const int n = data.n;
   // Composite body i..n−1 (a chain): mass, centre of mass and inertia about it, base frame.
@@ -98,7 +99,7 @@ void update_tick_dynamics(const RobotModel& model, RobotData& data) {
   }
 }
 
-void forward_dynamics(const RobotModel& model, RobotData& data, const VecN& tau, VecN& ddq) {
+[[gnu::flatten]] void forward_dynamics(const RobotModel& model, RobotData& data, const VecN& tau, VecN& ddq) {
   data.llt.compute(data.H);
   ddq = tau - data.bias;
   for (int i = 0; i < data.n; ++i) ddq[i] -= model.joints[static_cast<size_t>(i)].damping * data.dq[i];
