@@ -114,6 +114,22 @@ TEST_P(ModelProperties, TickPathMatchesTheFullDynamics) {
   }
 }
 
+TEST_P(ModelProperties, BiasAloneEqualsTheRegressorAtZeroAcceleration) {
+  // The controller's master term Y(q, q̇, 0) θ = C q̇ + D q̇ + g (3.20), by update_bias (no H).
+  const ParamVec theta = parameter_vector(model);
+  const VecN zero = VecN::Zero(n);
+  RobotData bias_only(model);
+  for (int trial = 0; trial < 20; ++trial) {
+    const VecN q = test::random_vector(rng, n, 3.0), dq = test::random_vector(rng, n, 2.0);
+    at(q, dq);
+    VecN y_theta(n);
+    inverse_dynamics(model, data, theta, zero, y_theta);
+    update_frames(model, bias_only, q, dq);
+    update_bias(model, bias_only);
+    EXPECT_LT((bias_only.bias + model.damping().cwiseProduct(dq) - y_theta).norm(), 1e-12 * (1.0 + y_theta.norm()));
+  }
+}
+
 TEST_P(ModelProperties, InverseThenForwardDynamicsRoundTrips) {
   const ParamVec theta = parameter_vector(model);
   for (int trial = 0; trial < 20; ++trial) {
