@@ -49,6 +49,14 @@ Window::Window(const std::string& title, int width, int height) {
   glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) {
     static_cast<Window*>(glfwGetWindowUserPointer(w))->resized_ = true;
   });
+  // Installed before the UI pass's ImGui backend, which chains to them.
+  glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) {
+    static_cast<Window*>(glfwGetWindowUserPointer(w))->scroll_ += dy;
+  });
+  glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
+    if (action == GLFW_RELEASE || (key != GLFW_KEY_UP && key != GLFW_KEY_DOWN)) return;
+    static_cast<Window*>(glfwGetWindowUserPointer(w))->scroll_ += key == GLFW_KEY_UP ? 1.0 : -1.0;
+  });
 }
 
 Window::~Window() {
@@ -70,6 +78,21 @@ VkExtent2D Window::framebuffer_extent() const {
   int w = 0, h = 0;
   glfwGetFramebufferSize(window_, &w, &h);
   return {uint32_t(w), uint32_t(h)};
+}
+
+void Window::cursor_normalized(double& x, double& y) const {
+  double px = 0.0, py = 0.0;
+  int w = 1, h = 1;
+  glfwGetCursorPos(window_, &px, &py);
+  glfwGetWindowSize(window_, &w, &h);
+  x = w > 0 ? 2.0 * px / w - 1.0 : 0.0;
+  y = h > 0 ? 1.0 - 2.0 * py / h : 0.0;
+}
+
+double Window::take_scroll() {
+  const double steps = scroll_;
+  scroll_ = 0.0;
+  return steps;
 }
 
 bool Window::take_resized() {

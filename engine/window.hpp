@@ -34,10 +34,17 @@ class Window {
   VkExtent2D framebuffer_extent() const;
   // True once after the framebuffer was resized.
   bool take_resized();
+  // The cursor in normalised window coordinates: x right and y up, (0, 0) at the centre,
+  // +-1 at the edges (beyond them when the cursor is outside).
+  void cursor_normalized(double& x, double& y) const;
+  // Scroll-wheel notches since the last call, forward positive; the Up and Down arrow keys
+  // count as one notch each, for trackpads and keyboards.
+  double take_scroll();
 
  private:
   GLFWwindow* window_ = nullptr;
   bool resized_ = false;
+  double scroll_ = 0.0;
 };
 
 }  // namespace needle::engine

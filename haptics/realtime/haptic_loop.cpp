@@ -75,7 +75,10 @@ bool HapticLoop::apply_pending() noexcept {
   bool keep_running = true;
   while (commands_.pop(c)) {
     switch (c.type) {
-      case LoopCommandType::kStart: servo_enabled_ = true; break;
+      case LoopCommandType::kStart:
+        servo_enabled_ = true;
+        servo_budget_ = c.ticks;
+        break;
       case LoopCommandType::kStop: servo_enabled_ = false; break;
       case LoopCommandType::kSetRate:
         timer_.set_period(period_of(c.rate_hz));
@@ -95,7 +98,10 @@ bool HapticLoop::apply_pending() noexcept {
 
 uint64_t HapticLoop::serve(int64_t wake, uint64_t period_ns, bool previous_overran) noexcept {
   const uint64_t tick = next_tick_++;
-  if (servo_enabled_) return tick_.run(TickTiming{tick, wake, period_ns, previous_overran}, dt_s_);
+  if (servo_enabled_) {
+    if (servo_budget_ != 0 && --servo_budget_ == 0) servo_enabled_ = false;  // this is the last one
+    return tick_.run(TickTiming{tick, wake, period_ns, previous_overran}, dt_s_);
+  }
   device_.read(idle_reading_);
   device_.write(idle_command_);
   return static_cast<uint64_t>(monotonic_ns() - wake);

@@ -91,6 +91,7 @@ class HapticLoop {
   double dt_s_;
   uint64_t next_tick_ = 0;           // loop thread only
   bool servo_enabled_ = false;       // loop thread only
+  uint64_t servo_budget_ = 0;        // loop thread only: servo ticks left, 0 when unbounded
   DeviceReading idle_reading_;       // loop thread only, while stopped
   DeviceCommand idle_command_;
   uint64_t next_id_ = 0;             // control thread only

@@ -9,7 +9,7 @@ namespace needle::haptics {
 class ServoStep;
 
 enum class LoopCommandType : uint32_t {
-  kStart,       // run the step and command the device
+  kStart,       // run the step and command the device (for `ticks` ticks when given, then stop)
   kStop,        // keep ticking (device read, zero force) without stepping or recording
   kSetRate,     // rate_hz
   kSetStep,     // step (nullptr: none); the old step is no longer used once applied
@@ -22,6 +22,7 @@ struct LoopCommand {
   LoopCommandType type = LoopCommandType::kStop;
   double rate_hz = 0.0;
   ServoStep* step = nullptr;
+  uint64_t ticks = 0;  // kStart: servo ticks to run before stopping as kStop would; 0: until kStop
   uint64_t id = 0;  // assigned by HapticLoop::submit
 };
 

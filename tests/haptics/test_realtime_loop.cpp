@@ -128,14 +128,15 @@ TEST(RealtimeLoop, SampleOverflowIsCountedAndReportedWithoutStoppingTheLoop) {
 }
 
 // Offline, the loop must produce exactly the ticks the thread would: the same device reading,
-// step and safety monitor one after another, commands applied in between.
+// step and safety monitor one after another, commands applied in between. A start with a tick
+// budget steps exactly that many ticks.
 TEST(RealtimeLoop, UnpacedRunIsTheDirectTickSequence) {
   ScriptedDevice offline_device;
   SpringStep offline_step;
   HapticLoop loop(offline_device, roomy_limits(), quiet_config(1000.0));
   loop.submit({LoopCommandType::kSetStep, 0.0, &offline_step});
-  loop.submit({LoopCommandType::kStart});
-  ASSERT_TRUE(loop.run_unpaced(500));
+  loop.submit({LoopCommandType::kStart, 0.0, nullptr, 500});
+  ASSERT_TRUE(loop.run_unpaced(600));
 
   ScriptedDevice direct_device;
   SpringStep direct_step;
@@ -153,8 +154,8 @@ TEST(RealtimeLoop, UnpacedRunIsTheDirectTickSequence) {
     EXPECT_EQ(std::memcmp(&offline.state, &direct.state, sizeof direct.state), 0) << "tick " << k;
     EXPECT_EQ(std::memcmp(offline.command.force_n, direct.command.force_n, sizeof direct.command.force_n), 0);
   }
-  EXPECT_FALSE(loop.samples().pop(offline));
-  EXPECT_EQ(loop.stats().ticks, 500u);
+  EXPECT_FALSE(loop.samples().pop(offline));  // the budget ran out: 100 idle ticks
+  EXPECT_EQ(loop.stats().ticks, 600u);
   EXPECT_EQ(loop.stats().overruns, 0u);
 
   loop.submit({LoopCommandType::kShutdown});

@@ -1,8 +1,11 @@
-// needle-sim run: the main job, a guided needle task. With a display it opens the simulator
-// window; without one (or with --headless) it runs offscreen and writes its results. A scripted
-// operator performs the task on the simulated device (the good or sloppy script of the task, or
-// a file); with --scene instead of a task, a scripted needle performs the thesis's insertion on
-// the scene's first deformable tissue.
+// needle-sim run: the main job, a guided needle task through the haptic loop. With a display it
+// opens the simulator window and runs the loop in real time; without one (or with --headless) it
+// runs the loop offscreen as fast as it goes and writes its results. The device is the simulated
+// master with a scripted operator (the good or sloppy script of the task, or a file), the
+// trainee's mouse or Falcon (window only), or a recording played back. With --scene instead of a
+// task, a scripted needle performs the thesis's insertion on the scene's first deformable tissue.
+#include <imgui.h>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -17,7 +20,8 @@
 #include "engine/vulkan_context.hpp"
 #include "engine/window.hpp"
 #include "engine/window_target.hpp"
-#include "task_run.hpp"
+#include "haptics/realtime/haptic_loop.hpp"
+#include "task_session.hpp"
 #include "ui/status_panel.hpp"
 
 namespace needle::cli {
@@ -27,7 +31,7 @@ namespace fs = std::filesystem;
 
 struct RunOptions {
   std::optional<fs::path> scene;  // a scene instead of a task
-  TaskRunOptions task;
+  TaskSessionOptions task;
   fs::path out_dir;
   Size2 size;
   std::optional<int> msaa;
@@ -36,10 +40,12 @@ struct RunOptions {
   bool hud = true;
 };
 
-// What the window shows each frame: where the needle is, and a panel beside the status panel.
+// What the window shows each frame: where the needle is, and a panel beside the status panel;
+// `input` takes the frame's cursor and scroll when the tool follows them.
 struct Show {
   std::function<std::optional<engine::NeedleLoad>(double t_s)> needle;
   std::function<void()> panel;
+  std::function<void(engine::Window&)> input;
 };
 
 // The scripted needle's target: the first deformable tissue's bounding sphere, if any.
@@ -89,6 +95,7 @@ int run_window(const engine::Scene& scene, const RunOptions& options, const std:
   long drawn = 0;
   while (!window.should_close()) {
     window.poll_events();
+    if (show.input) show.input(window);
     const bool last = options.frames > 0 && drawn + 1 == options.frames;
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::optional<engine::NeedleLoad> needle = show.needle(t);
@@ -134,17 +141,26 @@ int run_scene_headless(const engine::Scene& scene, const RunOptions& options) {
   return 0;
 }
 
-// The task played in real time in the window; its results are written when it ends, and the
-// score stays on screen until the window closes.
+// The task in real time in the window, the haptic loop on its own thread; the results are written
+// when it ends, and the score stays on screen until the window closes. Closed before the end, the
+// session stays incomplete (its recording is kept).
 int run_task_window(const RunOptions& options) {
-  ScriptedTaskRun run(options.task);
-  return run_window(engine::load_scene(run.task().scene), options, [&](engine::GpuScene&) {
-    return Show{[&run](double t) -> std::optional<engine::NeedleLoad> {
-                  run.advance_to(t);
-                  if (run.played()) run.finish();
-                  return run.needle();
+  TaskSession session(options.task);
+  return run_window(session.scene(), options, [&](engine::GpuScene&) {
+    std::printf("%s\n", session.start_realtime().c_str());
+    return Show{[&session](double) -> std::optional<engine::NeedleLoad> {
+                  if (session.over()) session.finish();
+                  return session.needle();
                 },
-                [&run] { ui::draw_trainee_panel(run.view()); }};
+                [&session] { session.draw_panel(); },
+                [&session](engine::Window& window) {
+                  haptics::MouseDevice* mouse = session.mouse();
+                  if (mouse == nullptr || (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse)) return;
+                  double x = 0.0, y = 0.0;
+                  window.cursor_normalized(x, y);
+                  mouse->set_pointer(x, y);
+                  mouse->add_depth_steps(window.take_scroll());
+                }};
   });
 }
 
@@ -165,13 +181,16 @@ int run_run(ArgList& args) {
   if (auto scene = args.value("--scene")) options.scene = *scene;
   auto task = args.value("--task");
   if (options.scene && task) throw UsageError("give --task FILE or --scene FILE, not both");
-  options.task.task = task.value_or((asset_dir() / "tasks" / "penetrable_sphere.json").string());
-  const std::string device = args.value("--device").value_or("sim");
+  options.task.rig.device = args.value("--device").value_or("sim");
+  const std::string& device = options.task.rig.device;
+  options.task.rig.firmware = args.value("--firmware").value_or("");
+  if (auto rate = args.value("--rate")) options.task.rig.rate_hz = parse_number(*rate, "--rate");
   options.task.trainee = args.value("--trainee").value_or(default_trainee());
   options.task.db = args.value("--db").value_or(default_db().string());
   options.out_dir = args.value("--out").value_or("out/run");
   options.task.out_dir = options.out_dir;
-  options.task.operator_spec = args.value("--operator").value_or("good");
+  const std::optional<std::string> operator_spec = args.value("--operator");
+  options.task.rig.operator_spec = operator_spec.value_or("good");
   options.size = parse_size(args.value("--size").value_or("1280x720"), "--size");
   if (auto msaa = args.value("--msaa")) options.msaa = parse_msaa(*msaa, "--msaa");
   if (auto frames = args.value("--frames")) {
@@ -184,11 +203,22 @@ int run_run(ArgList& args) {
   options.hud = !args.flag("--no-hud");
   args.finish();
   if (options.screenshot && options.frames == 0) throw UsageError("--screenshot needs --frames N (the frame to capture)");
-  if (device != "sim") {
-    // The trainee's own device (mouse, falcon, replay:FILE) drives the live haptic loop
-    // (needle-sim devices lists them); this build's run does not wire that loop to a task yet.
-    throw UsageError("--device " + device + ": run drives tasks with the scripted operator on the simulated device only (--device sim)");
+  if (options.scene && (device != "sim" || operator_spec || options.task.rig.rate_hz || !options.task.rig.firmware.empty()))
+    throw UsageError("--scene plays a scripted needle: --device, --operator, --rate and --firmware are for tasks");
+  const bool replay = device.rfind("replay:", 0) == 0;
+  const bool scripted = device == "sim" || replay;
+  if (operator_spec && device != "sim") throw UsageError("--operator: only the simulated device (--device sim) has a scripted operator");
+  if (replay && (task || options.task.rig.rate_hz))
+    throw UsageError("--device " + device + ": a replay runs the recording's own task at its rate; drop --task and --rate");
+  if (options.task.rig.rate_hz) {
+    try {
+      haptics::check_loop_rate(*options.task.rig.rate_hz);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--rate: ") + e.what());
+    }
   }
+  const std::optional<fs::path> recorded = options.scene ? std::nullopt : recorded_task(device);
+  options.task.task = recorded ? *recorded : fs::path(task.value_or((asset_dir() / "tasks" / "penetrable_sphere.json").string()));
 
   const bool window = !headless && engine::Window::display_available();
   if (!headless && !window) std::printf("no display: running headless\n");
@@ -196,21 +226,30 @@ int run_run(ArgList& args) {
     engine::Scene scene = engine::load_scene(*options.scene);
     return window ? run_window(scene, options, scripted_needle_show) : run_scene_headless(scene, options);
   }
+  if (!window && !scripted) {
+    throw UsageError("--device " + device + ": a trainee's device needs the window" +
+                     (headless ? " (drop --headless)" : " and there is no display"));
+  }
   return window ? run_task_window(options) : run_task_headless(options.task, options.size, options.msaa.value_or(4));
 }
 
 const CommandRegistrar reg{
     {"run",
-     "needle-sim run [--task FILE | --scene FILE] [--device sim] [--trainee NAME] [--db FILE] [--out DIR] [--headless]\n"
-     "               [--operator good|sloppy|FILE] [--size WxH] [--msaa N] [--frames N] [--screenshot FILE] [--no-hud]\n"
+     "needle-sim run [--task FILE | --scene FILE] [--device sim|mouse|falcon[:N]|replay:FILE] [--trainee NAME] [--db FILE]\n"
+     "               [--out DIR] [--headless] [--operator good|sloppy|FILE] [--rate HZ] [--firmware FILE]\n"
+     "               [--size WxH] [--msaa N] [--frames N] [--screenshot FILE] [--no-hud]\n"
      "  --task FILE        guided task (default: assets/tasks/penetrable_sphere.json)\n"
      "  --scene FILE       show a scene instead, a scripted needle inserting into its first deformable tissue\n"
-     "  --device sim       the simulated device (the only one run drives yet; needle-sim devices lists the others)\n"
+     "  --device SPEC      sim: the simulated master and a scripted operator (default); mouse or falcon[:N]:\n"
+     "                     the trainee's own device, in the window; replay:FILE: a recorded session played\n"
+     "                     back with its own task (needle-sim devices lists what is connected)\n"
      "  --trainee NAME     whose session it is (default: $USER)\n"
      "  --db FILE          session database (default: $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)\n"
      "  --out DIR          where score.json, the scenario that ran and the pictures go (default out/run)\n"
      "  --headless         run offscreen even when a display is available\n"
-     "  --operator SCRIPT  the scripted operator: good, sloppy (the task's own) or a script file (default good)\n"
+     "  --operator SCRIPT  sim: the scripted operator, good, sloppy (the task's own) or a script file (default good)\n"
+     "  --rate HZ          haptic loop rate, 250 to 10000 (default: the scenario's for sim, 1000 for a trainee's device)\n"
+     "  --firmware FILE    falcon: Novint's firmware image, loaded when the device opens\n"
      "  --size WxH         window or image size (default 1280x720)\n"
      "  --msaa N           MSAA samples (default 4; 1 in a window on a CPU device)\n"
      "  --frames N         window: close after N frames\n"

@@ -29,9 +29,25 @@ fs::path operator_script_path(const Task& task, const std::string& spec) {
   return path;
 }
 
-haptics::Scenario scenario_with_operator(const Task& task, const fs::path& script, const fs::path& merged_file) {
+json task_scenario_json(const Task& task) {
   if (task.scenario.empty()) throw TaskError(task.source + ": /scenario: the task names no haptics scenario to run");
   json scenario = read_json(task.scenario);
+  for (const char* key : {"master_urdf", "virtual_urdf"}) {  // relative to the task's scenario, not a copy
+    if (!scenario.contains(key) || !scenario[key].is_string())
+      throw TaskError(task.scenario.string() + ": /" + key + ": expected the robot's URDF file");
+    scenario[key] = fs::absolute(task.scenario.parent_path() / scenario[key].get<std::string>()).string();
+  }
+  return scenario;
+}
+
+haptics::Scenario write_scenario(const json& scenario, const fs::path& file) {
+  if (file.has_parent_path()) fs::create_directories(file.parent_path());
+  std::ofstream(file) << scenario.dump(2) << "\n";
+  return haptics::load_scenario(file.string());
+}
+
+haptics::Scenario scenario_with_operator(const Task& task, const fs::path& script, const fs::path& merged_file) {
+  json scenario = task_scenario_json(task);
   const json operator_script = read_json(script);
   if (!operator_script.contains("hand") || !operator_script["hand"].contains("waypoints") ||
       !operator_script["hand"]["waypoints"].is_array() || operator_script["hand"]["waypoints"].empty()) {
@@ -44,12 +60,7 @@ haptics::Scenario scenario_with_operator(const Task& task, const fs::path& scrip
                     "/t: expected a time in seconds");
   }
   scenario["duration_s"] = last["t"].get<double>() + 4.0;
-  for (const char* key : {"master_urdf", "virtual_urdf"}) {  // relative to the task's scenario, not the copy
-    scenario[key] = fs::absolute(task.scenario.parent_path() / scenario[key].get<std::string>()).string();
-  }
-  if (merged_file.has_parent_path()) fs::create_directories(merged_file.parent_path());
-  std::ofstream(merged_file) << scenario.dump(2) << "\n";
-  return haptics::load_scenario(merged_file.string());
+  return write_scenario(scenario, merged_file);
 }
 
 haptics::ToolSnapshot snapshot_of(const haptics::TickRecord& r) {

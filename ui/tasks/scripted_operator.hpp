@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "haptics/realtime/tool_snapshot.hpp"
@@ -17,8 +18,16 @@ namespace needle::ui {
 // TaskError when the file does not exist.
 std::filesystem::path operator_script_path(const Task& task, const std::string& spec);
 
-// The task's scenario with the script's hand, running until 4 s after its last waypoint. The
-// merged scenario is written to `merged_file` (kept beside the run's results: what exactly ran).
+// The task's haptics scenario as JSON, its robot files made absolute so it can be written
+// anywhere. TaskError when the task names no scenario or the file is not JSON.
+nlohmann::json task_scenario_json(const Task& task);
+
+// Writes a scenario's JSON to `file` (kept beside the run's results: what exactly ran) and loads
+// it from there.
+haptics::Scenario write_scenario(const nlohmann::json& scenario, const std::filesystem::path& file);
+
+// The task's scenario with the script's hand, running until 4 s after its last waypoint, written
+// to `merged_file` by write_scenario.
 haptics::Scenario scenario_with_operator(const Task& task, const std::filesystem::path& script,
                                          const std::filesystem::path& merged_file);
 

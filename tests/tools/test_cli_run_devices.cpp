@@ -1,0 +1,123 @@
+// `needle-sim run` through the haptic loop: every session is recorded beside the database, and a
+// recording replayed with --device replay:FILE reproduces the simulation state bit for bit and
+// the score exactly. Devices that need a trainee refuse to run without a window, and a bad
+// recording is an error naming the file.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli_process.hpp"
+#include "haptics/recording/session_format.hpp"
+#include "ui/sessions/session_store.hpp"
+
+namespace needle::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunOutput {
+  ProcessResult process;
+  nlohmann::json score;
+};
+
+RunOutput run_headless(const std::string& arguments, const fs::path& out, const fs::path& db) {
+  fs::remove_all(out);
+  RunOutput run;
+  run.process = run_needle_sim("run --headless --size 160x120 --trainee ana " + arguments + " --out " + quoted(out) + " --db " +
+                               quoted(db));
+  EXPECT_EQ(run.process.exit_code, 0) << run.process.output;
+  EXPECT_EQ(run.process.output.find("Vulkan validation"), std::string::npos) << run.process.output;
+  if (run.process.exit_code == 0) run.score = nlohmann::json::parse(std::ifstream(out / "score.json"));
+  return run;
+}
+
+struct ReplayCase {
+  const char* task;
+  const char* operator_spec;
+};
+
+void PrintTo(const ReplayCase& c, std::ostream* os) { *os << c.task << " with the " << c.operator_spec << " operator"; }
+
+class RunReplay : public testing::TestWithParam<ReplayCase> {};
+
+TEST_P(RunReplay, ReplayingARecordedRunReproducesItsStateAndScore) {
+  const fs::path dir = test_output_dir("cli_run_devices") / (std::string(GetParam().task) + "_" + GetParam().operator_spec);
+  fs::remove_all(dir);
+  const fs::path db = dir / "sessions.db";
+  const std::string task = (fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks" / (std::string(GetParam().task) + ".json")).string();
+  const RunOutput live = run_headless("--task " + quoted(fs::path(task)) + " --operator " + GetParam().operator_spec, dir / "live", db);
+  ASSERT_TRUE(live.score.contains("recording"));
+  const fs::path recording = live.score["recording"].get<std::string>();
+  EXPECT_EQ(recording.parent_path(), fs::absolute(dir / "recordings"));
+
+  const RunOutput replay = run_headless("--device " + quoted(fs::path("replay:" + recording.string())), dir / "replay", db);
+  ASSERT_TRUE(replay.score.contains("recording"));
+  nlohmann::json live_score = live.score, replay_score = replay.score;
+  live_score.erase("recording");
+  replay_score.erase("recording");
+  EXPECT_EQ(replay_score, live_score);  // every metric, step and component, exactly
+
+  const haptics::Session a = haptics::read_session(recording.string());
+  const haptics::Session b = haptics::read_session(replay.score["recording"].get<std::string>());
+  EXPECT_EQ(a.header.device, "sim");
+  EXPECT_EQ(b.header.device, "replay:" + recording.string());
+  EXPECT_EQ(b.header.rate_hz, a.header.rate_hz);
+  ASSERT_EQ(b.records.size(), a.records.size());
+  ASSERT_GT(a.records.size(), 10000u);
+  size_t differing = 0;
+  for (size_t k = 0; k < a.records.size(); ++k) {
+    if (std::memcmp(&a.records[k].state, &b.records[k].state, sizeof a.records[k].state) != 0) ++differing;
+  }
+  EXPECT_EQ(differing, 0u) << "ticks whose simulation state differs between the run and its replay";
+
+  ui::SessionStore store(db);
+  const std::vector<ui::SessionInfo> sessions = store.sessions();  // newest first
+  ASSERT_EQ(sessions.size(), 2u);
+  EXPECT_EQ(sessions[1].recording_path, recording.string());
+  EXPECT_EQ(sessions[1].device, std::string("sim (") + GetParam().task + "_" + GetParam().operator_spec + ")");
+  EXPECT_EQ(sessions[0].device.rfind("replay of sim", 0), 0u) << sessions[0].device;
+  EXPECT_TRUE(sessions[0].complete);
+  EXPECT_DOUBLE_EQ(sessions[0].score, sessions[1].score);
+}
+
+INSTANTIATE_TEST_SUITE_P(Tasks, RunReplay,
+                         testing::Values(ReplayCase{"penetrable_sphere", "good"}, ReplayCase{"rigid_sphere", "sloppy"}),
+                         [](const auto& info) { return std::string(info.param.task) + "_" + info.param.operator_spec; });
+
+TEST(CliRunDevices, TraineeDevicesNeedTheWindowAndBadOptionsAreUsageErrors) {
+  const fs::path dir = test_output_dir("cli_run_devices") / "usage";
+  for (const char* arguments : {"--device mouse", "--device falcon", "--rate 100", "--rate 20000", "--device mouse --operator good",
+                                "--scene x.json --device mouse"}) {
+    ProcessResult r = run_needle_sim(std::string("run --headless ") + arguments + " --out " + quoted(dir) + " --db " +
+                                     quoted(dir / "s.db"));
+    EXPECT_EQ(r.exit_code, 2) << arguments << "\n" << r.output;
+  }
+  ProcessResult window = run_needle_sim("run --headless --device mouse");
+  EXPECT_NE(window.output.find("needs the window"), std::string::npos) << window.output;
+}
+
+TEST(CliRunDevices, ABadRecordingIsAnErrorNamingTheFile) {
+  const fs::path dir = test_output_dir("cli_run_devices") / "bad_recording";
+  fs::create_directories(dir);
+  const fs::path missing = dir / "missing.nrec";
+  ProcessResult r = run_needle_sim("run --headless --device " + quoted(fs::path("replay:" + missing.string())));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find(missing.string()), std::string::npos) << r.output;
+
+  // A recording without the context needle-sim run writes (another program's, or version 1).
+  const fs::path bare = dir / "bare.nrec";
+  const std::vector<uint8_t> header = haptics::encode_header({haptics::kSessionFormatVersion, 500.0, 0, "sim", ""});
+  std::ofstream(bare, std::ios::binary).write(reinterpret_cast<const char*>(header.data()), std::streamsize(header.size()));
+  r = run_needle_sim("run --headless --device " + quoted(fs::path("replay:" + bare.string())));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find(bare.string() + ": header: context"), std::string::npos) << r.output;
+
+  // A replay runs its recording's own task.
+  r = run_needle_sim("run --headless --task t.json --device " + quoted(fs::path("replay:" + bare.string())));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+}
+
+}  // namespace
+}  // namespace needle::test

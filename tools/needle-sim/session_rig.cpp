@@ -1,0 +1,192 @@
+#include "session_rig.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "haptics/devices/device_catalog.hpp"
+#include "haptics/devices/replay_device.hpp"
+#include "haptics/realtime/haptic_loop.hpp"
+#include "haptics/realtime/task_space_step.hpp"
+#include "haptics/realtime/teleoperation_step.hpp"
+#include "haptics/recording/session_format.hpp"
+#include "ui/tasks/scripted_operator.hpp"
+
+namespace needle::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+constexpr const char* kReplayPrefix = "replay:";
+constexpr int kContextVersion = 1;
+
+bool is_replay(const std::string& device) { return device.rfind(kReplayPrefix, 0) == 0; }
+
+// The trainee moves a task-space device in the plane of the screen and pushes into it: device x
+// goes to the view's right, y to its up, and z to `depth_sign` times the viewing direction.
+Eigen::Matrix3d screen_axes(const engine::Camera& camera, double depth_sign) {
+  const glm::dvec3 forward = glm::normalize(glm::dvec3(camera.target - camera.position));
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(camera.up)));
+  const glm::dvec3 up = glm::cross(right, forward);
+  Eigen::Matrix3d axes;
+  axes << right.x, up.x, depth_sign * forward.x, right.y, up.y, depth_sign * forward.y, right.z, up.z, depth_sign * forward.z;
+  return axes;
+}
+
+// The mouse's depth grows with scrolling forward, into the screen; the Falcon's z points at the
+// user, out of it. The Falcon's 8 cm cube is scaled up to the mouse's 20 cm reach.
+haptics::TaskCoupling coupling_for(const std::string& device, const engine::Camera& camera) {
+  haptics::TaskCoupling coupling;
+  const bool mouse = device == "mouse";
+  coupling.device_to_scene = screen_axes(camera, mouse ? 1.0 : -1.0);
+  coupling.workspace_scale = mouse ? 1.0 : 2.5;
+  return coupling;
+}
+
+json coupling_json(const haptics::TaskCoupling& c) {
+  json axes = json::array();
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) axes.push_back(c.device_to_scene(r, k));
+  return {{"device_to_scene", axes},
+          {"workspace_scale", c.workspace_scale},
+          {"stiffness_n_per_m", c.stiffness_n_per_m},
+          {"orientation_stiffness_nm_per_rad", c.orientation_stiffness_nm_per_rad},
+          {"joint_damping_nms_per_rad", c.joint_damping_nms_per_rad},
+          {"force_scale", c.force_scale}};
+}
+
+haptics::TaskCoupling coupling_from(const json& j) {
+  haptics::TaskCoupling c;
+  const std::vector<double> axes = j.at("device_to_scene").get<std::vector<double>>();
+  if (axes.size() != 9) throw std::invalid_argument("device_to_scene: expected 9 numbers");
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) c.device_to_scene(r, k) = axes[3 * r + k];
+  c.workspace_scale = j.at("workspace_scale").get<double>();
+  c.stiffness_n_per_m = j.at("stiffness_n_per_m").get<double>();
+  c.orientation_stiffness_nm_per_rad = j.at("orientation_stiffness_nm_per_rad").get<double>();
+  c.joint_damping_nms_per_rad = j.at("joint_damping_nms_per_rad").get<double>();
+  c.force_scale = j.at("force_scale").get<double>();
+  return c;
+}
+
+json limits_json(const haptics::SafetyLimits& limits) {
+  return {{"max_force_n", limits.max_force_n},
+          {"max_torque_nm", std::vector<double>(limits.max_torque_nm, limits.max_torque_nm + haptics::kMaxDeviceJoints)}};
+}
+
+haptics::SafetyLimits limits_from(const json& j) {
+  haptics::SafetyLimits limits;
+  limits.max_force_n = j.at("max_force_n").get<double>();
+  const std::vector<double> torque = j.at("max_torque_nm").get<std::vector<double>>();
+  if (torque.size() != haptics::kMaxDeviceJoints) throw std::invalid_argument("max_torque_nm: wrong length");
+  std::copy(torque.begin(), torque.end(), limits.max_torque_nm);
+  return limits;
+}
+
+// The recording's context, checked: a recording from another program, an older build or a
+// damaged file is an error naming the file, never a replay of something else.
+json read_context(const std::string& path, const haptics::SessionHeader& header) {
+  auto fail = [&path](const std::string& what) { return haptics::RecordingError(path + ": header: context: " + what); };
+  if (header.context.empty()) throw fail("none (recorded before version 2 or by another program): cannot rebuild its task");
+  json context;
+  try {
+    context = json::parse(header.context);
+  } catch (const json::exception& e) {
+    throw fail(std::string("not valid JSON (") + e.what() + ")");
+  }
+  if (!context.is_object() || context.value("version", 0) != kContextVersion)
+    throw fail("expected version " + std::to_string(kContextVersion));
+  for (const char* key : {"task", "scenario", "safety_limits"})
+    if (!context.contains(key)) throw fail(std::string("missing \"") + key + "\"");
+  return context;
+}
+
+}  // namespace
+
+std::optional<fs::path> recorded_task(const std::string& device) {
+  if (!is_replay(device)) return std::nullopt;
+  const std::string path = device.substr(std::string(kReplayPrefix).size());
+  const haptics::Session session = haptics::read_session(path);
+  return fs::path(read_context(path, session.header).at("task").get<std::string>());
+}
+
+SessionRig::SessionRig(const ui::Task& task, const RigOptions& options) {
+  if (options.rate_hz) haptics::check_loop_rate(*options.rate_hz);
+  const fs::path scenario_file = options.out_dir / "scenario.json";
+  json scenario_json;
+  json coupling = nullptr;  // joint to joint
+  const std::string& spec = options.device;
+
+  if (spec == "sim") {
+    const fs::path script = ui::operator_script_path(task, options.operator_spec);
+    haptics::Scenario scenario = ui::scenario_with_operator(task, script, scenario_file);
+    rate_hz_ = options.rate_hz.value_or(1.0 / scenario.period_s);
+    sim_ = std::make_unique<haptics::SimSession>(std::move(scenario), rate_hz_);
+    device_ = &sim_->device();
+    step_ = &sim_->step();
+    ticks_ = static_cast<uint64_t>(std::llround(sim_->scenario().duration_s * rate_hz_));
+    description_ = "sim (" + script.stem().string() + ")";
+    scenario_json = json::parse(std::ifstream(scenario_file));
+  } else if (is_replay(spec)) {
+    const std::string path = spec.substr(std::string(kReplayPrefix).size());
+    auto replay = std::make_unique<haptics::ReplayDevice>(path);
+    replay->open();
+    const json context = read_context(path, replay->header());
+    try {
+      scenario_json = context.at("scenario");
+      coupling = context.value("coupling", json(nullptr));
+      limits_ = limits_from(context.at("safety_limits"));
+      scenario_ = std::make_unique<haptics::Scenario>(ui::write_scenario(scenario_json, scenario_file));
+      rate_hz_ = replay->header().rate_hz;
+      owned_step_ = coupling.is_null() ? std::unique_ptr<haptics::ServoStep>(
+                                             std::make_unique<haptics::TeleoperationStep>(*scenario_, 1.0 / rate_hz_))
+                                       : std::make_unique<haptics::TaskSpaceStep>(*scenario_, coupling_from(coupling));
+    } catch (const json::exception& e) {
+      throw haptics::RecordingError(path + ": header: context: " + e.what());
+    } catch (const std::invalid_argument& e) {
+      throw haptics::RecordingError(path + ": header: context: " + e.what());
+    }
+    ticks_ = replay->length();
+    description_ = "replay of " + replay->header().device + " (" + fs::path(path).filename().string() + ")";
+    owned_device_ = std::move(replay);
+  } else {
+    haptics::DeviceOptions device_options;
+    device_options.firmware_path = options.firmware;
+    if (spec == "mouse") {
+      auto mouse = std::make_unique<haptics::MouseDevice>();
+      mouse_ = mouse.get();
+      owned_device_ = std::move(mouse);
+    } else {
+      owned_device_ = haptics::make_device(spec, device_options);  // DeviceError for an unknown spec
+    }
+    owned_device_->open();
+    owned_device_->home();
+    scenario_json = ui::task_scenario_json(task);
+    scenario_ = std::make_unique<haptics::Scenario>(ui::write_scenario(scenario_json, scenario_file));
+    rate_hz_ = options.rate_hz.value_or(1000.0);
+    const haptics::TaskCoupling task_coupling = coupling_for(spec, options.camera);
+    coupling = coupling_json(task_coupling);
+    owned_step_ = std::make_unique<haptics::TaskSpaceStep>(*scenario_, task_coupling);
+    description_ = spec;
+  }
+  if (owned_device_) device_ = owned_device_.get();
+  if (owned_step_) step_ = owned_step_.get();
+  if (!is_replay(spec)) limits_ = haptics::safety_limits_for(device_->capabilities());
+  if (spec == "sim") device_->open();
+
+  const std::string recorded_device = is_replay(spec) ? description_ : spec;
+  context_ = json{{"version", kContextVersion},
+                  {"task", fs::absolute(task.source).string()},
+                  {"device", recorded_device},
+                  {"scenario", scenario_json},
+                  {"coupling", coupling},
+                  {"safety_limits", limits_json(limits_)}}
+                 .dump();
+}
+
+SessionRig::~SessionRig() {
+  if (device_) device_->close();
+}
+
+}  // namespace needle::cli

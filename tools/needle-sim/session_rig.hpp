@@ -1,0 +1,73 @@
+// What a task session runs on: the device a --device spec names, the servo step that couples it
+// to the virtual robot (joint to joint for `sim`, in task space for `mouse` and `falcon`), the
+// scenario both use, and the recording context that lets `replay:FILE` rebuild exactly this
+// (docs/TASKS.md, "Devices").
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "engine/scene.hpp"
+#include "haptics/devices/mouse_device.hpp"
+#include "haptics/realtime/servo_step.hpp"
+#include "haptics/realtime/sim_session.hpp"
+#include "haptics/safety/safety_monitor.hpp"
+#include "haptics/sim/scenario.hpp"
+#include "ui/tasks/task.hpp"
+
+namespace needle::cli {
+
+struct RigOptions {
+  std::string device = "sim";           // sim | mouse | falcon[:N] | replay:FILE
+  std::string operator_spec = "good";   // sim: good | sloppy | a script file
+  std::string firmware;                 // falcon: Novint's firmware image
+  std::optional<double> rate_hz;        // default: the scenario's for sim, 1 kHz live, as recorded for replay
+  std::filesystem::path out_dir;        // the scenario that runs is written here
+  engine::Camera camera;                // the view the trainee sees: task-space devices move in its axes
+};
+
+// The task a recording was made of, from its context; nullopt when `device` is not replay:FILE.
+// Throws haptics::RecordingError naming the file when the recording has no usable context.
+std::optional<std::filesystem::path> recorded_task(const std::string& device);
+
+class SessionRig {
+ public:
+  // Builds and opens the device (homing a Falcon) and its step. Throws haptics::DeviceError,
+  // RecordingError, ScenarioError or ui::TaskError naming what is wrong.
+  SessionRig(const ui::Task& task, const RigOptions& options);
+  ~SessionRig();
+  SessionRig(const SessionRig&) = delete;
+  SessionRig& operator=(const SessionRig&) = delete;
+
+  haptics::HapticDevice& device() { return *device_; }
+  haptics::ServoStep& step() { return *step_; }
+  double rate_hz() const { return rate_hz_; }
+  const haptics::SafetyLimits& safety_limits() const { return limits_; }
+  // Ticks until the device has nothing more to give (the script's end, the recording's last
+  // record); nullopt for a trainee's device, which runs until the task ends or the window closes.
+  std::optional<uint64_t> ticks() const { return ticks_; }
+  haptics::MouseDevice* mouse() { return mouse_; }
+  // For the session store and the recording header: "sim (good)", "mouse", "replay of ...".
+  const std::string& description() const { return description_; }
+  // JSON for the recording header (haptics::SessionHeader::context).
+  const std::string& context() const { return context_; }
+
+ private:
+  std::unique_ptr<haptics::SimSession> sim_;     // sim: scenario, device and step in one
+  std::unique_ptr<haptics::Scenario> scenario_;  // the others: their device and step refer to it
+  std::unique_ptr<haptics::HapticDevice> owned_device_;
+  std::unique_ptr<haptics::ServoStep> owned_step_;
+  haptics::HapticDevice* device_ = nullptr;
+  haptics::ServoStep* step_ = nullptr;
+  haptics::MouseDevice* mouse_ = nullptr;
+  haptics::SafetyLimits limits_;
+  double rate_hz_ = 1000.0;
+  std::optional<uint64_t> ticks_;
+  std::string description_;
+  std::string context_;
+};
+
+}  // namespace needle::cli

@@ -1,0 +1,215 @@
+#include "task_session.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+
+#include "engine/gpu_scene.hpp"
+#include "engine/headless_target.hpp"
+#include "engine/ui_pass.hpp"
+#include "engine/vulkan_context.hpp"
+#include "haptics/safety/fault_cause.hpp"
+#include "ui/sessions/session_export.hpp"
+
+namespace needle::cli {
+namespace fs = std::filesystem;
+
+namespace {
+
+// The store's folder is made before SQLite opens the file in it.
+const fs::path& with_folder(const fs::path& file) {
+  if (file.has_parent_path()) fs::create_directories(file.parent_path());
+  return file;
+}
+
+// Recordings live beside the database, so a session's stays where the review finds it when the
+// run's output folder is reused: <db folder>/recordings/<task>_<UTC start>_<pid>.nrec.
+fs::path new_recording_path(const fs::path& db, const std::string& task) {
+  const std::time_t now = std::time(nullptr);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", std::gmtime(&now));
+  const fs::path dir = fs::absolute(db).parent_path() / "recordings";
+  fs::create_directories(dir);
+  return dir / (task + "_" + stamp + "_" + std::to_string(::getpid()) + ".nrec");
+}
+
+// A progress bar on a terminal; on a pipe (CI, logs), a line every quarter.
+class ProgressBar {
+ public:
+  explicit ProgressBar(double total) : total_(total), tty_(isatty(STDERR_FILENO)) {}
+  void show(double done) {
+    const int percent = int(100.0 * std::min(done / total_, 1.0));
+    if (percent == shown_ || (!tty_ && percent % 25 != 0)) return;
+    shown_ = percent;
+    const int filled = percent / 5;
+    std::fprintf(stderr, "%s  [%.*s%*s] %3d%%  %.1f of %.1f s simulated%s", tty_ ? "\r" : "", filled,
+                 "####################", 20 - filled, "", percent, done, total_, tty_ ? "" : "\n");
+    if (tty_ && percent == 100) std::fputc('\n', stderr);
+  }
+
+ private:
+  double total_;
+  bool tty_;
+  int shown_ = -1;
+};
+
+TaskSessionOptions with_task_settings(TaskSessionOptions options, const engine::Scene& scene) {
+  options.rig.out_dir = options.out_dir;
+  options.rig.camera = scene.camera;
+  return options;
+}
+
+}  // namespace
+
+TaskSession::TaskSession(TaskSessionOptions options)
+    : options_(std::move(options)),
+      task_(ui::load_task(options_.task)),
+      scene_(engine::load_scene(task_.scene)),
+      rig_(std::make_unique<SessionRig>(task_, with_task_settings(options_, scene_).rig)),
+      store_(with_folder(options_.db)),
+      recording_path_(new_recording_path(options_.db, task_.name)),
+      scorer_(task_) {
+  haptics::LoopConfig config;
+  config.rate_hz = rig_->rate_hz();
+  config.sample_capacity = 1 << 15;  // 33 s at 1 kHz: room for the recorder's worst stall
+  loop_ = std::make_unique<haptics::HapticLoop>(rig_->device(), rig_->safety_limits(), config);
+  recorder_ = std::make_unique<haptics::SessionRecorder>(
+      recording_path_.string(),
+      haptics::SessionHeader{haptics::kSessionFormatVersion, rig_->rate_hz(), static_cast<int64_t>(std::time(nullptr)),
+                             options_.rig.device, rig_->context()},
+      loop_->samples(), [this](const haptics::TickSample& s) { consume(s); });
+  session_ = store_.begin_session(options_.trainee, task_, rig_->description(), recording_path_.string());
+  loop_->submit({haptics::LoopCommandType::kSetStep, 0.0, &rig_->step()});
+  std::printf("task %s on %s, trainee %s: session %lld in %s\nrecording %s\n", task_.name.c_str(),
+              rig_->description().c_str(), options_.trainee.c_str(), static_cast<long long>(session_),
+              options_.db.c_str(), recording_path_.c_str());
+  std::fflush(stdout);  // before the progress bar on stderr
+}
+
+TaskSession::~TaskSession() { stop_threads(); }
+
+std::optional<double> TaskSession::duration_s() const {
+  if (!rig_->ticks()) return std::nullopt;
+  return double(*rig_->ticks()) / rig_->rate_hz();
+}
+
+void TaskSession::consume(const haptics::TickSample& sample) {
+  std::lock_guard lock(mutex_);
+  const size_t step = scorer_.progress().current_step();
+  scorer_.feed(sample);
+  needle_ = tracker_.update(sample.state);
+  last_ = sample.state;
+  ++consumed_;
+  for (size_t k = step; k < scorer_.progress().current_step(); ++k) ended_steps_.push_back(k);
+}
+
+void TaskSession::run_offline(const std::function<void(size_t)>& on_step_end) {
+  if (!rig_->ticks()) throw std::logic_error("a session on " + options_.rig.device + " runs only in real time, in a window");
+  const uint64_t ticks = *rig_->ticks();
+  loop_->submit({haptics::LoopCommandType::kStart, 0.0, nullptr, ticks});
+  ProgressBar progress(*duration_s());
+  // One tick and one recorder pass at a time, so a step's picture shows the tick that ended it.
+  for (uint64_t k = 0; k < ticks; ++k) {
+    loop_->run_unpaced(1);
+    recorder_->drain();
+    std::vector<size_t> ended;
+    {
+      std::lock_guard lock(mutex_);
+      ended.swap(ended_steps_);
+    }
+    for (size_t step : ended) on_step_end(step);
+    progress.show(double(k + 1) / rig_->rate_hz());
+  }
+}
+
+std::string TaskSession::start_realtime() {
+  const std::string line = loop_->launch();
+  recorder_->start();
+  loop_->apply({haptics::LoopCommandType::kStart, 0.0, nullptr, rig_->ticks().value_or(0)});
+  return line;
+}
+
+bool TaskSession::over() const {
+  std::lock_guard lock(mutex_);
+  return rig_->ticks() ? consumed_ >= *rig_->ticks() : scorer_.progress().finished();
+}
+
+void TaskSession::stop_threads() {
+  if (loop_) loop_->shutdown();
+  if (recorder_) recorder_->stop();  // the last pass: every sample the loop made is scored
+}
+
+const ui::SessionResult& TaskSession::finish() {
+  if (result_) return *result_;
+  stop_threads();
+  if (!recorder_->error().empty()) throw std::runtime_error("recording stopped: " + recorder_->error());
+  if (recorder_->dropped() > 0)
+    std::printf("warning: the recorder fell behind and %llu ticks were dropped from the recording and the score\n",
+                static_cast<unsigned long long>(recorder_->dropped()));
+  {
+    std::lock_guard lock(mutex_);
+    result_ = scorer_.result();
+  }
+  store_.finish_session(session_, *result_);
+  const fs::path score_file = options_.out_dir / "score.json";
+  nlohmann::json score = ui::result_json(*result_);
+  score["recording"] = recording_path_.string();
+  std::ofstream(score_file) << score.dump(2) << "\n";
+  std::printf("score %.0f / 100: %s\n", result_->score.total, result_->score.passed ? "passed" : "not passed");
+  for (const std::string& why : result_->score.reasons_failed) std::printf("  %s\n", why.c_str());
+  std::printf("wrote %s\n", score_file.c_str());
+  return *result_;
+}
+
+engine::NeedleLoad TaskSession::needle() const {
+  std::lock_guard lock(mutex_);
+  return needle_;
+}
+
+void TaskSession::draw_panel(std::optional<size_t> step) const {
+  std::lock_guard lock(mutex_);
+  ui::TraineeView view{&task_, &scorer_.progress()};
+  view.step = step;
+  view.step_metrics = scorer_.step_metrics(std::min(step.value_or(scorer_.progress().current_step()), task_.steps.size() - 1));
+  const double* f = last_.environment_force_n;
+  view.force_N = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+  const haptics::LoopStatsSummary stats = loop_->stats();
+  view.loop_rate_hz = loop_->running() ? stats.rate_hz : rig_->rate_hz();
+  if (last_.fault != 0) view.fault = haptics::fault_cause_name(static_cast<haptics::FaultCause>(last_.fault));
+  if (result_) view.result = &*result_;
+  ui::draw_trainee_panel(view);
+}
+
+int run_task_headless(TaskSessionOptions options, Size2 size, int msaa) {
+  const fs::path out_dir = options.out_dir;
+  TaskSession run(std::move(options));
+  engine::VulkanContext context(engine::ContextOptions{});
+  engine::HeadlessTarget target(context, {size.width, size.height});
+  engine::SceneRenderer renderer(context, target, {static_cast<VkSampleCountFlagBits>(msaa)});
+  engine::GpuScene scene(renderer, run.scene());
+  engine::UiPass ui(context, renderer, nullptr);
+  auto shoot = [&](const std::string& name, std::optional<size_t> step = std::nullopt) {
+    engine::RgbaImage image;
+    for (int frame = 0; frame < 2; ++frame) {  // ImGui fits its auto-sized windows on the first frame
+      ui.begin_frame(target.extent(), 1.0f / 60.0f);
+      run.draw_panel(step);
+      const engine::NeedleLoad needle = run.needle();
+      engine::FrameParams params = scene.frame_params(&needle);
+      params.overlay = ui.end_frame();
+      renderer.draw(target, params, frame == 1 ? &image : nullptr);
+    }
+    engine::write_png(out_dir / (name + ".png"), image);
+  };
+  run.run_offline([&](size_t k) { shoot("step_" + std::to_string(k + 1) + "_" + run.task().steps[k].id, k); });
+  shoot("final");
+  run.finish();
+  shoot("score_panel");
+  std::printf("wrote the pictures of the run in %s\n", out_dir.c_str());
+  return 0;
+}
+
+}  // namespace needle::cli

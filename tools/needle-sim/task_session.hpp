@@ -1,0 +1,94 @@
+// A guided task session through the haptic loop: the rig's device and step in HapticLoop, every
+// tick recorded (<db folder>/recordings/) and, through the recorder's sink, scored and tracked
+// for the 3D view; stored as a session, with score.json. Headless it runs the loop unpaced on
+// the calling thread (a scripted or replayed session as fast as the machine goes); in a window
+// the loop and the recorder run on their own threads in real time.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "arg_list.hpp"
+#include "engine/needle_tracker.hpp"
+#include "engine/scene.hpp"
+#include "haptics/realtime/haptic_loop.hpp"
+#include "haptics/recording/session_recorder.hpp"
+#include "session_rig.hpp"
+#include "ui/sessions/session_store.hpp"
+#include "ui/trainee_panel.hpp"
+
+namespace needle::cli {
+
+struct TaskSessionOptions {
+  std::filesystem::path task;  // for replay:FILE, the recording's own task
+  RigOptions rig;              // its out_dir and camera are set from here and the task's scene
+  std::string trainee;
+  std::filesystem::path db;
+  std::filesystem::path out_dir;
+};
+
+class TaskSession {
+ public:
+  // Loads the task and its scene, builds the rig, opens the session (incomplete until finish())
+  // and the recording. Writes OUT/scenario.json, the scenario that runs.
+  explicit TaskSession(TaskSessionOptions options);
+  ~TaskSession();
+  TaskSession(const TaskSession&) = delete;
+  TaskSession& operator=(const TaskSession&) = delete;
+
+  const ui::Task& task() const { return task_; }
+  const engine::Scene& scene() const { return scene_; }
+  haptics::MouseDevice* mouse() { return rig_->mouse(); }
+  // Seconds the session lasts when its device has an end (script, recording), else nullopt.
+  std::optional<double> duration_s() const;
+
+  // Headless: every tick of the device back to back on this thread; on_step_end(k) runs right
+  // after the tick that ended step k. Throws std::logic_error for a device without an end.
+  void run_offline(const std::function<void(size_t step)>& on_step_end);
+  // Window: launches the loop and recorder threads; returns the loop's one real-time line.
+  std::string start_realtime();
+  // The device has given all it has, or every step has ended.
+  bool over() const;
+
+  // Stops the threads, scores, stores the session as complete, writes OUT/score.json. Once.
+  const ui::SessionResult& finish();
+
+  engine::NeedleLoad needle() const;
+  // The trainee panel of now (with the result once finished), describing `step` when given.
+  void draw_panel(std::optional<size_t> step = std::nullopt) const;
+  const std::filesystem::path& recording_path() const { return recording_path_; }
+
+ private:
+  void consume(const haptics::TickSample& sample);  // the recorder's sink
+  void stop_threads();
+
+  TaskSessionOptions options_;
+  ui::Task task_;
+  engine::Scene scene_;
+  std::unique_ptr<SessionRig> rig_;
+  ui::SessionStore store_;
+  std::filesystem::path recording_path_;
+  int64_t session_ = 0;
+  std::unique_ptr<haptics::HapticLoop> loop_;
+  std::unique_ptr<haptics::SessionRecorder> recorder_;
+
+  mutable std::mutex mutex_;  // between the recorder's thread (consume) and the UI thread
+  ui::SessionScorer scorer_;
+  engine::NeedleTracker tracker_;
+  engine::NeedleLoad needle_;
+  haptics::ToolSnapshot last_;
+  uint64_t consumed_ = 0;
+  std::vector<size_t> ended_steps_;  // steps ended since run_offline last looked
+  std::optional<ui::SessionResult> result_;
+};
+
+// Headless: runs the session through, writing OUT/step_<n>_<id>.png as each step ends,
+// OUT/final.png and OUT/score_panel.png. Returns 0.
+int run_task_headless(TaskSessionOptions options, Size2 size, int msaa);
+
+}  // namespace needle::cli
