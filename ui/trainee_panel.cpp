@@ -141,6 +141,10 @@ void draw_trainee_panel(const TraineeView& v) {
     ImGui::Separator();
     if (v.fault) {
       ImGui::TextColored(kBad, "haptic loop %.0f Hz   FAULT: %s", v.loop_rate_hz, v.fault);
+      if (v.reset_fault) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Reset fault")) v.reset_fault();  // the only way a fault clears
+      }
     } else {
       ImGui::TextColored(kDim, "haptic loop %.0f Hz   no fault", v.loop_rate_hz);
     }

@@ -3,6 +3,7 @@
 // the score with its breakdown and what to improve. Draws into the current ImGui frame.
 #pragma once
 
+#include <functional>
 #include <optional>
 
 #include "ui/scoring/session_scorer.hpp"
@@ -16,6 +17,7 @@ struct TraineeView {
   double force_N = 0.0;        // |environment force| now
   double loop_rate_hz = 0.0;   // measured rate of the haptic loop
   const char* fault = nullptr; // latched safety fault, nullptr when none
+  std::function<void()> reset_fault;  // when set, a latched fault shows a button that calls it
   const SessionResult* result = nullptr;  // set once the task is over
   // The step to describe (a picture taken as a step ends shows that step); default: the current one.
   std::optional<size_t> step;

@@ -4,6 +4,7 @@
 // recording is an error naming the file.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -117,6 +118,50 @@ TEST(CliRunDevices, ABadRecordingIsAnErrorNamingTheFile) {
   // A replay runs its recording's own task.
   r = run_needle_sim("run --headless --task t.json --device " + quoted(fs::path("replay:" + bare.string())));
   EXPECT_EQ(r.exit_code, 2) << r.output;
+}
+
+// The trainee's mouse end to end: xdotool moves the cursor in the window to the left, and the
+// recorded needle tip follows along the view's right axis (the scene camera's), in free space.
+// No panels: over a panel the mouse belongs to the panel, and at this size they cover the view.
+TEST(CliRunDevices, TheMouseMovesTheNeedleAlongTheViewsRightAxis) {
+  const fs::path dir = test_output_dir("cli_run_devices") / "mouse";
+  fs::remove_all(dir);
+  const std::string run = std::string(NEEDLE_SIM_EXE) + " run --device mouse --size 400x300 --frames 400 --no-hud --out " + quoted(dir) +
+                          " --db " + quoted(dir / "sessions.db");
+  // Centre the cursor, then move it a quarter of the width left (device x -0.5: -5 cm).
+  const std::string drive =
+      "id=\\$(xdotool search --sync --name '^needle-sim\\$' | head -1); xdotool mousemove --window \\$id 200 150; sleep 0.5; "
+      "xdotool mousemove --window \\$id 100 150; sleep 1";
+  ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' sh -c \"" + run + " & " + drive + "; wait\"");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+
+  ui::SessionStore store(dir / "sessions.db");
+  ASSERT_EQ(store.sessions().size(), 1u);
+  const ui::SessionInfo session = store.sessions()[0];
+  EXPECT_EQ(session.device, "mouse");
+  EXPECT_FALSE(session.complete);  // closed before the task ended
+  const haptics::Session recording = haptics::read_session(session.recording_path);
+  ASSERT_GT(recording.records.size(), 500u) << "under half a second of 1 kHz ticks";
+  EXPECT_EQ(recording.header.rate_hz, 1000.0);
+
+  // Camera of assets/scenes/penetrable_sphere.json: from (0.33, -0.3, 0.06) at (0.34, 0, 0.04), z up.
+  const double forward[3] = {0.01, 0.3, -0.02};
+  const double right[3] = {forward[1] * 1.0 - forward[2] * 0.0, forward[2] * 0.0 - forward[0] * 1.0, 0.0};  // forward x up
+  const double right_norm = std::hypot(right[0], right[1]);
+  // From the last tick with the cursor centred (settled for half a second) to the end.
+  size_t centred = recording.records.size();
+  for (size_t k = 0; k < recording.records.size(); ++k) {
+    if (recording.records[k].reading.position_m[0] == 0.0) centred = k;
+  }
+  ASSERT_LT(centred, recording.records.size()) << "the cursor was never centred";
+  const haptics::TickSample& first = recording.records[centred];
+  const haptics::TickSample& last = recording.records.back();
+  EXPECT_NEAR(last.reading.position_m[0], -0.05, 0.003);  // -0.5 of the +-0.1 m reach
+  double along_right = 0.0;
+  for (int i = 0; i < 3; ++i) along_right += (last.state.needle_tip_m[i] - first.state.needle_tip_m[i]) * right[i] / right_norm;
+  EXPECT_LT(along_right, -0.03) << "the tip should follow the cursor most of the 5 cm (coupling spring, virtual robot's lag)";
+  EXPECT_GT(along_right, -0.055);
 }
 
 }  // namespace

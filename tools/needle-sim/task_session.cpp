@@ -180,6 +180,7 @@ void TaskSession::draw_panel(std::optional<size_t> step) const {
   const haptics::LoopStatsSummary stats = loop_->stats();
   view.loop_rate_hz = loop_->running() ? stats.rate_hz : rig_->rate_hz();
   if (last_.fault != 0) view.fault = haptics::fault_cause_name(static_cast<haptics::FaultCause>(last_.fault));
+  if (loop_->running()) view.reset_fault = [this] { loop_->submit({haptics::LoopCommandType::kResetFault}); };
   if (result_) view.result = &*result_;
   ui::draw_trainee_panel(view);
 }
