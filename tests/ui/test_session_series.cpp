@@ -119,7 +119,9 @@ TEST(SessionSeries, DecimationKeepsEachBinsMinimumAndMaximumInTimeOrder) {
 }
 
 TEST(SessionSeries, AxisTicksAreRoundNumbersInsideTheRange) {
-  EXPECT_EQ(axis_ticks(0, 10, 5), (std::vector<double>{0, 2, 4, 6, 8, 10}));
+  EXPECT_EQ(axis_ticks(0, 10, 6), (std::vector<double>{0, 2, 4, 6, 8, 10}));
+  EXPECT_EQ(axis_ticks(0, 10, 5), (std::vector<double>{0, 5, 10}));
+  EXPECT_EQ(axis_ticks(-35, 46, 4), (std::vector<double>{-20, 0, 20, 40}));
   EXPECT_EQ(axis_ticks(0, 1234, 4), (std::vector<double>{0, 500, 1000}));
   const std::vector<double> small = axis_ticks(-0.3, 0.72, 4);  // step 0.5
   ASSERT_EQ(small.size(), 2u);

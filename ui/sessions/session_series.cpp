@@ -139,16 +139,17 @@ Series decimate(const Series& in, size_t bins) {
 std::vector<double> axis_ticks(double lo, double hi, int max_ticks) {
   std::vector<double> ticks;
   if (!(hi > lo) || max_ticks < 1) return ticks;
-  const double rough = (hi - lo) / max_ticks;
-  const double decade = std::pow(10.0, std::floor(std::log10(rough)));
-  double step = 10.0 * decade;
-  for (double m : {1.0, 2.0, 5.0}) {
-    if (m * decade >= rough) {
+  const double decade = std::pow(10.0, std::floor(std::log10((hi - lo) / max_ticks)));
+  auto first = [&](double step) { return std::ceil(lo / step - 1e-9); };
+  auto last = [&](double step) { return std::floor(hi / step + 1e-9); };
+  double step = 100.0 * decade;  // one tick at most: always fits
+  for (double m : {1.0, 2.0, 5.0, 10.0, 20.0, 50.0}) {
+    if (last(m * decade) - first(m * decade) + 1.0 <= max_ticks) {
       step = m * decade;
       break;
     }
   }
-  for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + 1e-9 * step; k += 1.0) ticks.push_back(k * step);
+  for (double k = first(step); k <= last(step); k += 1.0) ticks.push_back(k * step + 0.0);
   return ticks;
 }
 

@@ -1,0 +1,124 @@
+// The instructor's review panels drawn headless, against goldens: the session table, a
+// session's detail with its plots, a single plot, two sessions compared, and a replay frame of
+// the recorded session in the 3D view. The sessions are recorded closed-loop runs of the
+// penetrable task (good and sloppy operators) with their dates fixed, so the pictures are too.
+#include <gtest/gtest.h>
+
+#include "../ui/recorded_session.hpp"
+#include "engine/vulkan_context.hpp"
+#include "image_compare.hpp"
+#include "ui/panel_picture.hpp"
+#include "ui/review_panels.hpp"
+#include "ui/review_replay.hpp"
+#include "vulkan_fixture.hpp"
+
+namespace needle::test {
+namespace {
+namespace fs = std::filesystem;
+
+ui::PanelRect whole(VkExtent2D e) { return {ImVec2(0, 0), ImVec2(float(e.width), float(e.height))}; }
+
+class ReviewPanels : public VulkanTest {
+ protected:
+  static void SetUpTestSuite() {
+    VulkanTest::SetUpTestSuite();
+    const fs::path dir = fs::path(NEEDLE_TEST_OUTPUT_DIR) / "review_panels";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    db_ = dir / "sessions.db";
+    good_ = record_session(db_, {"penetrable_sphere", "good", "ana", true});
+    sloppy_ = record_session(db_, {"penetrable_sphere", "sloppy", "bo", true});
+    ui::SessionStore store(db_);
+    const ui::Task rigid = ui::load_task(fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks/rigid_sphere.json");
+    store.begin_session("cy", rigid, "sim", "");  // died mid-task, before recordings were kept
+  }
+  // The session as the panels show it, with the clock's fields fixed for the picture.
+  static ui::SessionReview review(int64_t id) {
+    ui::SessionStore store(db_);
+    ui::SessionReview r = ui::load_session_review(store, db_, id);
+    fix_dates(r.stored.info);
+    return r;
+  }
+  static void fix_dates(ui::SessionInfo& s) {
+    s.started_at = "2026-03-0" + std::to_string(s.id) + "T10:00:00Z";
+    s.ended_at = s.complete ? "2026-03-0" + std::to_string(s.id) + "T10:01:00Z" : "";
+  }
+  static inline fs::path db_;
+  static inline RecordedSession good_, sloppy_;
+};
+
+TEST_F(ReviewPanels, SessionTableMatchesGolden) {
+  std::vector<ui::SessionInfo> sessions = ui::SessionStore(db_).sessions();
+  ASSERT_EQ(sessions.size(), 3u);
+  for (ui::SessionInfo& s : sessions) fix_dates(s);
+  ui::SessionTableState table;
+  table.selected = good_.id;
+  table.compared = sloppy_.id;
+  const VkExtent2D size{760, 200};
+  EXPECT_TRUE(matches_golden(ui::panel_picture(context(), size, [&] { ui::draw_session_table(sessions, table, whole(size)); }),
+                             "panel_review_table"));
+}
+
+TEST_F(ReviewPanels, SessionDetailWithPlotsMatchesGolden) {
+  const ui::SessionReview r = review(good_.id);
+  ASSERT_TRUE(r.has_recording());
+  const VkExtent2D size{720, 1340};
+  EXPECT_TRUE(matches_golden(ui::panel_picture(context(), size, [&] { ui::draw_session_detail(r, {12.0, false, ""}, whole(size)); }),
+                             "panel_review_detail"));
+}
+
+TEST_F(ReviewPanels, SessionWithoutRecordingSaysSo) {
+  const ui::SessionReview r = review(3);
+  EXPECT_FALSE(r.has_recording());
+  const VkExtent2D size{600, 300};
+  EXPECT_TRUE(matches_golden(ui::panel_picture(context(), size, [&] { ui::draw_session_detail(r, {}, whole(size)); }),
+                             "panel_review_no_recording"));
+}
+
+TEST_F(ReviewPanels, ComparisonMatchesGolden) {
+  const ui::SessionReview a = review(good_.id), b = review(sloppy_.id);
+  const VkExtent2D size{720, 1080};
+  EXPECT_TRUE(matches_golden(ui::panel_picture(context(), size, [&] { ui::draw_comparison(a, b, whole(size)); }),
+                             "panel_review_compare"));
+}
+
+// The recorded needle 12 s in (pivoting in the tissue), the scene framed right of where the
+// review's panels stand, the replay bar below.
+TEST_F(ReviewPanels, ReplayFrameMatchesGolden) {
+  const ui::SessionReview r = review(good_.id);
+  ASSERT_TRUE(r.task.has_value());
+  ui::ReplayCursor cursor;
+  double t = 12.0;
+  ui::PictureScene scene{engine::load_scene(r.task->scene), cursor.at(r.states, t), 0.3f};
+  const VkExtent2D size{640, 360};
+  EXPECT_TRUE(matches_golden(ui::panel_picture(context(), size, [&] {
+    ui::draw_replay_bar(r, t, false, {ImVec2(0, 300), ImVec2(640, 60)});
+  }, &scene, VK_SAMPLE_COUNT_4_BIT), "panel_review_replay"));
+}
+
+TEST(ReplayCursor, ScrubbingBackFeedsTheTrackerFromTheStart) {
+  // In tissue from 0.1 s at two different entry points, out in between: the entry the needle
+  // load shows at 0.35 s is the second one, whether reached forwards or after going further.
+  auto at = [](double t, double x, haptics::ContactState c) {
+    haptics::ToolSnapshot s;
+    s.time_s = t;
+    s.needle_tip_m[0] = x;
+    s.contact = c;
+    return s;
+  };
+  using haptics::ContactState;
+  const std::vector<haptics::ToolSnapshot> states = {at(0.0, 0.0, ContactState::kFree), at(0.1, 0.01, ContactState::kTissue),
+                                                     at(0.2, 0.02, ContactState::kFree), at(0.3, 0.03, ContactState::kTissue),
+                                                     at(0.4, 0.04, ContactState::kTissue)};
+  ui::ReplayCursor cursor;
+  EXPECT_DOUBLE_EQ(cursor.at(states, 0.15).surface_point.x, 0.01);
+  EXPECT_DOUBLE_EQ(cursor.at(states, 0.45).surface_point.x, 0.03);
+  EXPECT_DOUBLE_EQ(cursor.at(states, 0.45).tip.x, 0.04);
+  const engine::NeedleLoad back = cursor.at(states, 0.15);  // backwards: fed again from the start
+  EXPECT_DOUBLE_EQ(back.surface_point.x, 0.01);
+  EXPECT_DOUBLE_EQ(back.tip.x, 0.01);
+  EXPECT_EQ(cursor.at(states, -1.0).contact, engine::NeedleContact::Free);  // before the first: the first
+}
+
+}  // namespace
+}  // namespace needle::test

@@ -1,0 +1,128 @@
+// `needle-sim report` and `needle-sim review` as an instructor runs them, on a database holding
+// recorded closed-loop sessions: the report's files (metrics JSON and CSV, plots and panels as
+// PNG) and each of its clear errors; the review window under Xvfb, and its message without a
+// display.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "../ui/recorded_session.hpp"
+#include "cli_process.hpp"
+#include "engine/rgba_image.hpp"
+
+namespace needle::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* const kPlots[] = {"plot_force.png", "plot_lateral_load.png", "plot_depth.png", "plot_tracking_error.png"};
+
+class CliReport : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = test_output_dir("cli_report");
+    fs::remove_all(dir_ / "db");
+    fs::create_directories(dir_ / "db");
+    db_ = dir_ / "db" / "sessions.db";
+    good_ = record_session(db_, {"penetrable_sphere", "good", "ana", true});
+    died_ = record_session(db_, {"rigid_sphere", "good", "bo", false});
+    lost_ = record_session(db_, {"rigid_sphere", "sloppy", "cy", true});
+    fs::remove(lost_.recording);
+  }
+  static ProcessResult report(int64_t id, const fs::path& out) {
+    fs::remove_all(out);
+    return run_needle_sim("report --session " + std::to_string(id) + " --db " + quoted(db_) + " --out " + quoted(out));
+  }
+  static inline fs::path dir_, db_;
+  static inline RecordedSession good_, died_, lost_;
+};
+
+TEST_F(CliReport, WritesMetricsPlotsAndPanels) {
+  const fs::path out = dir_ / "good";
+  const ProcessResult r = report(good_.id, out);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  const std::string stem = "session_" + std::to_string(good_.id);
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(out / (stem + ".json")));
+  EXPECT_DOUBLE_EQ(j["score"].get<double>(), good_.result.score.total);
+  EXPECT_EQ(j["steps"].size(), good_.result.steps.size());
+  EXPECT_EQ(j["session"]["recording_path"], "recordings/ana_good.nrec");
+  std::ifstream csv(out / (stem + ".csv"));
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "session_id,step_index,step_id,outcome,start_s,end_s,metric,value");
+  for (const char* plot : kPlots) {
+    const engine::RgbaImage image = engine::read_png(out / plot);
+    EXPECT_EQ(image.width, 900u) << plot;
+    EXPECT_EQ(image.height, 320u) << plot;
+  }
+  for (const char* panel : {"review_table.png", "review_detail.png", "review_replay.png"}) {
+    EXPECT_TRUE(fs::is_regular_file(out / panel)) << panel;
+  }
+  EXPECT_EQ(engine::read_png(out / "review_replay.png").width, 1280u);
+}
+
+TEST_F(CliReport, IncompleteSessionExportsWhatIsStoredAndSaysSo) {
+  const fs::path out = dir_ / "died";
+  const ProcessResult r = report(died_.id, out);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("session " + std::to_string(died_.id) + " is incomplete"), std::string::npos) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(out / ("session_" + std::to_string(died_.id) + ".json")));
+  EXPECT_FALSE(j["session"]["complete"].get<bool>());
+  EXPECT_TRUE(j["steps"].empty());
+  // Its recording holds the samples up to the end: the plots are made from it.
+  EXPECT_TRUE(fs::is_regular_file(out / "plot_force.png"));
+  // The rigid task has no insertion axis: no depth plot, and the report says why.
+  EXPECT_FALSE(fs::exists(out / "plot_depth.png"));
+  EXPECT_NE(r.output.find("no plot_depth.png: task rigid_sphere has no insertion axis"), std::string::npos) << r.output;
+}
+
+TEST_F(CliReport, MissingRecordingStillExportsTheMetricsAndNamesTheFile) {
+  const fs::path out = dir_ / "lost";
+  const ProcessResult r = report(lost_.id, out);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find(lost_.recording.string() + ": recording not found"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("no plots and no replay picture"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::is_regular_file(out / ("session_" + std::to_string(lost_.id) + ".json")));
+  EXPECT_TRUE(fs::is_regular_file(out / ("session_" + std::to_string(lost_.id) + ".csv")));
+  EXPECT_TRUE(fs::is_regular_file(out / "review_detail.png"));
+  for (const char* plot : kPlots) EXPECT_FALSE(fs::exists(out / plot)) << plot;
+}
+
+TEST_F(CliReport, ClearErrors) {
+  const ProcessResult none = report(999, dir_ / "none");
+  EXPECT_EQ(none.exit_code, 1) << none.output;
+  EXPECT_NE(none.output.find("reading session 999: no such session"), std::string::npos) << none.output;
+  const ProcessResult no_db = run_needle_sim("report --session 1 --db " + quoted(dir_ / "nowhere.db") + " --out " + quoted(dir_ / "x"));
+  EXPECT_EQ(no_db.exit_code, 1) << no_db.output;
+  EXPECT_NE(no_db.output.find("nowhere.db: no session database"), std::string::npos) << no_db.output;
+  EXPECT_FALSE(fs::exists(dir_ / "nowhere.db"));  // never created by a reader
+  EXPECT_EQ(run_needle_sim("report --db " + quoted(db_) + " --out " + quoted(dir_ / "x")).exit_code, 2);
+  EXPECT_EQ(run_needle_sim("report --session 1 --db " + quoted(db_)).exit_code, 2);
+  EXPECT_EQ(run_needle_sim("report --session first --db " + quoted(db_) + " --out x").exit_code, 2);
+  EXPECT_EQ(run_needle_sim("report --session 1.5 --db " + quoted(db_) + " --out x").exit_code, 2);
+}
+
+TEST_F(CliReport, ReviewWithoutADisplayPointsToReport) {
+  const ProcessResult r = run_command("env -u DISPLAY -u WAYLAND_DISPLAY NEEDLE_VALIDATION=1 " + std::string(NEEDLE_SIM_EXE) +
+                                      " review --db " + quoted(db_));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("no display"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("needle-sim report --session ID --out DIR"), std::string::npos) << r.output;
+}
+
+TEST_F(CliReport, ReviewWindowShowsTheSessionAndItsReplay) {
+  const fs::path shot = dir_ / "review_window.png";
+  fs::remove(shot);
+  const ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(NEEDLE_SIM_EXE) +
+                                      " review --size 1200x700 --frames 4 --screenshot " + quoted(shot) + " --session " +
+                                      std::to_string(good_.id) + " --db " + quoted(db_));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("presented 4 frames"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  EXPECT_EQ(engine::read_png(shot).width, 1200u);
+}
+
+}  // namespace
+}  // namespace needle::test

@@ -1,0 +1,18 @@
+// Where the session database lives unless --db says otherwise: run, review and report share it.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+
+#include "ui/sessions/session_store.hpp"
+
+namespace needle::cli {
+
+// $XDG_DATA_HOME/needle-sim/sessions.db, else ~/.local/share/needle-sim/sessions.db.
+std::filesystem::path default_db();
+
+// Opens a database that must already exist (review and report never create one); a runtime
+// error naming the file when it does not.
+std::unique_ptr<ui::SessionStore> open_existing_db(const std::filesystem::path& file);
+
+}  // namespace needle::cli

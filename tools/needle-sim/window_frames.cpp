@@ -1,0 +1,37 @@
+#include "window_frames.hpp"
+
+#include <cstdio>
+
+namespace needle::cli {
+namespace {
+
+engine::ContextOptions presenting_to(engine::Window& window) {
+  engine::ContextOptions options;
+  options.instance_extensions = engine::Window::required_instance_extensions();
+  options.make_surface = [&window](VkInstance instance) { return window.create_surface(instance); };
+  return options;
+}
+
+}  // namespace
+
+VulkanWindow::VulkanWindow(const std::string& title, Size2 size)
+    : window(title, int(size.width), int(size.height)), context(presenting_to(window)), target(context, window) {}
+
+void WindowFrames::draw(engine::Window& window, engine::SceneRenderer& renderer, engine::RenderTarget& target,
+                        const engine::FrameParams& params) {
+  const bool last = frames_ > 0 && drawn_ + 1 == frames_;
+  engine::RgbaImage shot;
+  if (!renderer.draw(target, params, last && screenshot_ ? &shot : nullptr)) {
+    window.wait_events();
+    return;
+  }
+  ++drawn_;
+  if (!last) return;
+  if (screenshot_) {
+    engine::write_png(*screenshot_, shot);
+    std::printf("wrote %s (%ux%u)\n", screenshot_->c_str(), shot.width, shot.height);
+  }
+  window.request_close();
+}
+
+}  // namespace needle::cli

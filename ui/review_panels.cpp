@@ -1,0 +1,328 @@
+#include "ui/review_panels.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "ui/review_plot.hpp"
+#include "ui/scoring/metric_fields.hpp"
+
+namespace needle::ui {
+namespace {
+
+const ImVec4 kGood(0.35f, 0.8f, 0.4f, 1.0f), kBad(0.9f, 0.3f, 0.25f, 1.0f), kDim(0.6f, 0.6f, 0.6f, 1.0f),
+    kWarn(0.95f, 0.7f, 0.3f, 1.0f);
+const ImGuiWindowFlags kPanelFlags =
+    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+
+bool begin_panel(const char* title, const PanelRect& at, bool* open = nullptr) {
+  ImGui::SetNextWindowPos(at.pos, ImGuiCond_Always);
+  ImGui::SetNextWindowSize(at.size, ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(0.92f);
+  return ImGui::Begin(title, open, kPanelFlags);
+}
+
+// How a metric is shown: label, unit and the factor from its stored SI value.
+struct MetricDisplay {
+  const char* name;
+  const char* label;
+  const char* unit;
+  double scale;
+};
+const MetricDisplay kMetrics[] = {
+    {"duration_s", "duration", "s", 1.0},          {"tip_error_m", "tip to target", "mm", 1000.0},
+    {"axis_deviation_deg", "off axis", "deg", 1.0}, {"lateral_load_Ns", "lateral load", "N s", 1.0},
+    {"lateral_peak_N", "lateral peak", "N", 1.0},   {"peak_force_N", "peak force", "N", 1.0},
+    {"force_sd_N", "force SD", "N", 1.0},          {"path_length_m", "path", "mm", 1000.0},
+    {"ideal_path_m", "ideal path", "mm", 1000.0},  {"normalized_jerk", "normalized jerk", "-", 1.0},
+    {"withdrawals", "withdrawals", "count", 1.0},  {"reinsertions", "re-insertions", "count", 1.0},
+    {"rigid_contacts", "rigid contacts", "count", 1.0}, {"faults", "safety faults", "count", 1.0},
+    {"first_fault", "first fault", "cause", 1.0},
+};
+
+// The value of metric `name` in display units; NaN when it does not apply.
+double shown_value(const Metrics& m, const MetricDisplay& d) {
+  double out = kNotApplicable;
+  for_each_metric(m, [&](const char* name, const auto& value) {
+    if (std::string(name) == d.name) out = double(value) * d.scale;
+  });
+  return out;
+}
+
+void value_cell(double v) {
+  if (std::isnan(v)) {
+    ImGui::TextColored(kDim, "-");
+  } else {
+    ImGui::Text("%.4g", v);
+  }
+}
+
+void header_lines(const SessionReview& r) {
+  const SessionInfo& i = r.stored.info;
+  ImGui::TextWrapped("Session %lld: %s, %s", static_cast<long long>(i.id), i.trainee.c_str(),
+                     i.task_title.empty() ? i.task.c_str() : i.task_title.c_str());
+  ImGui::TextColored(kDim, "started %s   device %s   %.1f s", i.started_at.c_str(), i.device.empty() ? "-" : i.device.c_str(),
+                     i.duration_s);
+  if (!i.complete) {
+    ImGui::TextColored(kWarn, "INCOMPLETE: the run ended before the task did; no score, no metrics stored");
+  } else {
+    ImGui::TextColored(i.passed ? kGood : kBad, "Score %.1f / 100   %s", i.score, i.passed ? "PASSED" : "NOT PASSED");
+  }
+}
+
+void breakdown_table(const std::vector<ScoreComponent>& components) {
+  if (components.empty()) return;
+  if (!ImGui::BeginTable("breakdown", 4, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) return;
+  for (size_t k = 0; k < components.size(); ++k) {
+    const ScoreComponent& c = components[k];
+    if (k % 2 == 0) ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(c.name.c_str());
+    ImGui::TableNextColumn();
+    ImGui::Text("%4.1f / %4.1f", c.points(), c.weight);
+  }
+  ImGui::EndTable();
+}
+
+void steps_table(const StoredSession& s) {
+  const int columns = int(s.steps.size()) + 2;
+  if (s.steps.empty()) {
+    ImGui::TextColored(kDim, "no step results stored");
+    return;
+  }
+  const ImGuiTableFlags flags =
+      ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX;
+  if (!ImGui::BeginTable("steps", columns, flags, ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * 19.5f))) return;
+  ImGui::TableSetupColumn("metric");
+  for (const StepResult& step : s.steps) ImGui::TableSetupColumn(step.id.c_str());
+  ImGui::TableSetupColumn("session");
+  ImGui::TableHeadersRow();
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted("outcome");
+  for (const StepResult& step : s.steps) {
+    ImGui::TableNextColumn();
+    const bool ok = step.record.outcome == StepOutcome::kCompleted;
+    ImGui::TextColored(ok ? kGood : kBad, "%s", step_outcome_name(step.record.outcome));
+  }
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(s.info.complete ? "complete" : "incomplete");
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted("start (s)");
+  for (const StepResult& step : s.steps) {
+    ImGui::TableNextColumn();
+    value_cell(step.record.start_s);
+  }
+  ImGui::TableNextColumn();
+  for (const MetricDisplay& d : kMetrics) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::Text("%s (%s)", d.label, d.unit);
+    for (const StepResult& step : s.steps) {
+      ImGui::TableNextColumn();
+      value_cell(shown_value(step.metrics, d));
+    }
+    ImGui::TableNextColumn();
+    value_cell(shown_value(s.overall, d));
+  }
+  ImGui::EndTable();
+}
+
+void recording_line(const SessionReview& r) {
+  if (!r.has_recording()) {
+    ImGui::TextColored(kWarn, "no plots, no replay:");
+    ImGui::SameLine();
+    ImGui::TextWrapped("%s", r.recording_problem.c_str());
+    return;
+  }
+  ImGui::TextColored(kDim, "recording %s: %zu samples, %.2f to %.2f s%s", r.recording_file.filename().c_str(),
+                     r.states.size(), r.start_s(), r.end_s(), r.recording_trailing_bytes ? " (last record cut short)" : "");
+}
+
+const char* step_at(const SessionReview& r, double t) {
+  const std::vector<StepResult>& steps = r.stored.steps;
+  for (size_t k = steps.size(); k-- > 0;) {
+    if (steps[k].record.start_s <= t) return steps[k].id.c_str();
+  }
+  return "-";
+}
+
+}  // namespace
+
+void draw_session_table(const std::vector<SessionInfo>& sessions, SessionTableState& state, const PanelRect& at) {
+  if (begin_panel("Sessions", at)) {
+    ImGui::SetNextItemWidth(-1.0f);
+    ImGui::InputTextWithHint("##filter", "filter: words in trainee, task, date, device, passed/failed/incomplete; -word excludes",
+                             state.filter, sizeof state.filter);
+    const ImGuiTableFlags flags = ImGuiTableFlags_Sortable | ImGuiTableFlags_SortMulti | ImGuiTableFlags_RowBg |
+                                  ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX | ImGuiTableFlags_ScrollY |
+                                  ImGuiTableFlags_SizingFixedFit;
+    if (ImGui::BeginTable("sessions", 8, flags)) {
+      ImGui::TableSetupScrollFreeze(0, 1);
+      ImGui::TableSetupColumn("ID", ImGuiTableColumnFlags_DefaultSort | ImGuiTableColumnFlags_PreferSortDescending, 0.0f,
+                              ImGuiID(SessionColumn::kId));
+      ImGui::TableSetupColumn("Trainee", 0, 0.0f, ImGuiID(SessionColumn::kTrainee));
+      ImGui::TableSetupColumn("Task", 0, 0.0f, ImGuiID(SessionColumn::kTask));
+      ImGui::TableSetupColumn("Date (UTC)", 0, 0.0f, ImGuiID(SessionColumn::kDate));
+      ImGui::TableSetupColumn("Score", ImGuiTableColumnFlags_PreferSortDescending, 0.0f, ImGuiID(SessionColumn::kScore));
+      ImGui::TableSetupColumn("Duration", 0, 0.0f, ImGuiID(SessionColumn::kDuration));
+      ImGui::TableSetupColumn("Result", 0, 0.0f, ImGuiID(SessionColumn::kResult));
+      ImGui::TableSetupColumn("B", ImGuiTableColumnFlags_NoSort);
+      ImGui::TableHeadersRow();
+      if (ImGuiTableSortSpecs* specs = ImGui::TableGetSortSpecs(); specs && specs->SpecsDirty) {
+        state.sort.clear();
+        for (int i = 0; i < specs->SpecsCount; ++i) {
+          const ImGuiTableColumnSortSpecs& s = specs->Specs[i];
+          state.sort.push_back({SessionColumn(s.ColumnUserID), s.SortDirection == ImGuiSortDirection_Descending});
+        }
+        specs->SpecsDirty = false;
+      }
+      for (size_t row : session_rows(sessions, state.filter, state.sort)) {
+        const SessionInfo& s = sessions[row];
+        ImGui::PushID(int(s.id));
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        char id[24];
+        std::snprintf(id, sizeof id, "%lld", static_cast<long long>(s.id));
+        if (ImGui::Selectable(id, s.id == state.selected, ImGuiSelectableFlags_SpanAllColumns | ImGuiSelectableFlags_AllowItemOverlap))
+          state.selected = s.id;
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(s.trainee.c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(s.task.c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(s.started_at.c_str());
+        ImGui::TableNextColumn();
+        if (s.complete) {
+          ImGui::Text("%5.1f", s.score);
+        } else {
+          ImGui::TextColored(kDim, "    -");
+        }
+        ImGui::TableNextColumn();
+        ImGui::Text("%6.1f s", s.duration_s);
+        ImGui::TableNextColumn();
+        const char* word = session_result_word(s);
+        ImGui::TextColored(!s.complete ? kWarn : s.passed ? kGood : kBad, "%s", word);
+        ImGui::TableNextColumn();
+        if (s.id == state.compared) {
+          ImGui::TextColored(kWarn, "B");
+        } else if (ImGui::SmallButton("B")) {
+          state.compared = s.id;
+        }
+        ImGui::PopID();
+      }
+      ImGui::EndTable();
+    }
+  }
+  ImGui::End();
+}
+
+bool draw_session_detail(const SessionReview& r, const DetailOptions& o, const PanelRect& at) {
+  bool export_pressed = false;
+  if (begin_panel("Session", at)) {
+    header_lines(r);
+    if (o.show_export) {
+      export_pressed = ImGui::Button("Export CSV and JSON");
+      if (!o.export_message.empty()) {
+        ImGui::SameLine();
+        ImGui::TextWrapped("%s", o.export_message.c_str());
+      }
+    }
+    ImGui::Separator();
+    breakdown_table(r.stored.components);
+    ImGui::Separator();
+    steps_table(r.stored);
+    ImGui::Separator();
+    recording_line(r);
+    PlotOptions plot;
+    plot.cursor_s = r.has_recording() ? std::optional<double>(o.cursor_s) : std::nullopt;
+    plot.steps = &r.stored.steps;
+    if (r.has_recording()) {  // else the recording line says why there are none
+      for (const Plot* p : r.plots.all()) draw_plot(*p, plot);
+    }
+  }
+  ImGui::End();
+  return export_pressed;
+}
+
+bool draw_replay_bar(const SessionReview& r, double& t, bool playing, const PanelRect& at) {
+  if (begin_panel("Replay", at)) {
+    if (!r.has_recording()) {
+      ImGui::TextColored(kWarn, "no replay: %s", r.recording_problem.c_str());
+      playing = false;
+    } else {
+      if (ImGui::Button(playing ? "Pause" : "Play")) {
+        playing = !playing;
+        if (playing && t >= r.end_s()) t = r.start_s();
+      }
+      ImGui::SameLine();
+      ImGui::SetNextItemWidth(-220.0f);
+      const double lo = r.start_s(), hi = r.end_s();
+      ImGui::SliderScalar("##t", ImGuiDataType_Double, &t, &lo, &hi, "%.2f s");
+      ImGui::SameLine();
+      ImGui::Text("step: %s", step_at(r, t));
+    }
+  }
+  ImGui::End();
+  return playing;
+}
+
+void draw_comparison(const SessionReview& a, const SessionReview& b, const PanelRect& at, bool* open) {
+  if (begin_panel("Compare A and B", at, open)) {
+    const SessionInfo &ia = a.stored.info, &ib = b.stored.info;
+    ImGui::Text("A: session %lld, %s, %s", static_cast<long long>(ia.id), ia.trainee.c_str(), ia.task.c_str());
+    ImGui::Text("B: session %lld, %s, %s", static_cast<long long>(ib.id), ib.trainee.c_str(), ib.task.c_str());
+    if (ImGui::BeginTable("compare", 4, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+      ImGui::TableSetupColumn("session");
+      ImGui::TableSetupColumn("A");
+      ImGui::TableSetupColumn("B");
+      ImGui::TableSetupColumn("B - A");
+      ImGui::TableHeadersRow();
+      auto row = [](const char* label, double va, double vb) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(label);
+        ImGui::TableNextColumn();
+        value_cell(va);
+        ImGui::TableNextColumn();
+        value_cell(vb);
+        ImGui::TableNextColumn();
+        value_cell(vb - va);
+      };
+      row("score", ia.complete ? ia.score : kNotApplicable, ib.complete ? ib.score : kNotApplicable);
+      for (const MetricDisplay& d : kMetrics) {
+        const std::string label = std::string(d.label) + " (" + d.unit + ")";
+        row(label.c_str(), shown_value(a.stored.overall, d), shown_value(b.stored.overall, d));
+      }
+      ImGui::EndTable();
+    }
+    ImGui::Separator();
+    const std::vector<const Plot*> pa = a.plots.all(), pb = b.plots.all();
+    for (size_t k = 0; k < pa.size(); ++k) {
+      PlotOptions o;
+      o.height = 120.0f;
+      if (pa[k]->unit == pb[k]->unit) {
+        o.other = pb[k];
+        draw_plot(*pa[k], o);
+      } else {  // e.g. a joint-space device's tracking error against a position device's coupling force
+        draw_plot(*pa[k], o);
+        draw_plot(*pb[k], o);
+      }
+    }
+  }
+  ImGui::End();
+}
+
+void draw_plot_window(const SessionReview& r, const Plot& plot, const PanelRect& at) {
+  if (begin_panel(plot.title.c_str(), at)) {
+    PlotOptions o;
+    o.height = std::max(80.0f, ImGui::GetContentRegionAvail().y - 2.0f * ImGui::GetTextLineHeightWithSpacing());
+    o.steps = &r.stored.steps;
+    draw_plot(plot, o);
+  }
+  ImGui::End();
+}
+
+}  // namespace needle::ui

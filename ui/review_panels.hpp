@@ -1,0 +1,51 @@
+// The instructor's review panels (docs/REVIEW.md): the table of sessions, one session's detail
+// (score breakdown, metrics per step and overall, plots over time), the replay bar and two
+// sessions side by side. Each draws one ImGui window at the rectangle it is given, so the
+// window and the headless report lay them out the same way.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <imgui.h>
+
+#include "ui/sessions/session_review.hpp"
+#include "ui/sessions/session_table.hpp"
+
+namespace needle::ui {
+
+struct PanelRect {
+  ImVec2 pos;
+  ImVec2 size;
+};
+
+struct SessionTableState {
+  char filter[128] = "";
+  std::vector<SessionSort> sort{{SessionColumn::kId, true}};  // ImGui's sort specs, once it has them
+  int64_t selected = 0;  // session A, 0: none
+  int64_t compared = 0;  // session B, 0: none
+};
+
+// Click a row to review it; "B" in the last column picks the session to compare it with.
+void draw_session_table(const std::vector<SessionInfo>& sessions, SessionTableState& state, const PanelRect& at);
+
+struct DetailOptions {
+  double cursor_s = 0.0;         // the replay's time, drawn on the plots
+  bool show_export = false;      // the export button (the window; the report exports by itself)
+  std::string export_message;    // what the last export did
+};
+
+// Returns true when the export button was pressed.
+bool draw_session_detail(const SessionReview& review, const DetailOptions& options, const PanelRect& at);
+
+// The replay scrubber: the time, the step running then, play and pause. Returns true while playing.
+bool draw_replay_bar(const SessionReview& review, double& t_s, bool playing, const PanelRect& at);
+
+// Sessions A and B together: their scores and overall metrics side by side, their plots overlaid.
+// With `open`, the window has a close button that clears it.
+void draw_comparison(const SessionReview& a, const SessionReview& b, const PanelRect& at, bool* open = nullptr);
+
+// One plot filling a window: the report's plot pictures.
+void draw_plot_window(const SessionReview& review, const Plot& plot, const PanelRect& at);
+
+}  // namespace needle::ui

@@ -1,0 +1,23 @@
+// A time plot drawn with ImGui's draw list (Debian's ImGui has no implot): axes with ticks and
+// labels in the plot's unit, the steps' start times, guide lines (limits, bands), the replay
+// cursor, and optionally a second session's lines over the first for comparison.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "ui/scoring/score.hpp"
+#include "ui/sessions/session_series.hpp"
+
+namespace needle::ui {
+
+struct PlotOptions {
+  float height = 140.0f;
+  std::optional<double> cursor_s;                // the replay's time
+  const std::vector<StepResult>* steps = nullptr;  // their start times, as dashed lines
+  const Plot* other = nullptr;                   // session B's lines, drawn over (comparison)
+};
+
+void draw_plot(const Plot& plot, const PlotOptions& options = {});
+
+}  // namespace needle::ui
