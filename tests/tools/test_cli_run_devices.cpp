@@ -126,7 +126,7 @@ TEST(CliRunDevices, ABadRecordingIsAnErrorNamingTheFile) {
 TEST(CliRunDevices, TheMouseMovesTheNeedleAlongTheViewsRightAxis) {
   const fs::path dir = test_output_dir("cli_run_devices") / "mouse";
   fs::remove_all(dir);
-  const std::string run = std::string(NEEDLE_SIM_EXE) + " run --device mouse --size 400x300 --frames 400 --no-hud --out " + quoted(dir) +
+  const std::string run = std::string(NEEDLE_SIM_EXE) + " run --device mouse --size 400x300 --frames 600 --no-hud --out " + quoted(dir) +
                           " --db " + quoted(dir / "sessions.db");
   // Centre the cursor, then move it a quarter of the width left (device x -0.5: -5 cm).
   const std::string drive =

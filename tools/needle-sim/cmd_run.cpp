@@ -13,16 +13,15 @@
 #include "arg_list.hpp"
 #include "asset_path.hpp"
 #include "command.hpp"
+#include "default_db.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/headless_target.hpp"
 #include "engine/scripted_needle.hpp"
 #include "engine/ui_pass.hpp"
-#include "engine/vulkan_context.hpp"
-#include "engine/window.hpp"
-#include "engine/window_target.hpp"
 #include "haptics/realtime/haptic_loop.hpp"
 #include "task_session.hpp"
 #include "ui/status_panel.hpp"
+#include "window_frames.hpp"
 
 namespace needle::cli {
 namespace {
@@ -74,56 +73,36 @@ Show scripted_needle_show(const engine::GpuScene& scene) {
 constexpr double kHeadlessMoment_s = 7.0;
 
 int run_window(const engine::Scene& scene, const RunOptions& options, const std::function<Show(engine::GpuScene&)>& make_show) {
-  engine::Window window("needle-sim", int(options.size.width), int(options.size.height));
-  engine::ContextOptions context_options;
-  context_options.instance_extensions = engine::Window::required_instance_extensions();
-  context_options.make_surface = [&](VkInstance instance) { return window.create_surface(instance); };
-  engine::VulkanContext context(context_options);
-  engine::WindowTarget target(context, window);
-  // On a CPU device (lavapipe) 4x MSAA costs 1.8 to 3.3x the frame time (docs/BENCHMARKS.md):
-  // unless asked, the interactive window keeps its frame rate instead; stills keep MSAA.
-  const bool cpu_device = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  engine::SceneRenderer renderer(context, target,
-                                 {static_cast<VkSampleCountFlagBits>(options.msaa.value_or(cpu_device ? 1 : 4))});
+  VulkanWindow vw("needle-sim", options.size);
+  // Unless asked, the interactive window on a CPU device keeps its frame rate instead of MSAA.
+  engine::SceneRenderer renderer(vw.context, vw.target,
+                                 {static_cast<VkSampleCountFlagBits>(options.msaa.value_or(vw.cpu_device() ? 1 : 4))});
   engine::GpuScene gpu_scene(renderer, scene);
   const Show show = make_show(gpu_scene);
   std::optional<engine::UiPass> ui_pass;
-  if (options.hud) ui_pass.emplace(context, renderer, &window);
+  if (options.hud) ui_pass.emplace(vw.context, renderer, &vw.window);
   ui::FrameClock clock;
+  WindowFrames frames(options.frames, options.screenshot);
   const auto start = std::chrono::steady_clock::now();
 
-  long drawn = 0;
-  while (!window.should_close()) {
-    window.poll_events();
-    if (show.input) show.input(window);
-    const bool last = options.frames > 0 && drawn + 1 == options.frames;
+  while (!vw.window.should_close()) {
+    vw.window.poll_events();
+    if (show.input) show.input(vw.window);
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::optional<engine::NeedleLoad> needle = show.needle(t);
     engine::FrameParams params = gpu_scene.frame_params(needle ? &*needle : nullptr);
     const float dt = clock.tick();
     if (ui_pass) {
-      ui_pass->begin_frame(target.extent(), dt);
-      ui::draw_status_panel({context.device_description(), scene.assets.empty() ? "" : scene.assets[0].name,
+      ui_pass->begin_frame(vw.target.extent(), dt);
+      ui::draw_status_panel({vw.context.device_description(), scene.assets.empty() ? "" : scene.assets[0].name,
                              int(renderer.samples()), clock.mean_frame_ms()});
       if (show.panel) show.panel();
       params.overlay = ui_pass->end_frame();
     }
-    engine::RgbaImage shot;
-    if (!renderer.draw(target, params, last && options.screenshot ? &shot : nullptr)) {
-      window.wait_events();  // minimised or resizing: nothing to draw into
-      continue;
-    }
-    ++drawn;
-    if (last) {
-      if (options.screenshot) {
-        engine::write_png(*options.screenshot, shot);
-        std::printf("wrote %s (%ux%u)\n", options.screenshot->c_str(), shot.width, shot.height);
-      }
-      window.request_close();
-    }
+    frames.draw(vw.window, renderer, vw.target, params);
   }
   renderer.wait_idle();
-  std::printf("presented %ld frames\n", drawn);
+  std::printf("presented %ld frames\n", frames.drawn());
   return 0;
 }
 
@@ -167,13 +146,6 @@ int run_task_window(const RunOptions& options) {
 std::string default_trainee() {
   const char* user = std::getenv("USER");
   return user && *user ? user : "trainee";
-}
-
-fs::path default_db() {
-  const char* data = std::getenv("XDG_DATA_HOME");
-  const char* home = std::getenv("HOME");
-  fs::path base = data && *data ? fs::path(data) : home && *home ? fs::path(home) / ".local/share" : fs::path(".");
-  return base / "needle-sim" / "sessions.db";
 }
 
 int run_run(ArgList& args) {
