@@ -164,5 +164,29 @@ TEST(CliRunDevices, TheMouseMovesTheNeedleAlongTheViewsRightAxis) {
   EXPECT_GT(along_right, -0.055);
 }
 
+// A run killed mid-task (SIGKILL: no destructor, no last pass) leaves an incomplete session, a
+// readable database and a recording whose every tick up to the last flushed pass is intact.
+TEST(CliRunDevices, AKilledRunLeavesItsRecordingAndAnIncompleteSession) {
+  const fs::path dir = test_output_dir("cli_run_devices") / "killed";
+  fs::remove_all(dir);
+  const std::string run = std::string(NEEDLE_SIM_EXE) + " run --device mouse --no-hud --size 200x150 --out " + quoted(dir) +
+                          " --db " + quoted(dir / "sessions.db");
+  // Kill once the recording holds over a second of ticks (10 s at most).
+  const std::string kill_later =
+      "for i in \\$(seq 200); do [ \\$(cat " + quoted(dir) + "/recordings/*.nrec 2>/dev/null | wc -c) -gt 700000 ] && break; sleep 0.05; done; "
+      "kill -9 \\$pid";
+  ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' sh -c \"" + run + " & pid=\\$!; " +
+                                kill_later + "; wait \\$pid; echo killed \\$?\"");
+  EXPECT_NE(r.output.find("killed 137"), std::string::npos) << r.output;  // 128 + SIGKILL
+
+  ui::SessionStore store(dir / "sessions.db");
+  ASSERT_EQ(store.sessions().size(), 1u);
+  EXPECT_FALSE(store.sessions()[0].complete);
+  const haptics::Session recording = haptics::read_session(store.sessions()[0].recording_path);
+  ASSERT_GE(recording.records.size(), 700000u / haptics::session_record_bytes());
+  const uint64_t first = recording.records[0].tick;  // the loop counts its idle ticks before the start too
+  for (size_t k = 0; k < recording.records.size(); ++k) ASSERT_EQ(recording.records[k].tick, first + k) << "a gap";
+}
+
 }  // namespace
 }  // namespace needle::test
