@@ -22,10 +22,8 @@ class ReviewPanels : public VulkanTest {
  protected:
   static void SetUpTestSuite() {
     VulkanTest::SetUpTestSuite();
-    const fs::path dir = fs::path(NEEDLE_TEST_OUTPUT_DIR) / "review_panels";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    db_ = dir / "sessions.db";
+    dir_ = process_folder(fs::path(NEEDLE_TEST_OUTPUT_DIR) / "review_panels");
+    db_ = dir_ / "sessions.db";
     good_ = record_session(db_, {"penetrable_sphere", "good", "ana", true});
     sloppy_ = record_session(db_, {"penetrable_sphere", "sloppy", "bo", true});
     ui::SessionStore store(db_);
@@ -43,7 +41,11 @@ class ReviewPanels : public VulkanTest {
     s.started_at = "2026-03-0" + std::to_string(s.id) + "T10:00:00Z";
     s.ended_at = s.complete ? "2026-03-0" + std::to_string(s.id) + "T10:01:00Z" : "";
   }
-  static inline fs::path db_;
+  static void TearDownTestSuite() {
+    fs::remove_all(dir_);
+    VulkanTest::TearDownTestSuite();
+  }
+  static inline fs::path dir_, db_;
   static inline RecordedSession good_, sloppy_;
 };
 

@@ -21,8 +21,7 @@ const char* const kPlots[] = {"plot_force.png", "plot_lateral_load.png", "plot_d
 class CliReport : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = test_output_dir("cli_report");
-    fs::remove_all(dir_ / "db");
+    dir_ = process_folder(test_output_dir("cli_report"));
     fs::create_directories(dir_ / "db");
     db_ = dir_ / "db" / "sessions.db";
     good_ = record_session(db_, {"penetrable_sphere", "good", "ana", true});
@@ -34,6 +33,7 @@ class CliReport : public ::testing::Test {
     fs::remove_all(out);
     return run_needle_sim("report --session " + std::to_string(id) + " --db " + quoted(db_) + " --out " + quoted(out));
   }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
   static inline fs::path dir_, db_;
   static inline RecordedSession good_, died_, lost_;
 };

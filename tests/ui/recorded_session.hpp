@@ -5,6 +5,8 @@
 // panel tests share it.
 #pragma once
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -15,6 +17,15 @@
 #include "ui/tasks/scripted_operator.hpp"
 
 namespace needle::test {
+
+// A fresh folder under `parent` for one test process: ctest runs each test of a suite as a
+// process of its own, in parallel, so the files a suite fixture makes must not be shared.
+inline std::filesystem::path process_folder(const std::filesystem::path& parent) {
+  const std::filesystem::path dir = parent / std::to_string(::getpid());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
 
 struct RecordedSessionSpec {
   std::string task = "penetrable_sphere";  // assets/tasks/<task>.json

@@ -22,9 +22,10 @@ fs::path fresh_dir(const std::string& name) {
 class SessionReviewTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fresh_dir("good");
+    dir_ = test::process_folder(fs::path(NEEDLE_TEST_OUTPUT_DIR) / "session_review" / "good");
     good_ = test::record_session(dir_ / "sessions.db");
   }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
   static inline fs::path dir_;
   static inline test::RecordedSession good_;
 };
