@@ -1,11 +1,13 @@
 #include "engine/scene_renderer.hpp"
 
+#include "engine/screen_projection.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "engine/frame_uniforms.hpp"
+#include "engine/screen_projection.hpp"
 #include "engine/vk_check.hpp"
 #include "engine/vulkan_context.hpp"
 #include "spirv/mesh_frag.h"
@@ -23,11 +25,6 @@ VkShaderModule make_shader(VkDevice device, const uint32_t* code, size_t bytes) 
   VkShaderModule module;
   VK_CHECK(vkCreateShaderModule(device, &info, nullptr, &module));
   return module;
-}
-
-glm::mat4 projection(const Camera& camera, VkExtent2D extent) {
-  float aspect = float(extent.width) / float(extent.height);
-  return glm::perspective(glm::radians(camera.fov_y_deg), aspect, camera.near_m, camera.far_m);
 }
 
 }  // namespace
@@ -342,7 +339,7 @@ std::unique_ptr<GpuModel> SceneRenderer::upload(const Model& model) const {
 void SceneRenderer::fill_uniforms(FrameSlot& slot, VkExtent2D extent, const FrameParams& params) const {
   FrameUniforms u{};
   const Camera& c = params.camera;
-  u.view_proj = projection(c, extent) * glm::lookAt(c.position, c.target, c.up);
+  u.view_proj = view_projection(c, extent);
   u.camera_position = glm::vec4(c.position, 1.0f);
   u.ambient = glm::vec4(params.lights.ambient, 0.0f);
   size_t count = std::min(params.lights.directional.size(), size_t(kMaxDirectionalLights));

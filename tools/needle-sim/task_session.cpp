@@ -13,6 +13,7 @@
 #include "engine/ui_pass.hpp"
 #include "engine/vulkan_context.hpp"
 #include "haptics/safety/fault_cause.hpp"
+#include "ui/guidance_overlay.hpp"
 #include "ui/sessions/session_export.hpp"
 
 namespace needle::cli {
@@ -183,6 +184,9 @@ void TaskSession::draw_panel(std::optional<size_t> step) const {
   if (loop_->running()) view.reset_fault = [this] { loop_->submit({haptics::LoopCommandType::kResetFault}); };
   if (result_) view.result = &*result_;
   ui::draw_trainee_panel(view);
+  if (result_) return;
+  ui::draw_guidance({&task_, std::min(step.value_or(scorer_.progress().current_step()), task_.steps.size() - 1),
+                     ui::vec3(last_.needle_tip_m), scene_.camera});
 }
 
 int run_task_headless(TaskSessionOptions options, Size2 size, int msaa) {

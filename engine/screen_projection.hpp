@@ -1,0 +1,20 @@
+// Where the scene renderer puts a world point on the screen: its camera's GL-style perspective
+// (depth 0 to 1) and a viewport that flips y, so world up is screen up. The UI uses it to draw
+// guidance over the 3D view.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <glm/glm.hpp>
+#include <optional>
+
+#include "engine/scene.hpp"
+
+namespace needle::engine {
+
+glm::mat4 view_projection(const Camera& camera, VkExtent2D extent);
+
+// Pixel coordinates with the origin at the top left; nullopt for a point behind the camera.
+std::optional<glm::vec2> project_to_screen(const Camera& camera, VkExtent2D extent, const glm::vec3& world);
+
+}  // namespace needle::engine

@@ -1,0 +1,53 @@
+// A step's guidance drawn over the task's scene headless, against goldens: the penetrable task's
+// insertion (planned axis and depth gauge with its band, the tip 28 mm deep) and the rigid task's
+// touch (entry and target rings, the three normal markers along the normal nearest the tip). The
+// tip and needle are placed by hand, so the pictures depend on nothing but the drawing.
+#include <gtest/gtest.h>
+
+#include "engine/needle_tracker.hpp"
+#include "image_compare.hpp"
+#include "ui/guidance_overlay.hpp"
+#include "ui/panel_picture.hpp"
+#include "vulkan_fixture.hpp"
+
+namespace needle::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+class GuidanceOverlay : public VulkanTest {
+ protected:
+  engine::RgbaImage draw(const std::string& task_name, size_t step, const ui::Vec3& tip, const ui::Vec3& axis) {
+    const ui::Task task = ui::load_task(fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks" / (task_name + ".json"));
+    ui::PictureScene scene{engine::load_scene(task.scene), std::nullopt};
+    haptics::ToolSnapshot state;
+    for (int i = 0; i < 3; ++i) state.needle_tip_m[i] = tip[i];
+    // The needle along `axis`: the rotation of +x onto it (a half-way quaternion).
+    const double n = ui::norm(axis);
+    const ui::Vec3 h{1.0 + axis[0] / n, axis[1] / n, axis[2] / n};
+    const double hn = ui::norm(h);
+    state.needle_orientation[0] = h[0] / hn;
+    state.needle_orientation[1] = 0.0;
+    state.needle_orientation[2] = -h[2] / hn;
+    state.needle_orientation[3] = h[1] / hn;
+    scene.needle = engine::NeedleTracker().update(state);
+    const engine::Camera camera = scene.scene.camera;
+    return ui::panel_picture(context(), {480, 320}, [&] { ui::draw_guidance({&task, step, tip, camera}); }, &scene);
+  }
+};
+
+TEST_F(GuidanceOverlay, InsertionShowsTheAxisAndTheDepthGauge) {
+  // 28 mm along the insertion axis from the entry (0.32929, 0, 0.07071), direction (0.70711, 0, -0.70711).
+  const ui::Vec3 tip{0.32929 + 0.028 * 0.70711, 0.0, 0.07071 - 0.028 * 0.70711};
+  EXPECT_TRUE(matches_golden(draw("penetrable_sphere", 1, tip, {0.70711, 0.0, -0.70711}), "guidance_insert"));
+}
+
+TEST_F(GuidanceOverlay, TouchShowsTheEntryTargetAndNormalMarkers) {
+  const ui::Task task = ui::load_task(fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks/rigid_sphere.json");
+  const ui::Vec3 entry = task.markers[0].position;
+  const ui::Vec3 tip{entry[0] - 0.01, entry[1], entry[2] + 0.02};
+  EXPECT_TRUE(matches_golden(draw("rigid_sphere", 0, tip, {0.0, 0.0, -1.0}), "guidance_touch"));
+}
+
+}  // namespace
+}  // namespace needle::test
