@@ -125,9 +125,13 @@ int run_scene_headless(const engine::Scene& scene, const RunOptions& options) {
 // session stays incomplete (its recording is kept).
 int run_task_window(const RunOptions& options) {
   TaskSession session(options.task);
+  bool started = false;
   return run_window(session.scene(), options, [&](engine::GpuScene&) {
-    std::printf("%s\n", session.start_realtime().c_str());
-    return Show{[&session](double) -> std::optional<engine::NeedleLoad> {
+    return Show{[&session, &started](double) -> std::optional<engine::NeedleLoad> {
+                  // The loop starts at the first frame, after its input: the mouse's first
+                  // reading is the cursor, not the device's centre.
+                  if (!started) std::printf("%s\n", session.start_realtime().c_str());
+                  started = true;
                   if (session.over()) session.finish();
                   return session.needle();
                 },
