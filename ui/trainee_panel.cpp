@@ -59,6 +59,7 @@ void draw_running(const TraineeView& v) {
   const bool force_band = step.condition.type == ConditionType::kForceHeld;
   force_gauge(v.force_N, task.scoring.safe_force_N, force_band ? step.condition.min : 0.0,
               force_band ? step.condition.max : 0.0);
+  if (v.lateral_N) ImGui::Text("in tissue: lateral load %.2f N", *v.lateral_N);
   ImGui::Separator();
   const Metrics& m = v.step_metrics;
   metric_line("tip to target", m.tip_error_m, "mm", 1000.0);

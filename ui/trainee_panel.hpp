@@ -15,6 +15,9 @@ struct TraineeView {
   const TaskProgress* progress = nullptr;
   Metrics step_metrics;        // the current step's, live
   double force_N = 0.0;        // |environment force| now
+  // |lambda| now while the needle is in tissue, where the environment force is zero and the
+  // load is the tissue's sideways reaction; nullopt outside tissue.
+  std::optional<double> lateral_N;
   double loop_rate_hz = 0.0;   // measured rate of the haptic loop
   const char* fault = nullptr; // latched safety fault, nullptr when none
   std::function<void()> reset_fault;  // when set, a latched fault shows a button that calls it

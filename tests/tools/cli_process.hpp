@@ -29,6 +29,12 @@ inline ProcessResult run_needle_sim(const std::string& arguments) {
   return run_command(std::string("NEEDLE_VALIDATION=1 ") + NEEDLE_SIM_EXE + " " + arguments);
 }
 
+// A shell script on a virtual X display (xvfb-run), Vulkan validation on. Escape `$` as `\$` in
+// the script: the outer shell would expand it first.
+inline ProcessResult run_on_virtual_display(const std::string& script) {
+  return run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' sh -c \"" + script + "\"");
+}
+
 inline std::filesystem::path test_output_dir(const std::string& name) {
   auto dir = std::filesystem::path(NEEDLE_TEST_OUTPUT_DIR) / name;
   std::filesystem::create_directories(dir);

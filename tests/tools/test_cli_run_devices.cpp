@@ -87,6 +87,13 @@ INSTANTIATE_TEST_SUITE_P(Tasks, RunReplay,
                          testing::Values(ReplayCase{"penetrable_sphere", "good"}, ReplayCase{"rigid_sphere", "sloppy"}),
                          [](const auto& info) { return std::string(info.param.task) + "_" + info.param.operator_spec; });
 
+// `needle-sim run --device mouse` in a window without panels, its session and recording in `dir`.
+std::string mouse_session(const fs::path& dir, const std::string& options) {
+  fs::remove_all(dir);
+  return std::string(NEEDLE_SIM_EXE) + " run --device mouse --no-hud " + options + " --out " + quoted(dir) + " --db " +
+         quoted(dir / "sessions.db");
+}
+
 TEST(CliRunDevices, TraineeDevicesNeedTheWindowAndBadOptionsAreUsageErrors) {
   const fs::path dir = test_output_dir("cli_run_devices") / "usage";
   for (const char* arguments : {"--device mouse", "--device falcon", "--rate 100", "--rate 20000", "--device mouse --operator good",
@@ -125,14 +132,12 @@ TEST(CliRunDevices, ABadRecordingIsAnErrorNamingTheFile) {
 // No panels: over a panel the mouse belongs to the panel, and at this size they cover the view.
 TEST(CliRunDevices, TheMouseMovesTheNeedleAlongTheViewsRightAxis) {
   const fs::path dir = test_output_dir("cli_run_devices") / "mouse";
-  fs::remove_all(dir);
-  const std::string run = std::string(NEEDLE_SIM_EXE) + " run --device mouse --size 400x300 --frames 600 --no-hud --out " + quoted(dir) +
-                          " --db " + quoted(dir / "sessions.db");
+  const std::string run = mouse_session(dir, "--size 400x300 --frames 600");
   // Centre the cursor, then move it a quarter of the width left (device x -0.5: -5 cm).
   const std::string drive =
       "id=\\$(xdotool search --sync --name '^needle-sim\\$' | head -1); xdotool mousemove --window \\$id 200 150; sleep 0.5; "
       "xdotool mousemove --window \\$id 100 150; sleep 1";
-  ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' sh -c \"" + run + " & " + drive + "; wait\"");
+  ProcessResult r = run_on_virtual_display(run + " & " + drive + "; wait");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
 
@@ -168,15 +173,12 @@ TEST(CliRunDevices, TheMouseMovesTheNeedleAlongTheViewsRightAxis) {
 // readable database and a recording whose every tick up to the last flushed pass is intact.
 TEST(CliRunDevices, AKilledRunLeavesItsRecordingAndAnIncompleteSession) {
   const fs::path dir = test_output_dir("cli_run_devices") / "killed";
-  fs::remove_all(dir);
-  const std::string run = std::string(NEEDLE_SIM_EXE) + " run --device mouse --no-hud --size 200x150 --out " + quoted(dir) +
-                          " --db " + quoted(dir / "sessions.db");
+  const std::string run = mouse_session(dir, "--size 200x150");
   // Kill once the recording holds over a second of ticks (10 s at most).
   const std::string kill_later =
       "for i in \\$(seq 200); do [ \\$(cat " + quoted(dir) + "/recordings/*.nrec 2>/dev/null | wc -c) -gt 700000 ] && break; sleep 0.05; done; "
       "kill -9 \\$pid";
-  ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' sh -c \"" + run + " & pid=\\$!; " +
-                                kill_later + "; wait \\$pid; echo killed \\$?\"");
+  ProcessResult r = run_on_virtual_display(run + " & pid=\\$!; " + kill_later + "; wait \\$pid; echo killed \\$?");
   EXPECT_NE(r.output.find("killed 137"), std::string::npos) << r.output;  // 128 + SIGKILL
 
   ui::SessionStore store(dir / "sessions.db");

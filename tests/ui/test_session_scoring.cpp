@@ -52,6 +52,17 @@ TEST(StepMetrics, LateralLoadIsTheIntegralAndPeakOfTheTissueMultipliers) {
   EXPECT_NEAR(m.duration_s, 3.0, 1e-12);
 }
 
+// What the trainee panel shows live in tissue, and what the review plots.
+TEST(StepMetrics, LateralLoadNowIsTheMultipliersNormInTissueOnly) {
+  haptics::ToolSnapshot s = state(0.0, {0, 0, 0}, 0, ContactState::kTissue);
+  s.multiplier_count = 2;
+  s.multipliers[0] = 3.0, s.multipliers[1] = -4.0;
+  s.multipliers[2] = 100.0;  // beyond the count: not a multiplier of this constraint
+  EXPECT_DOUBLE_EQ(lateral_load_N(s), 5.0);
+  s.contact = ContactState::kRigidSurface;
+  EXPECT_DOUBLE_EQ(lateral_load_N(s), 0.0);
+}
+
 TEST(StepMetrics, ForceSteadinessIsTheSpreadOnceTheForceReachedTheBand) {
   const Task t = one_step(ConditionType::kForceHeld);  // band [1, 3] N
   SessionScorer scorer(t);

@@ -178,6 +178,7 @@ void TaskSession::draw_panel(std::optional<size_t> step) const {
   view.step_metrics = scorer_.step_metrics(std::min(step.value_or(scorer_.progress().current_step()), task_.steps.size() - 1));
   const double* f = last_.environment_force_n;
   view.force_N = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+  if (last_.contact == haptics::ContactState::kTissue) view.lateral_N = ui::lateral_load_N(last_);
   const haptics::LoopStatsSummary stats = loop_->stats();
   view.loop_rate_hz = loop_->running() ? stats.rate_hz : rig_->rate_hz();
   if (last_.fault != 0) view.fault = haptics::fault_cause_name(static_cast<haptics::FaultCause>(last_.fault));

@@ -6,6 +6,14 @@
 
 namespace needle::ui {
 
+double lateral_load_N(const haptics::ToolSnapshot& state) {
+  if (state.contact != haptics::ContactState::kTissue) return 0.0;
+  double sum = 0.0;
+  for (uint32_t i = 0; i < std::min<uint32_t>(state.multiplier_count, haptics::kMaxMultipliers); ++i)
+    sum += state.multipliers[i] * state.multipliers[i];
+  return std::sqrt(sum);
+}
+
 StepMetricsAccumulator::StepMetricsAccumulator(const Task& task, const Step& step) : task_(task), step_(step) {
   const Condition& c = step.condition;
   target_ = c.type == ConditionType::kTargetReached ? c.marker : step.guidance.target;
@@ -24,13 +32,7 @@ void StepMetricsAccumulator::add(const haptics::ToolSnapshot& state, const Conta
         angle_between(needle_axis(state.needle_orientation), planned_direction(task_.markers[axis_], tip_));
     deviation_sq_sum_ += last_deviation_rad_ * last_deviation_rad_;
   }
-  // Lateral load: the nonholonomic multipliers are the tissue's sideways reaction (thesis 3.22).
-  double lateral = 0.0;
-  if (state.contact == haptics::ContactState::kTissue) {
-    const uint32_t n = std::min<uint32_t>(state.multiplier_count, haptics::kMaxMultipliers);
-    for (uint32_t i = 0; i < n; ++i) lateral += state.multipliers[i] * state.multipliers[i];
-    lateral = std::sqrt(lateral);
-  }
+  const double lateral = lateral_load_N(state);
   m_.lateral_load_Ns += 0.5 * (lateral + lateral_prev_) * dt;  // trapezoid
   m_.lateral_peak_N = std::max(m_.lateral_peak_N, lateral);
   lateral_prev_ = lateral;

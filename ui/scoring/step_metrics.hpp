@@ -8,6 +8,10 @@
 
 namespace needle::ui {
 
+// The tissue's sideways reaction now: |lambda| of the nonholonomic multipliers (thesis 3.22)
+// while in tissue, 0 elsewhere (N). The integrand of lateral_load_Ns (docs/SCORING.md).
+double lateral_load_N(const haptics::ToolSnapshot& state);
+
 // Contact events the session tracks across steps and attributes to the step they happen in.
 struct ContactEvents {
   bool withdrawal = false;   // tissue -> free

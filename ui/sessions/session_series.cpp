@@ -3,20 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ui/scoring/step_metrics.hpp"
 #include "ui/tasks/condition.hpp"
 
 namespace needle::ui {
 namespace {
 
 double norm3(const double (&v)[3]) { return norm(vec3(v)); }
-
-double lateral_norm(const haptics::ToolSnapshot& s) {
-  if (s.contact != haptics::ContactState::kTissue) return 0.0;
-  double sum = 0.0;
-  for (uint32_t i = 0; i < std::min<uint32_t>(s.multiplier_count, haptics::kMaxMultipliers); ++i)
-    sum += s.multipliers[i] * s.multipliers[i];
-  return std::sqrt(sum);
-}
 
 // Joint-space devices share the virtual robot's geometry and are coupled joint to joint
 // (docs/DEVICES.md); their commands are joint torques.
@@ -100,7 +93,7 @@ SessionPlots session_plots(const std::vector<haptics::TickSample>& samples, cons
   p.force.lines.push_back(series("|F_v| environment", samples, [](const auto& s) { return norm3(s.state.environment_force_n); }));
   p.force.lines.push_back(series("|F_h| operator", samples, [](const auto& s) { return norm3(s.state.operator_force_n); }));
   if (task) p.force.guides.push_back({task->scoring.safe_force_N, "safe limit"});
-  p.lateral.lines.push_back(series("|lambda| in tissue", samples, [](const auto& s) { return lateral_norm(s.state); }));
+  p.lateral.lines.push_back(series("|lambda| in tissue", samples, [](const auto& s) { return lateral_load_N(s.state); }));
   p.depth = depth_plot(samples, task);
   if (joint_space(samples)) {
     p.tracking.lines.push_back(series("|q_m - q_v|", samples, joint_tracking_mrad));
