@@ -51,10 +51,12 @@ std::vector<BackendStatus> list_backends() {
       {"falcon[:N]", falcon_status,
        "Novint Falcon on USB 0403:cb48, read/write access (tools/udev/99-novint-falcon.rules), "
        "and after each power-up --firmware FILE: Novint's firmware image (not shipped, its licence forbids it)"},
-      {"mouse", "available", "a window (needle-sim run): cursor moves the tool, scroll sets depth; forces shown, not felt"},
+      {"mouse", "available",
+       "a window (needle-sim run --device mouse): cursor moves the tool, scroll or Up/Down set depth; forces shown, not felt"},
       {"replay:FILE", "available", "a session recording written by an earlier run"},
       {"sim:SCENARIO", "available",
-       "a scenario file (assets/scenarios/*.json): the master model and a simulated operator step with the loop"},
+       "a scenario file (assets/scenarios/*.json): the master model and a simulated operator step with the loop; "
+       "needle-sim run --device sim takes the task's scenario with a scripted operator (--operator)"},
   };
 }
 
