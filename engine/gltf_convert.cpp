@@ -151,6 +151,39 @@ std::vector<uint32_t> triangle_list(const std::vector<uint32_t>& v, int mode,
   }
 }
 
+std::vector<uint32_t> read_indices(const Model& gltf, int accessor, size_t vertices, const std::string& file,
+                                   const std::string& what) {
+  const AccessorView view = view_accessor(gltf, accessor, file, what, {{TINYGLTF_TYPE_SCALAR}, {kU8, kU16, kU32}});
+  std::vector<uint32_t> indices(view.count());
+  for (size_t i = 0; i < indices.size(); ++i) {
+    indices[i] = view.index(i);
+    if (indices[i] >= vertices)
+      asset_fail(file, what, "index " + std::to_string(i) + " is " + std::to_string(indices[i]) + ", not below the " +
+                                 std::to_string(vertices) + " vertices");
+  }
+  return indices;
+}
+
+// An asset's levels of detail: primitive extras {"needle_coarser_indices": [accessor, ...]}, triangle
+// lists over the primitive's own vertices, finest first.
+std::vector<std::vector<uint32_t>> coarser_indices(const Model& gltf, const tinygltf::Primitive& in, size_t vertices,
+                                                   const std::string& file, const std::string& name) {
+  constexpr const char* kKey = "needle_coarser_indices";
+  if (!in.extras.IsObject() || !in.extras.Has(kKey)) return {};
+  const tinygltf::Value& list = in.extras.Get(kKey);
+  const std::string where = name + ".extras." + kKey;
+  if (!list.IsArray()) asset_fail(file, where, "expected an array of accessor indices");
+  std::vector<std::vector<uint32_t>> levels;
+  for (size_t k = 0; k < list.ArrayLen(); ++k) {
+    const std::string what = where + "[" + std::to_string(k) + "]";
+    if (!list.Get(int(k)).IsInt()) asset_fail(file, what, "expected an accessor index");
+    levels.push_back(read_indices(gltf, list.Get(int(k)).GetNumberAsInt(), vertices, file, what));
+    if (levels.back().size() % 3 != 0)
+      asset_fail(file, what, std::to_string(levels.back().size()) + " indices is not a multiple of 3");
+  }
+  return levels;
+}
+
 Primitive convert_primitive(const Model& gltf, size_t mesh, size_t index, const std::string& file) {
   const tinygltf::Primitive& in = gltf.meshes[mesh].primitives[index];
   const std::string name =
@@ -198,21 +231,13 @@ Primitive convert_primitive(const Model& gltf, size_t mesh, size_t index, const 
 
   std::vector<uint32_t> indices;
   if (in.indices >= 0) {
-    const AccessorView view = view_accessor(gltf, in.indices, file, usage("indices"),
-                                            {{TINYGLTF_TYPE_SCALAR}, {kU8, kU16, kU32}});
-    indices.resize(view.count());
-    for (size_t i = 0; i < indices.size(); ++i) {
-      indices[i] = view.index(i);
-      if (indices[i] >= n)
-        asset_fail(file, usage("indices"), "index " + std::to_string(i) + " is " +
-                                               std::to_string(indices[i]) + ", not below the " +
-                                               std::to_string(n) + " vertices");
-    }
+    indices = read_indices(gltf, in.indices, n, file, usage("indices"));
   } else {
     indices.resize(n);
     for (size_t i = 0; i < n; ++i) indices[i] = static_cast<uint32_t>(i);
   }
   out.indices = triangle_list(indices, in.mode, file, name);
+  out.coarser_indices = coarser_indices(gltf, in, n, file, name);
 
   if (const int a = attribute("NORMAL"); a >= 0) {
     const AccessorView normals = same_count(

@@ -8,18 +8,36 @@
 #include "engine/vulkan_context.hpp"
 
 namespace needle::engine {
+namespace {
+
+// Chunks are also cut where the normals turn (triangle_chunks.hpp); this bounds the flat ones,
+// so that a flat mesh still culls in pieces and a chunk's sphere stays small.
+constexpr uint32_t kTrianglesPerChunk = 256;
+
+}  // namespace
 
 GpuPrimitive upload_primitive(const VulkanContext& context, const Primitive& p) {
   GpuPrimitive gpu;
   gpu.vertex_count = static_cast<uint32_t>(p.vertices.size());
   gpu.index_count = static_cast<uint32_t>(p.indices.size());
-  if (gpu.vertex_count && gpu.index_count) {
-    gpu.vertices = GpuBuffer::device_local_with_data(
-        context, p.vertices.data(), p.vertices.size() * sizeof(MeshVertex),
-        VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-    gpu.indices = GpuBuffer::device_local_with_data(context, p.indices.data(), p.indices.size() * sizeof(uint32_t),
-                                                    VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  if (gpu.vertex_count == 0 || gpu.index_count == 0) return gpu;
+  gpu.vertices = GpuBuffer::device_local_with_data(
+      context, p.vertices.data(), p.vertices.size() * sizeof(MeshVertex),
+      VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+  std::vector<const std::vector<uint32_t>*> lists{&p.indices};
+  for (const auto& coarser : p.coarser_indices) lists.push_back(&coarser);
+  std::vector<uint32_t> all;
+  for (const std::vector<uint32_t>* list : lists) {
+    GpuLevel level{uint32_t(all.size()), uint32_t(list->size()), build_triangle_chunks(p.vertices, *list, kTrianglesPerChunk)};
+    for (TriangleChunk& chunk : level.chunks) chunk.first_index += level.first_index;
+    gpu.levels.push_back(std::move(level));
+    all.insert(all.end(), list->begin(), list->end());
   }
+  glm::vec3 lo(p.vertices[0].position), hi = lo;
+  for (const MeshVertex& v : p.vertices) lo = glm::min(lo, v.position), hi = glm::max(hi, v.position);
+  gpu.bounds = {glm::dvec3((lo + hi) * 0.5f), double(glm::length(hi - lo) * 0.5f)};
+  gpu.indices = GpuBuffer::device_local_with_data(context, all.data(), all.size() * sizeof(uint32_t),
+                                                  VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
   return gpu;
 }
 

@@ -10,6 +10,7 @@
 #include "engine/gpu_buffer.hpp"
 #include "engine/gpu_image.hpp"
 #include "engine/model.hpp"
+#include "engine/triangle_chunks.hpp"
 
 namespace needle::engine {
 
@@ -23,11 +24,20 @@ struct MaterialBinding {
   VkImageView white_texture = VK_NULL_HANDLE;  // bound when a material has no texture
 };
 
+// One triangle list of a primitive's index buffer: the full mesh or a coarser level of detail.
+struct GpuLevel {
+  uint32_t first_index = 0;
+  uint32_t index_count = 0;
+  std::vector<TriangleChunk> chunks;  // of the uploaded (rest) mesh, first_index counted from the buffer's start
+};
+
 struct GpuPrimitive {
   GpuBuffer vertices;
-  GpuBuffer indices;
+  GpuBuffer indices;  // the full mesh's, then each coarser level's
   uint32_t vertex_count = 0;
-  uint32_t index_count = 0;
+  uint32_t index_count = 0;  // of the full mesh
+  std::vector<GpuLevel> levels;  // the full mesh, then Primitive::coarser_indices
+  Sphere bounds;  // of the rest vertices, model space: how big the mesh looks, to choose a level
 };
 
 // Uploads one primitive's vertices and indices to device-local buffers.

@@ -85,6 +85,8 @@ FrameParams GpuScene::frame_params(const NeedleLoad* needle) {
   for (DeformableTissue& t : tissues_) {
     auto field = build_field(needle ? *needle : free_needle, *scene_.assets[t.asset].deformation);
     if (auto record = t.pass->update(field)) passes.push_back(record);
+    // Where this frame's vertex buffers differ from the rest mesh: the field's windows.
+    for (const Kelvinlet& k : field.loads) params.items[t.asset].moved.push_back({k.center, k.support});
   }
   if (!passes.empty()) {
     params.before_pass = [passes = std::move(passes)](VkCommandBuffer cmd) {

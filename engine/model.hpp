@@ -46,6 +46,9 @@ struct Material {
 struct Primitive {
   std::vector<MeshVertex> vertices;
   std::vector<uint32_t> indices;
+  // Coarser triangle lists over the same vertices, finest first: the asset's levels of detail,
+  // drawn when the mesh covers few pixels (a deformation still moves every vertex).
+  std::vector<std::vector<uint32_t>> coarser_indices;
   int material = -1;  // index into Model::materials, -1 for the glTF default material
 };
 

@@ -1,12 +1,11 @@
 #include "engine/scene_renderer.hpp"
 
-#include "engine/screen_projection.hpp"
-
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
 
 #include "engine/frame_uniforms.hpp"
+#include "engine/level_of_detail.hpp"
 #include "engine/screen_projection.hpp"
 #include "engine/vk_check.hpp"
 #include "engine/vulkan_context.hpp"
@@ -17,6 +16,16 @@ namespace needle::engine {
 namespace {
 
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+size_t level_to_draw(const GpuPrimitive& p, const glm::mat4& model_to_world, const Camera& camera, VkExtent2D extent) {
+  if (p.levels.size() < 2) return 0;
+  const glm::mat3 linear(model_to_world);
+  const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+  const Sphere world{glm::dvec3(model_to_world * glm::vec4(glm::vec3(p.bounds.center), 1.0f)), p.bounds.radius * scale};
+  std::vector<uint32_t> triangles;
+  for (const GpuLevel& level : p.levels) triangles.push_back(level.index_count / 3);
+  return choose_level(triangles, projected_radius_px(world, camera, extent));
+}
 
 VkShaderModule make_shader(VkDevice device, const uint32_t* code, size_t bytes) {
   VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
@@ -33,7 +42,9 @@ SceneRenderer::SceneRenderer(const VulkanContext& context, const RenderTarget& t
     : context_(context),
       device_(context.device()),
       color_format_(target.format()),
-      samples_(context.max_msaa(settings.max_msaa)) {
+      samples_(context.max_msaa(settings.max_msaa)),
+      level_of_detail_(settings.level_of_detail),
+      cull_chunks_(settings.cull_chunks) {
   create_render_pass(target);
   create_layouts_and_sampler();
   create_pipelines();
@@ -425,6 +436,32 @@ RgbaImage SceneRenderer::read_capture(const RenderTarget& target) const {
 
 void SceneRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, uint32_t image, const FrameParams& params) {
   if (params.before_pass) params.before_pass(cmd);
+  struct Draw {
+    const GpuModel* model;
+    uint32_t primitive;
+    glm::mat4 transform;
+    float depth;  // distance from the camera, for back-to-front blending
+    std::vector<IndexRange> ranges;  // of the primitive's indices
+  };
+  std::vector<Draw> opaque, blended;
+  for (const DrawItem& item : params.items) {
+    for (const MeshInstance& instance : item.model->instances()) {
+      glm::mat4 transform = item.transform * instance.world;
+      const GpuPrimitive& p = item.model->primitives()[instance.primitive];
+      if (p.index_count == 0) continue;
+      const Material& m = item.model->material_of(instance.primitive);
+      float depth = glm::length(glm::vec3(transform[3]) - params.camera.position);
+      const GpuLevel& level = p.levels[level_of_detail_ ? level_to_draw(p, transform, params.camera, target.extent()) : 0];
+      if (level.index_count == 0) continue;
+      std::vector<IndexRange> ranges = cull_chunks_ && !m.double_sided
+                                           ? visible_ranges(level.chunks, transform, params.camera.position, item.moved)
+                                           : std::vector<IndexRange>{{level.first_index, level.index_count}};
+      (m.alpha_mode == AlphaMode::Blend ? blended : opaque)
+          .push_back({item.model, instance.primitive, transform, depth, std::move(ranges)});
+    }
+  }
+  std::sort(blended.begin(), blended.end(), [](const Draw& a, const Draw& b) { return a.depth > b.depth; });
+
   VkExtent2D extent = target.extent();
   std::array<VkClearValue, 3> clears{};
   clears[0].color = {{params.background.r, params.background.g, params.background.b, 1.0f}};
@@ -446,28 +483,11 @@ void SceneRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, uint
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_layout_, 0, 1,
                           &slots_[next_slot_].frame_set, 0, nullptr);
 
-  struct Draw {
-    const GpuModel* model;
-    uint32_t primitive;
-    glm::mat4 transform;
-    float depth;  // distance from the camera, for back-to-front blending
-  };
-  std::vector<Draw> opaque, blended;
-  for (const DrawItem& item : params.items) {
-    for (const MeshInstance& instance : item.model->instances()) {
-      glm::mat4 transform = item.transform * instance.world;
-      const Material& m = item.model->material_of(instance.primitive);
-      float depth = glm::length(glm::vec3(transform[3]) - params.camera.position);
-      (m.alpha_mode == AlphaMode::Blend ? blended : opaque).push_back({item.model, instance.primitive, transform, depth});
-    }
-  }
-  std::sort(blended.begin(), blended.end(), [](const Draw& a, const Draw& b) { return a.depth > b.depth; });
-
   VkPipeline bound = VK_NULL_HANDLE;
+  triangles_drawn_ = 0;
   auto draw_list = [&](const std::vector<Draw>& draws, int blend) {
     for (const Draw& d : draws) {
       const GpuPrimitive& p = d.model->primitives()[d.primitive];
-      if (p.index_count == 0) continue;
       const Material& m = d.model->material_of(d.primitive);
       VkPipeline pipeline = pipelines_[blend][m.double_sided ? 1 : 0];
       if (pipeline != bound) {
@@ -486,7 +506,10 @@ void SceneRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, uint
       VkBuffer vb = p.vertices.handle();
       vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
       vkCmdBindIndexBuffer(cmd, p.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-      vkCmdDrawIndexed(cmd, p.index_count, 1, 0, 0, 0);
+      for (const IndexRange& r : d.ranges) {
+        vkCmdDrawIndexed(cmd, r.count, 1, r.first, 0, 0);
+        triangles_drawn_ += r.count / 3;
+      }
     }
   };
   draw_list(opaque, 0);

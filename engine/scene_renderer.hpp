@@ -24,6 +24,9 @@ class VulkanContext;
 struct DrawItem {
   const GpuModel* model = nullptr;
   glm::mat4 transform{1.0f};  // placed before each instance's own world transform
+  // World-space spheres outside which the vertex buffers hold the uploaded mesh (a deformed
+  // tissue's reach): chunks touching them are always drawn, the others are culled by rest bounds.
+  std::vector<Sphere> moved;
 };
 
 struct FrameParams {
@@ -40,6 +43,11 @@ struct FrameParams {
 struct RendererSettings {
   // Highest count up to this that the device supports for colour and depth.
   VkSampleCountFlagBits max_msaa = VK_SAMPLE_COUNT_4_BIT;
+  // Draw an asset's coarser level of detail when its mesh is finer than its pixels
+  // (engine/level_of_detail.hpp), and leave out runs of triangles that face away from the camera
+  // (the same picture). Off only to measure what they save.
+  bool level_of_detail = true;
+  bool cull_chunks = true;
 };
 
 class SceneRenderer {
@@ -60,6 +68,8 @@ class SceneRenderer {
   void wait_idle() const;
 
   VkSampleCountFlagBits samples() const { return samples_; }
+  // Triangles the last recorded frame sent to the device, after chunk culling.
+  size_t triangles_drawn() const { return triangles_drawn_; }
   const VulkanContext& context() const { return context_; }
   // For passes drawn inside the scene's render pass (the UI pass).
   VkRenderPass render_pass() const { return render_pass_; }
@@ -89,6 +99,8 @@ class SceneRenderer {
   VkDevice device_;
   VkFormat color_format_;
   VkSampleCountFlagBits samples_;
+  bool level_of_detail_;
+  bool cull_chunks_;
   VkRenderPass render_pass_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout frame_layout_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout material_layout_ = VK_NULL_HANDLE;
@@ -100,6 +112,7 @@ class SceneRenderer {
   VkDescriptorPool frame_pool_ = VK_NULL_HANDLE;
   std::array<FrameSlot, kFramesInFlight> slots_;
   size_t next_slot_ = 0;
+  size_t triangles_drawn_ = 0;
 
   // Per target generation: attachments shared by the images, a framebuffer and a
   // render-done semaphore per target image.

@@ -55,6 +55,8 @@ VertexGrid VertexGrid::sort_vertices(Primitive& primitive, double cell_size) {
   }
   std::partial_sum(grid.cell_start_.begin(), grid.cell_start_.end(), grid.cell_start_.begin());
   for (uint32_t& index : primitive.indices) index = new_index[index];
+  for (auto& level : primitive.coarser_indices)
+    for (uint32_t& index : level) index = new_index[index];
   primitive.vertices = std::move(sorted);
   return grid;
 }

@@ -20,6 +20,20 @@ namespace needle::test {
 constexpr int kChannelTolerance = 8;
 constexpr double kMaxDifferingFraction = 0.002;
 
+// Largest R, G or B difference at byte offset i of two images of one size.
+inline int channel_difference(const engine::RgbaImage& a, const engine::RgbaImage& b, size_t i) {
+  int d = 0;
+  for (size_t c = 0; c < 3; ++c) d = std::max(d, std::abs(int(a.pixels[i + c]) - int(b.pixels[i + c])));
+  return d;
+}
+
+// Pixels of two images of one size that differ by more than kChannelTolerance.
+inline size_t differing_pixels(const engine::RgbaImage& a, const engine::RgbaImage& b) {
+  size_t differing = 0;
+  for (size_t i = 0; i < a.pixels.size(); i += 4) differing += channel_difference(a, b, i) > kChannelTolerance;
+  return differing;
+}
+
 inline ::testing::AssertionResult matches_golden(const engine::RgbaImage& actual, const std::string& name) {
   namespace fs = std::filesystem;
   const fs::path golden_path = fs::path(NEEDLE_SOURCE_DIR) / "tests" / "golden" / (name + ".png");
@@ -43,8 +57,7 @@ inline ::testing::AssertionResult matches_golden(const engine::RgbaImage& actual
   size_t differing = 0;
   int worst = 0;
   for (size_t i = 0; i < actual.pixels.size(); i += 4) {
-    int d = 0;
-    for (size_t c = 0; c < 3; ++c) d = std::max(d, std::abs(int(actual.pixels[i + c]) - int(golden.pixels[i + c])));
+    const int d = channel_difference(actual, golden, i);
     worst = std::max(worst, d);
     bool bad = d > kChannelTolerance;
     differing += bad;

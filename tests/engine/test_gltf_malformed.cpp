@@ -94,6 +94,20 @@ TEST_F(GltfMalformed, IndexOutOfRange) {
   expect_error({"indices of meshes[0].primitives[0]", "index 2 is 3", "3 vertices"});
 }
 
+TEST_F(GltfMalformed, CoarserIndicesOutOfRangeOrNotAList) {
+  tinygltf::Model model = triangle();
+  const int coarse =
+      add_accessor(model, std::vector<uint16_t>{0, 1, 7}, TINYGLTF_TYPE_SCALAR, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+  model.meshes[0].primitives[0].extras = tinygltf::Value(
+      tinygltf::Value::Object{{"needle_coarser_indices", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(coarse)})}});
+  file = write_model(model, dir.path(), "coarse.gltf");
+  expect_error({"meshes[0].primitives[0].extras.needle_coarser_indices[0]", "index 2 is 7", "3 vertices"});
+  edit_json(file, [](nlohmann::json& j) { j["meshes"][0]["primitives"][0]["extras"]["needle_coarser_indices"] = 3; });
+  expect_error({"meshes[0].primitives[0].extras.needle_coarser_indices", "expected an array of accessor indices"});
+  edit_json(file, [](nlohmann::json& j) { j["meshes"][0]["primitives"][0]["extras"]["needle_coarser_indices"] = {"a"}; });
+  expect_error({"needle_coarser_indices[0]", "expected an accessor index"});
+}
+
 TEST_F(GltfMalformed, StrideSmallerThanTheElement) {
   edit_json(file, [](nlohmann::json& j) { j["bufferViews"][0]["byteStride"] = 8; });
   expect_error({"accessors[0] (POSITION of meshes[0].primitives[0])", "byteStride 8", "element size 12"});

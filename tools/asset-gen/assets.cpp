@@ -25,13 +25,14 @@ std::vector<unsigned char> skin_texels(int size) {
 
 }  // namespace
 
-tinygltf::Model make_sphere(int parallels, int meridians) {
+tinygltf::Model make_sphere(int parallels, int meridians, const std::vector<int>& lod_steps) {
   const std::string name = "sphere_" + std::to_string(parallels) +
                            (parallels == meridians ? "" : "x" + std::to_string(meridians));
   GltfBuilder b(name + ".bin");
   const int tissue = b.add_material("tissue", {0.85f, 0.52f, 0.48f, 1.0f}, 0.0f, 0.55f);
-  b.add_root_node("thesis_sphere", b.add_mesh(name, sphere_mesh(kThesisSphereRadius, parallels, meridians), tissue),
-                  {kThesisSphereCenterX, 0.0, 0.0});
+  MeshData mesh = sphere_mesh(kThesisSphereRadius, parallels, meridians);
+  for (int step : lod_steps) mesh.coarser_indices.push_back(sphere_indices(parallels, meridians, step));
+  b.add_root_node("thesis_sphere", b.add_mesh(name, mesh, tissue), {kThesisSphereCenterX, 0.0, 0.0});
   return b.take();
 }
 

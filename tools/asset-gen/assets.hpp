@@ -14,8 +14,9 @@ constexpr double kThesisSphereRadius = 0.1;   // m, thesis section 4.2
 constexpr double kThesisSphereCenterX = 0.4;  // m, centre (0.4, 0, 0)
 
 // Thesis sphere (shapes.hpp, sphere_mesh) of radius 0.1 m, its node at (0.4, 0, 0);
-// buffer file "sphere_P.bin" (or "sphere_PxM.bin" when P != M).
-tinygltf::Model make_sphere(int parallels, int meridians);
+// buffer file "sphere_P.bin" (or "sphere_PxM.bin" when P != M). With lod_steps, coarser levels
+// of detail over every step-th parallel and meridian (sphere_indices), finest first.
+tinygltf::Model make_sphere(int parallels, int meridians, const std::vector<int>& lod_steps = {});
 
 // Needle along the x axis: tip (a short cone) at the node origin pointing +x like the thesis's
 // x5 axis, shaft and coloured hub along -x.

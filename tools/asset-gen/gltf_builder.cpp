@@ -69,6 +69,21 @@ int append_accessor(tinygltf::Model& model, const void* data, size_t bytes, size
   return static_cast<int>(model.accessors.size()) - 1;
 }
 
+namespace {
+
+// An index accessor: u16 while the vertices fit, else u32.
+int append_indices(tinygltf::Model& model, const std::vector<uint32_t>& indices, size_t vertices) {
+  if (vertices <= 65536) {
+    const std::vector<uint16_t> narrow(indices.begin(), indices.end());
+    return append_accessor(model, narrow.data(), narrow.size() * 2, narrow.size(), TINYGLTF_TYPE_SCALAR,
+                           TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  }
+  return append_accessor(model, indices.data(), indices.size() * 4, indices.size(), TINYGLTF_TYPE_SCALAR,
+                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+}
+
+}  // namespace
+
 int GltfBuilder::add_mesh(const std::string& name, const MeshData& mesh, int material) {
   tinygltf::Primitive primitive;
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
@@ -85,14 +100,11 @@ int GltfBuilder::add_mesh(const std::string& name, const MeshData& mesh, int mat
                                                 TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TARGET_ARRAY_BUFFER);
   primitive.attributes["TEXCOORD_0"] = append_accessor(model_, mesh.uvs.data(), n * sizeof(glm::vec2), n, TINYGLTF_TYPE_VEC2,
                                                     TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TARGET_ARRAY_BUFFER);
-  if (n <= 65536) {
-    const std::vector<uint16_t> narrow(mesh.indices.begin(), mesh.indices.end());
-    primitive.indices = append_accessor(model_, narrow.data(), narrow.size() * 2, narrow.size(), TINYGLTF_TYPE_SCALAR,
-                                     TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-  } else {
-    primitive.indices = append_accessor(model_, mesh.indices.data(), mesh.indices.size() * 4, mesh.indices.size(),
-                                     TINYGLTF_TYPE_SCALAR, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
-                                     TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  primitive.indices = append_indices(model_, mesh.indices, n);
+  if (!mesh.coarser_indices.empty()) {
+    tinygltf::Value::Array levels;
+    for (const auto& level : mesh.coarser_indices) levels.emplace_back(append_indices(model_, level, n));
+    primitive.extras = tinygltf::Value(tinygltf::Value::Object{{"needle_coarser_indices", tinygltf::Value(levels)}});
   }
   tinygltf::Mesh out;
   out.name = name;

@@ -25,16 +25,26 @@ MeshData sphere_mesh(double radius, int parallels, int meridians) {
       mesh.uvs.emplace_back(double(j) / m, 1.0 - double(i) / p);  // north pole at the image's top
     }
   }
-  // Quad (i, j): a = (i, j), b = (i, j+1), c = (i+1, j+1), d = (i+1, j); (a, b, c) and (a, c, d)
+  mesh.indices = sphere_indices(parallels, meridians, 1);
+  return mesh;
+}
+
+std::vector<uint32_t> sphere_indices(int parallels, int meridians, int step) {
+  if (step < 1 || parallels % step != 0 || meridians % step != 0 || parallels / step < 2 || meridians / step < 3)
+    throw std::invalid_argument("sphere: step " + std::to_string(step) + " does not divide " + std::to_string(parallels) +
+                                " x " + std::to_string(meridians) + " into a sphere");
+  const auto p = static_cast<uint32_t>(parallels), m = static_cast<uint32_t>(meridians), s = static_cast<uint32_t>(step);
+  // Quad (i, j): a = (i, j), b = (i, j+s), c = (i+s, j+s), d = (i+s, j); (a, b, c) and (a, c, d)
   // turn counter-clockwise seen from outside. At the poles one of them is degenerate: skipped.
   auto at = [m](uint32_t i, uint32_t j) { return i * (m + 1) + j; };
-  for (uint32_t i = 0; i < p; ++i)
-    for (uint32_t j = 0; j < m; ++j) {
-      const uint32_t a = at(i, j), b = at(i, j + 1), c = at(i + 1, j + 1), d = at(i + 1, j);
-      if (i != 0) mesh.indices.insert(mesh.indices.end(), {a, b, c});
-      if (i + 1 != p) mesh.indices.insert(mesh.indices.end(), {a, c, d});
+  std::vector<uint32_t> indices;
+  for (uint32_t i = 0; i < p; i += s)
+    for (uint32_t j = 0; j < m; j += s) {
+      const uint32_t a = at(i, j), b = at(i, j + s), c = at(i + s, j + s), d = at(i + s, j);
+      if (i != 0) indices.insert(indices.end(), {a, b, c});
+      if (i + s != p) indices.insert(indices.end(), {a, c, d});
     }
-  return mesh;
+  return indices;
 }
 
 MeshData revolution_mesh(const std::vector<ProfilePoint>& profile, int segments) {

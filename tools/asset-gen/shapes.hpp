@@ -13,12 +13,20 @@ struct MeshData {
   std::vector<glm::vec3> normals;
   std::vector<glm::vec2> uvs;
   std::vector<uint32_t> indices;
+  // Levels of detail: coarser triangle lists over the same vertices, finest first (written to
+  // the glTF primitive's extras.needle_coarser_indices).
+  std::vector<std::vector<uint32_t>> coarser_indices;
 };
 
 // Sphere of the thesis (section 3.3.2, eq. 3.29-3.31): x = r cos(a) cos(b), y = r cos(a) sin(b),
 // z = r sin(a), parallels a = -90 + 180 i / p degrees (i = 0..p), meridians b = 360 j / m degrees
 // (j = 0..m; j = m repeats j = 0 with u = 1 so the texture seam closes). Normals radial.
 MeshData sphere_mesh(double radius, int parallels, int meridians);
+
+// The sphere's triangles over every `step`-th parallel and meridian of sphere_mesh's vertices: a
+// level of detail (parallels / step by meridians / step). std::invalid_argument unless step
+// divides both and leaves a sphere (2 parallels, 3 meridians).
+std::vector<uint32_t> sphere_indices(int parallels, int meridians, int step);
 
 // A profile point of a surface of revolution about the x axis: (x, radius).
 struct ProfilePoint {

@@ -1,0 +1,80 @@
+// What the renderer leaves out does not show: chunk culling gives the very same pixels as drawing
+// every triangle, the tissue deformed or not, and a level of detail chosen by projected size
+// stays within the golden tolerance of the full mesh at the size it was chosen for.
+#include <gtest/gtest.h>
+
+#include "asset-gen/assets.hpp"
+#include "deformation_fixture.hpp"
+#include "engine/gpu_scene.hpp"
+#include "engine/headless_target.hpp"
+#include "engine/offscreen.hpp"
+#include "image_compare.hpp"
+#include "vulkan_fixture.hpp"
+
+namespace needle::test {
+namespace {
+
+const std::filesystem::path kScene = std::filesystem::path(NEEDLE_SOURCE_DIR) / "assets/scenes/penetrable_sphere.json";
+
+// Needle loads around the sphere as the scene's camera sees it: facing it, on the outline,
+// behind, touching and inserted.
+std::vector<engine::NeedleLoad> loads_around(const engine::Camera& camera) {
+  const glm::dvec3 to_camera = glm::normalize(glm::dvec3(camera.position) - kSphereCentre);
+  const glm::dvec3 side = glm::normalize(glm::cross(to_camera, glm::dvec3(0.0, 0.0, 1.0)));
+  std::vector<engine::NeedleLoad> loads{sphere_load(engine::NeedleContact::Free, to_camera, -0.03)};
+  for (const glm::dvec3& dir : {to_camera, side, -side, -to_camera, glm::normalize(to_camera + 2.0 * side)}) {
+    loads.push_back(sphere_load(engine::NeedleContact::Touching, dir, 0.008));
+    loads.push_back(sphere_load(engine::NeedleContact::Inserted, dir, 0.03, glm::radians(40.0), 1.0, {0, 0, 1}));
+  }
+  return loads;
+}
+
+class RenderCulling : public VulkanTest {};
+
+TEST_F(RenderCulling, CulledChunksChangeNoPixelOfTheDeformingTissue) {
+  const VkExtent2D size{320, 240};
+  engine::HeadlessTarget target(context(), size);
+  engine::SceneRenderer culled(context(), target, {VK_SAMPLE_COUNT_4_BIT, true, true});
+  engine::SceneRenderer every(context(), target, {VK_SAMPLE_COUNT_4_BIT, true, false});
+  engine::GpuScene culled_scene(culled, engine::load_scene(kScene));
+  engine::GpuScene every_scene(every, engine::load_scene(kScene));
+  size_t load_index = 0;
+  for (const engine::NeedleLoad& load : loads_around(culled_scene.scene().camera)) {
+    engine::RgbaImage a, b;
+    ASSERT_TRUE(culled.draw(target, culled_scene.frame_params(&load), &a));
+    ASSERT_TRUE(every.draw(target, every_scene.frame_params(&load), &b));
+    EXPECT_EQ(a.pixels, b.pixels) << "load " << load_index;
+    EXPECT_LT(culled.triangles_drawn(), every.triangles_drawn()) << "load " << load_index;
+    ++load_index;
+  }
+}
+
+TEST_F(RenderCulling, TissueLevelOfDetailIsWithinTheGoldenToleranceAt1280x720) {
+  const VkExtent2D size{1280, 720};
+  const engine::Scene scene = engine::load_scene(kScene);
+  const engine::TissueParams tissue = *scene.assets.at(0).deformation;
+  const engine::Model sphere = engine::convert_gltf(asset_gen::make_sphere(400, 400, {2, 4}), "sphere_400");
+  const engine::Scene view = engine::framing_view(sphere, size);
+  engine::HeadlessTarget target(context(), size);
+  for (VkSampleCountFlagBits msaa : {VK_SAMPLE_COUNT_1_BIT, VK_SAMPLE_COUNT_4_BIT}) {
+    engine::SceneRenderer lod(context(), target, {msaa, true, true});
+    engine::SceneRenderer full(context(), target, {msaa, false, true});
+    engine::GpuScene lod_scene(lod, sphere, view, tissue);
+    engine::GpuScene full_scene(full, sphere, view, tissue);
+    std::vector<engine::NeedleLoad> loads = loads_around(view.camera);
+    loads.resize(4);  // at rest, and touching and inserted facing the camera
+    for (size_t i = 0; i < loads.size(); ++i) {
+      engine::RgbaImage a, b;
+      ASSERT_TRUE(lod.draw(target, lod_scene.frame_params(&loads[i]), &a));
+      ASSERT_TRUE(full.draw(target, full_scene.frame_params(&loads[i]), &b));
+      // The coarser level was drawn: the 400 x 400 sphere fills most of the height.
+      EXPECT_LT(lod.triangles_drawn(), full.triangles_drawn() / 2) << "load " << i;
+      const size_t differing = differing_pixels(a, b);
+      EXPECT_LE(double(differing), kMaxDifferingFraction * size.width * size.height)
+          << "load " << i << ", MSAA " << int(msaa) << ": " << differing << " pixels differ";
+    }
+  }
+}
+
+}  // namespace
+}  // namespace needle::test
