@@ -7,11 +7,13 @@
 
 #include <unistd.h>
 
+#include <Eigen/Geometry>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "haptics/recording/session_format.hpp"
+#include "haptics/sim/closed_loop.hpp"
 #include "ui/scoring/session_scorer.hpp"
 #include "ui/sessions/session_store.hpp"
 #include "ui/tasks/scripted_operator.hpp"
@@ -41,11 +43,36 @@ struct RecordedSession {
   size_t samples = 0;
 };
 
+// The state the haptic loop would publish for one tick of the closed-loop simulation (tests run
+// the simulation directly; the product runs it through the loop).
+inline haptics::ToolSnapshot snapshot_of(const haptics::TickRecord& r) {
+  haptics::ToolSnapshot s;
+  s.time_s = r.t;
+  for (int i = 0; i < 3; ++i) {
+    s.needle_tip_m[i] = r.x_v[i];
+    s.environment_force_n[i] = r.force_v[i];
+    s.operator_force_n[i] = r.force_h[i];
+  }
+  const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), r.needle_v);
+  s.needle_orientation[0] = q.w();
+  s.needle_orientation[1] = q.x();
+  s.needle_orientation[2] = q.y();
+  s.needle_orientation[3] = q.z();
+  using haptics::ContactMode, haptics::ContactState;
+  s.contact = r.mode == ContactMode::Free         ? ContactState::kFree
+              : r.mode == ContactMode::Holonomic ? ContactState::kRigidSurface
+                                                  : ContactState::kTissue;
+  s.multiplier_count = r.mode == ContactMode::Free ? 0 : r.mode == ContactMode::Holonomic ? 1 : 2;
+  s.multipliers[0] = r.lambda_v[0];
+  s.multipliers[1] = r.lambda_v[1];
+  return s;
+}
+
 // The TickSample the haptic loop publishes for one simulated tick of a joint-space device.
 inline haptics::TickSample tick_sample(const haptics::TickRecord& r, uint64_t tick) {
   haptics::TickSample s;
   s.tick = tick;
-  s.state = ui::snapshot_of(r);
+  s.state = snapshot_of(r);
   s.state.tick = tick;
   const uint32_t n = uint32_t(std::min<Eigen::Index>(r.q_v.size(), haptics::kMaxSnapshotJoints));
   s.state.joint_count = n;

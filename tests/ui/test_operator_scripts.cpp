@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "recorded_session.hpp"
 #include "ui/scoring/session_scorer.hpp"
 #include "ui/tasks/scripted_operator.hpp"
 
@@ -23,7 +24,7 @@ SessionResult run(const Task& task, const std::string& script) {
   SessionScorer scorer(task);
   haptics::TickSample sample;
   haptics::run_closed_loop(scenario, false, [&](const haptics::TickRecord& r) {
-    sample.state = snapshot_of(r);
+    sample.state = test::snapshot_of(r);
     scorer.feed(sample);
   });
   return scorer.result();

@@ -1,6 +1,5 @@
 #include "ui/tasks/scripted_operator.hpp"
 
-#include <Eigen/Geometry>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -61,29 +60,6 @@ haptics::Scenario scenario_with_operator(const Task& task, const fs::path& scrip
   }
   scenario["duration_s"] = last["t"].get<double>() + 4.0;
   return write_scenario(scenario, merged_file);
-}
-
-haptics::ToolSnapshot snapshot_of(const haptics::TickRecord& r) {
-  haptics::ToolSnapshot s;
-  s.time_s = r.t;
-  for (int i = 0; i < 3; ++i) {
-    s.needle_tip_m[i] = r.x_v[i];
-    s.environment_force_n[i] = r.force_v[i];
-    s.operator_force_n[i] = r.force_h[i];
-  }
-  const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), r.needle_v);
-  s.needle_orientation[0] = q.w();
-  s.needle_orientation[1] = q.x();
-  s.needle_orientation[2] = q.y();
-  s.needle_orientation[3] = q.z();
-  using haptics::ContactMode, haptics::ContactState;
-  s.contact = r.mode == ContactMode::Free         ? ContactState::kFree
-              : r.mode == ContactMode::Holonomic ? ContactState::kRigidSurface
-                                                  : ContactState::kTissue;
-  s.multiplier_count = r.mode == ContactMode::Free ? 0 : r.mode == ContactMode::Holonomic ? 1 : 2;
-  s.multipliers[0] = r.lambda_v[0];
-  s.multipliers[1] = r.lambda_v[1];
-  return s;
 }
 
 }  // namespace needle::ui

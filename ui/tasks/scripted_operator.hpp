@@ -1,15 +1,13 @@
-// A task done by a scripted operator in the closed-loop simulation, no device: the task's haptics
-// scenario with its hand replaced by the operator's script (assets/tasks/<task>_good.json,
-// <task>_sloppy.json, or a file), run tick by tick; each tick becomes the state the haptic loop
-// would publish, so scoring and rendering see what they see in a live session.
+// A task done by a scripted operator: the task's haptics scenario with its hand replaced by the
+// operator's script (assets/tasks/<task>_good.json, <task>_sloppy.json, or a file), which the
+// simulated device (`needle-sim run --device sim`) plays through the haptic loop.
 #pragma once
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "haptics/realtime/tool_snapshot.hpp"
-#include "haptics/sim/closed_loop.hpp"
+#include "haptics/sim/scenario.hpp"
 #include "ui/tasks/task.hpp"
 
 namespace needle::ui {
@@ -30,8 +28,5 @@ haptics::Scenario write_scenario(const nlohmann::json& scenario, const std::file
 // to `merged_file` by write_scenario.
 haptics::Scenario scenario_with_operator(const Task& task, const std::filesystem::path& script,
                                          const std::filesystem::path& merged_file);
-
-// The state the haptic loop would publish for one simulated tick.
-haptics::ToolSnapshot snapshot_of(const haptics::TickRecord& record);
 
 }  // namespace needle::ui
