@@ -6,9 +6,9 @@ namespace needle::engine {
 
 NeedleLoad NeedleTracker::update(const haptics::ToolSnapshot& s) {
   NeedleLoad load;
-  const double* q = s.needle_orientation;
   load.tip = {s.needle_tip_m[0], s.needle_tip_m[1], s.needle_tip_m[2]};
-  load.axis = glm::normalize(glm::dquat(q[0], q[1], q[2], q[3]) * glm::dvec3(1.0, 0.0, 0.0));  // the needle's x5
+  const auto axis = haptics::needle_axis(s);
+  load.axis = glm::normalize(glm::dvec3(axis[0], axis[1], axis[2]));
   const glm::dvec3 force(s.environment_force_n[0], s.environment_force_n[1], s.environment_force_n[2]);
 
   switch (s.contact) {
@@ -34,6 +34,7 @@ NeedleLoad NeedleTracker::update(const haptics::ToolSnapshot& s) {
       // 4.2); the tissue takes the opposite. Without multipliers, the lateral part of the force.
       glm::dvec3 on_needle = force - load.axis * glm::dot(force, load.axis);
       if (s.multiplier_count >= 2) {
+        const double* q = s.needle_orientation;
         const glm::dquat frame(q[0], q[1], q[2], q[3]);
         on_needle = s.multipliers[0] * (frame * glm::dvec3(0, 1, 0)) + s.multipliers[1] * (frame * glm::dvec3(0, 0, 1));
       }

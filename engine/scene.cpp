@@ -4,14 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <stdexcept>
 
 #include "engine/gltf_errors.hpp"
-#include "engine/strict_json.hpp"
+#include "io/strict_json.hpp"
 
 namespace needle::engine {
 namespace fs = std::filesystem;
@@ -20,7 +19,7 @@ using nlohmann::json;
 namespace {
 
 // Reads one scene file; every error names the file and the JSON pointer of the culprit.
-class SceneReader : StrictJsonReader<AssetError> {
+class SceneReader : io::StrictJsonReader<AssetError> {
  public:
   SceneReader(std::string file, fs::path folder) : StrictJsonReader(std::move(file)), folder_(std::move(folder)) {}
 
@@ -67,10 +66,7 @@ class SceneReader : StrictJsonReader<AssetError> {
     object(value, at, {"name", "gltf", "role", "translation", "rotation", "scale", "deformation"});
     SceneAsset a;
     a.name = string(member(value, at, "name"), at + "/name");
-    const fs::path given = folder_ / string(member(value, at, "gltf"), at + "/gltf");
-    std::error_code ec;
-    a.gltf = fs::weakly_canonical(given, ec);
-    if (ec || !fs::is_regular_file(a.gltf, ec)) fail(at + "/gltf", "file not found: " + given.string());
+    a.gltf = existing_file(member(value, at, "gltf"), at + "/gltf", folder_);
     const std::string role = string(member(value, at, "role"), at + "/role");
     if (role == "tissue") a.role = AssetRole::Tissue;
     else if (role == "tool") a.role = AssetRole::Tool;
@@ -168,16 +164,7 @@ glm::mat4 SceneAsset::transform() const {
 }
 
 Scene load_scene(const fs::path& file) {
-  const std::string name = file.string();
-  std::ifstream in(file);
-  if (!fs::is_regular_file(file) || !in) asset_fail(name, "/", "file not found or not readable");
-  json root;
-  try {
-    root = json::parse(in);
-  } catch (const json::exception& e) {
-    asset_fail(name, "/", e.what());
-  }
-  return SceneReader(name, fs::absolute(file).parent_path()).scene(root);
+  return SceneReader(file.string(), fs::absolute(file).parent_path()).scene(io::read_json_file<AssetError>(file));
 }
 
 Camera framing_camera(const Bounds& bounds, float aspect) {

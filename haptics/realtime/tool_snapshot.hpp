@@ -3,6 +3,7 @@
 // header alone (DESIGN.md).
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 namespace needle::haptics {
@@ -34,5 +35,13 @@ struct ToolSnapshot {
   uint32_t fault = 0;  // haptics::FaultCause, 0 when none
   uint32_t reserved = 0;
 };
+
+// The needle axis x5 in the world: the unit quaternion (w, x, y, z) applied to the body x axis
+// (the needle has its tip at the origin, pointing along +x).
+inline std::array<double, 3> needle_axis(const ToolSnapshot& s) {
+  const double w = s.needle_orientation[0], x = s.needle_orientation[1], y = s.needle_orientation[2],
+               z = s.needle_orientation[3];
+  return {1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y + w * z), 2.0 * (x * z - w * y)};
+}
 
 }  // namespace needle::haptics

@@ -14,7 +14,7 @@
 
 namespace needle::haptics {
 
-// Messages start with the file and name the key and what was expected.
+// "FILE: /json/pointer: what is wrong" (io/strict_json.hpp).
 struct ScenarioError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };

@@ -79,9 +79,7 @@ TEST(RealtimeTaskSpace, FreeMotionTipFollowsTheHandleAndTheForceVanishes) {
   // Static equilibrium of a spring with gravity compensated: the tip sits on the target.
   EXPECT_LT((c.tip() - (c.tip_start_world + delta)).norm(), 1e-3);
   EXPECT_LT(c.device_force().norm(), 300.0 * 1e-3);
-  const Eigen::Quaterniond q(s.needle_orientation[0], s.needle_orientation[1], s.needle_orientation[2],
-                             s.needle_orientation[3]);
-  const Eigen::Vector3d axis = q * Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d axis(needle_axis(s).data());
   EXPECT_GT(axis.dot(c.direction_start), std::cos(5.0 * M_PI / 180.0)) << "the needle keeps its direction";
 }
 

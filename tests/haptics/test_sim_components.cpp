@@ -102,7 +102,7 @@ TEST(SimComponents, ScenarioErrorsNameTheFileAndTheKey) {
     load_scenario(path);
     FAIL();
   } catch (const ScenarioError& e) {
-    EXPECT_EQ(std::string(e.what()), path + ": key 'robot_base_in_world_m': expected an array of 3 numbers");
+    EXPECT_EQ(std::string(e.what()), path + ": /robot_base_in_world_m: expected an array of 3 numbers");
   }
   EXPECT_THROW(load_scenario("/nonexistent.json"), ScenarioError);
   std::string text;
@@ -117,8 +117,35 @@ TEST(SimComponents, ScenarioErrorsNameTheFileAndTheKey) {
     load_scenario(fraction);
     FAIL();
   } catch (const ScenarioError& e) {
-    EXPECT_NE(std::string(e.what()).find("key 'master_substeps': expected a whole number"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(": /master_substeps: expected a whole number"), std::string::npos) << e.what();
   }
+}
+
+// The scenario reader is the project's strict reader: unknown keys and impossible values are
+// errors with the file and the JSON pointer, not silently accepted.
+TEST(SimComponents, ScenarioRejectsUnknownKeysAndImpossibleHands) {
+  std::string text;
+  {
+    std::ifstream in(test::asset("assets/scenarios/holonomic_sphere.json"));
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  text = std::regex_replace(text, std::regex("\\.\\./robots/"), test::asset("assets/robots/"));
+  auto error_of = [&](const std::string& from, const std::string& to) {
+    const std::string path = ::testing::TempDir() + "/edited_scenario.json";
+    std::ofstream(path) << std::regex_replace(text, std::regex(from), to);
+    try {
+      load_scenario(path);
+    } catch (const ScenarioError& e) {
+      return std::string(e.what()).substr(path.size());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error_of("\"mass_kg\": 0.554", "\"mass_kg\": 0"), ": /hand/mass_kg: must be > 0, got 0.000000");
+  EXPECT_EQ(error_of("\"mass_kg\": 0.554", "\"mass_kg\": -1"), ": /hand/mass_kg: must be > 0, got -1.000000");
+  EXPECT_EQ(error_of("\"mass_kg\"", "\"mass_kgs\"").substr(0, 32), ": /hand/mass_kgs: unknown key (a");
+  EXPECT_EQ(error_of("\"period_s\"", "\"period\"").substr(0, 23), ": /period: unknown key ");
+  EXPECT_EQ(error_of("\"preset\": \"thesis_holonomic\"", "\"preset\": \"fast\""),
+            ": /gains/preset: expected \"thesis_holonomic\" or \"thesis_nonholonomic\", got \"fast\"");
 }
 
 TEST(SimComponents, ThesisScenariosLoadInTheBaseFrame) {

@@ -29,7 +29,7 @@ void StepMetricsAccumulator::add(const haptics::ToolSnapshot& state, const Conta
   path_.add(t, tip_);
   if (axis_ >= 0) {
     last_deviation_rad_ =
-        angle_between(needle_axis(state.needle_orientation), planned_direction(task_.markers[axis_], tip_));
+        angle_between(haptics::needle_axis(state), planned_direction(task_.markers[axis_], tip_));
     deviation_sq_sum_ += last_deviation_rad_ * last_deviation_rad_;
   }
   const double lateral = lateral_load_N(state);

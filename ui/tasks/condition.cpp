@@ -28,7 +28,7 @@ bool condition_holds(const Task& task, const Condition& c, const haptics::ToolSn
     case ConditionType::kWithdrawn:
       return distance(tip, task.markers[c.marker].position) > c.within_m;
     case ConditionType::kAxisAligned:
-      return angle_between(needle_axis(state.needle_orientation), planned_direction(task.markers[c.marker], tip)) <=
+      return angle_between(haptics::needle_axis(state), planned_direction(task.markers[c.marker], tip)) <=
              c.within_rad;
     case ConditionType::kDepthInBand: {
       const double depth = depth_along(task.markers[c.marker], tip);

@@ -1,13 +1,12 @@
-// Task files (docs/TASKS.md): strict JSON reading (engine/strict_json.hpp, shared with scene
-// files); every error names the file and the JSON pointer of the culprit.
+// Task files (docs/TASKS.md): strict JSON reading (io/strict_json.hpp, shared with scene,
+// scenario and tissue files); every error names the file and the JSON pointer of the culprit.
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <set>
 
-#include "engine/strict_json.hpp"
+#include "io/strict_json.hpp"
 #include "ui/tasks/task.hpp"
 
 namespace needle::ui {
@@ -16,7 +15,7 @@ using nlohmann::json;
 
 namespace {
 
-class TaskReader : engine::StrictJsonReader<TaskError> {
+class TaskReader : io::StrictJsonReader<TaskError> {
  public:
   TaskReader(std::string file, fs::path folder) : StrictJsonReader(std::move(file)), folder_(std::move(folder)) {}
 
@@ -26,8 +25,8 @@ class TaskReader : engine::StrictJsonReader<TaskError> {
     t.source = file_;
     t.name = string(member(root, "", "name"), "/name");
     t.title = root.contains("title") ? string(root["title"], "/title") : t.name;
-    t.scene = existing_file(member(root, "", "scene"), "/scene");
-    if (root.contains("scenario")) t.scenario = existing_file(root["scenario"], "/scenario");
+    t.scene = existing_file(member(root, "", "scene"), "/scene", folder_);
+    if (root.contains("scenario")) t.scenario = existing_file(root["scenario"], "/scenario", folder_);
     if (root.contains("normal_marker_spacing_m"))
       t.normal_marker_spacing_m = positive(root["normal_marker_spacing_m"], "/normal_marker_spacing_m");
     const json& markers = member(root, "", "markers");
@@ -52,26 +51,6 @@ class TaskReader : engine::StrictJsonReader<TaskError> {
   }
 
  private:
-  double positive(const json& value, const std::string& at) const {
-    const double x = number(value, at);
-    if (x <= 0.0) fail(at, "must be > 0, got " + std::to_string(x));
-    return x;
-  }
-
-  double non_negative(const json& value, const std::string& at) const {
-    const double x = number(value, at);
-    if (x < 0.0) fail(at, "must be >= 0, got " + std::to_string(x));
-    return x;
-  }
-
-  fs::path existing_file(const json& value, const std::string& at) const {
-    const fs::path given = folder_ / string(value, at);
-    std::error_code ec;
-    const fs::path resolved = fs::weakly_canonical(given, ec);
-    if (ec || !fs::is_regular_file(resolved, ec)) fail(at, "file not found: " + given.string());
-    return resolved;
-  }
-
   Vec3 vector(const json& value, const std::string& at) const {
     if (!value.is_array() || value.size() != 3) fail(at, "expected an array of 3 numbers");
     Vec3 v;
@@ -275,15 +254,7 @@ class TaskReader : engine::StrictJsonReader<TaskError> {
 }  // namespace
 
 Task load_task(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw TaskError(file.string() + ": cannot open the file");
-  json root;
-  try {
-    root = json::parse(in);
-  } catch (const json::parse_error& e) {
-    throw TaskError(file.string() + ": not valid JSON: " + e.what());
-  }
-  return TaskReader(file.string(), file.parent_path()).task(root);
+  return TaskReader(file.string(), file.parent_path()).task(io::read_json_file<TaskError>(file));
 }
 
 }  // namespace needle::ui

@@ -23,11 +23,4 @@ inline double angle_between(const Vec3& a, const Vec3& b) {
   return std::atan2(norm(c), dot(a, b));
 }
 
-// The needle axis x5 in the world: the unit quaternion (w, x, y, z) applied to the body x axis
-// (the needle asset has its tip at the origin, pointing along +x).
-inline Vec3 needle_axis(const double (&q)[4]) {
-  const double w = q[0], x = q[1], y = q[2], z = q[3];
-  return {1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y + w * z), 2.0 * (x * z - w * y)};
-}
-
 }  // namespace needle::ui
