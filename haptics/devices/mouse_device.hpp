@@ -4,7 +4,7 @@
 #pragma once
 
 #include "haptics/devices/haptic_device.hpp"
-#include "haptics/realtime/seqlock.hpp"
+#include "haptics/sync/seqlock.hpp"
 
 namespace needle::haptics {
 

@@ -14,9 +14,9 @@
 #include "haptics/realtime/loop_stats.hpp"
 #include "haptics/realtime/periodic_timer.hpp"
 #include "haptics/realtime/realtime_setup.hpp"
-#include "haptics/realtime/seqlock.hpp"
+#include "haptics/sync/seqlock.hpp"
 #include "haptics/realtime/servo_tick.hpp"
-#include "haptics/realtime/spsc_ring.hpp"
+#include "haptics/sync/spsc_ring.hpp"
 #include "haptics/realtime/tick_sample.hpp"
 #include "haptics/safety/safety_monitor.hpp"
 

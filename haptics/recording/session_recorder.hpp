@@ -14,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "haptics/realtime/spsc_ring.hpp"
+#include "haptics/sync/spsc_ring.hpp"
 #include "haptics/realtime/tick_sample.hpp"
 #include "haptics/recording/session_format.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <thread>
 
-#include "haptics/realtime/spsc_ring.hpp"
+#include "haptics/sync/spsc_ring.hpp"
 
 namespace needle::haptics {
 namespace {

@@ -3,7 +3,7 @@
 #include <atomic>
 #include <thread>
 
-#include "haptics/realtime/seqlock.hpp"
+#include "haptics/sync/seqlock.hpp"
 #include "haptics/realtime/tool_snapshot.hpp"
 
 namespace needle::haptics {
