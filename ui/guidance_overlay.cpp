@@ -5,10 +5,14 @@
 #include <optional>
 
 #include "engine/screen_projection.hpp"
-#include "ui/tasks/condition.hpp"
+#include "training/tasks/condition.hpp"
 
 namespace needle::ui {
 namespace {
+
+using training::operator*;  // the task geometry's plain-array arithmetic
+using training::operator+;
+using training::operator-;
 
 const ImU32 kEntry = IM_COL32(80, 200, 255, 255);
 const ImU32 kAxis = IM_COL32(255, 210, 40, 255);
@@ -28,29 +32,29 @@ class Painter {
         extent_{uint32_t(ImGui::GetIO().DisplaySize.x), uint32_t(ImGui::GetIO().DisplaySize.y)},
         list_(ImGui::GetBackgroundDrawList()) {}
 
-  void line(const Vec3& a, const Vec3& b, ImU32 colour, float thickness) {
+  void line(const training::Vec3& a, const training::Vec3& b, ImU32 colour, float thickness) {
     const auto pa = to_screen(a), pb = to_screen(b);
     if (pa && pb) list_->AddLine(*pa, *pb, colour, thickness);
   }
   // A ring with its label to the right, or to the left (entry and target may share a point).
-  void ring(const Vec3& p, ImU32 colour, float radius, const char* label, bool label_left = false) {
+  void ring(const training::Vec3& p, ImU32 colour, float radius, const char* label, bool label_left = false) {
     if (const auto s = to_screen(p)) {
       list_->AddCircle(*s, radius, colour, 24, 2.0f);
       const float width = ImGui::CalcTextSize(label).x;
       text(ImVec2(label_left ? s->x - radius - 3.0f - width : s->x + radius + 3.0f, s->y - 7.0f), colour, label);
     }
   }
-  void dot(const Vec3& p, ImU32 colour, float radius) {
+  void dot(const training::Vec3& p, ImU32 colour, float radius) {
     if (const auto s = to_screen(p)) list_->AddCircleFilled(*s, radius, colour, 16);
   }
-  void cross(const Vec3& p, ImU32 colour, float half) {
+  void cross(const training::Vec3& p, ImU32 colour, float half) {
     if (const auto s = to_screen(p)) {
       list_->AddLine(ImVec2(s->x - half, s->y - half), ImVec2(s->x + half, s->y + half), colour, 2.0f);
       list_->AddLine(ImVec2(s->x - half, s->y + half), ImVec2(s->x + half, s->y - half), colour, 2.0f);
     }
   }
   // A tick across the screen image of the line a-b, at a, with a label.
-  void tick(const Vec3& a, const Vec3& b, ImU32 colour, const char* label) {
+  void tick(const training::Vec3& a, const training::Vec3& b, ImU32 colour, const char* label) {
     const auto pa = to_screen(a), pb = to_screen(b);
     if (!pa || !pb) return;
     const float dx = pb->x - pa->x, dy = pb->y - pa->y, length = std::hypot(dx, dy);
@@ -61,7 +65,7 @@ class Painter {
   }
 
  private:
-  std::optional<ImVec2> to_screen(const Vec3& p) const {
+  std::optional<ImVec2> to_screen(const training::Vec3& p) const {
     const auto s = engine::project_to_screen(camera_, extent_, glm::vec3(p[0], p[1], p[2]));
     if (!s) return std::nullopt;
     return ImVec2(s->x, s->y);
@@ -77,18 +81,18 @@ class Painter {
   ImDrawList* list_;
 };
 
-void draw_axis(Painter& paint, const Task& task, const Marker& marker, const Vec3& tip) {
-  if (marker.kind == MarkerKind::kAxis) {
+void draw_axis(Painter& paint, const training::Task& task, const training::Marker& marker, const training::Vec3& tip) {
+  if (marker.kind == training::MarkerKind::kAxis) {
     paint.line(marker.position - kAxisBehind_m * marker.direction, marker.position + kAxisAhead_m * marker.direction, kAxis, 2.0f);
     paint.dot(marker.position, kAxis, 3.0f);
     return;
   }
   // A surface normal: the line through the three normal markers, down to the surface.
-  const std::array<Vec3, 3> out = normal_marker_positions(task, marker, tip);
+  const std::array<training::Vec3, 3> out = normal_marker_positions(task, marker, tip);
   paint.line(out[0] - (out[1] - out[0]), out[2], kAxis, 2.0f);
 }
 
-void draw_depth_gauge(Painter& paint, const Marker& axis, const Condition& band, const Vec3& tip) {
+void draw_depth_gauge(Painter& paint, const training::Marker& axis, const training::Condition& band, const training::Vec3& tip) {
   paint.line(axis.position + band.min * axis.direction, axis.position + band.max * axis.direction, kBand, 7.0f);
   const double depth = depth_along(axis, tip);
   char label[48];
@@ -99,12 +103,12 @@ void draw_depth_gauge(Painter& paint, const Marker& axis, const Condition& band,
 }  // namespace
 
 void draw_guidance(const GuidanceView& view) {
-  const Task& task = *view.task;
-  const Step& step = task.steps.at(view.step);
-  const Guidance& g = step.guidance;
+  const training::Task& task = *view.task;
+  const training::Step& step = task.steps.at(view.step);
+  const training::Guidance& g = step.guidance;
   Painter paint(view);
   if (g.axis >= 0) draw_axis(paint, task, task.markers[g.axis], view.tip);
-  if (g.depth_gauge >= 0 && step.condition.type == ConditionType::kDepthInBand)
+  if (g.depth_gauge >= 0 && step.condition.type == training::ConditionType::kDepthInBand)
     draw_depth_gauge(paint, task.markers[g.depth_gauge], step.condition, view.tip);
   if (g.entry >= 0) paint.ring(task.markers[g.entry].position, kEntry, 9.0f, "entry", true);
   if (g.target >= 0) {
@@ -112,7 +116,7 @@ void draw_guidance(const GuidanceView& view) {
     paint.cross(task.markers[g.target].position, kTarget, 4.0f);
   }
   if (g.normal_markers >= 0) {
-    for (const Vec3& p : normal_marker_positions(task, task.markers[g.normal_markers], view.tip)) paint.dot(p, kNormal, 5.0f);
+    for (const training::Vec3& p : normal_marker_positions(task, task.markers[g.normal_markers], view.tip)) paint.dot(p, kNormal, 5.0f);
   }
 }
 

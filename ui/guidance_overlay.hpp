@@ -8,14 +8,14 @@
 #include <imgui.h>
 
 #include "engine/scene.hpp"
-#include "ui/tasks/task.hpp"
+#include "training/tasks/task.hpp"
 
 namespace needle::ui {
 
 struct GuidanceView {
-  const Task* task = nullptr;
+  const training::Task* task = nullptr;
   size_t step = 0;
-  Vec3 tip{};  // the needle tip, world frame (the markers' frame)
+  training::Vec3 tip{};  // the needle tip, world frame (the markers' frame)
   engine::Camera camera;  // the 3D view's, over the whole ImGui display
 };
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "ui/review_plot.hpp"
-#include "ui/scoring/metric_fields.hpp"
+#include "training/scoring/metric_fields.hpp"
 
 namespace needle::ui {
 namespace {
@@ -42,8 +42,8 @@ const MetricDisplay kMetrics[] = {
 };
 
 // The value of metric `name` in display units; NaN when it does not apply.
-double shown_value(const Metrics& m, const MetricDisplay& d) {
-  double out = kNotApplicable;
+double shown_value(const training::Metrics& m, const MetricDisplay& d) {
+  double out = training::kNotApplicable;
   for_each_metric(m, [&](const char* name, const auto& value) {
     if (std::string(name) == d.name) out = double(value) * d.scale;
   });
@@ -58,8 +58,8 @@ void value_cell(double v) {
   }
 }
 
-void header_lines(const SessionReview& r) {
-  const SessionInfo& i = r.stored.info;
+void header_lines(const training::SessionReview& r) {
+  const training::SessionInfo& i = r.stored.info;
   ImGui::TextWrapped("Session %lld: %s, %s", static_cast<long long>(i.id), i.trainee.c_str(),
                      i.task_title.empty() ? i.task.c_str() : i.task_title.c_str());
   ImGui::TextColored(kDim, "started %s   device %s   %.1f s", i.started_at.c_str(), i.device.empty() ? "-" : i.device.c_str(),
@@ -71,11 +71,11 @@ void header_lines(const SessionReview& r) {
   }
 }
 
-void breakdown_table(const std::vector<ScoreComponent>& components) {
+void breakdown_table(const std::vector<training::ScoreComponent>& components) {
   if (components.empty()) return;
   if (!ImGui::BeginTable("breakdown", 4, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) return;
   for (size_t k = 0; k < components.size(); ++k) {
-    const ScoreComponent& c = components[k];
+    const training::ScoreComponent& c = components[k];
     if (k % 2 == 0) ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(c.name.c_str());
@@ -85,7 +85,7 @@ void breakdown_table(const std::vector<ScoreComponent>& components) {
   ImGui::EndTable();
 }
 
-void steps_table(const StoredSession& s) {
+void steps_table(const training::StoredSession& s) {
   const int columns = int(s.steps.size()) + 2;
   if (s.steps.empty()) {
     ImGui::TextColored(kDim, "no step results stored");
@@ -95,15 +95,15 @@ void steps_table(const StoredSession& s) {
       ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX;
   if (!ImGui::BeginTable("steps", columns, flags, ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * 19.5f))) return;
   ImGui::TableSetupColumn("metric");
-  for (const StepResult& step : s.steps) ImGui::TableSetupColumn(step.id.c_str());
+  for (const training::StepResult& step : s.steps) ImGui::TableSetupColumn(step.id.c_str());
   ImGui::TableSetupColumn("session");
   ImGui::TableHeadersRow();
   ImGui::TableNextRow();
   ImGui::TableNextColumn();
   ImGui::TextUnformatted("outcome");
-  for (const StepResult& step : s.steps) {
+  for (const training::StepResult& step : s.steps) {
     ImGui::TableNextColumn();
-    const bool ok = step.record.outcome == StepOutcome::kCompleted;
+    const bool ok = step.record.outcome == training::StepOutcome::kCompleted;
     ImGui::TextColored(ok ? kGood : kBad, "%s", step_outcome_name(step.record.outcome));
   }
   ImGui::TableNextColumn();
@@ -111,7 +111,7 @@ void steps_table(const StoredSession& s) {
   ImGui::TableNextRow();
   ImGui::TableNextColumn();
   ImGui::TextUnformatted("start (s)");
-  for (const StepResult& step : s.steps) {
+  for (const training::StepResult& step : s.steps) {
     ImGui::TableNextColumn();
     value_cell(step.record.start_s);
   }
@@ -120,7 +120,7 @@ void steps_table(const StoredSession& s) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::Text("%s (%s)", d.label, d.unit);
-    for (const StepResult& step : s.steps) {
+    for (const training::StepResult& step : s.steps) {
       ImGui::TableNextColumn();
       value_cell(shown_value(step.metrics, d));
     }
@@ -130,7 +130,7 @@ void steps_table(const StoredSession& s) {
   ImGui::EndTable();
 }
 
-void recording_line(const SessionReview& r) {
+void recording_line(const training::SessionReview& r) {
   if (!r.has_recording()) {
     ImGui::TextColored(kWarn, "no plots, no replay:");
     ImGui::SameLine();
@@ -141,8 +141,8 @@ void recording_line(const SessionReview& r) {
                      r.states.size(), r.start_s(), r.end_s(), r.recording_trailing_bytes ? " (last record cut short)" : "");
 }
 
-const char* step_at(const SessionReview& r, double t) {
-  const std::vector<StepResult>& steps = r.stored.steps;
+const char* step_at(const training::SessionReview& r, double t) {
+  const std::vector<training::StepResult>& steps = r.stored.steps;
   for (size_t k = steps.size(); k-- > 0;) {
     if (steps[k].record.start_s <= t) return steps[k].id.c_str();
   }
@@ -151,7 +151,7 @@ const char* step_at(const SessionReview& r, double t) {
 
 }  // namespace
 
-void draw_session_table(const std::vector<SessionInfo>& sessions, SessionTableState& state, const PanelRect& at) {
+void draw_session_table(const std::vector<training::SessionInfo>& sessions, SessionTableState& state, const PanelRect& at) {
   if (begin_panel("Sessions", at)) {
     ImGui::SetNextItemWidth(-1.0f);
     ImGui::InputTextWithHint("##filter", "filter: words in trainee, task, date, device, passed/failed/incomplete; -word excludes",
@@ -162,25 +162,25 @@ void draw_session_table(const std::vector<SessionInfo>& sessions, SessionTableSt
     if (ImGui::BeginTable("sessions", 8, flags)) {
       ImGui::TableSetupScrollFreeze(0, 1);
       ImGui::TableSetupColumn("ID", ImGuiTableColumnFlags_DefaultSort | ImGuiTableColumnFlags_PreferSortDescending, 0.0f,
-                              ImGuiID(SessionColumn::kId));
-      ImGui::TableSetupColumn("Trainee", 0, 0.0f, ImGuiID(SessionColumn::kTrainee));
-      ImGui::TableSetupColumn("Task", 0, 0.0f, ImGuiID(SessionColumn::kTask));
-      ImGui::TableSetupColumn("Date (UTC)", 0, 0.0f, ImGuiID(SessionColumn::kDate));
-      ImGui::TableSetupColumn("Score", ImGuiTableColumnFlags_PreferSortDescending, 0.0f, ImGuiID(SessionColumn::kScore));
-      ImGui::TableSetupColumn("Duration", 0, 0.0f, ImGuiID(SessionColumn::kDuration));
-      ImGui::TableSetupColumn("Result", 0, 0.0f, ImGuiID(SessionColumn::kResult));
+                              ImGuiID(training::SessionColumn::kId));
+      ImGui::TableSetupColumn("Trainee", 0, 0.0f, ImGuiID(training::SessionColumn::kTrainee));
+      ImGui::TableSetupColumn("Task", 0, 0.0f, ImGuiID(training::SessionColumn::kTask));
+      ImGui::TableSetupColumn("Date (UTC)", 0, 0.0f, ImGuiID(training::SessionColumn::kDate));
+      ImGui::TableSetupColumn("Score", ImGuiTableColumnFlags_PreferSortDescending, 0.0f, ImGuiID(training::SessionColumn::kScore));
+      ImGui::TableSetupColumn("Duration", 0, 0.0f, ImGuiID(training::SessionColumn::kDuration));
+      ImGui::TableSetupColumn("Result", 0, 0.0f, ImGuiID(training::SessionColumn::kResult));
       ImGui::TableSetupColumn("B", ImGuiTableColumnFlags_NoSort);
       ImGui::TableHeadersRow();
       if (ImGuiTableSortSpecs* specs = ImGui::TableGetSortSpecs(); specs && specs->SpecsDirty) {
         state.sort.clear();
         for (int i = 0; i < specs->SpecsCount; ++i) {
           const ImGuiTableColumnSortSpecs& s = specs->Specs[i];
-          state.sort.push_back({SessionColumn(s.ColumnUserID), s.SortDirection == ImGuiSortDirection_Descending});
+          state.sort.push_back({training::SessionColumn(s.ColumnUserID), s.SortDirection == ImGuiSortDirection_Descending});
         }
         specs->SpecsDirty = false;
       }
       for (size_t row : session_rows(sessions, state.filter, state.sort)) {
-        const SessionInfo& s = sessions[row];
+        const training::SessionInfo& s = sessions[row];
         ImGui::PushID(int(s.id));
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
@@ -219,7 +219,7 @@ void draw_session_table(const std::vector<SessionInfo>& sessions, SessionTableSt
   ImGui::End();
 }
 
-bool draw_session_detail(const SessionReview& r, const DetailOptions& o, const PanelRect& at) {
+bool draw_session_detail(const training::SessionReview& r, const DetailOptions& o, const PanelRect& at) {
   bool export_pressed = false;
   if (begin_panel("Session", at)) {
     header_lines(r);
@@ -240,14 +240,14 @@ bool draw_session_detail(const SessionReview& r, const DetailOptions& o, const P
     plot.cursor_s = r.has_recording() ? std::optional<double>(o.cursor_s) : std::nullopt;
     plot.steps = &r.stored.steps;
     if (r.has_recording()) {  // else the recording line says why there are none
-      for (const Plot* p : r.plots.all()) draw_plot(*p, plot);
+      for (const training::Plot* p : r.plots.all()) draw_plot(*p, plot);
     }
   }
   ImGui::End();
   return export_pressed;
 }
 
-bool draw_replay_bar(const SessionReview& r, double& t, bool playing, const PanelRect& at) {
+bool draw_replay_bar(const training::SessionReview& r, double& t, bool playing, const PanelRect& at) {
   if (begin_panel("Replay", at)) {
     if (!r.has_recording()) {
       ImGui::TextColored(kWarn, "no replay: %s", r.recording_problem.c_str());
@@ -269,9 +269,9 @@ bool draw_replay_bar(const SessionReview& r, double& t, bool playing, const Pane
   return playing;
 }
 
-void draw_comparison(const SessionReview& a, const SessionReview& b, const PanelRect& at, bool* open) {
+void draw_comparison(const training::SessionReview& a, const training::SessionReview& b, const PanelRect& at, bool* open) {
   if (begin_panel("Compare A and B", at, open)) {
-    const SessionInfo &ia = a.stored.info, &ib = b.stored.info;
+    const training::SessionInfo &ia = a.stored.info, &ib = b.stored.info;
     ImGui::Text("A: session %lld, %s, %s", static_cast<long long>(ia.id), ia.trainee.c_str(), ia.task.c_str());
     ImGui::Text("B: session %lld, %s, %s", static_cast<long long>(ib.id), ib.trainee.c_str(), ib.task.c_str());
     if (ImGui::BeginTable("compare", 4, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
@@ -291,7 +291,7 @@ void draw_comparison(const SessionReview& a, const SessionReview& b, const Panel
         ImGui::TableNextColumn();
         value_cell(vb - va);
       };
-      row("score", ia.complete ? ia.score : kNotApplicable, ib.complete ? ib.score : kNotApplicable);
+      row("score", ia.complete ? ia.score : training::kNotApplicable, ib.complete ? ib.score : training::kNotApplicable);
       for (const MetricDisplay& d : kMetrics) {
         const std::string label = std::string(d.label) + " (" + d.unit + ")";
         row(label.c_str(), shown_value(a.stored.overall, d), shown_value(b.stored.overall, d));
@@ -299,7 +299,7 @@ void draw_comparison(const SessionReview& a, const SessionReview& b, const Panel
       ImGui::EndTable();
     }
     ImGui::Separator();
-    const std::vector<const Plot*> pa = a.plots.all(), pb = b.plots.all();
+    const std::vector<const training::Plot*> pa = a.plots.all(), pb = b.plots.all();
     for (size_t k = 0; k < pa.size(); ++k) {
       PlotOptions o;
       o.height = 120.0f;
@@ -315,7 +315,7 @@ void draw_comparison(const SessionReview& a, const SessionReview& b, const Panel
   ImGui::End();
 }
 
-void draw_plot_window(const SessionReview& r, const Plot& plot, const PanelRect& at) {
+void draw_plot_window(const training::SessionReview& r, const training::Plot& plot, const PanelRect& at) {
   if (begin_panel(plot.title.c_str(), at)) {
     PlotOptions o;
     o.height = std::max(80.0f, ImGui::GetContentRegionAvail().y - 2.0f * ImGui::GetTextLineHeightWithSpacing());

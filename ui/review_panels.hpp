@@ -9,8 +9,8 @@
 
 #include <imgui.h>
 
-#include "ui/sessions/session_review.hpp"
-#include "ui/sessions/session_table.hpp"
+#include "training/sessions/session_review.hpp"
+#include "training/sessions/session_table.hpp"
 
 namespace needle::ui {
 
@@ -21,13 +21,13 @@ struct PanelRect {
 
 struct SessionTableState {
   char filter[128] = "";
-  std::vector<SessionSort> sort{{SessionColumn::kId, true}};  // ImGui's sort specs, once it has them
+  std::vector<training::SessionSort> sort{{training::SessionColumn::kId, true}};  // ImGui's sort specs, once it has them
   int64_t selected = 0;  // session A, 0: none
   int64_t compared = 0;  // session B, 0: none
 };
 
 // Click a row to review it; "B" in the last column picks the session to compare it with.
-void draw_session_table(const std::vector<SessionInfo>& sessions, SessionTableState& state, const PanelRect& at);
+void draw_session_table(const std::vector<training::SessionInfo>& sessions, SessionTableState& state, const PanelRect& at);
 
 struct DetailOptions {
   double cursor_s = 0.0;         // the replay's time, drawn on the plots
@@ -36,16 +36,16 @@ struct DetailOptions {
 };
 
 // Returns true when the export button was pressed.
-bool draw_session_detail(const SessionReview& review, const DetailOptions& options, const PanelRect& at);
+bool draw_session_detail(const training::SessionReview& review, const DetailOptions& options, const PanelRect& at);
 
 // The replay scrubber: the time, the step running then, play and pause. Returns true while playing.
-bool draw_replay_bar(const SessionReview& review, double& t_s, bool playing, const PanelRect& at);
+bool draw_replay_bar(const training::SessionReview& review, double& t_s, bool playing, const PanelRect& at);
 
 // Sessions A and B together: their scores and overall metrics side by side, their plots overlaid.
 // With `open`, the window has a close button that clears it.
-void draw_comparison(const SessionReview& a, const SessionReview& b, const PanelRect& at, bool* open = nullptr);
+void draw_comparison(const training::SessionReview& a, const training::SessionReview& b, const PanelRect& at, bool* open = nullptr);
 
 // One plot filling a window: the report's plot pictures.
-void draw_plot_window(const SessionReview& review, const Plot& plot, const PanelRect& at);
+void draw_plot_window(const training::SessionReview& review, const training::Plot& plot, const PanelRect& at);
 
 }  // namespace needle::ui

@@ -38,7 +38,7 @@ void dashed_vertical(ImDrawList* draw, float x, float top, float bottom, ImU32 c
 
 }  // namespace
 
-void draw_plot(const Plot& plot, const PlotOptions& o) {
+void draw_plot(const training::Plot& plot, const PlotOptions& o) {
   ImGui::Text("%s (%s)", plot.title.c_str(), plot.unit.c_str());
   if (plot.lines.empty() && (!o.other || o.other->lines.empty())) {
     ImGui::TextColored(ImVec4(0.95f, 0.7f, 0.3f, 1.0f), "no plot:");
@@ -46,7 +46,7 @@ void draw_plot(const Plot& plot, const PlotOptions& o) {
     ImGui::TextWrapped("%s", plot.missing.c_str());
     return;
   }
-  std::vector<std::pair<const Series*, ImU32>> lines;
+  std::vector<std::pair<const training::Series*, ImU32>> lines;
   for (size_t i = 0; i < plot.lines.size(); ++i) lines.push_back({&plot.lines[i], kLinesA[i % 2]});
   if (o.other) {
     for (size_t i = 0; i < o.other->lines.size(); ++i) lines.push_back({&o.other->lines[i], kLinesB[i % 2]});
@@ -57,7 +57,7 @@ void draw_plot(const Plot& plot, const PlotOptions& o) {
     for (double t : series->t) x.add(t);
     for (double v : series->v) y.add(v);
   }
-  for (const Guide& g : plot.guides) y.add(g.value);
+  for (const training::Guide& g : plot.guides) y.add(g.value);
   if (!(x.hi > x.lo)) x.hi = x.lo + 1.0;
   if (!(y.hi > y.lo)) y.hi = y.lo + 1.0;
   const double pad = 0.05 * (y.hi - y.lo);
@@ -72,12 +72,12 @@ void draw_plot(const Plot& plot, const PlotOptions& o) {
   auto sy = [&](double v) { return float(p1.y - (v - y.lo) / (y.hi - y.lo) * (p1.y - p0.y)); };
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(p0, p1, IM_COL32(22, 22, 28, 255));
-  for (double v : axis_ticks(y.lo, y.hi, 4)) {
+  for (double v : training::axis_ticks(y.lo, y.hi, 4)) {
     draw->AddLine(ImVec2(p0.x, sy(v)), ImVec2(p1.x, sy(v)), kGrid);
     const std::string label = number(v);
     draw->AddText(ImVec2(p0.x - 6.0f - ImGui::CalcTextSize(label.c_str()).x, sy(v) - 7.0f), kText, label.c_str());
   }
-  for (double t : axis_ticks(x.lo, x.hi, 8)) {
+  for (double t : training::axis_ticks(x.lo, x.hi, 8)) {
     draw->AddLine(ImVec2(sx(t), p1.y), ImVec2(sx(t), p1.y + 4.0f), kAxis);
     const std::string label = number(t);
     draw->AddText(ImVec2(sx(t) - 0.5f * ImGui::CalcTextSize(label.c_str()).x, p1.y + 3.0f), kText, label.c_str());
@@ -92,7 +92,7 @@ void draw_plot(const Plot& plot, const PlotOptions& o) {
       draw->AddText(ImVec2(sx(start) + 2.0f, p0.y), kStep, std::to_string(k + 1).c_str());
     }
   }
-  for (const Guide& g : plot.guides) {
+  for (const training::Guide& g : plot.guides) {
     draw->AddLine(ImVec2(p0.x, sy(g.value)), ImVec2(p1.x, sy(g.value)), kGuide);
     const ImVec2 size = ImGui::CalcTextSize(g.label.c_str());
     const float above = sy(g.value) - size.y;  // below the line when it runs along the top
@@ -100,7 +100,7 @@ void draw_plot(const Plot& plot, const PlotOptions& o) {
   }
   std::vector<ImVec2> points;
   for (const auto& [series, colour] : lines) {
-    const Series shown = decimate(*series, size_t(std::max(1.0f, p1.x - p0.x)));
+    const training::Series shown = decimate(*series, size_t(std::max(1.0f, p1.x - p0.x)));
     points.clear();
     for (size_t i = 0; i < shown.t.size(); ++i) {
       if (std::isfinite(shown.v[i])) points.push_back(ImVec2(sx(shown.t[i]), sy(shown.v[i])));

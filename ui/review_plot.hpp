@@ -6,18 +6,18 @@
 #include <optional>
 #include <vector>
 
-#include "ui/scoring/score.hpp"
-#include "ui/sessions/session_series.hpp"
+#include "training/scoring/score.hpp"
+#include "training/sessions/session_series.hpp"
 
 namespace needle::ui {
 
 struct PlotOptions {
   float height = 140.0f;
   std::optional<double> cursor_s;                // the replay's time
-  const std::vector<StepResult>* steps = nullptr;  // their start times, as dashed lines
-  const Plot* other = nullptr;                   // session B's lines, drawn over (comparison)
+  const std::vector<training::StepResult>* steps = nullptr;  // their start times, as dashed lines
+  const training::Plot* other = nullptr;                   // session B's lines, drawn over (comparison)
 };
 
-void draw_plot(const Plot& plot, const PlotOptions& options = {});
+void draw_plot(const training::Plot& plot, const PlotOptions& options = {});
 
 }  // namespace needle::ui

@@ -41,27 +41,27 @@ void metric_line(const char* name, double value, const char* unit, double scale 
 }
 
 void draw_running(const TraineeView& v) {
-  const Task& task = *v.task;
+  const training::Task& task = *v.task;
   const size_t shown = std::min(v.step.value_or(v.progress->current_step()), task.steps.size() - 1);
-  const Step& step = task.steps[shown];
-  const StepOutcome outcome = v.progress->records()[shown].outcome;
+  const training::Step& step = task.steps[shown];
+  const training::StepOutcome outcome = v.progress->records()[shown].outcome;
   ImGui::Text("Step %zu of %zu: %s", shown + 1, task.steps.size(), step.id.c_str());
   ImGui::ProgressBar(float(v.progress->current_step()) / float(task.steps.size()), ImVec2(-1, 0));
   ImGui::Separator();
   ImGui::TextWrapped("%s", step.instruction.c_str());
-  if (outcome == StepOutcome::kActive) {
+  if (outcome == training::StepOutcome::kActive) {
     if (step.time_limit_s > 0.0) ImGui::TextColored(kDim, "time limit %.0f s", step.time_limit_s);
     if (v.progress->condition_met()) ImGui::TextColored(kGood, "holding... %.1f s", v.progress->held_s());
   } else {
-    ImGui::TextColored(outcome == StepOutcome::kCompleted ? kGood : kBad, "%s", step_outcome_name(outcome));
+    ImGui::TextColored(outcome == training::StepOutcome::kCompleted ? kGood : kBad, "%s", step_outcome_name(outcome));
   }
   ImGui::Separator();
-  const bool force_band = step.condition.type == ConditionType::kForceHeld;
+  const bool force_band = step.condition.type == training::ConditionType::kForceHeld;
   force_gauge(v.force_N, task.scoring.safe_force_N, force_band ? step.condition.min : 0.0,
               force_band ? step.condition.max : 0.0);
   if (v.lateral_N) ImGui::Text("in tissue: lateral load %.2f N", *v.lateral_N);
   ImGui::Separator();
-  const Metrics& m = v.step_metrics;
+  const training::Metrics& m = v.step_metrics;
   metric_line("tip to target", m.tip_error_m, "mm", 1000.0);
   metric_line("off axis", m.axis_deviation_deg, "deg");
   metric_line("lateral load", m.lateral_load_Ns, "N s");
@@ -69,12 +69,12 @@ void draw_running(const TraineeView& v) {
   metric_line("path", m.path_length_m, "mm", 1000.0);
 }
 
-void draw_result(const SessionResult& r) {
+void draw_result(const training::SessionResult& r) {
   ImGui::TextColored(r.score.passed ? kGood : kBad, "Score %.0f / 100  %s", r.score.total,
                      r.score.passed ? "PASSED" : "NOT PASSED");
   ImGui::Separator();
   if (ImGui::BeginTable("breakdown", 2, ImGuiTableFlags_SizingStretchProp)) {
-    for (const ScoreComponent& c : r.score.components) {
+    for (const training::ScoreComponent& c : r.score.components) {
       ImGui::TableNextRow();
       ImGui::TableSetColumnIndex(0);
       ImGui::TextUnformatted(c.name.c_str());
@@ -97,7 +97,7 @@ void draw_result(const SessionResult& r) {
 
 }  // namespace
 
-std::vector<std::string> what_to_improve(const Score& score) {
+std::vector<std::string> what_to_improve(const training::Score& score) {
   static const std::map<std::string, std::string> advice = {
       {"completion", "Finish every step before its time runs out"},
       {"tip_error", "Bring the tip closer to the target"},
@@ -110,12 +110,12 @@ std::vector<std::string> what_to_improve(const Score& score) {
       {"time", "Work a little faster"},
       {"retries", "Avoid withdrawing and re-inserting"},
   };
-  std::vector<const ScoreComponent*> lost;
-  for (const ScoreComponent& c : score.components) {
+  std::vector<const training::ScoreComponent*> lost;
+  for (const training::ScoreComponent& c : score.components) {
     if (c.weight - c.points() > 1.0) lost.push_back(&c);
   }
   std::sort(lost.begin(), lost.end(),
-            [](const ScoreComponent* a, const ScoreComponent* b) { return a->weight - a->points() > b->weight - b->points(); });
+            [](const training::ScoreComponent* a, const training::ScoreComponent* b) { return a->weight - a->points() > b->weight - b->points(); });
   std::vector<std::string> out;
   for (size_t i = 0; i < lost.size() && i < 2; ++i) {
     auto it = advice.find(lost[i]->name);

@@ -6,14 +6,14 @@
 #include <functional>
 #include <optional>
 
-#include "ui/scoring/session_scorer.hpp"
+#include "training/scoring/session_scorer.hpp"
 
 namespace needle::ui {
 
 struct TraineeView {
-  const Task* task = nullptr;
-  const TaskProgress* progress = nullptr;
-  Metrics step_metrics;        // the current step's, live
+  const training::Task* task = nullptr;
+  const training::TaskProgress* progress = nullptr;
+  training::Metrics step_metrics;        // the current step's, live
   double force_N = 0.0;        // |environment force| now
   // |lambda| now while the needle is in tissue, where the environment force is zero and the
   // load is the tissue's sideways reaction; nullopt outside tissue.
@@ -21,7 +21,7 @@ struct TraineeView {
   double loop_rate_hz = 0.0;   // measured rate of the haptic loop
   const char* fault = nullptr; // latched safety fault, nullptr when none
   std::function<void()> reset_fault;  // when set, a latched fault shows a button that calls it
-  const SessionResult* result = nullptr;  // set once the task is over
+  const training::SessionResult* result = nullptr;  // set once the task is over
   // The step to describe (a picture taken as a step ends shows that step); default: the current one.
   std::optional<size_t> step;
 };
@@ -30,6 +30,6 @@ void draw_trainee_panel(const TraineeView& view);
 
 // The two score components that lost the most points, as advice ("Keep the needle on the
 // planned axis"), most costly first; empty when nothing lost more than a point.
-std::vector<std::string> what_to_improve(const Score& score);
+std::vector<std::string> what_to_improve(const training::Score& score);
 
 }  // namespace needle::ui

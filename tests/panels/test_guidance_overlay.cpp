@@ -17,15 +17,15 @@ namespace fs = std::filesystem;
 
 class GuidanceOverlay : public VulkanTest {
  protected:
-  engine::RgbaImage draw(const std::string& task_name, size_t step, const ui::Vec3& tip, const ui::Vec3& axis) {
-    const ui::Task task = ui::load_task(fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks" / (task_name + ".json"));
+  engine::RgbaImage draw(const std::string& task_name, size_t step, const training::Vec3& tip, const training::Vec3& axis) {
+    const training::Task task = training::load_task(fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks" / (task_name + ".json"));
     ui::PictureScene scene{engine::load_scene(task.scene), std::nullopt};
     haptics::ToolSnapshot state;
     for (int i = 0; i < 3; ++i) state.needle_tip_m[i] = tip[i];
     // The needle along `axis`: the rotation of +x onto it (a half-way quaternion).
-    const double n = ui::norm(axis);
-    const ui::Vec3 h{1.0 + axis[0] / n, axis[1] / n, axis[2] / n};
-    const double hn = ui::norm(h);
+    const double n = training::norm(axis);
+    const training::Vec3 h{1.0 + axis[0] / n, axis[1] / n, axis[2] / n};
+    const double hn = training::norm(h);
     state.needle_orientation[0] = h[0] / hn;
     state.needle_orientation[1] = 0.0;
     state.needle_orientation[2] = -h[2] / hn;
@@ -38,14 +38,14 @@ class GuidanceOverlay : public VulkanTest {
 
 TEST_F(GuidanceOverlay, InsertionShowsTheAxisAndTheDepthGauge) {
   // 28 mm along the insertion axis from the entry (0.32929, 0, 0.07071), direction (0.70711, 0, -0.70711).
-  const ui::Vec3 tip{0.32929 + 0.028 * 0.70711, 0.0, 0.07071 - 0.028 * 0.70711};
+  const training::Vec3 tip{0.32929 + 0.028 * 0.70711, 0.0, 0.07071 - 0.028 * 0.70711};
   EXPECT_TRUE(matches_golden(draw("penetrable_sphere", 1, tip, {0.70711, 0.0, -0.70711}), "guidance_insert"));
 }
 
 TEST_F(GuidanceOverlay, TouchShowsTheEntryTargetAndNormalMarkers) {
-  const ui::Task task = ui::load_task(fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks/rigid_sphere.json");
-  const ui::Vec3 entry = task.markers[0].position;
-  const ui::Vec3 tip{entry[0] - 0.01, entry[1], entry[2] + 0.02};
+  const training::Task task = training::load_task(fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks/rigid_sphere.json");
+  const training::Vec3 entry = task.markers[0].position;
+  const training::Vec3 tip{entry[0] - 0.01, entry[1], entry[2] + 0.02};
   EXPECT_TRUE(matches_golden(draw("rigid_sphere", 0, tip, {0.0, 0.0, -1.0}), "guidance_touch"));
 }
 

@@ -4,7 +4,7 @@
 // penetrable task (good and sloppy operators) with their dates fixed, so the pictures are too.
 #include <gtest/gtest.h>
 
-#include "../ui/recorded_session.hpp"
+#include "../training/recorded_session.hpp"
 #include "engine/vulkan_context.hpp"
 #include "image_compare.hpp"
 #include "ui/panel_picture.hpp"
@@ -26,18 +26,18 @@ class ReviewPanels : public VulkanTest {
     db_ = dir_ / "sessions.db";
     good_ = record_session(db_, {"penetrable_sphere", "good", "ana", true});
     sloppy_ = record_session(db_, {"penetrable_sphere", "sloppy", "bo", true});
-    ui::SessionStore store(db_);
-    const ui::Task rigid = ui::load_task(fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks/rigid_sphere.json");
+    training::SessionStore store(db_);
+    const training::Task rigid = training::load_task(fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks/rigid_sphere.json");
     store.begin_session("cy", rigid, "sim", "");  // died mid-task, before recordings were kept
   }
   // The session as the panels show it, with the clock's fields fixed for the picture.
-  static ui::SessionReview review(int64_t id) {
-    ui::SessionStore store(db_);
-    ui::SessionReview r = ui::load_session_review(store, db_, id);
+  static training::SessionReview review(int64_t id) {
+    training::SessionStore store(db_);
+    training::SessionReview r = training::load_session_review(store, db_, id);
     fix_dates(r.stored.info);
     return r;
   }
-  static void fix_dates(ui::SessionInfo& s) {
+  static void fix_dates(training::SessionInfo& s) {
     s.started_at = "2026-03-0" + std::to_string(s.id) + "T10:00:00Z";
     s.ended_at = s.complete ? "2026-03-0" + std::to_string(s.id) + "T10:01:00Z" : "";
   }
@@ -50,9 +50,9 @@ class ReviewPanels : public VulkanTest {
 };
 
 TEST_F(ReviewPanels, SessionTableMatchesGolden) {
-  std::vector<ui::SessionInfo> sessions = ui::SessionStore(db_).sessions();
+  std::vector<training::SessionInfo> sessions = training::SessionStore(db_).sessions();
   ASSERT_EQ(sessions.size(), 3u);
-  for (ui::SessionInfo& s : sessions) fix_dates(s);
+  for (training::SessionInfo& s : sessions) fix_dates(s);
   ui::SessionTableState table;
   table.selected = good_.id;
   table.compared = sloppy_.id;
@@ -62,7 +62,7 @@ TEST_F(ReviewPanels, SessionTableMatchesGolden) {
 }
 
 TEST_F(ReviewPanels, SessionDetailWithPlotsMatchesGolden) {
-  const ui::SessionReview r = review(good_.id);
+  const training::SessionReview r = review(good_.id);
   ASSERT_TRUE(r.has_recording());
   const VkExtent2D size{720, 1340};
   EXPECT_TRUE(matches_golden(ui::panel_picture(context(), size, [&] { ui::draw_session_detail(r, {12.0, false, ""}, whole(size)); }),
@@ -70,7 +70,7 @@ TEST_F(ReviewPanels, SessionDetailWithPlotsMatchesGolden) {
 }
 
 TEST_F(ReviewPanels, SessionWithoutRecordingSaysSo) {
-  const ui::SessionReview r = review(3);
+  const training::SessionReview r = review(3);
   EXPECT_FALSE(r.has_recording());
   const VkExtent2D size{600, 300};
   EXPECT_TRUE(matches_golden(ui::panel_picture(context(), size, [&] { ui::draw_session_detail(r, {}, whole(size)); }),
@@ -78,7 +78,7 @@ TEST_F(ReviewPanels, SessionWithoutRecordingSaysSo) {
 }
 
 TEST_F(ReviewPanels, ComparisonMatchesGolden) {
-  const ui::SessionReview a = review(good_.id), b = review(sloppy_.id);
+  const training::SessionReview a = review(good_.id), b = review(sloppy_.id);
   const VkExtent2D size{720, 1080};
   EXPECT_TRUE(matches_golden(ui::panel_picture(context(), size, [&] { ui::draw_comparison(a, b, whole(size)); }),
                              "panel_review_compare"));
@@ -87,7 +87,7 @@ TEST_F(ReviewPanels, ComparisonMatchesGolden) {
 // The recorded needle 12 s in (pivoting in the tissue), the scene framed right of where the
 // review's panels stand, the replay bar below.
 TEST_F(ReviewPanels, ReplayFrameMatchesGolden) {
-  const ui::SessionReview r = review(good_.id);
+  const training::SessionReview r = review(good_.id);
   ASSERT_TRUE(r.task.has_value());
   ui::ReplayCursor cursor;
   double t = 12.0;

@@ -36,8 +36,8 @@ class TraineePanel : public VulkanTest {
 };
 
 TEST_F(TraineePanel, MidTaskMatchesGolden) {
-  ui::Task task = ui::load_task(kTask);
-  ui::TaskProgress progress(task);
+  training::Task task = training::load_task(kTask);
+  training::TaskProgress progress(task);
   haptics::ToolSnapshot start;
   progress.feed(start);  // step 1 active
   ui::TraineeView view{&task, &progress};
@@ -52,9 +52,9 @@ TEST_F(TraineePanel, MidTaskMatchesGolden) {
 }
 
 TEST_F(TraineePanel, ResultMatchesGolden) {
-  ui::Task task = ui::load_task(kTask);
-  ui::TaskProgress progress(task);
-  ui::SessionResult result;
+  training::Task task = training::load_task(kTask);
+  training::TaskProgress progress(task);
+  training::SessionResult result;
   result.score.total = 62.0;
   result.score.passed = false;
   result.score.components = {{"completion", 1.0, 30}, {"tip_error", 0.4, 15}, {"axis_deviation", 0.2, 10},
@@ -68,7 +68,7 @@ TEST_F(TraineePanel, ResultMatchesGolden) {
 }
 
 TEST(WhatToImprove, TheTwoCostliestComponentsFirst) {
-  ui::Score score;
+  training::Score score;
   score.components = {{"completion", 1.0, 30}, {"tip_error", 0.4, 15}, {"axis_deviation", 0.2, 10}, {"time", 0.95, 5}};
   // Lost: tip_error 9, axis_deviation 8, time 0.25 (under a point: not worth a word).
   EXPECT_EQ(ui::what_to_improve(score),

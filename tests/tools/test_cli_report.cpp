@@ -7,7 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "../ui/recorded_session.hpp"
+#include "../training/recorded_session.hpp"
 #include "cli_process.hpp"
 #include "engine/rgba_image.hpp"
 

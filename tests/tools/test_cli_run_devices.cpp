@@ -11,7 +11,7 @@
 
 #include "cli_process.hpp"
 #include "haptics/recording/session_format.hpp"
-#include "ui/sessions/session_store.hpp"
+#include "training/sessions/session_store.hpp"
 
 namespace needle::test {
 namespace {
@@ -73,8 +73,8 @@ TEST_P(RunReplay, ReplayingARecordedRunReproducesItsStateAndScore) {
   }
   EXPECT_EQ(differing, 0u) << "ticks whose simulation state differs between the run and its replay";
 
-  ui::SessionStore store(db);
-  const std::vector<ui::SessionInfo> sessions = store.sessions();  // newest first
+  training::SessionStore store(db);
+  const std::vector<training::SessionInfo> sessions = store.sessions();  // newest first
   ASSERT_EQ(sessions.size(), 2u);
   EXPECT_EQ(sessions[1].recording_path, recording.string());
   EXPECT_EQ(sessions[1].device, std::string("sim (") + GetParam().task + "_" + GetParam().operator_spec + ")");
@@ -141,9 +141,9 @@ TEST(CliRunDevices, TheMouseMovesTheNeedleAlongTheViewsRightAxis) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
 
-  ui::SessionStore store(dir / "sessions.db");
+  training::SessionStore store(dir / "sessions.db");
   ASSERT_EQ(store.sessions().size(), 1u);
-  const ui::SessionInfo session = store.sessions()[0];
+  const training::SessionInfo session = store.sessions()[0];
   EXPECT_EQ(session.device, "mouse");
   EXPECT_FALSE(session.complete);  // closed before the task ended
   const haptics::Session recording = haptics::read_session(session.recording_path);
@@ -181,7 +181,7 @@ TEST(CliRunDevices, AKilledRunLeavesItsRecordingAndAnIncompleteSession) {
   ProcessResult r = run_on_virtual_display(run + " & pid=\\$!; " + kill_later + "; wait \\$pid; echo killed \\$?");
   EXPECT_NE(r.output.find("killed 137"), std::string::npos) << r.output;  // 128 + SIGKILL
 
-  ui::SessionStore store(dir / "sessions.db");
+  training::SessionStore store(dir / "sessions.db");
   ASSERT_EQ(store.sessions().size(), 1u);
   EXPECT_FALSE(store.sessions()[0].complete);
   const haptics::Session recording = haptics::read_session(store.sessions()[0].recording_path);

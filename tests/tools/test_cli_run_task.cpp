@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_process.hpp"
-#include "ui/sessions/session_store.hpp"
+#include "training/sessions/session_store.hpp"
 
 namespace needle::test {
 namespace {
@@ -32,8 +32,8 @@ TEST(CliRunTask, GoodOperatorPassesAndEverythingIsWritten) {
   for (const char* picture : {"final.png", "score_panel.png", "step_1_approach.png"}) {
     EXPECT_TRUE(fs::is_regular_file(dir / picture)) << picture;
   }
-  ui::SessionStore store(dir / "sessions.db");
-  std::vector<ui::SessionInfo> sessions = store.sessions();
+  training::SessionStore store(dir / "sessions.db");
+  std::vector<training::SessionInfo> sessions = store.sessions();
   ASSERT_EQ(sessions.size(), 1u);
   EXPECT_TRUE(sessions[0].complete);
   EXPECT_EQ(sessions[0].trainee, "ana");
@@ -55,7 +55,7 @@ TEST(CliRunTask, WindowClosedMidTaskLeavesAnIncompleteSession) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("presented 5 frames"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
-  ui::SessionStore store(dir / "sessions.db");
+  training::SessionStore store(dir / "sessions.db");
   ASSERT_EQ(store.sessions().size(), 1u);
   EXPECT_FALSE(store.sessions()[0].complete);
   EXPECT_FALSE(fs::exists(dir / "score.json"));

@@ -11,7 +11,7 @@
 #include "ui/panel_picture.hpp"
 #include "ui/review_panels.hpp"
 #include "ui/review_replay.hpp"
-#include "ui/sessions/session_export.hpp"
+#include "training/sessions/session_export.hpp"
 
 namespace needle::cli {
 namespace {
@@ -39,10 +39,10 @@ int run_report(ArgList& args) {
   if (auto text = args.value("--at")) at = parse_number(*text, "--at");
   args.finish();
 
-  const std::unique_ptr<ui::SessionStore> store = open_existing_db(db);
-  const ui::SessionReview review = ui::load_session_review(*store, db, id);
-  const ui::SessionInfo& info = review.stored.info;
-  const fs::path json = ui::export_session(review.stored, out);
+  const std::unique_ptr<training::SessionStore> store = open_existing_db(db);
+  const training::SessionReview review = training::load_session_review(*store, db, id);
+  const training::SessionInfo& info = review.stored.info;
+  const fs::path json = training::export_session(review.stored, out);
   std::printf("wrote %s and %s\n", json.c_str(), fs::path(json).replace_extension(".csv").c_str());
   if (!info.complete) {
     std::printf("session %lld is incomplete (its run ended before the task did, or is still going): exported what is "
@@ -53,7 +53,7 @@ int run_report(ArgList& args) {
   engine::VulkanContext context(engine::ContextOptions{});
   ui::SessionTableState table;
   table.selected = id;
-  const std::vector<ui::SessionInfo> sessions = store->sessions();
+  const std::vector<training::SessionInfo> sessions = store->sessions();
   const VkExtent2D table_size{960, 360}, detail_size{820, 1380}, plot_size{900, 320}, replay_size{1280, 720};
   write_picture(out / "review_table.png", ui::panel_picture(context, table_size, [&] {
                   ui::draw_session_table(sessions, table, whole(table_size));
@@ -71,7 +71,7 @@ int run_report(ArgList& args) {
     return 1;
   }
   const char* const names[] = {"plot_force.png", "plot_lateral_load.png", "plot_depth.png", "plot_tracking_error.png"};
-  const std::vector<const ui::Plot*> plots = review.plots.all();
+  const std::vector<const training::Plot*> plots = review.plots.all();
   for (size_t k = 0; k < plots.size(); ++k) {
     if (plots[k]->lines.empty()) {
       std::printf("no %s: %s\n", names[k], plots[k]->missing.c_str());

@@ -13,7 +13,7 @@
 #include "engine/ui_pass.hpp"
 #include "ui/review_panels.hpp"
 #include "ui/review_replay.hpp"
-#include "ui/sessions/session_export.hpp"
+#include "training/sessions/session_export.hpp"
 #include "ui/status_panel.hpp"
 #include "window_frames.hpp"
 
@@ -36,15 +36,15 @@ constexpr auto kRefresh = std::chrono::seconds(2);
 
 // A session to show, loaded when the table's choice changes; the error when it cannot be read.
 struct Loaded {
-  std::optional<ui::SessionReview> review;
+  std::optional<training::SessionReview> review;
   std::string error;
   int64_t id = 0;
   bool complete = false;
 
   // Loads `id` when it is not the one held, or when it has been completed since.
-  bool update(const ui::SessionStore& store, const fs::path& db, int64_t wanted, const std::vector<ui::SessionInfo>& list) {
+  bool update(const training::SessionStore& store, const fs::path& db, int64_t wanted, const std::vector<training::SessionInfo>& list) {
     bool now_complete = false;
-    for (const ui::SessionInfo& s : list) now_complete |= s.id == wanted && s.complete;
+    for (const training::SessionInfo& s : list) now_complete |= s.id == wanted && s.complete;
     if (wanted == id && now_complete == complete) return false;
     id = wanted;
     complete = now_complete;
@@ -52,7 +52,7 @@ struct Loaded {
     error.clear();
     if (wanted == 0) return true;
     try {
-      review = ui::load_session_review(store, db, wanted);
+      review = training::load_session_review(store, db, wanted);
     } catch (const std::exception& e) {
       error = e.what();
     }
@@ -78,7 +78,7 @@ int run_review(ArgList& args) {
         "no display: the review is a window; for a headless export use needle-sim report --session ID --out DIR");
   }
 
-  const std::unique_ptr<ui::SessionStore> store = open_existing_db(options.db);
+  const std::unique_ptr<training::SessionStore> store = open_existing_db(options.db);
   VulkanWindow vw("needle-sim review", options.size);
   engine::Window& window = vw.window;
   engine::VulkanContext& context = vw.context;
@@ -92,7 +92,7 @@ int run_review(ArgList& args) {
 
   ui::SessionTableState table;
   table.selected = options.session;
-  std::vector<ui::SessionInfo> sessions = store->sessions();
+  std::vector<training::SessionInfo> sessions = store->sessions();
   auto refreshed = std::chrono::steady_clock::now();
   Loaded a, b;
   ui::ReplayCursor cursor;
@@ -144,7 +144,7 @@ int run_review(ArgList& args) {
       if (ui::draw_session_detail(*a.review, detail, below)) {
         const fs::path dir = fs::absolute(options.db).parent_path() / "exports";
         try {
-          detail.export_message = "wrote " + ui::export_session(a.review->stored, dir).string() + " and the .csv";
+          detail.export_message = "wrote " + training::export_session(a.review->stored, dir).string() + " and the .csv";
         } catch (const std::exception& e) {
           detail.export_message = e.what();
         }

@@ -13,10 +13,10 @@ std::filesystem::path default_db() {
   return base / "needle-sim" / "sessions.db";
 }
 
-std::unique_ptr<ui::SessionStore> open_existing_db(const std::filesystem::path& file) {
+std::unique_ptr<training::SessionStore> open_existing_db(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file))
     throw std::runtime_error(file.string() + ": no session database (needle-sim run makes one; --db names another)");
-  return std::make_unique<ui::SessionStore>(file);
+  return std::make_unique<training::SessionStore>(file);
 }
 
 }  // namespace needle::cli

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "ui/sessions/session_store.hpp"
+#include "training/sessions/session_store.hpp"
 
 namespace needle::cli {
 
@@ -13,6 +13,6 @@ std::filesystem::path default_db();
 
 // Opens a database that must already exist (review and report never create one); a runtime
 // error naming the file when it does not.
-std::unique_ptr<ui::SessionStore> open_existing_db(const std::filesystem::path& file);
+std::unique_ptr<training::SessionStore> open_existing_db(const std::filesystem::path& file);
 
 }  // namespace needle::cli

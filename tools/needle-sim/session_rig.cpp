@@ -10,7 +10,7 @@
 #include "haptics/realtime/task_space_step.hpp"
 #include "haptics/realtime/teleoperation_step.hpp"
 #include "haptics/recording/session_format.hpp"
-#include "ui/tasks/scripted_operator.hpp"
+#include "training/tasks/scripted_operator.hpp"
 
 namespace needle::cli {
 namespace {
@@ -111,7 +111,7 @@ std::optional<fs::path> recorded_task(const std::string& device) {
   return fs::path(read_context(path, session.header).at("task").get<std::string>());
 }
 
-SessionRig::SessionRig(const ui::Task& task, const RigOptions& options) {
+SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
   if (options.rate_hz) haptics::check_loop_rate(*options.rate_hz);
   const fs::path scenario_file = options.out_dir / "scenario.json";
   json scenario_json;
@@ -119,8 +119,8 @@ SessionRig::SessionRig(const ui::Task& task, const RigOptions& options) {
   const std::string& spec = options.device;
 
   if (spec == "sim") {
-    const fs::path script = ui::operator_script_path(task, options.operator_spec);
-    haptics::Scenario scenario = ui::scenario_with_operator(task, script, scenario_file);
+    const fs::path script = training::operator_script_path(task, options.operator_spec);
+    haptics::Scenario scenario = training::scenario_with_operator(task, script, scenario_file);
     rate_hz_ = options.rate_hz.value_or(1.0 / scenario.period_s);
     sim_ = std::make_unique<haptics::SimSession>(std::move(scenario), rate_hz_);
     device_ = &sim_->device();
@@ -137,7 +137,7 @@ SessionRig::SessionRig(const ui::Task& task, const RigOptions& options) {
       scenario_json = context.at("scenario");
       coupling = context.value("coupling", json(nullptr));
       limits_ = limits_from(context.at("safety_limits"));
-      scenario_ = std::make_unique<haptics::Scenario>(ui::write_scenario(scenario_json, scenario_file));
+      scenario_ = std::make_unique<haptics::Scenario>(training::write_scenario(scenario_json, scenario_file));
       rate_hz_ = replay->header().rate_hz;
       owned_step_ = coupling.is_null() ? std::unique_ptr<haptics::ServoStep>(
                                              std::make_unique<haptics::TeleoperationStep>(*scenario_, 1.0 / rate_hz_))
@@ -162,8 +162,8 @@ SessionRig::SessionRig(const ui::Task& task, const RigOptions& options) {
     }
     owned_device_->open();
     owned_device_->home();
-    scenario_json = ui::task_scenario_json(task);
-    scenario_ = std::make_unique<haptics::Scenario>(ui::write_scenario(scenario_json, scenario_file));
+    scenario_json = training::task_scenario_json(task);
+    scenario_ = std::make_unique<haptics::Scenario>(training::write_scenario(scenario_json, scenario_file));
     rate_hz_ = options.rate_hz.value_or(1000.0);
     const haptics::TaskCoupling task_coupling = coupling_for(spec, options.camera);
     coupling = coupling_json(task_coupling);

@@ -16,7 +16,7 @@
 #include "haptics/realtime/sim_session.hpp"
 #include "haptics/safety/safety_monitor.hpp"
 #include "haptics/sim/scenario.hpp"
-#include "ui/tasks/task.hpp"
+#include "training/tasks/task.hpp"
 
 namespace needle::cli {
 
@@ -36,8 +36,8 @@ std::optional<std::filesystem::path> recorded_task(const std::string& device);
 class SessionRig {
  public:
   // Builds and opens the device (homing a Falcon) and its step. Throws haptics::DeviceError,
-  // RecordingError, ScenarioError or ui::TaskError naming what is wrong.
-  SessionRig(const ui::Task& task, const RigOptions& options);
+  // RecordingError, ScenarioError or training::TaskError naming what is wrong.
+  SessionRig(const training::Task& task, const RigOptions& options);
   ~SessionRig();
   SessionRig(const SessionRig&) = delete;
   SessionRig& operator=(const SessionRig&) = delete;

@@ -14,7 +14,7 @@
 #include "engine/vulkan_context.hpp"
 #include "haptics/safety/fault_cause.hpp"
 #include "ui/guidance_overlay.hpp"
-#include "ui/sessions/session_export.hpp"
+#include "training/sessions/session_export.hpp"
 
 namespace needle::cli {
 namespace fs = std::filesystem;
@@ -68,7 +68,7 @@ TaskSessionOptions with_task_settings(TaskSessionOptions options, const engine::
 
 TaskSession::TaskSession(TaskSessionOptions options)
     : options_(std::move(options)),
-      task_(ui::load_task(options_.task)),
+      task_(training::load_task(options_.task)),
       scene_(engine::load_scene(task_.scene)),
       rig_(std::make_unique<SessionRig>(task_, with_task_settings(options_, scene_).rig)),
       store_(with_folder(options_.db)),
@@ -144,7 +144,7 @@ void TaskSession::stop_threads() {
   if (recorder_) recorder_->stop();  // the last pass: every sample the loop made is scored
 }
 
-const ui::SessionResult& TaskSession::finish() {
+const training::SessionResult& TaskSession::finish() {
   if (result_) return *result_;
   stop_threads();
   if (!recorder_->error().empty()) throw std::runtime_error("recording stopped: " + recorder_->error());
@@ -157,7 +157,7 @@ const ui::SessionResult& TaskSession::finish() {
   }
   store_.finish_session(session_, *result_);
   const fs::path score_file = options_.out_dir / "score.json";
-  nlohmann::json score = ui::result_json(*result_);
+  nlohmann::json score = training::result_json(*result_);
   score["recording"] = recording_path_.string();
   std::ofstream(score_file) << score.dump(2) << "\n";
   std::printf("score %.0f / 100: %s\n", result_->score.total, result_->score.passed ? "passed" : "not passed");
@@ -178,7 +178,7 @@ void TaskSession::draw_panel(std::optional<size_t> step) const {
   view.step_metrics = scorer_.step_metrics(std::min(step.value_or(scorer_.progress().current_step()), task_.steps.size() - 1));
   const double* f = last_.environment_force_n;
   view.force_N = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-  if (last_.contact == haptics::ContactState::kTissue) view.lateral_N = ui::lateral_load_N(last_);
+  if (last_.contact == haptics::ContactState::kTissue) view.lateral_N = training::lateral_load_N(last_);
   const haptics::LoopStatsSummary stats = loop_->stats();
   view.loop_rate_hz = loop_->running() ? stats.rate_hz : rig_->rate_hz();
   if (last_.fault != 0) view.fault = haptics::fault_cause_name(static_cast<haptics::FaultCause>(last_.fault));
@@ -187,7 +187,7 @@ void TaskSession::draw_panel(std::optional<size_t> step) const {
   ui::draw_trainee_panel(view);
   if (result_) return;
   ui::draw_guidance({&task_, std::min(step.value_or(scorer_.progress().current_step()), task_.steps.size() - 1),
-                     ui::vec3(last_.needle_tip_m), scene_.camera});
+                     training::vec3(last_.needle_tip_m), scene_.camera});
 }
 
 int run_task_headless(TaskSessionOptions options, Size2 size, int msaa) {

@@ -19,7 +19,7 @@
 #include "haptics/realtime/haptic_loop.hpp"
 #include "haptics/recording/session_recorder.hpp"
 #include "session_rig.hpp"
-#include "ui/sessions/session_store.hpp"
+#include "training/sessions/session_store.hpp"
 #include "ui/trainee_panel.hpp"
 
 namespace needle::cli {
@@ -41,7 +41,7 @@ class TaskSession {
   TaskSession(const TaskSession&) = delete;
   TaskSession& operator=(const TaskSession&) = delete;
 
-  const ui::Task& task() const { return task_; }
+  const training::Task& task() const { return task_; }
   const engine::Scene& scene() const { return scene_; }
   haptics::MouseDevice* mouse() { return rig_->mouse(); }
   // Seconds the session lasts when its device has an end (script, recording), else nullopt.
@@ -56,7 +56,7 @@ class TaskSession {
   bool over() const;
 
   // Stops the threads, scores, stores the session as complete, writes OUT/score.json. Once.
-  const ui::SessionResult& finish();
+  const training::SessionResult& finish();
 
   engine::NeedleLoad needle() const;
   // The trainee panel of now (with the result once finished), describing `step` when given.
@@ -68,23 +68,23 @@ class TaskSession {
   void stop_threads();
 
   TaskSessionOptions options_;
-  ui::Task task_;
+  training::Task task_;
   engine::Scene scene_;
   std::unique_ptr<SessionRig> rig_;
-  ui::SessionStore store_;
+  training::SessionStore store_;
   std::filesystem::path recording_path_;
   int64_t session_ = 0;
   std::unique_ptr<haptics::HapticLoop> loop_;
   std::unique_ptr<haptics::SessionRecorder> recorder_;
 
   mutable std::mutex mutex_;  // between the recorder's thread (consume) and the UI thread
-  ui::SessionScorer scorer_;
+  training::SessionScorer scorer_;
   engine::NeedleTracker tracker_;
   engine::NeedleLoad needle_;
   haptics::ToolSnapshot last_;
   uint64_t consumed_ = 0;
   std::vector<size_t> ended_steps_;  // steps ended since run_offline last looked
-  std::optional<ui::SessionResult> result_;
+  std::optional<training::SessionResult> result_;
 };
 
 // Headless: runs the session through, writing OUT/step_<n>_<id>.png as each step ends,

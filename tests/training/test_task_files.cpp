@@ -1,0 +1,233 @@
+// Task files: the shipped thesis tasks load and agree with the thesis geometry; every kind of
+// mistake is an error naming the file and the JSON pointer.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "training/tasks/task.hpp"
+
+namespace needle::training {
+namespace {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const fs::path kTasks = fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks";
+const Vec3 kCentre{0.4, 0.0, 0.0};  // thesis sphere, section 4.1
+constexpr double kRadius = 0.1;
+
+TEST(TaskFiles, RigidSphereFollowsTheThesisExperiment) {
+  const Task t = load_task(kTasks / "rigid_sphere.json");
+  ASSERT_EQ(t.steps.size(), 4u);
+  EXPECT_EQ(t.steps[0].condition.type, ConditionType::kTipNear);
+  EXPECT_EQ(t.steps[1].condition.type, ConditionType::kAxisAligned);
+  EXPECT_EQ(t.steps[2].condition.type, ConditionType::kForceHeld);
+  EXPECT_EQ(t.steps[3].condition.type, ConditionType::kWithdrawn);
+  EXPECT_EQ(t.steps[0].condition.contact, ContactRequirement::kRigidSurface);
+  EXPECT_TRUE(fs::is_regular_file(t.scene));
+  EXPECT_TRUE(fs::is_regular_file(t.scenario));
+  const Marker& contact = t.markers[t.marker_index("contact_point")];
+  EXPECT_NEAR(distance(contact.position, kCentre), kRadius, 1e-9);  // on the surface
+  const Marker& normal = t.markers[t.marker_index("sphere_normal")];
+  EXPECT_EQ(normal.kind, MarkerKind::kSurfaceNormal);
+  EXPECT_EQ(t.steps[1].guidance.normal_markers, t.marker_index("sphere_normal"));
+  EXPECT_NEAR(t.steps[1].condition.within_rad, 6.0 * std::numbers::pi / 180.0, 1e-12);
+}
+
+TEST(TaskFiles, PenetrableSphereFollowsTheThesisExperiment) {
+  const Task t = load_task(kTasks / "penetrable_sphere.json");
+  ASSERT_EQ(t.steps.size(), 5u);
+  const Marker& entry = t.markers[t.marker_index("entry")];
+  const Marker& insertion = t.markers[t.marker_index("insertion_axis")];
+  const Marker& pivot = t.markers[t.marker_index("pivot_axis")];
+  const Marker& target = t.markers[t.marker_index("target")];
+  EXPECT_NEAR(distance(entry.position, kCentre), kRadius, 1e-5);
+  EXPECT_NEAR(norm(insertion.direction), 1.0, 1e-12);
+  // The insertion axis points into the sphere along the inward normal at the entry.
+  EXPECT_NEAR(dot(insertion.direction, (1.0 / kRadius) * (kCentre - entry.position)), 1.0, 1e-4);
+  // The pivot happens at the tip after 3 cm of insertion, and turns the needle by 45 degrees.
+  const Vec3 pivot_point = insertion.position + 0.03 * insertion.direction;
+  EXPECT_NEAR(distance(pivot_point, pivot.position), 0.0, 1e-4);
+  EXPECT_NEAR(angle_between(insertion.direction, pivot.direction), std::numbers::pi / 4, 1e-4);
+  // The target lies on the pivot axis, 2 cm further, inside the sphere.
+  EXPECT_NEAR(distance(pivot.position + 0.02 * pivot.direction, target.position), 0.0, 1e-9);
+  EXPECT_LT(distance(target.position, kCentre), kRadius);
+  EXPECT_DOUBLE_EQ(t.steps[2].tip_fixed_within_m, 0.005);
+  EXPECT_EQ(t.steps[3].condition.contact, ContactRequirement::kTissue);  // target_reached implies tissue
+  EXPECT_EQ(t.steps[1].guidance.depth_gauge, t.marker_index("insertion_axis"));
+}
+
+TEST(TaskFiles, NormalMarkersStandOnTheOutwardNormalAtTheContact) {
+  const Task t = load_task(kTasks / "rigid_sphere.json");
+  const Marker& sphere = t.markers[t.marker_index("sphere_normal")];
+  const Vec3 tip{0.3448, 0.0, 0.0736};  // inside, on the ray through (-0.6, 0, 0.8)
+  const auto points = normal_marker_positions(t, sphere, tip);
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 expected{0.4 - 0.6 * (0.1 + 0.02 * (k + 1)), 0.0, 0.8 * (0.1 + 0.02 * (k + 1))};
+    EXPECT_NEAR(distance(points[k], expected), 0.0, 1e-12) << k;
+  }
+  const Vec3 inward = planned_direction(sphere, tip);
+  EXPECT_NEAR(distance(inward, Vec3{0.6, 0.0, -0.8}), 0.0, 1e-12);
+}
+
+// A small valid task, written next to the test output so that "../" paths resolve.
+json valid_task() {
+  return json::parse(R"({
+    "name": "t", "scene": ")" +
+                     (kTasks / "../scenes/thesis_sphere.json").string() + R"(",
+    "markers": [{"name": "p", "point": [0, 0, 0]}, {"name": "a", "axis": {"origin": [0, 0, 0], "direction": [0, 0, 2]}}],
+    "steps": [
+      {"id": "s0", "instruction": "go", "condition": {"type": "tip_near", "marker": "p", "within_m": 0.01}},
+      {"id": "s1", "instruction": "in", "condition": {"type": "depth_in_band", "marker": "a", "min": 0.01, "max": 0.02},
+       "guidance": {"depth_gauge": "a"}}
+    ]})");
+}
+
+fs::path write_task(const json& task, const std::string& name) {
+  const fs::path dir = fs::path(NEEDLE_TEST_OUTPUT_DIR) / "tasks";
+  fs::create_directories(dir);
+  const fs::path file = dir / (name + ".json");
+  std::ofstream(file) << task.dump(2);
+  return file;
+}
+
+// Loading `task` fails with a message holding the file, the pointer and `what`.
+void expect_error(const json& task, const std::string& name, const std::string& pointer, const std::string& what) {
+  const fs::path file = write_task(task, name);
+  try {
+    load_task(file);
+    ADD_FAILURE() << name << ": loaded without error";
+  } catch (const TaskError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(file.string() + ": " + pointer + ": "), std::string::npos) << message;
+    EXPECT_NE(message.find(what), std::string::npos) << message;
+  }
+}
+
+// A weights block with every weight 0 but these three (an absent key keeps its default).
+json weights(double completion, double tip_error, double retries) {
+  json w;
+  for (const char* key :
+       {"axis_deviation", "lateral_load", "peak_force", "force_steadiness", "path_efficiency", "smoothness", "time"})
+    w[key] = 0;
+  w["completion"] = completion, w["tip_error"] = tip_error, w["retries"] = retries;
+  return w;
+}
+
+TEST(TaskFiles, TheSmallValidTaskLoads) {
+  const Task t = load_task(write_task(valid_task(), "valid"));
+  EXPECT_NEAR(t.markers[1].direction[2], 1.0, 1e-15);  // normalized
+  EXPECT_DOUBLE_EQ(t.scoring.weights.completion, 30.0);
+}
+
+TEST(TaskFiles, ErrorsNameTheFileAndThePointer) {
+  json j = valid_task();
+  j["steps"][0]["condition"]["type"] = "juggle";
+  expect_error(j, "unknown_type", "/steps/0/condition/type", "unknown step type \"juggle\"");
+
+  j = valid_task();
+  j["steps"][0]["condition"]["marker"] = "nowhere";
+  expect_error(j, "unknown_marker", "/steps/0/condition/marker", "no marker named \"nowhere\"");
+
+  j = valid_task();
+  j["steps"][0]["condition"]["within_m"] = -0.01;
+  expect_error(j, "negative_distance", "/steps/0/condition/within_m", "must be > 0");
+
+  j = valid_task();
+  j["steps"][0]["condition"]["marker"] = "a";
+  expect_error(j, "wrong_kind", "/steps/0/condition/marker", "is not a point");
+
+  j = valid_task();
+  j["steps"][1]["condition"]["max"] = 0.005;
+  expect_error(j, "empty_band", "/steps/1/condition/max", "must be greater than min");
+
+  j = valid_task();
+  j["steps"][1]["condition"]["type"] = "force_held";
+  j["steps"][1]["condition"].erase("marker");
+  j["steps"][1].erase("guidance");
+  expect_error(j, "force_without_hold", "/steps/1/condition/hold_s", "missing");
+
+  j = valid_task();
+  j["steps"][0]["guidance"] = {{"depth_gauge", "a"}};
+  expect_error(j, "gauge_without_depth", "/steps/0/guidance/depth_gauge", "needs a depth_in_band");
+
+  j = valid_task();
+  j["steps"][0]["time_limit_s"] = "soon";
+  expect_error(j, "string_time", "/steps/0/time_limit_s", "expected a number");
+
+  j = valid_task();
+  j["steps"][1]["id"] = "s0";
+  expect_error(j, "duplicate_step", "/steps/1/id", "used twice");
+
+  j = valid_task();
+  j["markers"][1]["name"] = "p";
+  expect_error(j, "duplicate_marker", "/markers/1/name", "used twice");
+
+  j = valid_task();
+  j["markers"][1]["axis"]["direction"] = {0, 0, 0};
+  expect_error(j, "zero_axis", "/markers/1/axis/direction", "zero vector");
+
+  j = valid_task();
+  j["markers"][0]["axis"] = j["markers"][1]["axis"];
+  expect_error(j, "two_kinds", "/markers/0", "exactly one of");
+
+  j = valid_task();
+  j["steps"][0]["colour"] = "red";
+  expect_error(j, "unknown_key", "/steps/0/colour", "unknown key");
+
+  j = valid_task();
+  j["scene"] = "no_such_scene.json";
+  expect_error(j, "missing_scene", "/scene", "file not found");
+
+  j = valid_task();
+  j["steps"] = json::array();
+  expect_error(j, "no_steps", "/steps", "non-empty array");
+
+  j = valid_task();
+  j["scoring"] = {{"weights", weights(0, 0, 0)}};
+  expect_error(j, "zero_weights", "/scoring/weights", "add up to 0");
+
+  j = valid_task();
+  j["scoring"] = {{"pass_score", 120}};
+  expect_error(j, "pass_over_100", "/scoring/pass_score", "[0, 100]");
+
+  j = valid_task();
+  j["steps"][0]["condition"]["contact"] = "bone";
+  expect_error(j, "bad_contact", "/steps/0/condition/contact", "expected any, free, rigid or tissue");
+}
+
+TEST(TaskFiles, WeightsAreNormalizedToOneHundred) {
+  json j = valid_task();
+  j["scoring"] = {{"weights", weights(1, 1, 2)}};
+  const Task t = load_task(write_task(j, "weights"));
+  EXPECT_DOUBLE_EQ(t.scoring.weights.completion, 25.0);
+  EXPECT_DOUBLE_EQ(t.scoring.weights.retries, 50.0);
+}
+
+TEST(TaskFiles, UnreadableAndMalformedFilesNameTheFile) {
+  EXPECT_THROW(
+      {
+        try {
+          load_task("/nonexistent/task.json");
+        } catch (const TaskError& e) {
+          EXPECT_NE(std::string(e.what()).find("/nonexistent/task.json: /: file not found"), std::string::npos);
+          throw;
+        }
+      },
+      TaskError);
+  const fs::path file = fs::path(NEEDLE_TEST_OUTPUT_DIR) / "tasks" / "broken.json";
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << "{\"name\": ";
+  try {
+    load_task(file);
+    ADD_FAILURE() << "loaded";
+  } catch (const TaskError& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string() + ": /: not valid JSON"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace needle::training

@@ -1,0 +1,30 @@
+// The scoring metrics of one step or of a whole session (formulas and units in docs/SCORING.md).
+// NaN marks a metric that does not apply (no target in the step, no held force, too few samples).
+#pragma once
+
+#include <cstdint>
+#include <limits>
+
+namespace needle::training {
+
+inline constexpr double kNotApplicable = std::numeric_limits<double>::quiet_NaN();
+
+struct Metrics {
+  double duration_s = 0.0;
+  double tip_error_m = kNotApplicable;         // tip to the target marker at the end
+  double axis_deviation_deg = kNotApplicable;  // needle axis to the planned axis
+  double lateral_load_Ns = 0.0;                // integral of |lateral multipliers| in tissue
+  double lateral_peak_N = 0.0;                 // peak |lateral multipliers| in tissue
+  double peak_force_N = 0.0;                   // peak |environment force|
+  double force_sd_N = kNotApplicable;          // steadiness while holding a force
+  double path_length_m = 0.0;                  // tip path
+  double ideal_path_m = 0.0;                   // straight line, start to end
+  double normalized_jerk = kNotApplicable;     // dimensionless, sqrt(T^5 / (2 L^2) * integral |jerk|^2)
+  uint32_t withdrawals = 0;                    // tissue -> free
+  uint32_t reinsertions = 0;                   // free -> tissue after a first insertion
+  uint32_t rigid_contacts = 0;                 // entries into a rigid surface the step did not ask for
+  uint32_t faults = 0;                         // safety faults latched
+  uint32_t first_fault = 0;                    // haptics::FaultCause of the first, 0 when none
+};
+
+}  // namespace needle::training

@@ -1,0 +1,97 @@
+#include "training/scoring/score.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace needle::training {
+
+namespace {
+
+double clamp01(double x) { return std::clamp(x, 0.0, 1.0); }
+
+// 1 at zero, falling linearly to 0 at the reference; 1 when the metric does not apply.
+double falling(double value, double reference) { return std::isnan(value) ? 1.0 : clamp01(1.0 - value / reference); }
+
+// Mean of the applicable (non-NaN) values; NaN when none.
+template <class Get>
+double mean_applicable(const std::vector<StepResult>& steps, Get get) {
+  double sum = 0.0;
+  int n = 0;
+  for (const StepResult& s : steps)
+    if (const double v = get(s.metrics); !std::isnan(v)) sum += v, ++n;
+  return n ? sum / n : kNotApplicable;
+}
+
+std::string format(double x) {
+  std::ostringstream out;
+  out.precision(3);
+  out << x;
+  return out.str();
+}
+
+// Smoothness on a log scale (normalized jerk spans orders of magnitude): 1 at the minimum-jerk
+// profile's sqrt(360), 0 at the reference.
+double smoothness(double normalized_jerk, double reference) {
+  if (std::isnan(normalized_jerk)) return 1.0;
+  const double minimum = std::sqrt(360.0);
+  return clamp01(1.0 - std::log(std::max(normalized_jerk, minimum) / minimum) / std::log(reference / minimum));
+}
+
+}  // namespace
+
+Metrics combine_metrics(const std::vector<StepResult>& steps) {
+  Metrics m;
+  for (const StepResult& s : steps) {
+    const Metrics& x = s.metrics;
+    m.duration_s += x.duration_s;
+    m.lateral_load_Ns += x.lateral_load_Ns;
+    m.lateral_peak_N = std::max(m.lateral_peak_N, x.lateral_peak_N);
+    m.peak_force_N = std::max(m.peak_force_N, x.peak_force_N);
+    m.path_length_m += x.path_length_m;
+    m.ideal_path_m += x.ideal_path_m;
+    m.withdrawals += x.withdrawals;
+    m.reinsertions += x.reinsertions;
+    m.rigid_contacts += x.rigid_contacts;
+    if (m.faults == 0) m.first_fault = x.first_fault;
+    m.faults += x.faults;
+  }
+  m.tip_error_m = mean_applicable(steps, [](const Metrics& x) { return x.tip_error_m; });
+  m.axis_deviation_deg = mean_applicable(steps, [](const Metrics& x) { return x.axis_deviation_deg; });
+  m.force_sd_N = mean_applicable(steps, [](const Metrics& x) { return x.force_sd_N; });
+  m.normalized_jerk = mean_applicable(steps, [](const Metrics& x) { return x.normalized_jerk; });
+  return m;
+}
+
+Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& steps, const Metrics& m) {
+  const ScoreWeights& w = spec.weights;
+  const ScoreReferences& r = spec.references;
+  const long completed = std::count_if(steps.begin(), steps.end(),
+                                       [](const StepResult& s) { return s.record.outcome == StepOutcome::kCompleted; });
+  const double peak = m.peak_force_N, safe = spec.safe_force_N;
+  Score score;
+  score.components = {
+      {"completion", steps.empty() ? 0.0 : double(completed) / double(steps.size()), w.completion},
+      {"tip_error", falling(m.tip_error_m, r.tip_error_m), w.tip_error},
+      {"axis_deviation", falling(m.axis_deviation_deg, r.axis_deviation_deg), w.axis_deviation},
+      {"lateral_load", falling(m.lateral_load_Ns, r.lateral_load_Ns), w.lateral_load},
+      {"peak_force", peak <= safe ? 1.0 : clamp01(1.0 - (peak - safe) / safe), w.peak_force},
+      {"force_steadiness", falling(m.force_sd_N, r.force_sd_N), w.force_steadiness},
+      {"path_efficiency", m.path_length_m > 0.0 ? clamp01(m.ideal_path_m / m.path_length_m) : 1.0, w.path_efficiency},
+      {"smoothness", smoothness(m.normalized_jerk, r.normalized_jerk), w.smoothness},
+      {"time", m.duration_s <= r.time_s ? 1.0 : r.time_s / m.duration_s, w.time},
+      {"retries", 1.0 / (1.0 + m.reinsertions + m.rigid_contacts), w.retries},
+  };
+  for (const ScoreComponent& c : score.components) score.total += c.points();
+  if (score.total < spec.pass_score)
+    score.reasons_failed.push_back("score " + format(score.total) + " below the pass mark " + format(spec.pass_score));
+  if (completed < long(steps.size()))
+    score.reasons_failed.push_back(std::to_string(steps.size() - completed) + " step(s) not completed");
+  if (m.faults > 0) score.reasons_failed.push_back(std::to_string(m.faults) + " safety fault(s)");
+  if (peak > safe)
+    score.reasons_failed.push_back("peak force " + format(peak) + " N above the safe limit " + format(safe) + " N");
+  score.passed = score.reasons_failed.empty();
+  return score;
+}
+
+}  // namespace needle::training

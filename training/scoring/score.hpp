@@ -1,0 +1,40 @@
+// The overall score 0-100 from a session's metrics: a weighted sum of components in [0, 1]
+// (weights and references from the task's scoring block; docs/SCORING.md).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "training/scoring/metrics.hpp"
+#include "training/tasks/task.hpp"
+#include "training/tasks/task_progress.hpp"
+
+namespace needle::training {
+
+struct ScoreComponent {
+  std::string name;     // "completion", "tip_error", ... (the ScoreWeights names)
+  double value = 0.0;   // in [0, 1]
+  double weight = 0.0;  // points it is worth (the weights add up to 100)
+  double points() const { return value * weight; }
+};
+
+struct Score {
+  double total = 0.0;  // 0-100
+  bool passed = false;
+  std::vector<ScoreComponent> components;
+  std::vector<std::string> reasons_failed;  // empty when passed
+};
+
+struct StepResult {
+  std::string id;
+  StepRecord record;
+  Metrics metrics;
+};
+
+// `overall` is the session's metrics (combine_metrics of the steps).
+Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& steps, const Metrics& overall);
+
+// Session metrics from the steps' (docs/SCORING.md, "overall").
+Metrics combine_metrics(const std::vector<StepResult>& steps);
+
+}  // namespace needle::training

@@ -1,0 +1,75 @@
+#include "training/scoring/step_metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace needle::training {
+
+double lateral_load_N(const haptics::ToolSnapshot& state) {
+  if (state.contact != haptics::ContactState::kTissue) return 0.0;
+  double sum = 0.0;
+  for (uint32_t i = 0; i < std::min<uint32_t>(state.multiplier_count, haptics::kMaxMultipliers); ++i)
+    sum += state.multipliers[i] * state.multipliers[i];
+  return std::sqrt(sum);
+}
+
+StepMetricsAccumulator::StepMetricsAccumulator(const Task& task, const Step& step) : task_(task), step_(step) {
+  const Condition& c = step.condition;
+  target_ = c.type == ConditionType::kTargetReached ? c.marker : step.guidance.target;
+  deviation_at_end_ = c.type == ConditionType::kAxisAligned;
+  axis_ = deviation_at_end_ ? c.marker : step.guidance.axis;
+  planned_rigid_ = c.contact == ContactRequirement::kRigidSurface;
+}
+
+void StepMetricsAccumulator::add(const haptics::ToolSnapshot& state, const ContactEvents& events) {
+  const double t = state.time_s;
+  const double dt = samples_ ? t - t_prev_ : 0.0;
+  tip_ = vec3(state.needle_tip_m);
+  path_.add(t, tip_);
+  if (axis_ >= 0) {
+    last_deviation_rad_ =
+        angle_between(haptics::needle_axis(state), planned_direction(task_.markers[axis_], tip_));
+    deviation_sq_sum_ += last_deviation_rad_ * last_deviation_rad_;
+  }
+  const double lateral = lateral_load_N(state);
+  m_.lateral_load_Ns += 0.5 * (lateral + lateral_prev_) * dt;  // trapezoid
+  m_.lateral_peak_N = std::max(m_.lateral_peak_N, lateral);
+  lateral_prev_ = lateral;
+  const double force = norm(vec3(state.environment_force_n));
+  m_.peak_force_N = std::max(m_.peak_force_N, force);
+  if (step_.condition.type == ConditionType::kForceHeld) {
+    in_band_seen_ = in_band_seen_ || (force >= step_.condition.min && force <= step_.condition.max);
+    if (in_band_seen_) {
+      const double delta = force - force_mean_;
+      force_mean_ += delta / static_cast<double>(++force_n_);
+      force_m2_ += delta * (force - force_mean_);
+    }
+  }
+  m_.withdrawals += events.withdrawal;
+  m_.reinsertions += events.reinsertion;
+  m_.rigid_contacts += events.rigid_entry && !planned_rigid_;
+  if (events.fault) {
+    if (m_.faults++ == 0) m_.first_fault = state.fault;
+  }
+  t_prev_ = t;
+  ++samples_;
+}
+
+Metrics StepMetricsAccumulator::result() const {
+  Metrics m = m_;
+  m.duration_s = path_.duration_s();
+  m.path_length_m = path_.length_m();
+  m.ideal_path_m = path_.chord_m();
+  m.normalized_jerk = path_.normalized_jerk();
+  if (samples_ == 0) return m;
+  if (target_ >= 0) m.tip_error_m = distance(tip_, task_.markers[target_].position);
+  if (axis_ >= 0) {
+    const double rad = deviation_at_end_ ? last_deviation_rad_ : std::sqrt(deviation_sq_sum_ / double(samples_));
+    m.axis_deviation_deg = rad * 180.0 / std::numbers::pi;
+  }
+  if (force_n_ > 0) m.force_sd_N = std::sqrt(force_m2_ / double(force_n_));
+  return m;
+}
+
+}  // namespace needle::training

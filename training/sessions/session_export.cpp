@@ -1,0 +1,127 @@
+#include "training/sessions/session_export.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "training/scoring/metric_fields.hpp"
+
+namespace needle::training {
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+json number(double x) { return std::isnan(x) ? json(nullptr) : json(x); }
+
+json metrics_json(const Metrics& m) {
+  json out = json::object();
+  for_each_metric(m, [&](const char* name, const auto& value) {
+    if constexpr (std::is_floating_point_v<std::decay_t<decltype(value)>>)
+      out[name] = number(value);
+    else
+      out[name] = value;
+  });
+  return out;
+}
+
+json steps_json(const std::vector<StepResult>& steps) {
+  json out = json::array();
+  for (const StepResult& s : steps)
+    out.push_back({{"id", s.id},
+                   {"outcome", step_outcome_name(s.record.outcome)},
+                   {"start_s", number(s.record.start_s)},
+                   {"end_s", number(s.record.end_s)},
+                   {"metrics", metrics_json(s.metrics)}});
+  return out;
+}
+
+json components_json(const std::vector<ScoreComponent>& components) {
+  json out = json::array();
+  for (const ScoreComponent& c : components)
+    out.push_back({{"name", c.name}, {"value", c.value}, {"weight", c.weight}, {"points", c.points()}});
+  return out;
+}
+
+// A CSV field: quoted when it holds a comma, a quote or a line break.
+std::string field(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+std::string csv_number(double x) {
+  if (std::isnan(x)) return "";
+  std::ostringstream out;
+  out.precision(17);
+  out << x;
+  return out.str();
+}
+
+void write_file(const fs::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary);
+  out << text;
+  if (!out.flush()) throw std::runtime_error(file.string() + ": cannot write the file");
+}
+
+}  // namespace
+
+json result_json(const SessionResult& result) {
+  return {{"score", result.score.total},
+          {"passed", result.score.passed},
+          {"reasons_failed", result.score.reasons_failed},
+          {"components", components_json(result.score.components)},
+          {"metrics", metrics_json(result.overall)},
+          {"steps", steps_json(result.steps)}};
+}
+
+json session_json(const StoredSession& s) {
+  const SessionInfo& i = s.info;
+  return {{"session",
+           {{"id", i.id},
+            {"trainee", i.trainee},
+            {"task", i.task},
+            {"device", i.device},
+            {"started_at", i.started_at},
+            {"ended_at", i.ended_at},
+            {"complete", i.complete},
+            {"duration_s", i.duration_s},
+            {"recording_path", i.recording_path}}},
+          {"score", i.score},
+          {"passed", i.passed},
+          {"components", components_json(s.components)},
+          {"metrics", metrics_json(s.overall)},
+          {"steps", steps_json(s.steps)}};
+}
+
+std::string session_csv(const StoredSession& s) {
+  std::string out = "session_id,step_index,step_id,outcome,start_s,end_s,metric,value\n";
+  const std::string id = std::to_string(s.info.id);
+  const auto rows = [&](const std::string& prefix, const Metrics& m) {
+    for_each_metric(m, [&](const char* name, const auto& value) {
+      out += prefix + name + "," + csv_number(static_cast<double>(value)) + "\n";
+    });
+  };
+  for (size_t k = 0; k < s.steps.size(); ++k) {
+    const StepResult& step = s.steps[k];
+    rows(id + "," + std::to_string(k) + "," + field(step.id) + "," + step_outcome_name(step.record.outcome) + "," +
+             csv_number(step.record.start_s) + "," + csv_number(step.record.end_s) + ",",
+         step.metrics);
+  }
+  rows(id + ",-1,session," + (s.info.complete ? "complete" : "incomplete") + ",,,", s.overall);
+  return out;
+}
+
+fs::path export_session(const StoredSession& session, const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw std::runtime_error(dir.string() + ": cannot create the folder: " + ec.message());
+  const std::string stem = "session_" + std::to_string(session.info.id);
+  const fs::path json_file = dir / (stem + ".json");
+  write_file(json_file, session_json(session).dump(2) + "\n");
+  write_file(dir / (stem + ".csv"), session_csv(session));
+  return json_file;
+}
+
+}  // namespace needle::training

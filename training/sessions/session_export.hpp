@@ -1,0 +1,25 @@
+// A session's metrics and per-step results as JSON and CSV: what `needle-sim report` writes,
+// and (result_json) the run's score.json. Formats in docs/SESSIONS.md, "Export".
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "training/sessions/session_store.hpp"
+
+namespace needle::training {
+
+// {"score", "passed", "reasons_failed", "components", "metrics", "steps"}; NaN is null.
+nlohmann::json result_json(const SessionResult& result);
+// The same keys for a stored session, plus "session" (who, what, when, device, recording).
+nlohmann::json session_json(const StoredSession& session);
+// Long format, one row per metric: session_id,step_index,step_id,outcome,start_s,end_s,metric,value
+// (step_index -1 and step_id "session" for the whole session; empty value: does not apply).
+std::string session_csv(const StoredSession& session);
+
+// Writes session_<id>.json and session_<id>.csv into `dir` (created if needed); returns the
+// JSON's path. Throws std::runtime_error naming the file it could not write.
+std::filesystem::path export_session(const StoredSession& session, const std::filesystem::path& dir);
+
+}  // namespace needle::training

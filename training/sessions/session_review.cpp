@@ -1,0 +1,55 @@
+#include "training/sessions/session_review.hpp"
+
+#include "haptics/recording/session_format.hpp"
+
+namespace needle::training {
+namespace fs = std::filesystem;
+
+fs::path resolve_recording(const fs::path& db_file, const std::string& recording_path) {
+  const fs::path given(recording_path);
+  if (given.is_absolute()) return given;
+  const fs::path beside_db = fs::absolute(db_file).parent_path() / given;
+  if (!fs::exists(beside_db) && fs::exists(given)) return fs::absolute(given);
+  return beside_db;
+}
+
+SessionReview load_session_review(const SessionStore& store, const fs::path& db_file, int64_t id) {
+  SessionReview r;
+  r.stored = store.load(id);
+  const SessionInfo& info = r.stored.info;
+  if (info.task_source.empty()) {
+    r.task_problem = "the database names no file for task " + info.task;
+  } else {
+    try {
+      r.task = load_task(info.task_source);
+    } catch (const std::exception& e) {
+      r.task_problem = e.what();
+    }
+  }
+  std::vector<haptics::TickSample> samples;
+  if (info.recording_path.empty()) {
+    r.recording_problem = "no recording (the session was stored without one)";
+  } else {
+    r.recording_file = resolve_recording(db_file, info.recording_path);
+    try {
+      haptics::Session session = haptics::read_session(r.recording_file.string());
+      samples = std::move(session.records);
+      r.recording_trailing_bytes = session.trailing_bytes;
+      if (samples.empty()) r.recording_problem = r.recording_file.string() + ": the recording has no samples";
+    } catch (const std::exception& e) {
+      r.recording_problem = e.what();
+      if (!fs::exists(r.recording_file)) r.recording_problem = r.recording_file.string() + ": recording not found";
+    }
+  }
+  r.plots = session_plots(samples, r.task ? &*r.task : nullptr);
+  if (!r.has_recording()) {
+    for (Plot* p : {&r.plots.force, &r.plots.lateral, &r.plots.depth, &r.plots.tracking}) p->missing = r.recording_problem;
+  } else if (!r.task) {
+    r.plots.depth.missing = r.task_problem;
+  }
+  r.states.reserve(samples.size());
+  for (const haptics::TickSample& s : samples) r.states.push_back(s.state);
+  return r;
+}
+
+}  // namespace needle::training

@@ -1,0 +1,39 @@
+// One session as the instructor's review shows it: what the store holds, the task it ran
+// (markers for the depth plot, scene for the replay) and its recording turned into plots and
+// replay states. A missing task file or recording is not an error here: the review shows the
+// metrics and says, naming the file, why there are no plots or replay (docs/REVIEW.md).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "training/sessions/session_series.hpp"
+#include "training/sessions/session_store.hpp"
+
+namespace needle::training {
+
+struct SessionReview {
+  StoredSession stored;
+  std::optional<Task> task;
+  std::string task_problem;                    // why `task` is empty
+  std::filesystem::path recording_file;        // resolved; empty when the session names none
+  std::vector<haptics::ToolSnapshot> states;   // the recorded states, for the replay
+  std::string recording_problem;               // why `states` is empty ("no recording", unreadable...)
+  size_t recording_trailing_bytes = 0;         // a last record cut short (the run was killed)
+  SessionPlots plots;
+
+  bool has_recording() const { return recording_problem.empty(); }
+  double start_s() const { return states.empty() ? 0.0 : states.front().time_s; }
+  double end_s() const { return states.empty() ? 0.0 : states.back().time_s; }
+};
+
+// A session's recording path as stored, made absolute: a relative one is taken relative to the
+// database's folder (where runs keep recordings/), else to the current folder when only it exists.
+std::filesystem::path resolve_recording(const std::filesystem::path& db_file, const std::string& recording_path);
+
+// Loads session `id` (SessionStoreError when there is none) with its task and recording.
+SessionReview load_session_review(const SessionStore& store, const std::filesystem::path& db_file, int64_t id);
+
+}  // namespace needle::training

@@ -1,0 +1,37 @@
+// Marker geometry shared by the progress tracker, the scoring and the guidance drawing.
+#include "training/tasks/task.hpp"
+
+namespace needle::training {
+
+int Task::marker_index(const std::string& marker_name) const {
+  for (size_t i = 0; i < markers.size(); ++i)
+    if (markers[i].name == marker_name) return static_cast<int>(i);
+  return -1;
+}
+
+namespace {
+
+// Outward unit normal of the marker's sphere at the surface point nearest `tip` (the tip at the
+// centre itself has no nearest point: take +z there rather than divide by zero).
+Vec3 outward_normal(const Marker& sphere, const Vec3& tip) {
+  const Vec3 r = tip - sphere.position;
+  const double n = norm(r);
+  return n > 1e-12 ? (1.0 / n) * r : Vec3{0.0, 0.0, 1.0};
+}
+
+}  // namespace
+
+Vec3 planned_direction(const Marker& marker, const Vec3& tip) {
+  if (marker.kind == MarkerKind::kSurfaceNormal) return -1.0 * outward_normal(marker, tip);
+  return marker.direction;
+}
+
+std::array<Vec3, 3> normal_marker_positions(const Task& task, const Marker& surface, const Vec3& tip) {
+  const Vec3 n = outward_normal(surface, tip);
+  const Vec3 contact = surface.position + surface.radius_m * n;
+  std::array<Vec3, 3> out;
+  for (int k = 0; k < 3; ++k) out[k] = contact + ((k + 1) * task.normal_marker_spacing_m) * n;
+  return out;
+}
+
+}  // namespace needle::training

@@ -1,0 +1,119 @@
+// A guided needle task (assets/tasks/*.json, docs/TASKS.md): a scene, named markers and an
+// ordered list of steps, each with an instruction, a success condition on the haptic state, an
+// optional time limit and the guidance drawn for it; plus how the task is scored.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "training/tasks/vec3.hpp"
+
+namespace needle::training {
+
+// "FILE: /json/pointer: what is wrong".
+struct TaskError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+enum class MarkerKind {
+  kPoint,          // a position (entry point, target)
+  kAxis,           // a planned needle axis: an origin and a unit direction
+  kSurfaceNormal,  // the inward normal of a sphere at the point nearest the tip (thesis 4.3)
+};
+
+struct Marker {
+  std::string name;
+  MarkerKind kind = MarkerKind::kPoint;
+  Vec3 position{};      // point; axis origin; sphere centre
+  Vec3 direction{};     // axis: unit direction the needle should point along
+  double radius_m = 0;  // surface normal: the sphere's radius
+};
+
+enum class ConditionType {
+  kTipNear,        // tip within `within_m` of a point marker
+  kAxisAligned,    // needle axis within `within_rad` of an axis or surface-normal marker
+  kDepthInBand,    // depth of the tip along an axis marker (from its origin) in [min, max] m
+  kForceHeld,      // |environment force| in [min, max] N, held for hold_s
+  kTargetReached,  // tip within `within_m` of a point marker while inside tissue
+  kWithdrawn,      // no contact and the tip farther than `within_m` from a point marker
+};
+
+enum class ContactRequirement { kAny, kFree, kRigidSurface, kTissue };
+
+struct Condition {
+  ConditionType type = ConditionType::kTipNear;
+  int marker = -1;              // index in Task::markers (every type but force_held)
+  double within_m = 0.0;        // tip_near, target_reached, withdrawn
+  double within_rad = 0.0;      // axis_aligned
+  double min = 0.0, max = 0.0;  // depth (m) or force (N) band
+  double hold_s = 0.0;          // the condition must hold this long without a break
+  ContactRequirement contact = ContactRequirement::kAny;
+};
+
+// What the panels draw during a step; marker indices, -1 when absent.
+struct Guidance {
+  int entry = -1;
+  int axis = -1;
+  int target = -1;
+  int depth_gauge = -1;     // axis marker the gauge measures along (band from the condition)
+  int normal_markers = -1;  // surface-normal marker: the thesis's three spheres at the contact
+};
+
+struct Step {
+  std::string id;
+  std::string instruction;
+  Condition condition;
+  double time_limit_s = 0.0;        // 0: none
+  double tip_fixed_within_m = 0.0;  // 0: the tip may move; else the step fails if it drifts further
+  Guidance guidance;
+};
+
+// Component weights of the overall score (docs/SCORING.md); normalized to 100 on load.
+struct ScoreWeights {
+  double completion = 30, tip_error = 15, axis_deviation = 10, lateral_load = 10, peak_force = 10, force_steadiness = 5,
+         path_efficiency = 5, smoothness = 5, time = 5, retries = 5;
+};
+
+// References at which a component's score reaches 0 (or, for time, starts to drop).
+struct ScoreReferences {
+  double tip_error_m = 0.01;
+  double axis_deviation_deg = 20.0;
+  double lateral_load_Ns = 1.0;
+  double force_sd_N = 0.5;
+  double normalized_jerk = 1e6;  // log scale, from sqrt(360)
+  double time_s = 60.0;
+};
+
+struct ScoringSpec {
+  double safe_force_N = 3.0;
+  double pass_score = 70.0;
+  ScoreWeights weights;
+  ScoreReferences references;
+};
+
+struct Task {
+  std::string name;
+  std::string title;
+  std::string source;              // the file it came from
+  std::filesystem::path scene;     // scene file (docs/SCENE_FORMAT.md), resolved
+  std::filesystem::path scenario;  // haptics scenario (assets/scenarios), resolved; may be empty
+  double normal_marker_spacing_m = 0.02;
+  std::vector<Marker> markers;
+  std::vector<Step> steps;
+  ScoringSpec scoring;
+
+  int marker_index(const std::string& name) const;  // -1 when absent
+};
+
+Task load_task(const std::filesystem::path& file);
+
+// The thesis's three normal markers (section 4.3): points along the outward normal of the
+// surface-normal marker's sphere, at the surface point nearest the tip, 1, 2 and 3 spacings out.
+std::array<Vec3, 3> normal_marker_positions(const Task& task, const Marker& surface, const Vec3& tip);
+
+// The direction the needle should point along for an axis or surface-normal marker, given the tip.
+Vec3 planned_direction(const Marker& marker, const Vec3& tip);
+
+}  // namespace needle::training

@@ -1,0 +1,260 @@
+// Task files (docs/TASKS.md): strict JSON reading (io/strict_json.hpp, shared with scene,
+// scenario and tissue files); every error names the file and the JSON pointer of the culprit.
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <set>
+
+#include "io/strict_json.hpp"
+#include "training/tasks/task.hpp"
+
+namespace needle::training {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+class TaskReader : io::StrictJsonReader<TaskError> {
+ public:
+  TaskReader(std::string file, fs::path folder) : StrictJsonReader(std::move(file)), folder_(std::move(folder)) {}
+
+  Task task(const json& root) {
+    object(root, "", {"name", "title", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps", "scoring"});
+    Task t;
+    t.source = file_;
+    t.name = string(member(root, "", "name"), "/name");
+    t.title = root.contains("title") ? string(root["title"], "/title") : t.name;
+    t.scene = existing_file(member(root, "", "scene"), "/scene", folder_);
+    if (root.contains("scenario")) t.scenario = existing_file(root["scenario"], "/scenario", folder_);
+    if (root.contains("normal_marker_spacing_m"))
+      t.normal_marker_spacing_m = positive(root["normal_marker_spacing_m"], "/normal_marker_spacing_m");
+    const json& markers = member(root, "", "markers");
+    if (!markers.is_array()) fail("/markers", "expected an array of markers");
+    for (size_t i = 0; i < markers.size(); ++i) {
+      const std::string at = "/markers/" + std::to_string(i);
+      t.markers.push_back(marker(markers[i], at));
+      if (std::count_if(t.markers.begin(), t.markers.end(),
+                        [&](const Marker& m) { return m.name == t.markers.back().name; }) > 1)
+        fail(at + "/name", "\"" + t.markers.back().name + "\" is used twice");
+    }
+    const json& steps = member(root, "", "steps");
+    if (!steps.is_array() || steps.empty()) fail("/steps", "expected a non-empty array of steps");
+    std::set<std::string> ids;
+    for (size_t i = 0; i < steps.size(); ++i) {
+      const std::string at = "/steps/" + std::to_string(i);
+      t.steps.push_back(step(t, steps[i], at));
+      if (!ids.insert(t.steps.back().id).second) fail(at + "/id", "\"" + t.steps.back().id + "\" is used twice");
+    }
+    if (root.contains("scoring")) t.scoring = scoring(root["scoring"], "/scoring");
+    return t;
+  }
+
+ private:
+  Vec3 vector(const json& value, const std::string& at) const {
+    if (!value.is_array() || value.size() != 3) fail(at, "expected an array of 3 numbers");
+    Vec3 v;
+    for (size_t k = 0; k < 3; ++k) v[k] = number(value[k], at + "/" + std::to_string(k));
+    return v;
+  }
+
+  Marker marker(const json& value, const std::string& at) const {
+    object(value, at, {"name", "point", "axis", "surface_normal"});
+    Marker m;
+    m.name = string(member(value, at, "name"), at + "/name");
+    const int kinds =
+        int(value.contains("point")) + int(value.contains("axis")) + int(value.contains("surface_normal"));
+    if (kinds != 1) fail(at, "expected exactly one of point, axis or surface_normal");
+    if (value.contains("point")) {
+      m.kind = MarkerKind::kPoint;
+      m.position = vector(value["point"], at + "/point");
+    } else if (value.contains("axis")) {
+      const json& axis = value["axis"];
+      object(axis, at + "/axis", {"origin", "direction"});
+      m.kind = MarkerKind::kAxis;
+      m.position = vector(member(axis, at + "/axis", "origin"), at + "/axis/origin");
+      const Vec3 d = vector(member(axis, at + "/axis", "direction"), at + "/axis/direction");
+      if (norm(d) < 1e-9) fail(at + "/axis/direction", "must not be the zero vector");
+      m.direction = (1.0 / norm(d)) * d;
+    } else {
+      const json& sphere = value["surface_normal"];
+      object(sphere, at + "/surface_normal", {"centre", "radius"});
+      m.kind = MarkerKind::kSurfaceNormal;
+      m.position = vector(member(sphere, at + "/surface_normal", "centre"), at + "/surface_normal/centre");
+      m.radius_m = positive(member(sphere, at + "/surface_normal", "radius"), at + "/surface_normal/radius");
+    }
+    return m;
+  }
+
+  // A marker reference: must exist and be of one of the accepted kinds.
+  int marker_ref(const Task& t, const json& value, const std::string& at, std::initializer_list<MarkerKind> kinds,
+                 const char* expected) const {
+    const std::string name = string(value, at);
+    const int index = t.marker_index(name);
+    if (index < 0) fail(at, "no marker named \"" + name + "\"");
+    if (std::find(kinds.begin(), kinds.end(), t.markers[index].kind) == kinds.end())
+      fail(at, "marker \"" + name + "\" is not " + expected);
+    return index;
+  }
+
+  int point_ref(const Task& t, const json& value, const std::string& at) const {
+    return marker_ref(t, value, at, {MarkerKind::kPoint}, "a point");
+  }
+
+  int axis_ref(const Task& t, const json& value, const std::string& at) const {
+    return marker_ref(t, value, at, {MarkerKind::kAxis, MarkerKind::kSurfaceNormal}, "an axis or a surface normal");
+  }
+
+  // [min, max] with 0 <= min < max.
+  void band(Condition& c, const json& value, const std::string& at) const {
+    c.min = non_negative(member(value, at, "min"), at + "/min");
+    c.max = number(member(value, at, "max"), at + "/max");
+    if (c.max <= c.min) fail(at + "/max", "must be greater than min");
+  }
+
+  Condition condition(const Task& t, const json& value, const std::string& at) const {
+    if (!value.is_object()) fail(at, "expected an object, got " + std::string(value.type_name()));
+    const std::string type = string(member(value, at, "type"), at + "/type");
+    Condition c;
+    if (type == "tip_near" || type == "target_reached" || type == "withdrawn") {
+      object(value, at, {"type", "marker", "within_m", "hold_s", "contact"});
+      c.type = type == "tip_near"         ? ConditionType::kTipNear
+               : type == "target_reached" ? ConditionType::kTargetReached
+                                          : ConditionType::kWithdrawn;
+      c.marker = point_ref(t, member(value, at, "marker"), at + "/marker");
+      c.within_m = positive(member(value, at, "within_m"), at + "/within_m");
+    } else if (type == "axis_aligned") {
+      object(value, at, {"type", "marker", "within_deg", "hold_s", "contact"});
+      c.type = ConditionType::kAxisAligned;
+      c.marker = axis_ref(t, member(value, at, "marker"), at + "/marker");
+      const double deg = positive(member(value, at, "within_deg"), at + "/within_deg");
+      if (deg >= 180.0) fail(at + "/within_deg", "must be below 180 degrees");
+      c.within_rad = deg * std::numbers::pi / 180.0;
+    } else if (type == "depth_in_band") {
+      object(value, at, {"type", "marker", "min", "max", "hold_s", "contact"});
+      c.type = ConditionType::kDepthInBand;
+      c.marker = marker_ref(t, member(value, at, "marker"), at + "/marker", {MarkerKind::kAxis}, "an axis");
+      band(c, value, at);
+    } else if (type == "force_held") {
+      object(value, at, {"type", "min", "max", "hold_s", "contact"});
+      c.type = ConditionType::kForceHeld;
+      band(c, value, at);
+      if (!value.contains("hold_s")) fail(at + "/hold_s", "missing (a held force needs a time)");
+    } else {
+      fail(at + "/type",
+           "unknown step type \"" + type +
+               "\" (expected tip_near, axis_aligned, depth_in_band, force_held, target_reached or withdrawn)");
+    }
+    if (value.contains("hold_s")) c.hold_s = non_negative(value["hold_s"], at + "/hold_s");
+    if (c.type == ConditionType::kForceHeld && c.hold_s <= 0.0) fail(at + "/hold_s", "must be > 0 for force_held");
+    if (value.contains("contact")) {
+      const std::string contact = string(value["contact"], at + "/contact");
+      if (contact == "any")
+        c.contact = ContactRequirement::kAny;
+      else if (contact == "free")
+        c.contact = ContactRequirement::kFree;
+      else if (contact == "rigid")
+        c.contact = ContactRequirement::kRigidSurface;
+      else if (contact == "tissue")
+        c.contact = ContactRequirement::kTissue;
+      else
+        fail(at + "/contact", "\"" + contact + "\", expected any, free, rigid or tissue");
+    }
+    if (c.type == ConditionType::kTargetReached) c.contact = ContactRequirement::kTissue;
+    if (c.type == ConditionType::kWithdrawn) c.contact = ContactRequirement::kFree;
+    return c;
+  }
+
+  Guidance guidance(const Task& t, const Step& s, const json& value, const std::string& at) const {
+    object(value, at, {"entry", "axis", "target", "depth_gauge", "normal_markers"});
+    Guidance g;
+    if (value.contains("entry")) g.entry = point_ref(t, value["entry"], at + "/entry");
+    if (value.contains("axis")) g.axis = axis_ref(t, value["axis"], at + "/axis");
+    if (value.contains("target")) g.target = point_ref(t, value["target"], at + "/target");
+    if (value.contains("depth_gauge")) {
+      g.depth_gauge = marker_ref(t, value["depth_gauge"], at + "/depth_gauge", {MarkerKind::kAxis}, "an axis");
+      if (s.condition.type != ConditionType::kDepthInBand)
+        fail(at + "/depth_gauge", "a depth gauge needs a depth_in_band condition (it shows its band)");
+    }
+    if (value.contains("normal_markers"))
+      g.normal_markers = marker_ref(t, value["normal_markers"], at + "/normal_markers", {MarkerKind::kSurfaceNormal},
+                                    "a surface normal");
+    return g;
+  }
+
+  Step step(const Task& t, const json& value, const std::string& at) const {
+    object(value, at, {"id", "instruction", "condition", "time_limit_s", "tip_fixed_within_m", "guidance"});
+    Step s;
+    s.id = string(member(value, at, "id"), at + "/id");
+    s.instruction = string(member(value, at, "instruction"), at + "/instruction");
+    s.condition = condition(t, member(value, at, "condition"), at + "/condition");
+    if (value.contains("time_limit_s")) s.time_limit_s = positive(value["time_limit_s"], at + "/time_limit_s");
+    if (value.contains("tip_fixed_within_m"))
+      s.tip_fixed_within_m = positive(value["tip_fixed_within_m"], at + "/tip_fixed_within_m");
+    if (value.contains("guidance")) s.guidance = guidance(t, s, value["guidance"], at + "/guidance");
+    return s;
+  }
+
+  ScoringSpec scoring(const json& value, const std::string& at) const {
+    object(value, at, {"safe_force_N", "pass_score", "weights", "references"});
+    ScoringSpec s;
+    if (value.contains("safe_force_N")) s.safe_force_N = positive(value["safe_force_N"], at + "/safe_force_N");
+    if (value.contains("pass_score")) {
+      s.pass_score = number(value["pass_score"], at + "/pass_score");
+      if (s.pass_score < 0.0 || s.pass_score > 100.0) fail(at + "/pass_score", "must be in [0, 100]");
+    }
+    if (value.contains("weights")) s.weights = weights(value["weights"], at + "/weights");
+    if (value.contains("references")) s.references = references(value["references"], at + "/references");
+    return s;
+  }
+
+  ScoreWeights weights(const json& value, const std::string& at) const {
+    object(value, at,
+           {"completion", "tip_error", "axis_deviation", "lateral_load", "peak_force", "force_steadiness",
+            "path_efficiency", "smoothness", "time", "retries"});
+    ScoreWeights w;
+    const std::pair<const char*, double*> fields[] = {{"completion", &w.completion},
+                                                      {"tip_error", &w.tip_error},
+                                                      {"axis_deviation", &w.axis_deviation},
+                                                      {"lateral_load", &w.lateral_load},
+                                                      {"peak_force", &w.peak_force},
+                                                      {"force_steadiness", &w.force_steadiness},
+                                                      {"path_efficiency", &w.path_efficiency},
+                                                      {"smoothness", &w.smoothness},
+                                                      {"time", &w.time},
+                                                      {"retries", &w.retries}};
+    double total = 0.0;
+    for (const auto& [key, field] : fields) {
+      if (value.contains(key)) *field = non_negative(value[key], at + "/" + key);
+      total += *field;
+    }
+    if (total <= 0.0) fail(at, "the weights add up to 0");
+    for (const auto& [key, field] : fields) *field *= 100.0 / total;
+    return w;
+  }
+
+  ScoreReferences references(const json& value, const std::string& at) const {
+    object(value, at,
+           {"tip_error_m", "axis_deviation_deg", "lateral_load_Ns", "force_sd_N", "normalized_jerk", "time_s"});
+    ScoreReferences r;
+    const std::pair<const char*, double*> fields[] = {
+        {"tip_error_m", &r.tip_error_m},         {"axis_deviation_deg", &r.axis_deviation_deg},
+        {"lateral_load_Ns", &r.lateral_load_Ns}, {"force_sd_N", &r.force_sd_N},
+        {"normalized_jerk", &r.normalized_jerk}, {"time_s", &r.time_s}};
+    for (const auto& [key, field] : fields)
+      if (value.contains(key)) *field = positive(value[key], at + "/" + key);
+    if (r.normalized_jerk <= std::sqrt(360.0))
+      fail(at + "/normalized_jerk", "must exceed sqrt(360), the minimum-jerk movement's value");
+    return r;
+  }
+
+  fs::path folder_;
+};
+
+}  // namespace
+
+Task load_task(const fs::path& file) {
+  return TaskReader(file.string(), file.parent_path()).task(io::read_json_file<TaskError>(file));
+}
+
+}  // namespace needle::training

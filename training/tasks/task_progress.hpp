@@ -1,0 +1,57 @@
+// Where a trainee is in a task: fed one haptic state at a time, evaluates the current step's
+// condition with its hold time, applies the time limit and the fixed-tip rule, advances, and
+// records each step's start, end and outcome. Allocates nothing after construction.
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "haptics/realtime/tool_snapshot.hpp"
+#include "training/tasks/task.hpp"
+
+namespace needle::training {
+
+enum class StepOutcome {
+  kPending,    // not started
+  kActive,     // the current step
+  kCompleted,  // its condition held for its hold time
+  kTimedOut,   // its time limit passed first
+  kTipMoved,   // the tip drifted beyond tip_fixed_within_m first
+};
+
+const char* step_outcome_name(StepOutcome outcome);                          // "pending", "completed", ...
+bool step_outcome_from_name(const std::string& name, StepOutcome& outcome);  // false if unknown
+
+struct StepRecord {
+  StepOutcome outcome = StepOutcome::kPending;
+  double start_s = std::numeric_limits<double>::quiet_NaN();
+  double end_s = std::numeric_limits<double>::quiet_NaN();
+};
+
+class TaskProgress {
+ public:
+  explicit TaskProgress(const Task& task);  // keeps a reference: the task must outlive it
+
+  // Takes the next state (time_s non-decreasing). The first state starts step 0; a step that
+  // ends on a state starts the next one at the same time. Does nothing once finished.
+  void feed(const haptics::ToolSnapshot& state);
+
+  size_t current_step() const { return current_; }  // == steps.size() once finished
+  bool finished() const { return current_ >= records_.size(); }
+  const std::vector<StepRecord>& records() const { return records_; }
+  bool condition_met() const { return held_since_s_ == held_since_s_; }  // on the last state
+  double held_s() const { return condition_met() ? last_s_ - held_since_s_ : 0.0; }
+
+ private:
+  void end_step(StepOutcome outcome, const haptics::ToolSnapshot& state);
+
+  const Task& task_;
+  std::vector<StepRecord> records_;
+  size_t current_ = 0;
+  double held_since_s_ = std::numeric_limits<double>::quiet_NaN();
+  double last_s_ = 0.0;
+  Vec3 tip_at_start_{};
+};
+
+}  // namespace needle::training
