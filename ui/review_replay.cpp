@@ -6,20 +6,6 @@
 
 namespace needle::ui {
 
-const engine::NeedleLoad& ReplayCursor::at(const std::vector<haptics::ToolSnapshot>& states, double t) {
-  if (states.empty()) return load_;
-  if (fed_ > 1 && states[fed_ - 1].time_s > t) reset();  // backwards: start again
-  if (fed_ == 0) load_ = tracker_.update(states[fed_++]);
-  for (; fed_ < states.size() && states[fed_].time_s <= t; ++fed_) load_ = tracker_.update(states[fed_]);
-  return load_;
-}
-
-void ReplayCursor::reset() {
-  tracker_ = {};
-  load_ = {};
-  fed_ = 0;
-}
-
 void frame_beside_panels(engine::Camera& camera, float aspect, float left_fraction) {
   const glm::vec3 forward = camera.target - camera.position;
   const float distance = glm::length(forward);

@@ -1,27 +1,10 @@
-// The review's replay: the recorded states played back into the 3D view. The needle tracker is
-// stateful (it remembers where the needle entered the tissue), so the cursor feeds it forward
-// from where it was and starts again from the first state when scrubbed backwards.
+// The review's replay view: the 3D view framed beside the review's panels (the recorded needle
+// itself comes from app/replay_cursor.hpp).
 #pragma once
 
-#include <vector>
-
-#include "engine/needle_tracker.hpp"
 #include "engine/scene.hpp"
 
 namespace needle::ui {
-
-class ReplayCursor {
- public:
-  // The needle at the last state with time_s <= t (the first state when t is before it).
-  // `states` must stay the same between calls unless reset() is called.
-  const engine::NeedleLoad& at(const std::vector<haptics::ToolSnapshot>& states, double t);
-  void reset();
-
- private:
-  engine::NeedleTracker tracker_;
-  engine::NeedleLoad load_;
-  size_t fed_ = 0;  // states fed to the tracker
-};
 
 // Moves the camera so that what it looked at lands in the middle of the part of the view right
 // of panels covering `left_fraction` of its width, and backs it off so the scene fits there.

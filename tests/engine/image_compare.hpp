@@ -10,6 +10,7 @@
 #include <string>
 
 #include "engine/rgba_image.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 
@@ -36,8 +37,8 @@ inline size_t differing_pixels(const engine::RgbaImage& a, const engine::RgbaIma
 
 inline ::testing::AssertionResult matches_golden(const engine::RgbaImage& actual, const std::string& name) {
   namespace fs = std::filesystem;
-  const fs::path golden_path = fs::path(NEEDLE_SOURCE_DIR) / "tests" / "golden" / (name + ".png");
-  const fs::path out_dir = fs::path(NEEDLE_TEST_OUTPUT_DIR) / "golden";
+  const fs::path golden_path = test::source_dir() / "tests" / "golden" / (name + ".png");
+  const fs::path out_dir = test::output_dir() / "golden";
   const char* update = std::getenv("NEEDLE_UPDATE_GOLDENS");
   if (update && std::string(update) == "1") {
     engine::write_png(golden_path, actual);

@@ -7,13 +7,14 @@
 #include "asset-gen/assets.hpp"
 #include "engine/gltf_loader.hpp"
 #include "test_gltf_fixtures.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::engine {
 namespace {
 using namespace testing;
 namespace fs = std::filesystem;
 
-const fs::path kAssets = fs::path(NEEDLE_SOURCE_DIR) / "assets";
+const fs::path kAssets = test::source_dir() / "assets";
 
 std::string bytes_of(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);

@@ -8,12 +8,13 @@
 #include "engine/headless_target.hpp"
 #include "image_compare.hpp"
 #include "vulkan_fixture.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 namespace {
 
 constexpr VkExtent2D kSize{320, 240};
-const std::filesystem::path kScene = std::filesystem::path(NEEDLE_SOURCE_DIR) / "assets/scenes/penetrable_sphere.json";
+const std::filesystem::path kScene = test::source_dir() / "assets/scenes/penetrable_sphere.json";
 const glm::dvec3 kEntryDirection{-1.0, 0.0, 0.35};  // where the needle meets the sphere, from its centre
 
 class DeformationGolden : public VulkanTest {};

@@ -17,6 +17,7 @@
 
 #include "asset-gen/gltf_builder.hpp"
 #include "engine/model.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::engine::testing {
 
@@ -24,7 +25,7 @@ namespace needle::engine::testing {
 class TempDir {
  public:
   explicit TempDir(const std::string& name)
-      : path_(std::filesystem::path(NEEDLE_TEST_OUTPUT_DIR) / ("tmp_" + name + "_" + std::to_string(std::random_device{}()))) {
+      : path_(test::output_dir() / ("tmp_" + name + "_" + std::to_string(std::random_device{}()))) {
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }

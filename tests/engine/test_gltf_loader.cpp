@@ -8,6 +8,7 @@
 #include "asset-gen/assets.hpp"
 #include "engine/gltf_loader.hpp"
 #include "test_gltf_fixtures.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::engine {
 namespace {
@@ -197,7 +198,7 @@ TEST(GltfLoader, ImagesInADataUriDecodeToTheOriginalTexels) {
 
 TEST(GltfLoader, ImagesInABufferViewDecodeToTheOriginalTexels) {
   tinygltf::Model gltf = asset_gen::make_tissue_block();
-  std::ifstream png(fs::path(NEEDLE_SOURCE_DIR) / "assets" / "tissue_block_skin.png", std::ios::binary);
+  std::ifstream png(test::source_dir() / "assets" / "tissue_block_skin.png", std::ios::binary);
   const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(png), std::istreambuf_iterator<char>()};
   const int accessor = add_accessor(gltf, bytes, TINYGLTF_TYPE_SCALAR, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE);
   tinygltf::Image& image = gltf.images[0];

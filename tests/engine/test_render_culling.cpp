@@ -10,11 +10,12 @@
 #include "engine/offscreen.hpp"
 #include "image_compare.hpp"
 #include "vulkan_fixture.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 namespace {
 
-const std::filesystem::path kScene = std::filesystem::path(NEEDLE_SOURCE_DIR) / "assets/scenes/penetrable_sphere.json";
+const std::filesystem::path kScene = test::source_dir() / "assets/scenes/penetrable_sphere.json";
 
 // Needle loads around the sphere as the scene's camera sees it: facing it, on the outline,
 // behind, touching and inserted.

@@ -9,13 +9,14 @@
 #include "engine/offscreen.hpp"
 #include "image_compare.hpp"
 #include "vulkan_fixture.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 namespace {
 
 namespace fs = std::filesystem;
 constexpr VkExtent2D kGoldenSize{320, 240};
-const fs::path kAssets = fs::path(NEEDLE_SOURCE_DIR) / "assets";
+const fs::path kAssets = test::source_dir() / "assets";
 
 std::vector<fs::path> files_in(const fs::path& dir, std::initializer_list<const char*> extensions) {
   std::vector<fs::path> files;

@@ -7,13 +7,14 @@
 #include "engine/gltf_loader.hpp"
 #include "engine/scene.hpp"
 #include "test_gltf_fixtures.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::engine {
 namespace {
 using namespace testing;
 namespace fs = std::filesystem;
 
-const fs::path kScenes = fs::path(NEEDLE_SOURCE_DIR) / "assets" / "scenes";
+const fs::path kScenes = test::source_dir() / "assets" / "scenes";
 
 glm::mat4 view_projection(const Camera& c, float aspect) {
   return glm::perspective(glm::radians(c.fov_y_deg), aspect, c.near_m, c.far_m) * glm::lookAt(c.position, c.target, c.up);

@@ -6,10 +6,11 @@
 
 #include "haptics/model/robot_model.hpp"
 #include "haptics/model/urdf_loader.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::haptics::test {
 
-inline std::string asset(const std::string& relative) { return std::string(NEEDLE_SOURCE_DIR) + "/" + relative; }
+inline std::string asset(const std::string& relative) { return needle::test::source_dir().string() + "/" + relative; }
 inline RobotModel master_robot() { return load_robot_urdf(asset("assets/robots/master_omni.urdf"), 5); }
 inline RobotModel virtual_robot() { return load_robot_urdf(asset("assets/robots/virtual_needle_robot.urdf"), 5); }
 

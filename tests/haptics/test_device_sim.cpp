@@ -6,6 +6,7 @@
 #include "haptics/realtime/sim_session.hpp"
 #include "haptics/sim/closed_loop.hpp"
 #include "test_realtime_fakes.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -15,7 +16,7 @@ namespace {
 // (haptics/sim/closed_loop.cpp) number for number: the limits never need to act on the
 // thesis's experiments, and the loop adds nothing of its own.
 void expect_loop_reproduces_closed_loop(const char* scenario_file, double seconds) {
-  Scenario scenario = load_scenario(std::string(NEEDLE_SOURCE_DIR) + "/assets/scenarios/" + scenario_file);
+  Scenario scenario = load_scenario(test::source_dir().string() + "/assets/scenarios/" + scenario_file);
   scenario.duration_s = seconds;
   const SimResult reference = run_closed_loop(scenario, true);
   ASSERT_TRUE(reference.summary.faults.empty());
@@ -54,7 +55,7 @@ TEST(DeviceSim, LoopTickReproducesTheClosedLoopSimulationInTissue) {
 }
 
 TEST(DeviceSim, ReadsJointStateAndSensedWrench) {
-  SimSession sim(std::string(NEEDLE_SOURCE_DIR) + "/assets/scenarios/holonomic_sphere.json", 1000.0);
+  SimSession sim(test::source_dir().string() + "/assets/scenarios/holonomic_sphere.json", 1000.0);
   const Scenario& scenario = sim.scenario();
   SimDevice& device = sim.device();
   device.open();

@@ -5,6 +5,7 @@
 
 #include "haptics/realtime/task_space_step.hpp"
 #include "test_realtime_fakes.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -38,7 +39,7 @@ class HeldHandle : public HapticDevice {
 
 struct Coupled {
   explicit Coupled(const TaskCoupling& coupling = {})
-      : scenario(load_scenario(std::string(NEEDLE_SOURCE_DIR) + "/assets/scenarios/holonomic_sphere.json")),
+      : scenario(load_scenario(test::source_dir().string() + "/assets/scenarios/holonomic_sphere.json")),
         step(scenario, coupling),
         rig(handle, step, limits()) {
     tip_start_world = step.start_tip() + scenario.base_in_world;

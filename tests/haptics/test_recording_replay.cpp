@@ -12,6 +12,7 @@
 #include "haptics/realtime/sim_session.hpp"
 #include "haptics/recording/session_recorder.hpp"
 #include "test_realtime_fakes.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -153,7 +154,7 @@ TEST(RecordingReplay, ThreadedRecorderWritesEverySampleByStop) {
 // device stream into a fresh controller, and every tick's state must match bit for bit.
 TEST(RecordingReplay, ControllerReplayIsBitForBit) {
   const std::string path = temp_path("sim.nsrec");
-  const std::string scenario = std::string(NEEDLE_SOURCE_DIR) + "/assets/scenarios/nonholonomic_needle.json";
+  const std::string scenario = test::source_dir().string() + "/assets/scenarios/nonholonomic_needle.json";
   constexpr double kSimRate = 500.0;
   constexpr uint64_t kTicks = 3000;  // 6 s
   std::vector<ToolSnapshot> live;

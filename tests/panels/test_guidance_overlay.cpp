@@ -4,11 +4,12 @@
 // tip and needle are placed by hand, so the pictures depend on nothing but the drawing.
 #include <gtest/gtest.h>
 
-#include "engine/needle_tracker.hpp"
+#include "app/needle_tracker.hpp"
 #include "image_compare.hpp"
 #include "ui/guidance_overlay.hpp"
 #include "ui/panel_picture.hpp"
 #include "vulkan_fixture.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 namespace {
@@ -18,7 +19,7 @@ namespace fs = std::filesystem;
 class GuidanceOverlay : public VulkanTest {
  protected:
   engine::RgbaImage draw(const std::string& task_name, size_t step, const training::Vec3& tip, const training::Vec3& axis) {
-    const training::Task task = training::load_task(fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks" / (task_name + ".json"));
+    const training::Task task = training::load_task(test::source_dir() / "assets/tasks" / (task_name + ".json"));
     ui::PictureScene scene{engine::load_scene(task.scene), std::nullopt};
     haptics::ToolSnapshot state;
     for (int i = 0; i < 3; ++i) state.needle_tip_m[i] = tip[i];
@@ -30,7 +31,7 @@ class GuidanceOverlay : public VulkanTest {
     state.needle_orientation[1] = 0.0;
     state.needle_orientation[2] = -h[2] / hn;
     state.needle_orientation[3] = h[1] / hn;
-    scene.needle = engine::NeedleTracker().update(state);
+    scene.needle = app::NeedleTracker().update(state);
     const engine::Camera camera = scene.scene.camera;
     return ui::panel_picture(context(), {480, 320}, [&] { ui::draw_guidance({&task, step, tip, camera}); }, &scene);
   }
@@ -43,7 +44,7 @@ TEST_F(GuidanceOverlay, InsertionShowsTheAxisAndTheDepthGauge) {
 }
 
 TEST_F(GuidanceOverlay, TouchShowsTheEntryTargetAndNormalMarkers) {
-  const training::Task task = training::load_task(fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks/rigid_sphere.json");
+  const training::Task task = training::load_task(test::source_dir() / "assets/tasks/rigid_sphere.json");
   const training::Vec3 entry = task.markers[0].position;
   const training::Vec3 tip{entry[0] - 0.01, entry[1], entry[2] + 0.02};
   EXPECT_TRUE(matches_golden(draw("rigid_sphere", 0, tip, {0.0, 0.0, -1.0}), "guidance_touch"));

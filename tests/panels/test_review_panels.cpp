@@ -9,8 +9,10 @@
 #include "image_compare.hpp"
 #include "ui/panel_picture.hpp"
 #include "ui/review_panels.hpp"
+#include "app/replay_cursor.hpp"
 #include "ui/review_replay.hpp"
 #include "vulkan_fixture.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 namespace {
@@ -22,12 +24,12 @@ class ReviewPanels : public VulkanTest {
  protected:
   static void SetUpTestSuite() {
     VulkanTest::SetUpTestSuite();
-    dir_ = process_folder(fs::path(NEEDLE_TEST_OUTPUT_DIR) / "review_panels");
+    dir_ = process_folder(test::output_dir() / "review_panels");
     db_ = dir_ / "sessions.db";
     good_ = record_session(db_, {"penetrable_sphere", "good", "ana", true});
     sloppy_ = record_session(db_, {"penetrable_sphere", "sloppy", "bo", true});
     training::SessionStore store(db_);
-    const training::Task rigid = training::load_task(fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks/rigid_sphere.json");
+    const training::Task rigid = training::load_task(test::source_dir() / "assets/tasks/rigid_sphere.json");
     store.begin_session("cy", rigid, "sim", "");  // died mid-task, before recordings were kept
   }
   // The session as the panels show it, with the clock's fields fixed for the picture.
@@ -89,37 +91,13 @@ TEST_F(ReviewPanels, ComparisonMatchesGolden) {
 TEST_F(ReviewPanels, ReplayFrameMatchesGolden) {
   const training::SessionReview r = review(good_.id);
   ASSERT_TRUE(r.task.has_value());
-  ui::ReplayCursor cursor;
+  app::ReplayCursor cursor;
   double t = 12.0;
   ui::PictureScene scene{engine::load_scene(r.task->scene), cursor.at(r.states, t), 0.3f};
   const VkExtent2D size{640, 360};
   EXPECT_TRUE(matches_golden(ui::panel_picture(context(), size, [&] {
     ui::draw_replay_bar(r, t, false, {ImVec2(0, 300), ImVec2(640, 60)});
   }, &scene, VK_SAMPLE_COUNT_4_BIT), "panel_review_replay"));
-}
-
-TEST(ReplayCursor, ScrubbingBackFeedsTheTrackerFromTheStart) {
-  // In tissue from 0.1 s at two different entry points, out in between: the entry the needle
-  // load shows at 0.35 s is the second one, whether reached forwards or after going further.
-  auto at = [](double t, double x, haptics::ContactState c) {
-    haptics::ToolSnapshot s;
-    s.time_s = t;
-    s.needle_tip_m[0] = x;
-    s.contact = c;
-    return s;
-  };
-  using haptics::ContactState;
-  const std::vector<haptics::ToolSnapshot> states = {at(0.0, 0.0, ContactState::kFree), at(0.1, 0.01, ContactState::kTissue),
-                                                     at(0.2, 0.02, ContactState::kFree), at(0.3, 0.03, ContactState::kTissue),
-                                                     at(0.4, 0.04, ContactState::kTissue)};
-  ui::ReplayCursor cursor;
-  EXPECT_DOUBLE_EQ(cursor.at(states, 0.15).surface_point.x, 0.01);
-  EXPECT_DOUBLE_EQ(cursor.at(states, 0.45).surface_point.x, 0.03);
-  EXPECT_DOUBLE_EQ(cursor.at(states, 0.45).tip.x, 0.04);
-  const engine::NeedleLoad back = cursor.at(states, 0.15);  // backwards: fed again from the start
-  EXPECT_DOUBLE_EQ(back.surface_point.x, 0.01);
-  EXPECT_DOUBLE_EQ(back.tip.x, 0.01);
-  EXPECT_EQ(cursor.at(states, -1.0).contact, engine::NeedleContact::Free);  // before the first: the first
 }
 
 }  // namespace

@@ -9,11 +9,12 @@
 #include "image_compare.hpp"
 #include "ui/trainee_panel.hpp"
 #include "vulkan_fixture.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 namespace {
 
-const std::filesystem::path kTask = std::filesystem::path(NEEDLE_SOURCE_DIR) / "assets/tasks/penetrable_sphere.json";
+const std::filesystem::path kTask = test::source_dir() / "assets/tasks/penetrable_sphere.json";
 
 class TraineePanel : public VulkanTest {
  protected:

@@ -5,8 +5,9 @@
 #include <cstdio>
 #include <string>
 #include <sys/wait.h>
+#include "tests/support/test_paths.hpp"
 
-namespace needle::cli::test {
+namespace needle::test {
 
 struct RunResult {
   int exit_code = -1;
@@ -15,7 +16,7 @@ struct RunResult {
 
 inline RunResult run_needle_sim(const std::string& args) {
   RunResult r;
-  const std::string command = std::string(NEEDLE_SIM_EXE) + " " + args + " 2>/dev/null";
+  const std::string command = test::needle_sim_exe().string() + " " + args + " 2>/dev/null";
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return r;
   std::array<char, 4096> buffer{};
@@ -26,4 +27,4 @@ inline RunResult run_needle_sim(const std::string& args) {
   return r;
 }
 
-}  // namespace needle::cli::test
+}  // namespace needle::test

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 #include <sys/wait.h>
+#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 
@@ -26,7 +27,7 @@ inline ProcessResult run_command(const std::string& command) {
 }
 
 inline ProcessResult run_needle_sim(const std::string& arguments) {
-  return run_command(std::string("NEEDLE_VALIDATION=1 ") + NEEDLE_SIM_EXE + " " + arguments);
+  return run_command(std::string("NEEDLE_VALIDATION=1 ") + test::needle_sim_exe().string() + " " + arguments);
 }
 
 // A shell script on a virtual X display (xvfb-run), Vulkan validation on. Escape `$` as `\$` in
@@ -36,7 +37,7 @@ inline ProcessResult run_on_virtual_display(const std::string& script) {
 }
 
 inline std::filesystem::path test_output_dir(const std::string& name) {
-  auto dir = std::filesystem::path(NEEDLE_TEST_OUTPUT_DIR) / name;
+  auto dir = test::output_dir() / name;
   std::filesystem::create_directories(dir);
   return dir;
 }

@@ -5,8 +5,9 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_haptics_run.hpp"
+#include "tests/support/test_paths.hpp"
 
-namespace needle::cli {
+namespace needle::test {
 namespace {
 
 nlohmann::json rows_of(const std::string& command, const std::string& json_path) {
@@ -17,7 +18,7 @@ nlohmann::json rows_of(const std::string& command, const std::string& json_path)
 }
 
 TEST(CliHapticsBench, TickReportsMedianP99AndNoAllocations) {
-  const auto rows = rows_of("bench tick --ticks 2000", std::string(NEEDLE_TEST_OUTPUT_DIR) + "/bench_tick.json");
+  const auto rows = rows_of("bench tick --ticks 2000", test::output_dir().string() + "/bench_tick.json");
   ASSERT_EQ(rows.size(), 3u);
   for (const auto& row : rows) {
     EXPECT_GT(row["median_us"].get<double>(), 0.0);
@@ -27,7 +28,7 @@ TEST(CliHapticsBench, TickReportsMedianP99AndNoAllocations) {
 }
 
 TEST(CliHapticsBench, PrecisionRowsCarryTheContractKeys) {
-  const auto rows = rows_of("bench precision --horizon 0.008", std::string(NEEDLE_TEST_OUTPUT_DIR) + "/bench_precision.json");
+  const auto rows = rows_of("bench precision --horizon 0.008", test::output_dir().string() + "/bench_precision.json");
   ASSERT_EQ(rows.size(), 14u);  // 2 integrators × 7 steps
   for (const auto& row : rows)
     for (const char* key : {"integrator", "dt_s", "time_per_step_us", "error", "drift_mps", "fitted_order", "theoretical_order"})
@@ -43,4 +44,4 @@ TEST(CliHapticsBench, BadArgumentsAreUsageErrors) {
 }
 
 }  // namespace
-}  // namespace needle::cli
+}  // namespace needle::test

@@ -4,11 +4,12 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_haptics_run.hpp"
+#include "tests/support/test_paths.hpp"
 
-namespace needle::cli {
+namespace needle::test {
 namespace {
 
-const std::string kMaster = std::string(NEEDLE_SOURCE_DIR) + "/assets/robots/master_omni.urdf";
+const std::string kMaster = test::source_dir().string() + "/assets/robots/master_omni.urdf";
 
 TEST(CliHapticsModel, PrintsTheIssueKeys) {
   const auto r = test::run_needle_sim("model --robot " + kMaster + " --q 0,0,0,0,0 --dq 0.1,0,0,0,0");
@@ -28,4 +29,4 @@ TEST(CliHapticsModel, MissingFileIsAnError) {
 }
 
 }  // namespace
-}  // namespace needle::cli
+}  // namespace needle::test

@@ -6,14 +6,15 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_haptics_run.hpp"
+#include "tests/support/test_paths.hpp"
 
-namespace needle::cli {
+namespace needle::test {
 namespace {
 
 TEST(CliHapticsSimulate, WritesTicksCsvAndSummaryWithTheIssueKeys) {
-  const std::string out = std::string(NEEDLE_TEST_OUTPUT_DIR) + "/simulate_holonomic";
+  const std::string out = test::output_dir().string() + "/simulate_holonomic";
   std::filesystem::remove_all(out);
-  const auto r = test::run_needle_sim("simulate --scenario " + std::string(NEEDLE_SOURCE_DIR) +
+  const auto r = test::run_needle_sim("simulate --scenario " + test::source_dir().string() +
                                       "/assets/scenarios/holonomic_sphere.json --out " + out);
   ASSERT_EQ(r.exit_code, 0);
   std::ifstream summary_file(out + "/summary.json");
@@ -42,4 +43,4 @@ TEST(CliHapticsSimulate, MissingScenarioIsAnError) {
 }
 
 }  // namespace
-}  // namespace needle::cli
+}  // namespace needle::test

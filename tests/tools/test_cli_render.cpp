@@ -4,11 +4,12 @@
 
 #include "cli_process.hpp"
 #include "engine/rgba_image.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 namespace {
 
-const std::filesystem::path kAssets = std::filesystem::path(NEEDLE_SOURCE_DIR) / "assets";
+const std::filesystem::path kAssets = test::source_dir() / "assets";
 
 size_t line_count(const std::string& s) { return size_t(std::count(s.begin(), s.end(), '\n')); }
 
@@ -67,7 +68,7 @@ TEST(CliRun, WindowUnderXvfbPresentsWhatHeadlessRenders) {
   std::filesystem::remove(shot);
   auto scene = quoted(kAssets / "scenes" / "thesis_sphere.json");
   ProcessResult window = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' " +
-                                     std::string(NEEDLE_SIM_EXE) + " run --scene " + scene +
+                                     test::needle_sim_exe().string() + " run --scene " + scene +
                                      " --size 320x240 --msaa 1 --no-hud --frames 3 --screenshot " + quoted(shot));
   ASSERT_EQ(window.exit_code, 0) << window.output;
   EXPECT_NE(window.output.find("presented 3 frames"), std::string::npos) << window.output;

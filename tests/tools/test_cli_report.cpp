@@ -10,6 +10,7 @@
 #include "../training/recorded_session.hpp"
 #include "cli_process.hpp"
 #include "engine/rgba_image.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 namespace {
@@ -105,7 +106,7 @@ TEST_F(CliReport, ClearErrors) {
 }
 
 TEST_F(CliReport, ReviewWithoutADisplayPointsToReport) {
-  const ProcessResult r = run_command("env -u DISPLAY -u WAYLAND_DISPLAY NEEDLE_VALIDATION=1 " + std::string(NEEDLE_SIM_EXE) +
+  const ProcessResult r = run_command("env -u DISPLAY -u WAYLAND_DISPLAY NEEDLE_VALIDATION=1 " + test::needle_sim_exe().string() +
                                       " review --db " + quoted(db_));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("no display"), std::string::npos) << r.output;
@@ -115,7 +116,7 @@ TEST_F(CliReport, ReviewWithoutADisplayPointsToReport) {
 TEST_F(CliReport, ReviewWindowShowsTheSessionAndItsReplay) {
   const fs::path shot = dir_ / "review_window.png";
   fs::remove(shot);
-  const ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(NEEDLE_SIM_EXE) +
+  const ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1280x800x24' " + test::needle_sim_exe().string() +
                                       " review --size 1200x700 --frames 4 --screenshot " + quoted(shot) + " --session " +
                                       std::to_string(good_.id) + " --db " + quoted(db_));
   ASSERT_EQ(r.exit_code, 0) << r.output;

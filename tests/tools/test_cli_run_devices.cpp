@@ -12,6 +12,7 @@
 #include "cli_process.hpp"
 #include "haptics/recording/session_format.hpp"
 #include "training/sessions/session_store.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 namespace {
@@ -47,7 +48,7 @@ TEST_P(RunReplay, ReplayingARecordedRunReproducesItsStateAndScore) {
   const fs::path dir = test_output_dir("cli_run_devices") / (std::string(GetParam().task) + "_" + GetParam().operator_spec);
   fs::remove_all(dir);
   const fs::path db = dir / "sessions.db";
-  const std::string task = (fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks" / (std::string(GetParam().task) + ".json")).string();
+  const std::string task = (test::source_dir() / "assets/tasks" / (std::string(GetParam().task) + ".json")).string();
   const RunOutput live = run_headless("--task " + quoted(fs::path(task)) + " --operator " + GetParam().operator_spec, dir / "live", db);
   ASSERT_TRUE(live.score.contains("recording"));
   const fs::path recording = live.score["recording"].get<std::string>();
@@ -90,7 +91,7 @@ INSTANTIATE_TEST_SUITE_P(Tasks, RunReplay,
 // `needle-sim run --device mouse` in a window without panels, its session and recording in `dir`.
 std::string mouse_session(const fs::path& dir, const std::string& options) {
   fs::remove_all(dir);
-  return std::string(NEEDLE_SIM_EXE) + " run --device mouse --no-hud " + options + " --out " + quoted(dir) + " --db " +
+  return test::needle_sim_exe().string() + " run --device mouse --no-hud " + options + " --out " + quoted(dir) + " --db " +
          quoted(dir / "sessions.db");
 }
 

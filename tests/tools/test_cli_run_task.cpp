@@ -9,6 +9,7 @@
 
 #include "cli_process.hpp"
 #include "training/sessions/session_store.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 namespace {
@@ -50,7 +51,7 @@ TEST(CliRunTask, SloppyOperatorFailsThePassMark) {
 TEST(CliRunTask, WindowClosedMidTaskLeavesAnIncompleteSession) {
   const fs::path dir = test_output_dir("cli_run_task") / "window";
   fs::remove_all(dir);
-  ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' " + std::string(NEEDLE_SIM_EXE) +
+  ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' " + test::needle_sim_exe().string() +
                                 " run --size 480x360 --frames 5 --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("presented 5 frames"), std::string::npos) << r.output;

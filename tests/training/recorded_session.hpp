@@ -17,6 +17,7 @@
 #include "training/scoring/session_scorer.hpp"
 #include "training/sessions/session_store.hpp"
 #include "training/tasks/scripted_operator.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 
@@ -93,7 +94,7 @@ inline haptics::TickSample tick_sample(const haptics::TickRecord& r, uint64_t ti
 // in `db` with the recording's path relative to the database's folder, as runs do.
 inline RecordedSession record_session(const std::filesystem::path& db, const RecordedSessionSpec& spec = {}) {
   namespace fs = std::filesystem;
-  const training::Task task = training::load_task(fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks" / (spec.task + ".json"));
+  const training::Task task = training::load_task(test::source_dir() / "assets/tasks" / (spec.task + ".json"));
   const fs::path folder = fs::absolute(db).parent_path();
   const fs::path relative = fs::path("recordings") / (spec.trainee + "_" + spec.operator_spec + ".nrec");
   fs::create_directories(folder / "recordings");

@@ -9,6 +9,7 @@
 #include "haptics/sim/allocation_counter.hpp"
 #include "tool_states.hpp"
 #include "training/scoring/session_scorer.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::training {
 namespace {
@@ -39,7 +40,7 @@ haptics::ToolSnapshot ideal_penetrable(double t) {
 }
 
 TEST(Allocations, FeedingTheScorerAllocatesNothing) {
-  const Task task = load_task(std::string(NEEDLE_SOURCE_DIR) + "/assets/tasks/penetrable_sphere.json");
+  const Task task = load_task(needle::test::source_dir().string() + "/assets/tasks/penetrable_sphere.json");
   SessionScorer scorer(task);
   haptics::allocation_counter::start();
   for (int k = 0; k <= 23000; ++k) {

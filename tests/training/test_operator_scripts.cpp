@@ -10,13 +10,14 @@
 #include "recorded_session.hpp"
 #include "training/scoring/session_scorer.hpp"
 #include "training/tasks/scripted_operator.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::training {
 namespace {
 namespace fs = std::filesystem;
 
-const fs::path kTasks = fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks";
-const fs::path kOutput = fs::path(NEEDLE_TEST_OUTPUT_DIR) / "operators";
+const fs::path kTasks = test::source_dir() / "assets/tasks";
+const fs::path kOutput = test::output_dir() / "operators";
 
 SessionResult run(const Task& task, const std::string& script) {
   const haptics::Scenario scenario = scenario_with_operator(task, operator_script_path(task, script),

@@ -8,6 +8,7 @@
 
 #include "training/scoring/metric_fields.hpp"
 #include "training/sessions/session_export.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::training {
 namespace {
@@ -117,7 +118,7 @@ TEST(SessionExport, CsvHasOneRowPerMetricPerStepAndForTheSession) {
 }
 
 TEST(SessionExport, WritesBothFilesIntoTheFolder) {
-  const fs::path dir = fs::path(NEEDLE_TEST_OUTPUT_DIR) / "export";
+  const fs::path dir = test::output_dir() / "export";
   fs::remove_all(dir);
   const fs::path json_file = export_session(a_session(), dir / "nested");
   EXPECT_EQ(json_file, dir / "nested" / "session_42.json");

@@ -7,13 +7,14 @@
 
 #include "recorded_session.hpp"
 #include "training/sessions/session_review.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::training {
 namespace {
 namespace fs = std::filesystem;
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::path(NEEDLE_TEST_OUTPUT_DIR) / "session_review" / name;
+  const fs::path dir = test::output_dir() / "session_review" / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -22,7 +23,7 @@ fs::path fresh_dir(const std::string& name) {
 class SessionReviewTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = test::process_folder(fs::path(NEEDLE_TEST_OUTPUT_DIR) / "session_review" / "good");
+    dir_ = test::process_folder(test::output_dir() / "session_review" / "good");
     good_ = test::record_session(dir_ / "sessions.db");
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
@@ -79,7 +80,7 @@ TEST_F(SessionReviewTest, MissingAndUnreadableRecordingsAreNamed) {
 TEST_F(SessionReviewTest, SessionWithoutRecordingOrTaskFile) {
   const fs::path dir = fresh_dir("old");
   SessionStore store(dir / "sessions.db");
-  Task task = load_task(fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks/rigid_sphere.json");
+  Task task = load_task(test::source_dir() / "assets/tasks/rigid_sphere.json");
   task.source = (dir / "moved_away.json").string();
   const int64_t id = store.begin_session("cy", task, "sim", "");
   const SessionReview r = load_session_review(store, dir / "sessions.db", id);

@@ -7,11 +7,12 @@
 
 #include "tool_states.hpp"
 #include "training/sessions/session_series.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::training {
 namespace {
 
-const std::filesystem::path kTasks = std::filesystem::path(NEEDLE_SOURCE_DIR) / "assets/tasks";
+const std::filesystem::path kTasks = needle::test::source_dir() / "assets/tasks";
 
 // Joint-space samples: free, then in tissue 20 mm down the penetrable task's insertion axis
 // (origin (0.32929, 0, 0.07071), direction (1, 0, -1)/sqrt 2) and 10 mm off it sideways, then

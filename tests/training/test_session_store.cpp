@@ -12,6 +12,7 @@
 
 #include "training/scoring/metric_fields.hpp"
 #include "training/sessions/session_store.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::training {
 namespace {
@@ -19,7 +20,7 @@ namespace fs = std::filesystem;
 
 // A fresh database path for the running test.
 fs::path fresh_db() {
-  const fs::path dir = fs::path(NEEDLE_TEST_OUTPUT_DIR) / "sessions";
+  const fs::path dir = test::output_dir() / "sessions";
   fs::create_directories(dir);
   const fs::path file = dir / (std::string(testing::UnitTest::GetInstance()->current_test_info()->name()) + ".db");
   for (const char* suffix : {"", "-wal", "-shm"}) fs::remove(file.string() + suffix);

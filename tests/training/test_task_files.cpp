@@ -9,13 +9,14 @@
 #include <numbers>
 
 #include "training/tasks/task.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace needle::training {
 namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const fs::path kTasks = fs::path(NEEDLE_SOURCE_DIR) / "assets/tasks";
+const fs::path kTasks = test::source_dir() / "assets/tasks";
 const Vec3 kCentre{0.4, 0.0, 0.0};  // thesis sphere, section 4.1
 constexpr double kRadius = 0.1;
 
@@ -87,7 +88,7 @@ json valid_task() {
 }
 
 fs::path write_task(const json& task, const std::string& name) {
-  const fs::path dir = fs::path(NEEDLE_TEST_OUTPUT_DIR) / "tasks";
+  const fs::path dir = test::output_dir() / "tasks";
   fs::create_directories(dir);
   const fs::path file = dir / (name + ".json");
   std::ofstream(file) << task.dump(2);
@@ -218,7 +219,7 @@ TEST(TaskFiles, UnreadableAndMalformedFilesNameTheFile) {
         }
       },
       TaskError);
-  const fs::path file = fs::path(NEEDLE_TEST_OUTPUT_DIR) / "tasks" / "broken.json";
+  const fs::path file = test::output_dir() / "tasks" / "broken.json";
   fs::create_directories(file.parent_path());
   std::ofstream(file) << "{\"name\": ";
   try {

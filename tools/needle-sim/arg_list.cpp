@@ -91,7 +91,7 @@ std::vector<double> parse_number_list(const std::string& text, const std::string
   return out;
 }
 
-Size2 parse_size(const std::string& text, const std::string& flag) {
+engine::Extent parse_size(const std::string& text, const std::string& flag) {
   size_t x = text.find('x');
   if (x == std::string::npos) throw UsageError(flag + ": expected WxH, got '" + text + "'");
   auto parse_dim = [&](std::string_view s) {

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/extent.hpp"
+
 namespace needle::cli {
 
 class ArgList {
@@ -29,11 +31,7 @@ class ArgList {
 };
 
 // Parses "WxH" (e.g. "1280x720") into positive width and height; UsageError otherwise.
-struct Size2 {
-  unsigned width = 0;
-  unsigned height = 0;
-};
-Size2 parse_size(const std::string& text, const std::string& flag);
+engine::Extent parse_size(const std::string& text, const std::string& flag);
 
 // Parses a decimal number with nothing after it; UsageError naming the flag otherwise.
 double parse_number(const std::string& text, const std::string& flag);

@@ -34,7 +34,7 @@ std::vector<std::string> parse_draw_modes(const std::string& list) {
 
 int run_bench_render(ArgList& args) {
   auto json = args.value("--json");
-  Size2 size = parse_size(args.value("--size").value_or("1280x720"), "--size");
+  engine::Extent size = parse_size(args.value("--size").value_or("1280x720"), "--size");
   std::vector<double> resolutions = parse_number_list(args.value("--spheres").value_or("100,200,400,800"), "--spheres");
   double frames = parse_number(args.value("--frames").value_or("200"), "--frames");
   std::vector<int> msaa_counts;

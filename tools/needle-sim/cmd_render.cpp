@@ -14,7 +14,7 @@ int run_render(ArgList& args) {
   auto scene_file = args.value("--scene");
   auto gltf_file = args.value("--gltf");
   std::string out = args.required("--out");
-  Size2 size = parse_size(args.value("--size").value_or("1280x720"), "--size");
+  engine::Extent size = parse_size(args.value("--size").value_or("1280x720"), "--size");
   int msaa = parse_msaa(args.value("--msaa").value_or("4"), "--msaa");
   args.finish();
   if (bool(scene_file) == bool(gltf_file)) throw UsageError("give exactly one of --scene FILE or --gltf FILE");

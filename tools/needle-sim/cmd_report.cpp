@@ -6,10 +6,11 @@
 
 #include "arg_list.hpp"
 #include "command.hpp"
-#include "default_db.hpp"
+#include "app/default_db.hpp"
 #include "engine/vulkan_context.hpp"
 #include "ui/panel_picture.hpp"
 #include "ui/review_panels.hpp"
+#include "app/replay_cursor.hpp"
 #include "ui/review_replay.hpp"
 #include "training/sessions/session_export.hpp"
 
@@ -33,13 +34,13 @@ ui::PanelRect whole(VkExtent2D e) { return {ImVec2(0, 0), ImVec2(float(e.width),
 
 int run_report(ArgList& args) {
   const int64_t id = parse_session_id(args.required("--session"));
-  const fs::path db = args.value("--db").value_or(default_db().string());
+  const fs::path db = args.value("--db").value_or(app::default_db().string());
   const fs::path out = args.required("--out");
   std::optional<double> at;
   if (auto text = args.value("--at")) at = parse_number(*text, "--at");
   args.finish();
 
-  const std::unique_ptr<training::SessionStore> store = open_existing_db(db);
+  const std::unique_ptr<training::SessionStore> store = app::open_existing_db(db);
   const training::SessionReview review = training::load_session_review(*store, db, id);
   const training::SessionInfo& info = review.stored.info;
   const fs::path json = training::export_session(review.stored, out);
@@ -85,7 +86,7 @@ int run_report(ArgList& args) {
     std::printf("no replay picture: %s\n", review.task_problem.c_str());
     return 0;
   }
-  ui::ReplayCursor cursor;
+  app::ReplayCursor cursor;
   ui::PictureScene scene{engine::load_scene(review.task->scene), cursor.at(review.states, t), 0.0f};
   double shown_t = t;
   const ui::PanelRect bar{ImVec2(0, float(replay_size.height) - 64.0f), ImVec2(float(replay_size.width), 64.0f)};

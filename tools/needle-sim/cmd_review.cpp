@@ -8,14 +8,15 @@
 
 #include "arg_list.hpp"
 #include "command.hpp"
-#include "default_db.hpp"
+#include "app/default_db.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/ui_pass.hpp"
 #include "ui/review_panels.hpp"
+#include "app/replay_cursor.hpp"
 #include "ui/review_replay.hpp"
 #include "training/sessions/session_export.hpp"
 #include "ui/status_panel.hpp"
-#include "window_frames.hpp"
+#include "app/window_frames.hpp"
 
 namespace needle::cli {
 namespace {
@@ -24,7 +25,7 @@ namespace fs = std::filesystem;
 
 struct ReviewOptions {
   fs::path db;
-  Size2 size;
+  engine::Extent size;
   int64_t session = 0;
   long frames = 0;  // close after this many frames (0: when the user closes it)
   std::optional<std::string> screenshot;
@@ -62,7 +63,7 @@ struct Loaded {
 
 int run_review(ArgList& args) {
   ReviewOptions options;
-  options.db = args.value("--db").value_or(default_db().string());
+  options.db = args.value("--db").value_or(app::default_db().string());
   options.size = parse_size(args.value("--size").value_or("1600x900"), "--size");
   if (auto id = args.value("--session")) options.session = int64_t(parse_number(*id, "--session"));
   if (auto frames = args.value("--frames")) {
@@ -78,8 +79,8 @@ int run_review(ArgList& args) {
         "no display: the review is a window; for a headless export use needle-sim report --session ID --out DIR");
   }
 
-  const std::unique_ptr<training::SessionStore> store = open_existing_db(options.db);
-  VulkanWindow vw("needle-sim review", options.size);
+  const std::unique_ptr<training::SessionStore> store = app::open_existing_db(options.db);
+  app::VulkanWindow vw("needle-sim review", options.size);
   engine::Window& window = vw.window;
   engine::VulkanContext& context = vw.context;
   engine::WindowTarget& target = vw.target;
@@ -95,13 +96,13 @@ int run_review(ArgList& args) {
   std::vector<training::SessionInfo> sessions = store->sessions();
   auto refreshed = std::chrono::steady_clock::now();
   Loaded a, b;
-  ui::ReplayCursor cursor;
+  app::ReplayCursor cursor;
   double t = 0.0;
   bool playing = false;
   ui::DetailOptions detail;
   detail.show_export = true;
 
-  WindowFrames frames(options.frames, options.screenshot);
+  app::WindowFrames frames(options.frames, options.screenshot);
   while (!window.should_close()) {
     window.poll_events();
     const float dt = clock.tick();

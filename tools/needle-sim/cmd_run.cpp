@@ -13,15 +13,15 @@
 #include "arg_list.hpp"
 #include "asset_path.hpp"
 #include "command.hpp"
-#include "default_db.hpp"
+#include "app/default_db.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/headless_target.hpp"
 #include "engine/scripted_needle.hpp"
 #include "engine/ui_pass.hpp"
 #include "haptics/realtime/haptic_loop.hpp"
-#include "task_session.hpp"
+#include "app/task_session.hpp"
 #include "ui/status_panel.hpp"
-#include "window_frames.hpp"
+#include "app/window_frames.hpp"
 
 namespace needle::cli {
 namespace {
@@ -30,9 +30,9 @@ namespace fs = std::filesystem;
 
 struct RunOptions {
   std::optional<fs::path> scene;  // a scene instead of a task
-  TaskSessionOptions task;
+  app::TaskSessionOptions task;
   fs::path out_dir;
-  Size2 size;
+  engine::Extent size;
   std::optional<int> msaa;
   long frames = 0;  // window: close after this many frames (0: when the user closes it)
   std::optional<std::string> screenshot;
@@ -73,7 +73,7 @@ Show scripted_needle_show(const engine::GpuScene& scene) {
 constexpr double kHeadlessMoment_s = 7.0;
 
 int run_window(const engine::Scene& scene, const RunOptions& options, const std::function<Show(engine::GpuScene&)>& make_show) {
-  VulkanWindow vw("needle-sim", options.size);
+  app::VulkanWindow vw("needle-sim", options.size);
   // Unless asked, the interactive window on a CPU device keeps its frame rate instead of MSAA.
   engine::SceneRenderer renderer(vw.context, vw.target,
                                  {static_cast<VkSampleCountFlagBits>(options.msaa.value_or(vw.cpu_device() ? 1 : 4))});
@@ -82,7 +82,7 @@ int run_window(const engine::Scene& scene, const RunOptions& options, const std:
   std::optional<engine::UiPass> ui_pass;
   if (options.hud) ui_pass.emplace(vw.context, renderer, &vw.window);
   ui::FrameClock clock;
-  WindowFrames frames(options.frames, options.screenshot);
+  app::WindowFrames frames(options.frames, options.screenshot);
   const auto start = std::chrono::steady_clock::now();
 
   while (!vw.window.should_close()) {
@@ -124,7 +124,7 @@ int run_scene_headless(const engine::Scene& scene, const RunOptions& options) {
 // when it ends, and the score stays on screen until the window closes. Closed before the end, the
 // session stays incomplete (its recording is kept).
 int run_task_window(const RunOptions& options) {
-  TaskSession session(options.task);
+  app::TaskSession session(options.task);
   bool started = false;
   return run_window(session.scene(), options, [&](engine::GpuScene&) {
     return Show{[&session, &started](double) -> std::optional<engine::NeedleLoad> {
@@ -162,7 +162,7 @@ int run_run(ArgList& args) {
   options.task.rig.firmware = args.value("--firmware").value_or("");
   if (auto rate = args.value("--rate")) options.task.rig.rate_hz = parse_number(*rate, "--rate");
   options.task.trainee = args.value("--trainee").value_or(default_trainee());
-  options.task.db = args.value("--db").value_or(default_db().string());
+  options.task.db = args.value("--db").value_or(app::default_db().string());
   options.out_dir = args.value("--out").value_or("out/run");
   options.task.out_dir = options.out_dir;
   const std::optional<std::string> operator_spec = args.value("--operator");
@@ -193,7 +193,7 @@ int run_run(ArgList& args) {
       throw UsageError(std::string("--rate: ") + e.what());
     }
   }
-  const std::optional<fs::path> recorded = options.scene ? std::nullopt : recorded_task(device);
+  const std::optional<fs::path> recorded = options.scene ? std::nullopt : app::recorded_task(device);
   options.task.task = recorded ? *recorded : fs::path(task.value_or((asset_dir() / "tasks" / "penetrable_sphere.json").string()));
 
   const bool window = !headless && engine::Window::display_available();
@@ -206,7 +206,7 @@ int run_run(ArgList& args) {
     throw UsageError("--device " + device + ": a trainee's device needs the window" +
                      (headless ? " (drop --headless)" : " and there is no display"));
   }
-  return window ? run_task_window(options) : run_task_headless(options.task, options.size, options.msaa.value_or(4));
+  return window ? run_task_window(options) : app::run_task_headless(options.task, options.size, options.msaa.value_or(4));
 }
 
 const CommandRegistrar reg{

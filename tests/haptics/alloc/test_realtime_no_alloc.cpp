@@ -13,6 +13,7 @@
 #include "haptics/realtime/sim_session.hpp"
 #include "haptics/realtime/task_space_step.hpp"
 #include "test_realtime_fakes.hpp"
+#include "tests/support/test_paths.hpp"
 
 namespace {
 std::atomic<uint64_t> g_allocations{0};
@@ -63,7 +64,7 @@ TEST(RealtimeNoAlloc, ServoTickAllocatesNothingOverManyTicks) {
 }
 
 TEST(RealtimeNoAlloc, SimDeviceWithTheControllerAllocatesNothing) {
-  SimSession sim(std::string(NEEDLE_SOURCE_DIR) + "/assets/scenarios/nonholonomic_needle.json", 500.0);
+  SimSession sim(test::source_dir().string() + "/assets/scenarios/nonholonomic_needle.json", 500.0);
   sim.device().open();
   TickRig rig(sim.device(), sim.step(), safety_limits_for(sim.device().capabilities()));
   const uint64_t before = g_allocations.load();
@@ -73,7 +74,7 @@ TEST(RealtimeNoAlloc, SimDeviceWithTheControllerAllocatesNothing) {
 }
 
 TEST(RealtimeNoAlloc, TaskSpaceCouplingAllocatesNothing) {
-  const Scenario scenario = load_scenario(std::string(NEEDLE_SOURCE_DIR) + "/assets/scenarios/holonomic_sphere.json");
+  const Scenario scenario = load_scenario(test::source_dir().string() + "/assets/scenarios/holonomic_sphere.json");
   MouseDevice mouse;
   TaskSpaceStep step(scenario, TaskCoupling{});
   TickRig rig(mouse, step, safety_limits_for(mouse.capabilities()));

@@ -13,16 +13,16 @@
 #include <string>
 #include <vector>
 
-#include "arg_list.hpp"
-#include "engine/needle_tracker.hpp"
+#include "engine/extent.hpp"
+#include "app/needle_tracker.hpp"
 #include "engine/scene.hpp"
 #include "haptics/realtime/haptic_loop.hpp"
 #include "haptics/recording/session_recorder.hpp"
-#include "session_rig.hpp"
+#include "app/session_rig.hpp"
 #include "training/sessions/session_store.hpp"
 #include "ui/trainee_panel.hpp"
 
-namespace needle::cli {
+namespace needle::app {
 
 struct TaskSessionOptions {
   std::filesystem::path task;  // for replay:FILE, the recording's own task
@@ -79,7 +79,7 @@ class TaskSession {
 
   mutable std::mutex mutex_;  // between the recorder's thread (consume) and the UI thread
   training::SessionScorer scorer_;
-  engine::NeedleTracker tracker_;
+  NeedleTracker tracker_;
   engine::NeedleLoad needle_;
   haptics::ToolSnapshot last_;
   uint64_t consumed_ = 0;
@@ -89,6 +89,6 @@ class TaskSession {
 
 // Headless: runs the session through, writing OUT/step_<n>_<id>.png as each step ends,
 // OUT/final.png and OUT/score_panel.png. Returns 0.
-int run_task_headless(TaskSessionOptions options, Size2 size, int msaa);
+int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa);
 
-}  // namespace needle::cli
+}  // namespace needle::app

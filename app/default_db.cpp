@@ -1,9 +1,9 @@
-#include "default_db.hpp"
+#include "app/default_db.hpp"
 
 #include <cstdlib>
 #include <stdexcept>
 
-namespace needle::cli {
+namespace needle::app {
 
 std::filesystem::path default_db() {
   namespace fs = std::filesystem;
@@ -19,4 +19,4 @@ std::unique_ptr<training::SessionStore> open_existing_db(const std::filesystem::
   return std::make_unique<training::SessionStore>(file);
 }
 
-}  // namespace needle::cli
+}  // namespace needle::app

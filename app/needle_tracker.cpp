@@ -1,11 +1,11 @@
-#include "engine/needle_tracker.hpp"
+#include "app/needle_tracker.hpp"
 
 #include <glm/gtc/quaternion.hpp>
 
-namespace needle::engine {
+namespace needle::app {
 
-NeedleLoad NeedleTracker::update(const haptics::ToolSnapshot& s) {
-  NeedleLoad load;
+engine::NeedleLoad NeedleTracker::update(const haptics::ToolSnapshot& s) {
+  engine::NeedleLoad load;
   load.tip = {s.needle_tip_m[0], s.needle_tip_m[1], s.needle_tip_m[2]};
   const auto axis = haptics::needle_axis(s);
   load.axis = glm::normalize(glm::dvec3(axis[0], axis[1], axis[2]));
@@ -14,20 +14,20 @@ NeedleLoad NeedleTracker::update(const haptics::ToolSnapshot& s) {
   switch (s.contact) {
     case haptics::ContactState::kFree:
       entry_.reset();
-      load.contact = NeedleContact::Free;
+      load.contact = engine::NeedleContact::Free;
       break;
     case haptics::ContactState::kRigidSurface:
       // The penalty keeps the tip within micrometres of the surface, and the surface pushes back
       // along its normal.
       entry_.reset();
-      load.contact = NeedleContact::Touching;
+      load.contact = engine::NeedleContact::Touching;
       load.surface_point = load.tip;
       load.surface_normal = glm::length(force) > 0.0 ? glm::normalize(force) : -load.axis;
       load.normal_force_N = glm::length(force);
       break;
     case haptics::ContactState::kTissue: {
       if (!entry_) entry_ = load.tip;
-      load.contact = NeedleContact::Inserted;
+      load.contact = engine::NeedleContact::Inserted;
       load.surface_point = *entry_;
       load.surface_normal = -load.axis;
       // The constraint holds the needle against sideways motion with Aᵀλ = λ₁ y₅ + λ₂ z₅ (thesis
@@ -45,4 +45,4 @@ NeedleLoad NeedleTracker::update(const haptics::ToolSnapshot& s) {
   return load;
 }
 
-}  // namespace needle::engine
+}  // namespace needle::app

@@ -6,16 +6,16 @@
 #include <optional>
 #include <string>
 
-#include "arg_list.hpp"
+#include "engine/extent.hpp"
 #include "engine/scene_renderer.hpp"
 #include "engine/vulkan_context.hpp"
 #include "engine/window.hpp"
 #include "engine/window_target.hpp"
 
-namespace needle::cli {
+namespace needle::app {
 
 struct VulkanWindow {
-  VulkanWindow(const std::string& title, Size2 size);
+  VulkanWindow(const std::string& title, engine::Extent size);
   // On a CPU device (lavapipe) 4x MSAA costs 1.8 to 3.3x the frame time (docs/BENCHMARKS.md).
   bool cpu_device() const { return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
 
@@ -39,4 +39,4 @@ class WindowFrames {
   long drawn_ = 0;
 };
 
-}  // namespace needle::cli
+}  // namespace needle::app

@@ -1,4 +1,4 @@
-#include "session_rig.hpp"
+#include "app/session_rig.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -12,7 +12,7 @@
 #include "haptics/recording/session_format.hpp"
 #include "training/tasks/scripted_operator.hpp"
 
-namespace needle::cli {
+namespace needle::app {
 namespace {
 
 namespace fs = std::filesystem;
@@ -189,4 +189,4 @@ SessionRig::~SessionRig() {
   if (device_) device_->close();
 }
 
-}  // namespace needle::cli
+}  // namespace needle::app

@@ -1,4 +1,4 @@
-#include "task_session.hpp"
+#include "app/task_session.hpp"
 
 #include <unistd.h>
 
@@ -16,7 +16,7 @@
 #include "ui/guidance_overlay.hpp"
 #include "training/sessions/session_export.hpp"
 
-namespace needle::cli {
+namespace needle::app {
 namespace fs = std::filesystem;
 
 namespace {
@@ -190,7 +190,7 @@ void TaskSession::draw_panel(std::optional<size_t> step) const {
                      training::vec3(last_.needle_tip_m), scene_.camera});
 }
 
-int run_task_headless(TaskSessionOptions options, Size2 size, int msaa) {
+int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa) {
   const fs::path out_dir = options.out_dir;
   TaskSession run(std::move(options));
   engine::VulkanContext context(engine::ContextOptions{});
@@ -218,4 +218,4 @@ int run_task_headless(TaskSessionOptions options, Size2 size, int msaa) {
   return 0;
 }
 
-}  // namespace needle::cli
+}  // namespace needle::app

@@ -5,7 +5,8 @@
 
 #include <cmath>
 
-#include "engine/needle_tracker.hpp"
+#include "app/needle_tracker.hpp"
+#include "app/replay_cursor.hpp"
 
 namespace needle::test {
 namespace {
@@ -24,7 +25,7 @@ haptics::ToolSnapshot snapshot(haptics::ContactState contact, glm::dvec3 tip, do
 }
 
 TEST(NeedleTracker, PoseComesFromTipAndQuaternion) {
-  engine::NeedleTracker tracker;
+  app::NeedleTracker tracker;
   engine::NeedleLoad load = tracker.update(snapshot(haptics::ContactState::kFree, {0.1, 0.2, 0.3}, M_PI / 2));
   EXPECT_EQ(load.contact, engine::NeedleContact::Free);
   EXPECT_EQ(load.tip, glm::dvec3(0.1, 0.2, 0.3));
@@ -33,7 +34,7 @@ TEST(NeedleTracker, PoseComesFromTipAndQuaternion) {
 }
 
 TEST(NeedleTracker, EntryIsWhereTheNeedleFirstWasInTissueUntilItLeaves) {
-  engine::NeedleTracker tracker;
+  app::NeedleTracker tracker;
   tracker.update(snapshot(haptics::ContactState::kFree, {0.29, 0, 0}, 0));
   engine::NeedleLoad first = tracker.update(snapshot(haptics::ContactState::kTissue, {0.301, 0, 0}, 0));
   engine::NeedleLoad deeper = tracker.update(snapshot(haptics::ContactState::kTissue, {0.33, 0, 0}, 0.3));
@@ -46,7 +47,7 @@ TEST(NeedleTracker, EntryIsWhereTheNeedleFirstWasInTissueUntilItLeaves) {
 }
 
 TEST(NeedleTracker, TissueTakesTheOppositeOfTheLateralConstraintForce) {
-  engine::NeedleTracker tracker;
+  app::NeedleTracker tracker;
   // Needle along +x; the constraint pushes it along -y (and a little along its axis).
   engine::NeedleLoad load = tracker.update(snapshot(haptics::ContactState::kTissue, {0.33, 0, 0}, 0, {0.2, -0.7, 0}));
   EXPECT_NEAR(load.lateral_force_on_tissue_N.x, 0.0, 1e-12);
@@ -54,7 +55,7 @@ TEST(NeedleTracker, TissueTakesTheOppositeOfTheLateralConstraintForce) {
 }
 
 TEST(NeedleTracker, LateralMultipliersActAlongTheNeedleFramesYAndZ) {
-  engine::NeedleTracker tracker;
+  app::NeedleTracker tracker;
   // Needle turned a quarter about z: x5 = +y, y5 = -x, z5 = +z.
   haptics::ToolSnapshot s = snapshot(haptics::ContactState::kTissue, {0.33, 0, 0}, M_PI / 2);
   s.multiplier_count = 2;
@@ -67,11 +68,35 @@ TEST(NeedleTracker, LateralMultipliersActAlongTheNeedleFramesYAndZ) {
 }
 
 TEST(NeedleTracker, RigidContactTouchesAlongTheSurfaceReaction) {
-  engine::NeedleTracker tracker;
+  app::NeedleTracker tracker;
   engine::NeedleLoad load = tracker.update(snapshot(haptics::ContactState::kRigidSurface, {0.3, 0, 0}, 0, {-2.0, 0, 0}));
   EXPECT_EQ(load.contact, engine::NeedleContact::Touching);
   EXPECT_EQ(load.surface_normal, glm::dvec3(-1, 0, 0));
   EXPECT_DOUBLE_EQ(load.normal_force_N, 2.0);
+}
+
+TEST(ReplayCursor, ScrubbingBackFeedsTheTrackerFromTheStart) {
+  // In tissue from 0.1 s at two different entry points, out in between: the entry the needle
+  // load shows at 0.35 s is the second one, whether reached forwards or after going further.
+  auto at = [](double t, double x, haptics::ContactState c) {
+    haptics::ToolSnapshot s;
+    s.time_s = t;
+    s.needle_tip_m[0] = x;
+    s.contact = c;
+    return s;
+  };
+  using haptics::ContactState;
+  const std::vector<haptics::ToolSnapshot> states = {at(0.0, 0.0, ContactState::kFree), at(0.1, 0.01, ContactState::kTissue),
+                                                     at(0.2, 0.02, ContactState::kFree), at(0.3, 0.03, ContactState::kTissue),
+                                                     at(0.4, 0.04, ContactState::kTissue)};
+  app::ReplayCursor cursor;
+  EXPECT_DOUBLE_EQ(cursor.at(states, 0.15).surface_point.x, 0.01);
+  EXPECT_DOUBLE_EQ(cursor.at(states, 0.45).surface_point.x, 0.03);
+  EXPECT_DOUBLE_EQ(cursor.at(states, 0.45).tip.x, 0.04);
+  const engine::NeedleLoad back = cursor.at(states, 0.15);  // backwards: fed again from the start
+  EXPECT_DOUBLE_EQ(back.surface_point.x, 0.01);
+  EXPECT_DOUBLE_EQ(back.tip.x, 0.01);
+  EXPECT_EQ(cursor.at(states, -1.0).contact, engine::NeedleContact::Free);  // before the first: the first
 }
 
 }  // namespace

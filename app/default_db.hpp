@@ -6,7 +6,7 @@
 
 #include "training/sessions/session_store.hpp"
 
-namespace needle::cli {
+namespace needle::app {
 
 // $XDG_DATA_HOME/needle-sim/sessions.db, else ~/.local/share/needle-sim/sessions.db.
 std::filesystem::path default_db();
@@ -15,4 +15,4 @@ std::filesystem::path default_db();
 // error naming the file when it does not.
 std::unique_ptr<training::SessionStore> open_existing_db(const std::filesystem::path& file);
 
-}  // namespace needle::cli
+}  // namespace needle::app

@@ -1,8 +1,8 @@
-#include "window_frames.hpp"
+#include "app/window_frames.hpp"
 
 #include <cstdio>
 
-namespace needle::cli {
+namespace needle::app {
 namespace {
 
 engine::ContextOptions presenting_to(engine::Window& window) {
@@ -14,7 +14,7 @@ engine::ContextOptions presenting_to(engine::Window& window) {
 
 }  // namespace
 
-VulkanWindow::VulkanWindow(const std::string& title, Size2 size)
+VulkanWindow::VulkanWindow(const std::string& title, engine::Extent size)
     : window(title, int(size.width), int(size.height)), context(presenting_to(window)), target(context, window) {}
 
 void WindowFrames::draw(engine::Window& window, engine::SceneRenderer& renderer, engine::RenderTarget& target,
@@ -34,4 +34,4 @@ void WindowFrames::draw(engine::Window& window, engine::SceneRenderer& renderer,
   window.request_close();
 }
 
-}  // namespace needle::cli
+}  // namespace needle::app

@@ -18,7 +18,7 @@
 #include "haptics/sim/scenario.hpp"
 #include "training/tasks/task.hpp"
 
-namespace needle::cli {
+namespace needle::app {
 
 struct RigOptions {
   std::string device = "sim";           // sim | mouse | falcon[:N] | replay:FILE
@@ -70,4 +70,4 @@ class SessionRig {
   std::string context_;
 };
 
-}  // namespace needle::cli
+}  // namespace needle::app
