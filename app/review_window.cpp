@@ -1,0 +1,163 @@
+#include "app/review_window.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include "app/default_db.hpp"
+#include "app/replay_cursor.hpp"
+#include "app/window_frames.hpp"
+#include "engine/gpu_scene.hpp"
+#include "engine/ui_pass.hpp"
+#include "training/sessions/session_export.hpp"
+#include "ui/review_panels.hpp"
+#include "ui/review_replay.hpp"
+#include "ui/status_panel.hpp"
+
+namespace needle::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The part of the window's width the table and the detail take; the 3D view is right of it.
+constexpr float kPanelsFraction = 0.46f;
+constexpr auto kRefresh = std::chrono::seconds(2);
+
+// A session to show, loaded when the table's choice changes; the error when it cannot be read.
+struct Loaded {
+  std::optional<training::SessionReview> review;
+  std::string error;
+  int64_t id = 0;
+  bool complete = false;
+
+  // Loads `id` when it is not the one held, or when it has been completed since.
+  bool update(const training::SessionStore& store, const fs::path& db, int64_t wanted, const std::vector<training::SessionInfo>& list) {
+    bool now_complete = false;
+    for (const training::SessionInfo& s : list) now_complete |= s.id == wanted && s.complete;
+    if (wanted == id && now_complete == complete) return false;
+    id = wanted;
+    complete = now_complete;
+    review.reset();
+    error.clear();
+    if (wanted == 0) return true;
+    try {
+      review = training::load_session_review(store, db, wanted);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    return true;
+  }
+};
+
+}  // namespace
+
+int run_review_window(const ReviewOptions& options) {
+  if (!engine::Window::display_available()) {
+    throw std::runtime_error(
+        "no display: the review is a window; for a headless export use needle-sim report --session ID --out DIR");
+  }
+  const std::unique_ptr<training::SessionStore> store = open_existing_db(options.db);
+  VulkanWindow vw("needle-sim review", options.size);
+  engine::Window& window = vw.window;
+  engine::VulkanContext& context = vw.context;
+  engine::WindowTarget& target = vw.target;
+  engine::SceneRenderer renderer(context, target, {vw.cpu_device() ? VK_SAMPLE_COUNT_1_BIT : VK_SAMPLE_COUNT_4_BIT});
+  auto scene = std::make_unique<engine::GpuScene>(renderer, engine::Model{}, engine::Scene{});
+  fs::path scene_file;
+  std::string scene_error;
+  engine::UiPass ui_pass(context, renderer, &window);
+  ui::FrameClock clock;
+
+  ui::SessionTableState table;
+  table.selected = options.session;
+  std::vector<training::SessionInfo> sessions = store->sessions();
+  auto refreshed = std::chrono::steady_clock::now();
+  Loaded a, b;
+  ReplayCursor cursor;
+  double t = 0.0;
+  bool playing = false;
+  ui::DetailOptions detail;
+  detail.show_export = true;
+
+  WindowFrames frames(options.frames, options.screenshot);
+  while (!window.should_close()) {
+    window.poll_events();
+    const float dt = clock.tick();
+    if (std::chrono::steady_clock::now() - refreshed > kRefresh) {
+      sessions = store->sessions();
+      refreshed = std::chrono::steady_clock::now();
+    }
+    if (a.update(*store, options.db, table.selected, sessions)) {
+      cursor.reset();
+      playing = false;
+      detail.export_message.clear();
+      t = a.review ? a.review->end_s() : 0.0;
+      const fs::path wanted = a.review && a.review->task ? a.review->task->scene : fs::path();
+      if (wanted != scene_file) {
+        renderer.wait_idle();  // the old scene's buffers may still be in flight
+        scene_file = wanted;
+        scene_error.clear();
+        try {
+          scene = wanted.empty() ? std::make_unique<engine::GpuScene>(renderer, engine::Model{}, engine::Scene{})
+                                 : std::make_unique<engine::GpuScene>(renderer, engine::load_scene(wanted));
+        } catch (const std::exception& e) {
+          scene_error = e.what();
+          scene = std::make_unique<engine::GpuScene>(renderer, engine::Model{}, engine::Scene{});
+        }
+      }
+    }
+    b.update(*store, options.db, table.compared, sessions);
+    if (playing && a.review) {
+      t += dt;
+      if (t >= a.review->end_s()) t = a.review->end_s(), playing = false;
+    }
+
+    const VkExtent2D extent = target.extent();
+    const float w = float(extent.width), h = float(extent.height), left = kPanelsFraction * w, bar = 64.0f;
+    ui_pass.begin_frame(extent, dt);
+    ui::draw_session_table(sessions, table, {ImVec2(0, 0), ImVec2(left, 0.32f * h)});
+    const ui::PanelRect below{ImVec2(0, 0.32f * h), ImVec2(left, 0.68f * h)};
+    if (a.review) {
+      detail.cursor_s = t;
+      if (ui::draw_session_detail(*a.review, detail, below)) {
+        const fs::path dir = fs::absolute(options.db).parent_path() / "exports";
+        try {
+          detail.export_message = "wrote " + training::export_session(a.review->stored, dir).string() + " and the .csv";
+        } catch (const std::exception& e) {
+          detail.export_message = e.what();
+        }
+      }
+      playing = ui::draw_replay_bar(*a.review, t, playing, {ImVec2(left, h - bar), ImVec2(w - left, bar)});
+      if (!scene_error.empty()) {
+        ImGui::SetNextWindowPos(ImVec2(left + 10.0f, 10.0f));
+        ImGui::Begin("3D view", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+        ImGui::TextWrapped("no replay: %s", scene_error.c_str());
+        ImGui::End();
+      }
+      if (b.review) {
+        bool open = true;
+        ui::draw_comparison(*a.review, *b.review, {ImVec2(left, 0), ImVec2(w - left, h - bar)}, &open);
+        if (!open) table.compared = 0;
+      }
+    } else {
+      ImGui::SetNextWindowPos(below.pos);
+      ImGui::SetNextWindowSize(below.size);
+      ImGui::Begin("Session", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
+      ImGui::TextWrapped("%s", !a.error.empty()          ? a.error.c_str()
+                               : sessions.empty()        ? "The database has no sessions yet: needle-sim run makes them."
+                                                         : "Click a session to review it; B picks one to compare it with.");
+      ImGui::End();
+    }
+    const bool replaying = a.review && a.review->has_recording() && scene_error.empty() && !b.review;
+    engine::FrameParams params = scene->frame_params(replaying ? &cursor.at(a.review->states, t) : nullptr);
+    ui::frame_beside_panels(params.camera, w / h, kPanelsFraction);
+    params.overlay = ui_pass.end_frame();
+
+    frames.draw(window, renderer, target, params);
+  }
+  renderer.wait_idle();
+  std::printf("presented %ld frames\n", frames.drawn());
+  return 0;
+}
+
+}  // namespace needle::app

@@ -1,0 +1,17 @@
+// One session's review exported headless, for a session database on a machine without a display:
+// the metrics as JSON and CSV, the plots and the review panels as PNG (docs/REVIEW.md, "report").
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+
+namespace needle::app {
+
+// Writes OUT/session_ID.{json,csv}, the plots and the panels; the replay picture shows the moment
+// `at` (default: the end of the recording). Returns 0, or 1 when a named recording cannot be read
+// (said on stderr); throws runtime_error naming the database or the session when they are missing.
+int write_session_report(const std::filesystem::path& db, int64_t id, const std::filesystem::path& out,
+                         std::optional<double> at);
+
+}  // namespace needle::app
