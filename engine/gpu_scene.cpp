@@ -4,8 +4,11 @@
 #include <map>
 #include <stdexcept>
 
+#include "engine/deformation_pass.hpp"
 #include "engine/gltf_loader.hpp"
+#include "engine/gpu_model.hpp"
 #include "engine/needle_pose.hpp"
+#include "engine/scene_pass.hpp"
 
 namespace needle::engine {
 
@@ -16,7 +19,7 @@ GpuScene::GpuScene(const SceneRenderer& renderer, Scene scene) : scene_(std::mov
     transforms_.push_back(asset.transform());
     if (!asset.deformation) {
       auto [it, fresh] = shared.try_emplace(asset.gltf, models_.size());
-      if (fresh) models_.push_back(renderer.upload(load_gltf(asset.gltf)));
+      if (fresh) models_.push_back(renderer.pass().upload(load_gltf(asset.gltf)));
       model_of_asset_.push_back(it->second);
       continue;
     }
@@ -39,8 +42,8 @@ void GpuScene::add_deformable(const SceneRenderer& renderer, Model model, size_t
     grids.push_back(VertexGrid::sort_vertices(model.primitives[p], 0.5 * tissue.falloff * tissue.radius_m));
   }
   model_of_asset_.push_back(models_.size());
-  models_.push_back(renderer.upload(model));
-  DeformableTissue deformable{asset, std::make_unique<DeformationPass>(renderer.context())};
+  models_.push_back(renderer.pass().upload(model));
+  DeformableTissue deformable{asset, std::make_unique<DeformationPass>(renderer.pass().context())};
   for (const MeshInstance& instance : model.instances) {
     deformable.pass->add_target(models_.back()->primitives()[instance.primitive], model.primitives[instance.primitive],
                                 std::move(grids[instance.primitive]),
@@ -60,10 +63,14 @@ GpuScene::GpuScene(const SceneRenderer& renderer, const Model& model, const Scen
   if (deformation) {
     add_deformable(renderer, model, 0);
   } else {
-    models_.push_back(renderer.upload(model));
+    models_.push_back(renderer.pass().upload(model));
     model_of_asset_.push_back(0);
   }
 }
+
+GpuScene::~GpuScene() = default;
+GpuScene::GpuScene(GpuScene&&) noexcept = default;
+GpuScene& GpuScene::operator=(GpuScene&&) noexcept = default;
 
 size_t GpuScene::asset_index(const std::string& name) const {
   for (size_t i = 0; i < scene_.assets.size(); ++i) {
@@ -73,6 +80,8 @@ size_t GpuScene::asset_index(const std::string& name) const {
 }
 
 void GpuScene::set_asset_transform(size_t asset, const glm::mat4& transform) { transforms_.at(asset) = transform; }
+
+const Bounds& GpuScene::model_bounds(size_t asset) const { return models_[model_of_asset_[asset]]->world_bounds(); }
 
 FrameParams GpuScene::frame_params(const NeedleLoad* needle) {
   FrameParams params{scene_.camera, scene_.lights, scene_.background, {}, {}, {}};
@@ -89,21 +98,11 @@ FrameParams GpuScene::frame_params(const NeedleLoad* needle) {
     for (const Kelvinlet& k : field.loads) params.items[t.asset].moved.push_back({k.center, k.support});
   }
   if (!passes.empty()) {
-    params.before_pass = [passes = std::move(passes)](VkCommandBuffer cmd) {
-      for (const auto& record : passes) record(cmd);
+    params.before_pass = [passes = std::move(passes)](const CommandBuffer& cmd) {
+      for (const auto& record : passes) record(cmd.handle);
     };
   }
   return params;
-}
-
-DeformationPass::FrameStats GpuScene::deformation_stats() const {
-  DeformationPass::FrameStats sum;
-  for (const DeformableTissue& t : tissues_) {
-    sum.processed += t.pass->last_frame().processed;
-    sum.skipped += t.pass->last_frame().skipped;
-    sum.dispatched = sum.dispatched || t.pass->last_frame().dispatched;
-  }
-  return sum;
 }
 
 }  // namespace needle::engine

@@ -8,15 +8,9 @@
 
 #include <glm/glm.hpp>
 
+#include "engine/tissue.hpp"
+
 namespace needle::engine {
-
-struct ElasticMaterial {
-  double shear_modulus_Pa = 3000.0;  // μ; soft tissue is of the order of kPa
-  double poisson_ratio = 0.45;       // ν; near 0.5 the medium bulges (volume kept)
-
-  double a() const;  // 1 / (4 π μ)
-  double b() const;  // a / (4 (1 − ν))
-};
 
 struct Kelvinlet {
   glm::dvec3 center{0.0};

@@ -6,7 +6,7 @@
 
 namespace needle::engine {
 
-double projected_radius_px(const Sphere& world, const Camera& camera, VkExtent2D extent) {
+double projected_radius_px(const Sphere& world, const Camera& camera, Extent extent) {
   const double distance = glm::length(world.center - glm::dvec3(camera.position));
   if (distance <= world.radius) return std::numeric_limits<double>::infinity();
   // The outline's angular radius is asin(r / d); the perspective maps tan(angle) to

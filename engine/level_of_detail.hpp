@@ -3,13 +3,12 @@
 // frame time without changing what the trainee sees.
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <cstdint>
 #include <vector>
 
+#include "engine/extent.hpp"
+#include "engine/model.hpp"
 #include "engine/scene.hpp"
-#include "engine/vertex_grid.hpp"
 
 namespace needle::engine {
 
@@ -19,7 +18,7 @@ constexpr double kMinPixelsPerTriangle = 4.0;
 
 // Radius in pixels of a world-space sphere's outline on a target of this extent, seen by the
 // camera; infinite when the camera is inside it.
-double projected_radius_px(const Sphere& world, const Camera& camera, VkExtent2D extent);
+double projected_radius_px(const Sphere& world, const Camera& camera, Extent extent);
 
 // The finest level (triangle counts, finest first) whose front half, spread over a disc of this
 // radius, gives each triangle at least min_pixels; the coarsest when none does.

@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "engine/model.hpp"
-#include "engine/vertex_grid.hpp"
 
 namespace needle::engine {
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "engine/scene_renderer.hpp"
+#include "engine/scene_pass.hpp"
 #include "engine/vk_check.hpp"
 #include "engine/vulkan_context.hpp"
 #include "engine/window.hpp"
@@ -32,16 +32,25 @@ void linearise_style_colors() {
 
 }  // namespace
 
-UiPass::UiPass(const VulkanContext& context, const SceneRenderer& renderer, Window* window)
-    : device_(context.device()), with_window_(window != nullptr) {
+struct UiPass::Backend {
+  VkDevice device = VK_NULL_HANDLE;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  bool with_window = false;
+};
+
+UiPass::UiPass(const SceneRenderer& renderer, Window* window) : backend_(std::make_unique<Backend>()) {
   if (g_ui_pass_alive) throw std::logic_error("only one UiPass may exist at a time (ImGui's backend is global)");
+  const ScenePass& pass = renderer.pass();
+  const VulkanContext& context = pass.context();
+  backend_->device = context.device();
+  backend_->with_window = window != nullptr;
   VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pool_info.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;  // the backend frees its font set
   pool_info.maxSets = 1;
   pool_info.poolSizeCount = 1;
   pool_info.pPoolSizes = &size;
-  VK_CHECK(vkCreateDescriptorPool(device_, &pool_info, nullptr, &pool_));
+  VK_CHECK(vkCreateDescriptorPool(backend_->device, &pool_info, nullptr, &backend_->pool));
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -54,32 +63,32 @@ UiPass::UiPass(const VulkanContext& context, const SceneRenderer& renderer, Wind
   ImGui_ImplVulkan_InitInfo info{};
   info.Instance = context.instance();
   info.PhysicalDevice = context.physical_device();
-  info.Device = device_;
+  info.Device = backend_->device;
   info.QueueFamily = context.queue_family();
   info.Queue = context.queue();
-  info.DescriptorPool = pool_;
+  info.DescriptorPool = backend_->pool;
   info.MinImageCount = 2;
   info.ImageCount = 3;  // vertex-buffer sets the backend cycles through: more than our frames in flight
-  info.MSAASamples = renderer.samples();
+  info.MSAASamples = pass.samples();
   info.CheckVkResultFn = check_imgui_vk;
-  ImGui_ImplVulkan_Init(&info, renderer.render_pass());
+  ImGui_ImplVulkan_Init(&info, pass.render_pass());
   context.submit_and_wait([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
   ImGui_ImplVulkan_DestroyFontUploadObjects();
   g_ui_pass_alive = true;
 }
 
 UiPass::~UiPass() {
-  vkDeviceWaitIdle(device_);
+  vkDeviceWaitIdle(backend_->device);
   ImGui_ImplVulkan_Shutdown();
-  if (with_window_) ImGui_ImplGlfw_Shutdown();
+  if (backend_->with_window) ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
-  vkDestroyDescriptorPool(device_, pool_, nullptr);
+  vkDestroyDescriptorPool(backend_->device, backend_->pool, nullptr);
   g_ui_pass_alive = false;
 }
 
-void UiPass::begin_frame(VkExtent2D extent, float delta_s) {
+void UiPass::begin_frame(Extent extent, float delta_s) {
   ImGui_ImplVulkan_NewFrame();
-  if (with_window_) {
+  if (backend_->with_window) {
     ImGui_ImplGlfw_NewFrame();
   } else {
     ImGuiIO& io = ImGui::GetIO();
@@ -89,9 +98,9 @@ void UiPass::begin_frame(VkExtent2D extent, float delta_s) {
   ImGui::NewFrame();
 }
 
-std::function<void(VkCommandBuffer)> UiPass::end_frame() {
+CommandRecorder UiPass::end_frame() {
   ImGui::Render();
-  return [](VkCommandBuffer cmd) { ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd); };
+  return [](const CommandBuffer& cmd) { ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd.handle); };
 }
 
 }  // namespace needle::engine

@@ -15,11 +15,6 @@ struct VertexRange {
   uint32_t count = 0;
 };
 
-struct Sphere {
-  glm::dvec3 center{0.0};
-  double radius = 0.0;
-};
-
 class VertexGrid {
  public:
   // Sorts the primitive's vertices by grid cell (stable, so the order inside a cell is kept)

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <optional>
 
 #include "engine/vk_check.hpp"
+#include "engine/window_surface.hpp"
 
 namespace needle::engine {
 namespace {
@@ -43,20 +43,10 @@ const char* type_name(VkPhysicalDeviceType type) {
 
 }  // namespace
 
-bool ContextOptions::validation_by_default() {
-  const char* env = std::getenv("NEEDLE_VALIDATION");
-  if (env) return std::strcmp(env, "0") != 0;
-#ifdef NEEDLE_VALIDATION_BY_DEFAULT
-  return true;
-#else
-  return false;
-#endif
-}
-
-VulkanContext::VulkanContext(const ContextOptions& options) {
-  create_instance(options);
+VulkanContext::VulkanContext(const DeviceOptions& options, const Window* window) {
+  create_instance(options, window);
   try {
-    if (options.make_surface) surface_ = options.make_surface(instance_);
+    if (window) surface_ = create_window_surface(*window, instance_);
     pick_physical_device();
     create_device();
   } catch (...) {
@@ -87,9 +77,10 @@ void VulkanContext::release() {
   instance_ = VK_NULL_HANDLE;
 }
 
-void VulkanContext::create_instance(const ContextOptions& options) {
+void VulkanContext::create_instance(const DeviceOptions& options, const Window* window) {
+  const std::vector<std::string> window_extensions = window ? window_instance_extensions() : std::vector<std::string>{};
   std::vector<const char*> extensions;
-  for (const auto& e : options.instance_extensions) extensions.push_back(e.c_str());
+  for (const auto& e : window_extensions) extensions.push_back(e.c_str());
   std::vector<const char*> layers;
   if (options.validation) {
     if (!has_layer(kValidationLayer)) {
@@ -242,7 +233,7 @@ uint32_t VulkanContext::memory_type(uint32_t allowed_types, VkMemoryPropertyFlag
   throw VulkanError("no Vulkan memory type with the required properties");
 }
 
-VkSampleCountFlagBits VulkanContext::max_msaa(VkSampleCountFlagBits wanted) const {
+VkSampleCountFlagBits VulkanContext::max_msaa(int wanted) const {
   VkSampleCountFlags supported = properties_.limits.framebufferColorSampleCounts &
                                  properties_.limits.framebufferDepthSampleCounts;
   for (int s = wanted; s > 1; s >>= 1) {

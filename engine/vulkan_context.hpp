@@ -9,25 +9,17 @@
 #include <string>
 #include <vector>
 
+#include "engine/gpu_device.hpp"
+
 namespace needle::engine {
 
-struct ContextOptions {
-  // Khronos validation layer + debug messenger. Default: on in debug builds or when the
-  // environment has NEEDLE_VALIDATION=1. Tests force it on.
-  bool validation = validation_by_default();
-  // Instance extensions a window system needs (from glfwGetRequiredInstanceExtensions).
-  std::vector<std::string> instance_extensions;
-  // When set, called with the instance to make the surface; the chosen device must present to it.
-  std::function<VkSurfaceKHR(VkInstance)> make_surface;
-  // Print the chosen device on stdout.
-  bool announce_device = true;
-
-  static bool validation_by_default();
-};
+class Window;
 
 class VulkanContext {
  public:
-  explicit VulkanContext(const ContextOptions& options);
+  // With a window, the instance gets the extensions to present to it, the context its surface,
+  // and the chosen device must present to that.
+  explicit VulkanContext(const DeviceOptions& options, const Window* window = nullptr);
   ~VulkanContext();
   VulkanContext(const VulkanContext&) = delete;
   VulkanContext& operator=(const VulkanContext&) = delete;
@@ -45,7 +37,7 @@ class VulkanContext {
   // Memory type index with the given bits among allowed_types; throws when there is none.
   uint32_t memory_type(uint32_t allowed_types, VkMemoryPropertyFlags flags) const;
   // Highest sample count ≤ wanted supported for colour and depth attachments together.
-  VkSampleCountFlagBits max_msaa(VkSampleCountFlagBits wanted) const;
+  VkSampleCountFlagBits max_msaa(int wanted) const;
 
   // Records with `record` into a one-time command buffer, submits, and waits.
   void submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const;
@@ -59,7 +51,7 @@ class VulkanContext {
                                                          VkDebugUtilsMessageTypeFlagsEXT type,
                                                          const VkDebugUtilsMessengerCallbackDataEXT* data,
                                                          void* self);
-  void create_instance(const ContextOptions& options);
+  void create_instance(const DeviceOptions& options, const Window* window);
   void pick_physical_device();
   void create_device();
   void release();

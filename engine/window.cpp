@@ -1,3 +1,5 @@
+// The public Window and, in the same place as GLFW's set-up, the Vulkan side of it
+// (window_surface.hpp).
 #include "engine/window.hpp"
 
 #define GLFW_INCLUDE_VULKAN
@@ -7,6 +9,7 @@
 #include <stdexcept>
 
 #include "engine/vk_check.hpp"
+#include "engine/window_surface.hpp"
 
 namespace needle::engine {
 namespace {
@@ -31,7 +34,7 @@ bool Window::display_available() {
   return glfw_ready() && glfwVulkanSupported();
 }
 
-std::vector<std::string> Window::required_instance_extensions() {
+std::vector<std::string> window_instance_extensions() {
   if (!glfw_ready()) throw std::runtime_error("no display: GLFW could not initialise");
   uint32_t count = 0;
   const char** names = glfwGetRequiredInstanceExtensions(&count);
@@ -63,9 +66,9 @@ Window::~Window() {
   if (window_) glfwDestroyWindow(window_);
 }
 
-VkSurfaceKHR Window::create_surface(VkInstance instance) const {
+VkSurfaceKHR create_window_surface(const Window& window, VkInstance instance) {
   VkSurfaceKHR surface;
-  VK_CHECK(glfwCreateWindowSurface(instance, window_, nullptr, &surface));
+  VK_CHECK(glfwCreateWindowSurface(instance, window.handle(), nullptr, &surface));
   return surface;
 }
 
@@ -74,7 +77,7 @@ void Window::request_close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 void Window::poll_events() const { glfwPollEvents(); }
 void Window::wait_events() const { glfwWaitEventsTimeout(0.1); }
 
-VkExtent2D Window::framebuffer_extent() const {
+Extent Window::framebuffer_extent() const {
   int w = 0, h = 0;
   glfwGetFramebufferSize(window_, &w, &h);
   return {uint32_t(w), uint32_t(h)};

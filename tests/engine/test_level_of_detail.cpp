@@ -9,6 +9,7 @@
 #include "asset-gen/shapes.hpp"
 #include "engine/gltf_loader.hpp"
 #include "engine/level_of_detail.hpp"
+#include "engine/vertex_grid.hpp"
 
 namespace needle::engine {
 namespace {

@@ -1,20 +1,20 @@
-// A window's swapchain as a RenderTarget: sRGB format, FIFO presentation, recreated on resize
+// A window's swapchain as TargetImages: sRGB format, FIFO presentation, recreated on resize
 // and when the surface reports out-of-date or suboptimal; no frames while minimised.
 #pragma once
 
 #include <vector>
 
-#include "engine/render_target.hpp"
+#include "engine/target_images.hpp"
 
 namespace needle::engine {
 
 class VulkanContext;
 class Window;
 
-class WindowTarget final : public RenderTarget {
+class Swapchain final : public TargetImages {
  public:
-  WindowTarget(const VulkanContext& context, Window& window);
-  ~WindowTarget() override;
+  Swapchain(const VulkanContext& context, Window& window);
+  ~Swapchain() override;
 
   VkFormat format() const override { return format_; }
   VkExtent2D extent() const override { return extent_; }

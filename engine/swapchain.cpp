@@ -1,4 +1,4 @@
-#include "engine/window_target.hpp"
+#include "engine/swapchain.hpp"
 
 #include <algorithm>
 
@@ -25,24 +25,24 @@ VkSurfaceFormatKHR choose_format(VkPhysicalDevice device, VkSurfaceKHR surface) 
 
 }  // namespace
 
-WindowTarget::WindowTarget(const VulkanContext& context, Window& window) : context_(context), window_(window) {
+Swapchain::Swapchain(const VulkanContext& context, Window& window) : context_(context), window_(window) {
   format_ = choose_format(context.physical_device(), context.surface()).format;
   recreate();
 }
 
-WindowTarget::~WindowTarget() {
+Swapchain::~Swapchain() {
   vkDeviceWaitIdle(context_.device());
   destroy_views();
   if (swapchain_) vkDestroySwapchainKHR(context_.device(), swapchain_, nullptr);
 }
 
-void WindowTarget::destroy_views() {
+void Swapchain::destroy_views() {
   for (VkImageView v : views_) vkDestroyImageView(context_.device(), v, nullptr);
   views_.clear();
 }
 
-bool WindowTarget::recreate() {
-  VkExtent2D wanted = window_.framebuffer_extent();
+bool Swapchain::recreate() {
+  const Extent wanted = window_.framebuffer_extent();
   if (wanted.width == 0 || wanted.height == 0) return false;  // minimised
   vkDeviceWaitIdle(context_.device());
 
@@ -98,7 +98,7 @@ bool WindowTarget::recreate() {
   return true;
 }
 
-std::optional<uint32_t> WindowTarget::acquire(VkSemaphore image_ready) {
+std::optional<uint32_t> Swapchain::acquire(VkSemaphore image_ready) {
   if (window_.take_resized()) stale_ = true;
   if ((stale_ || !swapchain_) && !recreate()) return std::nullopt;
   uint32_t index = 0;
@@ -115,7 +115,7 @@ std::optional<uint32_t> WindowTarget::acquire(VkSemaphore image_ready) {
   return index;
 }
 
-void WindowTarget::present(uint32_t index, VkSemaphore render_done) {
+void Swapchain::present(uint32_t index, VkSemaphore render_done) {
   VkPresentInfoKHR info{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
   info.waitSemaphoreCount = 1;
   info.pWaitSemaphores = &render_done;

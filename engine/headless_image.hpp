@@ -1,17 +1,17 @@
-// Offscreen colour image: CI, tests and `render`. Pixels come back through SceneRenderer's capture.
+// Offscreen colour image: CI, tests and `render`. Pixels come back through the scene pass's capture.
 #pragma once
 
 #include <vector>
 
 #include "engine/gpu_image.hpp"
-#include "engine/render_target.hpp"
+#include "engine/target_images.hpp"
 
 namespace needle::engine {
 
-class HeadlessTarget final : public RenderTarget {
+class HeadlessImage final : public TargetImages {
  public:
   // sRGB RGBA8, so captured bytes are display-ready PNG pixels.
-  HeadlessTarget(const VulkanContext& context, VkExtent2D extent);
+  HeadlessImage(const VulkanContext& context, VkExtent2D extent);
 
   VkFormat format() const override { return VK_FORMAT_R8G8B8A8_SRGB; }
   VkExtent2D extent() const override { return image_.spec().extent; }
