@@ -39,7 +39,7 @@ class GpuDevice {
   // Every message the validation layer sent (warnings and errors), in order.
   std::vector<std::string> validation_messages() const;
 
-  // The engine's own access (engine/vulkan_context.hpp); an incomplete type outside it.
+  // The engine's own access (engine/vulkan/vulkan_context.hpp); an incomplete type outside it.
   const VulkanContext& context() const { return *context_; }
 
  private:

@@ -22,7 +22,7 @@ class RenderTarget {
   // In pixels; a window's follows its framebuffer.
   Extent extent() const;
 
-  // The engine's own access (engine/target_images.hpp); an incomplete type outside it.
+  // The engine's own access (engine/vulkan/target_images.hpp); an incomplete type outside it.
   const TargetImages& images() const { return *images_; }
   TargetImages& images() { return *images_; }
 

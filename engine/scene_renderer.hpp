@@ -77,7 +77,7 @@ class SceneRenderer {
   // Triangles the last recorded frame sent to the device, after chunk culling.
   size_t triangles_drawn() const;
 
-  // The engine's own access (engine/scene_pass.hpp); an incomplete type outside it.
+  // The engine's own access (engine/passes/scene_pass.hpp); an incomplete type outside it.
   const ScenePass& pass() const { return *pass_; }
 
  private:

@@ -28,7 +28,7 @@ class UiPass {
   CommandRecorder end_frame();
 
  private:
-  struct Backend;  // the Vulkan objects ImGui's backend draws with (ui_pass.cpp)
+  struct Backend;  // the Vulkan objects ImGui's backend draws with (engine/passes/ui_pass.cpp)
   std::unique_ptr<Backend> backend_;
 };
 

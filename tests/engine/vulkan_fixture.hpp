@@ -19,7 +19,7 @@ class VulkanTest : public ::testing::Test {
     seen_messages_ = messages.size();
   }
   const engine::GpuDevice& device() const { return *device_; }
-  // For tests of the engine's internals (engine/vulkan_context.hpp).
+  // For tests of the engine's internals (engine/vulkan/vulkan_context.hpp).
   const engine::VulkanContext& context() const { return device_->context(); }
 
   static inline std::unique_ptr<engine::GpuDevice> device_;

@@ -9,7 +9,7 @@
 #include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/render_target.hpp"
-#include "engine/target_images.hpp"  // the swapchain's generation
+#include "engine/vulkan/target_images.hpp"  // the swapchain's generation
 #include "engine/window.hpp"
 
 namespace needle::test {
