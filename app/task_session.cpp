@@ -28,14 +28,18 @@ const fs::path& with_folder(const fs::path& file) {
 }
 
 // Recordings live beside the database, so a session's stays where the review finds it when the
-// run's output folder is reused: <db folder>/recordings/<task>_<UTC start>_<pid>.nrec.
+// run's output folder is reused: <db folder>/recordings/<task>_<UTC start>_<pid>[_<n>].nrec, the
+// number added when a session of the same task started in the same second in this process.
 fs::path new_recording_path(const fs::path& db, const std::string& task) {
   const std::time_t now = std::time(nullptr);
   char stamp[32];
   std::strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", std::gmtime(&now));
   const fs::path dir = fs::absolute(db).parent_path() / "recordings";
   fs::create_directories(dir);
-  return dir / (task + "_" + stamp + "_" + std::to_string(::getpid()) + ".nrec");
+  const std::string stem = task + "_" + stamp + "_" + std::to_string(::getpid());
+  fs::path path = dir / (stem + ".nrec");
+  for (int n = 2; fs::exists(path); ++n) path = dir / (stem + "_" + std::to_string(n) + ".nrec");
+  return path;
 }
 
 // A progress bar on a terminal; on a pipe (CI, logs), a line every quarter.
@@ -164,6 +168,11 @@ const training::SessionResult& TaskSession::finish() {
   for (const std::string& why : result_->score.reasons_failed) std::printf("  %s\n", why.c_str());
   std::printf("wrote %s\n", score_file.c_str());
   return *result_;
+}
+
+uint64_t TaskSession::samples() const {
+  std::lock_guard lock(mutex_);
+  return consumed_;
 }
 
 engine::NeedleLoad TaskSession::needle() const {

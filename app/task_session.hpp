@@ -62,6 +62,9 @@ class TaskSession {
   // The trainee panel of now (with the result once finished), describing `step` when given.
   void draw_panel(std::optional<size_t> step = std::nullopt) const;
   const std::filesystem::path& recording_path() const { return recording_path_; }
+  int64_t session_id() const { return session_; }
+  // Samples scored so far (every tick the recorder has handed on).
+  uint64_t samples() const;
 
  private:
   void consume(const haptics::TickSample& sample);  // the recorder's sink
