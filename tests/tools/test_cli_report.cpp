@@ -7,7 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "../app/recorded_session.hpp"
+#include "tests/app/recorded_session.hpp"
 #include "cli_process.hpp"
 #include "engine/rgba_image.hpp"
 #include "tests/support/test_paths.hpp"
