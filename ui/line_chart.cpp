@@ -120,7 +120,9 @@ engine::RgbaImage draw_line_chart(const LineChart& chart, uint32_t width, uint32
   for (size_t k = 0; k < chart.markers.size(); ++k) {
     const float mx = sx(chart.markers[k].x);
     for (float yy = top; yy < bottom; yy += 10.0f) canvas.line(mx, yy, mx, std::min(yy + 5.0f, bottom), kMarker, 1.5f);
-    canvas.text(mx + 4.0f, top + 4.0f + 18.0f * float(k % 4), chart.markers[k].label, kMarker);
+    const float w = Canvas::text_width(chart.markers[k].label);
+    const float tx = mx + 4.0f + w <= float(width) - 4.0f ? mx + 4.0f : mx - 4.0f - w;  // left of it at the right edge
+    canvas.text(tx, top + 4.0f + 18.0f * float(k % 4), chart.markers[k].label, kMarker);
   }
   for (const ChartLine& l : chart.lines)
     for (size_t i = 1; i < std::min(l.x.size(), l.y.size()); ++i)

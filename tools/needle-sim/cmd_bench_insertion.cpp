@@ -78,7 +78,7 @@ void write_plot(const std::string& file, const std::string& title, const haptics
       }
   chart.lines = {in, out};
   for (const auto& b : boundaries)
-    chart.markers.push_back({1e3 * b.depth_m, b.layer < 0 ? "(out)" : model.layer(b.layer).name});
+    chart.markers.push_back({1e3 * b.depth_m, b.layer < 0 ? "(no layer)" : model.layer(b.layer).name});
   engine::write_png(file, ui::draw_line_chart(chart, 1200, 700));
 }
 
@@ -107,7 +107,9 @@ int run_bench_insertion(ArgList& args) {
   plan.hold_s = hold;
   plan.period_s = scenario.period_s;
   const haptics::InsertionRun run = haptics::run_kinematic_insertion(scenario.tissue, plan);
-  const auto boundaries = haptics::layer_boundaries(scenario.tissue, plan.from, plan.dir, depth);
+  // The layers along the line as far as the tip went (and the rigid surface that stopped it).
+  const double reached = run.hard_stop ? std::min(depth, run.hard_stop->depth_m + 1e-3) : depth;
+  const auto boundaries = haptics::layer_boundaries(scenario.tissue, plan.from, plan.dir, reached);
 
   BenchTable table({"layer", "depth_m", "peak_force_N"});
   for (const auto& p : run.punctures) table.add_row({layer_name(scenario.tissue, p.layer), p.depth_m, p.peak_force_N});
