@@ -29,7 +29,7 @@ struct TissueOutput {
   int holding_layer = -1;     // the layer holding the tip, −1 when it is in none
   int surface_layer = -1;     // the layer whose surface the tip presses, −1 when none
   double deflection_m = 0.0;  // that surface's deflection d along the needle (the dimple's depth)
-  Eigen::Vector3d contact_point = Eigen::Vector3d::Zero();  // where the tip met it, at rest
+  Eigen::Vector3d contact_point = Eigen::Vector3d::Zero();  // where the tip met it, at rest (while surface_layer ≥ 0)
   bool rigid_contact = false;                               // that surface is a rigid layer's: the GPM contact (3.15)
   SurfaceSample rigid_surface;    // its φ, normal and Hessian at the tip, while rigid_contact
   int punctured_layer = -1;       // the surface that gave way in this tick
@@ -54,7 +54,7 @@ struct TissueState {
   TissueOutput out;
 };
 
-// (model, state, tip, unit axis, dt) => (state.track, state.grip_force_N, state.tissue_work_J, state.out)
+// (model, state, tip, unit axis, dt > 0) => (state.track, state.grip_force_N, state.tissue_work_J, state.out)
 //   ds = (x − x_prev)·u, ṡ = ds/dt; the track coordinate s += ds.
 //   Surface pressed:  F_s = k₁d + k₂d², d = s − s_met; gives way (pops) once F_s ≥ F_p.
 //   Grip (Karnopp): |ṡ| < band sticks with limit F_st = Σ f_st,i Lᵢ, else slips at

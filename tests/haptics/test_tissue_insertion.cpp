@@ -24,14 +24,12 @@ constexpr double kStart = 0.005;
 const Vector3d kDown = -Vector3d::UnitZ();
 
 LayerMechanics mechanics(double k1, double k2, double fp, double cut, double f, double fs) {
-  LayerMechanics m;
-  m.stiffness_N_per_m = k1;
-  m.stiffness2_N_per_m2 = k2;
-  m.puncture_force_N = fp;
-  m.cutting_force_N = cut;
-  m.friction_N_per_m = f;
-  m.static_friction_N_per_m = fs;
-  return m;
+  return {.stiffness_N_per_m = k1,
+          .stiffness2_N_per_m2 = k2,
+          .puncture_force_N = fp,
+          .cutting_force_N = cut,
+          .friction_N_per_m = f,
+          .static_friction_N_per_m = fs};
 }
 
 LayerShape slab(double top, double thickness) {
