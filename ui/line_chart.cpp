@@ -8,7 +8,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "ui/sessions/session_series.hpp"  // axis_ticks
+#include "training/sessions/session_series.hpp"  // axis_ticks
 
 namespace needle::ui {
 namespace {
@@ -105,12 +105,12 @@ engine::RgbaImage draw_line_chart(const LineChart& chart, uint32_t width, uint32
   auto sx = [&](double v) { return float(left + (v - x.lo) / (x.hi - x.lo) * (right - left)); };
   auto sy = [&](double v) { return float(bottom - (v - y.lo) / (y.hi - y.lo) * (bottom - top)); };
 
-  for (double v : axis_ticks(y.lo, y.hi, 8)) {
+  for (double v : training::axis_ticks(y.lo, y.hi, 8)) {
     canvas.line(left, sy(v), right, sy(v), kGrid, 1.0f);
     const std::string label = number(v);
     canvas.text(left - 10.0f - Canvas::text_width(label), sy(v) - 7.0f, label, kInk);
   }
-  for (double v : axis_ticks(x.lo, x.hi, 10)) {
+  for (double v : training::axis_ticks(x.lo, x.hi, 10)) {
     canvas.line(sx(v), bottom, sx(v), bottom + 6.0f, kInk, 1.5f);
     const std::string label = number(v);
     canvas.text(sx(v) - 0.5f * Canvas::text_width(label), bottom + 12.0f, label, kInk);

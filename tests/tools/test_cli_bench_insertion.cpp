@@ -21,7 +21,7 @@ TEST(CliBenchInsertion, JsonCarriesTheContractKeysAndThePlotIsWritten) {
   // z = 0.03 m stops the drive 45 mm in.
   const ProcessResult r =
       run_needle_sim("bench insertion --scenario " +
-                     quoted(std::filesystem::path(NEEDLE_SOURCE_DIR) / "assets/scenarios/tissue_block_layers.json") +
+                     quoted(source_dir() / "assets/scenarios/tissue_block_layers.json") +
                      " --from 0.33,0,0.075 --dir 0,0,-1 --depth 0.06 --speed 0.01 --hold 0.2 --json " +
                      quoted(json_path) + " --plot " + quoted(plot_path));
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -45,7 +45,7 @@ TEST(CliBenchInsertion, JsonCarriesTheContractKeysAndThePlotIsWritten) {
   for (const char* key : {"layer", "depth_m", "peak_force_N"}) EXPECT_TRUE(punctures[0].contains(key)) << key;
   EXPECT_EQ(punctures[0]["layer"], "skin");
   EXPECT_EQ(punctures[1]["layer"], "muscle");
-  const nlohmann::json skin = read_json(std::string(NEEDLE_SOURCE_DIR) + "/assets/tissues/skin.json");
+  const nlohmann::json skin = read_json(source_dir() / "assets/tissues/skin.json");
   const double k1 = skin["stiffness_N_per_m"]["value"], k2 = skin["stiffness2_N_per_m2"]["value"],
                fp = skin["puncture_force_N"]["value"];
   const double deflection = (-k1 + std::sqrt(k1 * k1 + 4 * k2 * fp)) / (2 * k2);
@@ -59,7 +59,7 @@ TEST(CliBenchInsertion, JsonCarriesTheContractKeysAndThePlotIsWritten) {
 
 TEST(CliBenchInsertion, BadArgumentsAndMissingOutputFoldersAreUsageErrorsBeforeTheRun) {
   const std::string scenario =
-      quoted(std::filesystem::path(NEEDLE_SOURCE_DIR) / "assets/scenarios/lumbar_epidural.json");
+      quoted(source_dir() / "assets/scenarios/lumbar_epidural.json");
   const std::string line = "bench insertion --scenario " + scenario + " --from 0.33,0,0.075 --dir 0,0,-1 ";
   const ProcessResult missing = run_needle_sim(line + "--depth 0.05 --speed 0.005 --json /nonexistent/folder/out.json");
   EXPECT_EQ(missing.exit_code, 2);
