@@ -22,13 +22,20 @@ json read(const std::string& path) {
   return json::parse(in);
 }
 
+// A file name of the running test's own: CTest runs the tests of this file in parallel processes.
+std::string own_file(const std::string& what) {
+  return (fs::weakly_canonical(::testing::TempDir()) /
+          (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" + what))
+      .string();
+}
+
 // The thesis's needle scenario with `tissue` replaced, written where the test's files are.
-std::string scenario_with_tissue(const json& tissue, const std::string& name = "tissue_scenario.json") {
+std::string scenario_with_tissue(const json& tissue) {
   json s = read(test::asset("assets/scenarios/nonholonomic_needle.json"));
   s["master_urdf"] = test::asset("assets/robots/master_omni.urdf");
   s["virtual_urdf"] = test::asset("assets/robots/virtual_needle_robot.urdf");
   s["tissue"] = tissue;
-  const std::string path = ::testing::TempDir() + "/" + name;
+  const std::string path = own_file("scenario.json");
   std::ofstream(path) << s.dump(1);
   return path;
 }
@@ -199,7 +206,7 @@ TEST(TissueFiles, BadParameterSetsAreErrorsInTheirOwnFile) {
   auto error_in_set = [&](const std::function<void(json&)>& edit) {
     json set = skin;
     edit(set);
-    const std::string path = fs::weakly_canonical(::testing::TempDir() + "/edited_set.json").string();
+    const std::string path = own_file("parameters.json");
     std::ofstream(path) << set.dump(1);
     const json tissue = {{"layers", {{{"name", "x"}, {"shape", slab(0.05, 0.01)}, {"parameters", path}}}}};
     const std::string error = error_of(scenario_with_tissue(tissue));
