@@ -28,14 +28,18 @@ const fs::path& with_folder(const fs::path& file) {
 }
 
 // Recordings live beside the database, so a session's stays where the review finds it when the
-// run's output folder is reused: <db folder>/recordings/<task>_<UTC start>_<pid>.nrec.
+// run's output folder is reused: <db folder>/recordings/<task>_<UTC start>_<pid>[_<n>].nrec, the
+// number added when a session of the same task started in the same second in this process.
 fs::path new_recording_path(const fs::path& db, const std::string& task) {
   const std::time_t now = std::time(nullptr);
   char stamp[32];
   std::strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", std::gmtime(&now));
   const fs::path dir = fs::absolute(db).parent_path() / "recordings";
   fs::create_directories(dir);
-  return dir / (task + "_" + stamp + "_" + std::to_string(::getpid()) + ".nrec");
+  const std::string stem = task + "_" + stamp + "_" + std::to_string(::getpid());
+  fs::path path = dir / (stem + ".nrec");
+  for (int n = 2; fs::exists(path); ++n) path = dir / (stem + "_" + std::to_string(n) + ".nrec");
+  return path;
 }
 
 // A progress bar on a terminal; on a pipe (CI, logs), a line every quarter.
@@ -73,7 +77,7 @@ TaskSession::TaskSession(TaskSessionOptions options)
       rig_(std::make_unique<SessionRig>(task_, with_task_settings(options_, scene_).rig)),
       store_(with_folder(options_.db)),
       recording_path_(new_recording_path(options_.db, task_.name)),
-      scorer_(task_) {
+      feed_(task_) {
   haptics::LoopConfig config;
   config.rate_hz = rig_->rate_hz();
   config.sample_capacity = 1 << 15;  // 33 s at 1 kHz: room for the recorder's worst stall
@@ -82,9 +86,9 @@ TaskSession::TaskSession(TaskSessionOptions options)
       recording_path_.string(),
       haptics::SessionHeader{haptics::kSessionFormatVersion, rig_->rate_hz(), static_cast<int64_t>(std::time(nullptr)),
                              options_.rig.device, rig_->context()},
-      loop_->samples(), [this](const haptics::TickSample& s) { consume(s); });
+      loop_->samples(), [this](const haptics::TickSample& s) { feed_.consume(s); });
   session_ = store_.begin_session(options_.trainee, task_, rig_->description(), recording_path_.string());
-  loop_->submit({haptics::LoopCommandType::kSetStep, 0.0, &rig_->step()});
+  loop_->submit(haptics::LoopCommand::set_step(&rig_->step()));
   std::printf("task %s on %s, trainee %s: session %lld in %s\nrecording %s\n", task_.name.c_str(),
               rig_->description().c_str(), options_.trainee.c_str(), static_cast<long long>(session_),
               options_.db.c_str(), recording_path_.c_str());
@@ -98,31 +102,16 @@ std::optional<double> TaskSession::duration_s() const {
   return double(*rig_->ticks()) / rig_->rate_hz();
 }
 
-void TaskSession::consume(const haptics::TickSample& sample) {
-  std::lock_guard lock(mutex_);
-  const size_t step = scorer_.progress().current_step();
-  scorer_.feed(sample);
-  needle_ = tracker_.update(sample.state);
-  last_ = sample.state;
-  ++consumed_;
-  for (size_t k = step; k < scorer_.progress().current_step(); ++k) ended_steps_.push_back(k);
-}
-
 void TaskSession::run_offline(const std::function<void(size_t)>& on_step_end) {
   if (!rig_->ticks()) throw std::logic_error("a session on " + options_.rig.device + " runs only in real time, in a window");
   const uint64_t ticks = *rig_->ticks();
-  loop_->submit({haptics::LoopCommandType::kStart, 0.0, nullptr, ticks});
+  loop_->submit(haptics::LoopCommand::start(ticks));
   ProgressBar progress(*duration_s());
   // One tick and one recorder pass at a time, so a step's picture shows the tick that ended it.
   for (uint64_t k = 0; k < ticks; ++k) {
     loop_->run_unpaced(1);
     recorder_->drain();
-    std::vector<size_t> ended;
-    {
-      std::lock_guard lock(mutex_);
-      ended.swap(ended_steps_);
-    }
-    for (size_t step : ended) on_step_end(step);
+    for (size_t step : feed_.take_ended_steps()) on_step_end(step);
     progress.show(double(k + 1) / rig_->rate_hz());
   }
 }
@@ -130,13 +119,12 @@ void TaskSession::run_offline(const std::function<void(size_t)>& on_step_end) {
 std::string TaskSession::start_realtime() {
   const std::string line = loop_->launch();
   recorder_->start();
-  loop_->apply({haptics::LoopCommandType::kStart, 0.0, nullptr, rig_->ticks().value_or(0)});
+  loop_->apply(haptics::LoopCommand::start(rig_->ticks().value_or(0)));
   return line;
 }
 
 bool TaskSession::over() const {
-  std::lock_guard lock(mutex_);
-  return rig_->ticks() ? consumed_ >= *rig_->ticks() : scorer_.progress().finished();
+  return rig_->ticks() ? feed_.samples() >= *rig_->ticks() : feed_.task_finished();
 }
 
 void TaskSession::stop_threads() {
@@ -151,10 +139,7 @@ const training::SessionResult& TaskSession::finish() {
   if (recorder_->dropped() > 0)
     std::printf("warning: the recorder fell behind and %llu ticks were dropped from the recording and the score\n",
                 static_cast<unsigned long long>(recorder_->dropped()));
-  {
-    std::lock_guard lock(mutex_);
-    result_ = scorer_.result();
-  }
+  result_ = feed_.result();
   store_.finish_session(session_, *result_);
   const fs::path score_file = options_.out_dir / "score.json";
   nlohmann::json score = training::result_json(*result_);
@@ -166,28 +151,23 @@ const training::SessionResult& TaskSession::finish() {
   return *result_;
 }
 
-engine::NeedleLoad TaskSession::needle() const {
-  std::lock_guard lock(mutex_);
-  return needle_;
-}
-
 void TaskSession::draw_panel(std::optional<size_t> step) const {
-  std::lock_guard lock(mutex_);
-  ui::TraineeView view{&task_, &scorer_.progress()};
-  view.step = step;
-  view.step_metrics = scorer_.step_metrics(std::min(step.value_or(scorer_.progress().current_step()), task_.steps.size() - 1));
-  const double* f = last_.environment_force_n;
-  view.force_N = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-  if (last_.contact == haptics::ContactState::kTissue) view.lateral_N = training::lateral_load_N(last_);
-  const haptics::LoopStatsSummary stats = loop_->stats();
-  view.loop_rate_hz = loop_->running() ? stats.rate_hz : rig_->rate_hz();
-  if (last_.fault != 0) view.fault = haptics::fault_cause_name(static_cast<haptics::FaultCause>(last_.fault));
-  if (loop_->running()) view.reset_fault = [this] { loop_->submit({haptics::LoopCommandType::kResetFault}); };
-  if (result_) view.result = &*result_;
-  ui::draw_trainee_panel(view);
-  if (result_) return;
-  ui::draw_guidance({&task_, std::min(step.value_or(scorer_.progress().current_step()), task_.steps.size() - 1),
-                     training::vec3(last_.needle_tip_m), scene_.camera});
+  feed_.read([&](const training::SessionScorer& scorer, const haptics::ToolSnapshot& last) {
+    const size_t shown = std::min(step.value_or(scorer.progress().current_step()), task_.steps.size() - 1);
+    ui::TraineeView view{&task_, &scorer.progress()};
+    view.step = step;
+    view.step_metrics = scorer.step_metrics(shown);
+    const double* f = last.environment_force_n;
+    view.force_N = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    if (last.contact == haptics::ContactState::kTissue) view.lateral_N = training::lateral_load_N(last);
+    const haptics::LoopStatsSummary stats = loop_->stats();
+    view.loop_rate_hz = loop_->running() ? stats.rate_hz : rig_->rate_hz();
+    if (last.fault != 0) view.fault = haptics::fault_cause_name(static_cast<haptics::FaultCause>(last.fault));
+    if (loop_->running()) view.reset_fault = [this] { loop_->submit(haptics::LoopCommand::reset_fault()); };
+    if (result_) view.result = &*result_;
+    ui::draw_trainee_panel(view);
+    if (!result_) ui::draw_guidance({&task_, shown, training::vec3(last.needle_tip_m), scene_.camera});
+  });
 }
 
 int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa) {

@@ -8,13 +8,12 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "engine/extent.hpp"
-#include "app/needle_tracker.hpp"
+#include "app/session_feed.hpp"
 #include "engine/scene.hpp"
 #include "haptics/realtime/haptic_loop.hpp"
 #include "haptics/recording/session_recorder.hpp"
@@ -58,13 +57,15 @@ class TaskSession {
   // Stops the threads, scores, stores the session as complete, writes OUT/score.json. Once.
   const training::SessionResult& finish();
 
-  engine::NeedleLoad needle() const;
+  engine::NeedleLoad needle() const { return feed_.needle(); }
   // The trainee panel of now (with the result once finished), describing `step` when given.
   void draw_panel(std::optional<size_t> step = std::nullopt) const;
   const std::filesystem::path& recording_path() const { return recording_path_; }
+  int64_t session_id() const { return session_; }
+  // Samples scored so far (every tick the recorder has handed on).
+  uint64_t samples() const { return feed_.samples(); }
 
  private:
-  void consume(const haptics::TickSample& sample);  // the recorder's sink
   void stop_threads();
 
   TaskSessionOptions options_;
@@ -77,13 +78,7 @@ class TaskSession {
   std::unique_ptr<haptics::HapticLoop> loop_;
   std::unique_ptr<haptics::SessionRecorder> recorder_;
 
-  mutable std::mutex mutex_;  // between the recorder's thread (consume) and the UI thread
-  training::SessionScorer scorer_;
-  NeedleTracker tracker_;
-  engine::NeedleLoad needle_;
-  haptics::ToolSnapshot last_;
-  uint64_t consumed_ = 0;
-  std::vector<size_t> ended_steps_;  // steps ended since run_offline last looked
+  SessionFeed feed_;  // the recorder's thread scores and tracks every sample into it
   std::optional<training::SessionResult> result_;
 };
 

@@ -3,5 +3,5 @@
 # `needle-sim run`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-tools/setup.sh
+tools/setup.sh needle-sim  # the main job's own target: the tests are built by run-tests.sh
 exec "${BUILD_DIR:-build}/tools/needle-sim" run "$@"

@@ -48,9 +48,7 @@ std::string HapticLoop::launch() {
 
 void HapticLoop::shutdown() {
   if (!thread_.joinable()) return;
-  LoopCommand quit;
-  quit.type = LoopCommandType::kShutdown;
-  submit(quit);
+  submit(LoopCommand::shutdown());
   thread_.join();
 }
 

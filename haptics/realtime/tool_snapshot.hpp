@@ -1,6 +1,6 @@
 // The newest state of the simulated tool, published by the haptic loop for the renderer
-// and the UI. Plain arrays only (no Eigen): the engine depends on haptics through this
-// header alone (DESIGN.md).
+// and the UI. Plain arrays only (no Eigen): training and the panels read it without the
+// physics (docs/ARCHITECTURE.md).
 #pragma once
 
 #include <array>

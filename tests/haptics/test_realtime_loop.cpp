@@ -64,10 +64,10 @@ TEST(RealtimeLoop, DeliversEveryTickInOrderAndPublishesTheNewestSnapshot) {
   TickSample sample;
   EXPECT_FALSE(loop.samples().pop(sample)) << "stopped: nothing is stepped or recorded";
 
-  loop.apply({LoopCommandType::kSetStep, 0.0, &step});
-  loop.apply({LoopCommandType::kStart});
+  loop.apply(LoopCommand::set_step(&step));
+  loop.apply(LoopCommand::start());
   wait_ticks(loop, 300);
-  loop.apply({LoopCommandType::kStop});
+  loop.apply(LoopCommand::stop());
 
   uint64_t count = 0, previous = 0, gaps = 0;
   while (loop.samples().pop(sample)) {
@@ -91,18 +91,18 @@ TEST(RealtimeLoop, CommandsApplyBetweenTicks) {
   CountingStep a, b;
   HapticLoop loop(device, roomy_limits(), quiet_config(1000.0));
   loop.launch();
-  loop.apply({LoopCommandType::kSetStep, 0.0, &a});
-  loop.apply({LoopCommandType::kStart});
+  loop.apply(LoopCommand::set_step(&a));
+  loop.apply(LoopCommand::start());
   wait_ticks(loop, 20);
-  loop.apply({LoopCommandType::kSetStep, 0.0, &b});
+  loop.apply(LoopCommand::set_step(&b));
   const uint64_t a_calls = a.calls.load();
   wait_ticks(loop, 20);
   EXPECT_EQ(a.calls.load(), a_calls) << "once applied, the old step is never called again";
   EXPECT_GE(b.calls.load(), 19u);
 
-  loop.apply({LoopCommandType::kSetRate, 4000.0});
+  loop.apply(LoopCommand::set_rate(4000.0));
   EXPECT_EQ(loop.stats().nominal_rate_hz, 4000.0);
-  EXPECT_THROW(loop.submit({LoopCommandType::kSetRate, 20000.0}), std::invalid_argument);
+  EXPECT_THROW(loop.submit(LoopCommand::set_rate(20000.0)), std::invalid_argument);
   loop.shutdown();
 }
 
@@ -113,10 +113,10 @@ TEST(RealtimeLoop, SampleOverflowIsCountedAndReportedWithoutStoppingTheLoop) {
   config.sample_capacity = 64;  // and nobody consumes
   HapticLoop loop(device, roomy_limits(), config);
   loop.launch();
-  loop.apply({LoopCommandType::kSetStep, 0.0, &step});
-  loop.apply({LoopCommandType::kStart});
+  loop.apply(LoopCommand::set_step(&step));
+  loop.apply(LoopCommand::start());
   wait_ticks(loop, 300);
-  loop.apply({LoopCommandType::kStop});
+  loop.apply(LoopCommand::stop());
   wait_ticks(loop, 2);  // the stats of the last stepped tick are published
   const LoopStatsSummary stats = loop.stats();
   EXPECT_EQ(loop.samples().pushed(), 64u);
@@ -134,8 +134,8 @@ TEST(RealtimeLoop, UnpacedRunIsTheDirectTickSequence) {
   ScriptedDevice offline_device;
   SpringStep offline_step;
   HapticLoop loop(offline_device, roomy_limits(), quiet_config(1000.0));
-  loop.submit({LoopCommandType::kSetStep, 0.0, &offline_step});
-  loop.submit({LoopCommandType::kStart, 0.0, nullptr, 500});
+  loop.submit(LoopCommand::set_step(&offline_step));
+  loop.submit(LoopCommand::start(500));
   ASSERT_TRUE(loop.run_unpaced(600));
 
   ScriptedDevice direct_device;
@@ -158,7 +158,7 @@ TEST(RealtimeLoop, UnpacedRunIsTheDirectTickSequence) {
   EXPECT_EQ(loop.stats().ticks, 600u);
   EXPECT_EQ(loop.stats().overruns, 0u);
 
-  loop.submit({LoopCommandType::kShutdown});
+  loop.submit(LoopCommand::shutdown());
   EXPECT_FALSE(loop.run_unpaced(1));
   EXPECT_FALSE(loop.samples().pop(offline));  // shut down before the tick
 }

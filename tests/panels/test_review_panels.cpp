@@ -4,7 +4,7 @@
 // penetrable task (good and sloppy operators) with their dates fixed, so the pictures are too.
 #include <gtest/gtest.h>
 
-#include "../training/recorded_session.hpp"
+#include "tests/app/recorded_session.hpp"
 #include "engine/gpu_device.hpp"
 #include "image_compare.hpp"
 #include "ui/panel_picture.hpp"

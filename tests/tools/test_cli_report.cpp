@@ -7,7 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "../training/recorded_session.hpp"
+#include "tests/app/recorded_session.hpp"
 #include "cli_process.hpp"
 #include "engine/rgba_image.hpp"
 #include "tests/support/test_paths.hpp"
@@ -48,7 +48,7 @@ TEST_F(CliReport, WritesMetricsPlotsAndPanels) {
   const nlohmann::json j = nlohmann::json::parse(std::ifstream(out / (stem + ".json")));
   EXPECT_DOUBLE_EQ(j["score"].get<double>(), good_.result.score.total);
   EXPECT_EQ(j["steps"].size(), good_.result.steps.size());
-  EXPECT_EQ(j["session"]["recording_path"], "recordings/ana_good.nrec");
+  EXPECT_EQ(j["session"]["recording_path"], good_.recording.string());
   std::ifstream csv(out / (stem + ".csv"));
   std::string header;
   std::getline(csv, header);

@@ -67,10 +67,10 @@ HapticRun time_haptic_loop(const std::string& device_spec, double rate_hz, doubl
   HapticRun run;
   run.realtime_line = loop.launch();
   recorder.start();
-  loop.apply({haptics::LoopCommandType::kSetStep, 0.0, step});
-  loop.apply({haptics::LoopCommandType::kStart});
+  loop.apply(haptics::LoopCommand::set_step(step));
+  loop.apply(haptics::LoopCommand::start());
   sleep_seconds(0.2);  // settle: the first periods include thread start-up
-  loop.apply({haptics::LoopCommandType::kResetStats});
+  loop.apply(haptics::LoopCommand::reset_stats());
   sleep_seconds(seconds);
   run.stats = loop.stats();
   loop.shutdown();

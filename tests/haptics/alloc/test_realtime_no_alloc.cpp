@@ -100,8 +100,8 @@ TEST(RealtimeNoAlloc, LoopThreadAllocatesNothingWhileTicking) {
   config.sample_capacity = 256;
   HapticLoop loop(device, limits, config);
   loop.launch();
-  loop.apply({LoopCommandType::kSetStep, 0.0, &step});
-  loop.apply({LoopCommandType::kStart});
+  loop.apply(LoopCommand::set_step(&step));
+  loop.apply(LoopCommand::start());
 
   // Only this thread (sleeping, reading atomics) and the loop thread run from here on.
   auto wait_for = [&loop](uint64_t ticks) {

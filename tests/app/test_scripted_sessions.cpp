@@ -1,0 +1,39 @@
+// The good and sloppy operator scripts of each shipped task, run as `needle-sim run --headless`
+// runs them (the product's TaskSession: the simulated device through the haptic loop, recorded,
+// scored, stored): the good one passes and scores higher; the sloppy one fails the pass threshold.
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+#include "recorded_session.hpp"
+
+namespace needle::test {
+namespace {
+
+std::string report(const training::SessionResult& r) {
+  std::string out = "score " + std::to_string(r.score.total) + ";";
+  for (const training::StepResult& s : r.steps) out += " " + s.id + "=" + training::step_outcome_name(s.record.outcome);
+  for (const training::ScoreComponent& c : r.score.components) out += " " + c.name + ":" + std::to_string(c.value).substr(0, 4);
+  for (const std::string& why : r.score.reasons_failed) out += "; " + why;
+  return out;
+}
+
+class ScriptedSessions : public testing::TestWithParam<const char*> {};
+
+TEST_P(ScriptedSessions, GoodPassesAndOutscoresSloppyWhichFails) {
+  const std::filesystem::path dir = process_folder(output_dir() / "scripted_sessions" / GetParam());
+  const RecordedSession good = record_session(dir / "sessions.db", {GetParam(), "good", "ana", true});
+  const RecordedSession sloppy = record_session(dir / "sessions.db", {GetParam(), "sloppy", "bo", true});
+  const double pass_score = training::load_task(source_dir() / "assets/tasks" / (std::string(GetParam()) + ".json")).scoring.pass_score;
+  EXPECT_TRUE(good.result.score.passed) << report(good.result);
+  EXPECT_FALSE(sloppy.result.score.passed) << report(sloppy.result);
+  EXPECT_LT(sloppy.result.score.total, pass_score) << report(sloppy.result);
+  EXPECT_GT(good.result.score.total, sloppy.result.score.total + 10.0) << report(good.result) << "\n" << report(sloppy.result);
+  EXPECT_NE(good.recording, sloppy.recording) << "two sessions of one task in one second keep two recordings";
+  std::cout << GetParam() << " good: " << report(good.result) << "\n" << GetParam() << " sloppy: " << report(sloppy.result) << "\n";
+}
+
+INSTANTIATE_TEST_SUITE_P(ShippedTasks, ScriptedSessions, testing::Values("rigid_sphere", "penetrable_sphere"));
+
+}  // namespace
+}  // namespace needle::test
