@@ -1,10 +1,12 @@
-// Each equation group of the controller (haptics/control/teleoperation_terms.hpp) on its own,
-// against a case small enough to compute by hand; the arithmetic is in the comments.
+// Each equation group of the controller (haptics/control/teleoperation_terms.hpp) and the
+// task-space coupling (task_space_coupling.hpp) on its own, against a case small enough to
+// compute by hand; the arithmetic is in the comments.
 // docs/CONTROLLER.md maps equation -> function -> test.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "haptics/control/task_space_coupling.hpp"
 #include "haptics/control/teleoperation_terms.hpp"
 #include "haptics/model/kinematics.hpp"
 #include "robot_fixtures.hpp"
@@ -192,6 +194,28 @@ TEST(ControllerEquations, TissueForceTorquesAre327And328ForceTerms) {
   // τ_m += 0.5 Aᵀ (λ_v + 4E) = 0.5 Aᵀ (1, 2) = 0.5 (1, 3, 2) = (0.5, 1.5, 1).
   EXPECT_TRUE(tau_v.isApprox(vec({1, 1.5, 0.5}), 1e-15));
   EXPECT_TRUE(tau_m.isApprox(vec({0.5, 1.5, 1}), 1e-15));
+}
+
+TEST(ControllerEquations, TaskSpaceCouplingIsASpringOnTheTipAndOneOnTheDirection) {
+  const RobotModel model = test::planar::arm();
+  RobotData data(model);
+  data.tip = Eigen::Isometry3d::Identity();  // needle axis x₅ = x
+  data.tip.translation() = Eigen::Vector3d(0.1, 0, 0);
+  data.J = Mat6N::Zero(6, 2);
+  data.J.col(0) << 1, 0, 0, 0, 0, 1;  // joint 1 moves the tip along x and turns it about z
+  data.J.col(1) << 0, 2, 0, 0, 0, 1;  // joint 2 moves it along y at 2 m/rad and turns it about z
+  data.g = vec({1, -1});
+  TaskCoupling c;
+  c.stiffness_n_per_m = 300.0;
+  c.orientation_stiffness_nm_per_rad = 0.5;
+  Eigen::Vector3d force;
+  VecN tau;
+  task_space_coupling(c, data, Eigen::Vector3d(0.2, 0.1, 0), Eigen::Vector3d::UnitY(), force, tau);
+  // F = 300 (0.1, 0.1, 0) = (30, 30, 0); the direction spring 0.5 x × y = (0, 0, 0.5);
+  // τ = Jᵀ [F; M] + g = (30 + 0.5 + 1, 2·30 + 0.5 − 1) = (31.5, 59.5).
+  EXPECT_TRUE(force.isApprox(Eigen::Vector3d(30, 30, 0), 1e-14));
+  EXPECT_NEAR(tau[0], 31.5, 1e-12);
+  EXPECT_NEAR(tau[1], 59.5, 1e-12);
 }
 
 }  // namespace
