@@ -54,7 +54,7 @@ class Teleoperation {
   ContactBlend blend_;
   ForceErrorIntegrals integrals_;
   VecN velocity_gain_v_;  // B of τ_v = τ_v0 − B q̇_v
-  VecN y_theta_m_;        // Y_m(q_m, q̇_m, 0) θ_m
+  OperatorMultiplierScratch multiplier_scratch_;
   Wrench wrench_filtered_ = Wrench::Zero();
   TickOutput out_;
 };

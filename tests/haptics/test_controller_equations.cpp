@@ -22,9 +22,7 @@ VecN vec(std::initializer_list<double> values) {
 }
 
 // The diagonal gains of one robot, two joints; the tracking gains do not enter these terms.
-RobotGains gains(const VecN& Ka, const VecN& Kp) {
-  return {Ka, Kp, VecN::Zero(2), VecN::Zero(2), VecN::Zero(2), 0.0};
-}
+RobotGains gains(const VecN& Ka, const VecN& Kp) { return {Ka, Kp, VecN::Zero(2), VecN::Zero(2), VecN::Zero(2), 0.0}; }
 
 TEST(ControllerEquations, ContactBlendRampsInAtEachNewContactAndOutAfterIt) {
   ContactBlend b;
@@ -102,13 +100,16 @@ TEST(ControllerEquations, MasterDynamicsCancellationIsCoriolisDampingAndGravity)
   RobotData data(model);
   const double a = 0.3, b = 0.8, da = 0.7, db = -1.3;
   update_frames(model, data, vec({a, b}), vec({da, db}));
-  VecN y_theta;
-  master_dynamics_cancellation(model, data, y_theta);
+  VecN tau_m = vec({1, -1});
+  master_dynamics_cancellation(model, data, 0.5, tau_m);
   // Closed forms of the planar arm: h = −m₂ l₁ l_c2 sin b, C q̇ = (h ḃ² + 2h ȧ ḃ, −h ȧ²),
-  // g = ((m₁ l_c1 + m₂ l₁) g₀ cos a + m₂ l_c2 g₀ cos(a + b), m₂ l_c2 g₀ cos(a + b)), D q̇ = (0.05 ȧ, 0.02 ḃ).
+  // g = ((m₁ l_c1 + m₂ l₁) g₀ cos a + m₂ l_c2 g₀ cos(a + b), m₂ l_c2 g₀ cos(a + b)), D q̇ = (0.05 ȧ, 0.02 ḃ);
+  // τ_m = (1, −1) + 0.5 (C q̇ + D q̇ + g).
   const double h = -m2 * l1 * lc2 * std::sin(b), g2 = m2 * lc2 * g0 * std::cos(a + b);
-  EXPECT_NEAR(y_theta[0], h * db * db + 2 * h * da * db + 0.05 * da + (m1 * lc1 + m2 * l1) * g0 * std::cos(a) + g2, 1e-12);
-  EXPECT_NEAR(y_theta[1], -h * da * da + 0.02 * db + g2, 1e-12);
+  const double y1 = h * db * db + 2 * h * da * db + 0.05 * da + (m1 * lc1 + m2 * l1) * g0 * std::cos(a) + g2;
+  const double y2 = -h * da * da + 0.02 * db + g2;
+  EXPECT_NEAR(tau_m[0], 1 + 0.5 * y1, 1e-12);
+  EXPECT_NEAR(tau_m[1], -1 + 0.5 * y2, 1e-12);
 }
 
 TEST(ControllerEquations, RigidForceErrorsIntegrateTheNormalForceDifference) {
@@ -159,8 +160,9 @@ TEST(ControllerEquations, OperatorMultiplierIs324) {
   J_m(5, 2) = 1.0;  // joint 3 also turns about z, so the hand's torque about z reaches it
   Wrench wrench_h;
   wrench_h << 1, 2, 2, 0, 0, 1;
+  OperatorMultiplierScratch scratch;
   VecK lambda_m;
-  operator_multiplier(two_rows(), J_m, wrench_h, lambda_m);
+  operator_multiplier(two_rows(), J_m, wrench_h, scratch, lambda_m);
   // τ_h = J_mᵀ w_h = (1, 2, 3); A τ_h = (3, 5); λ_m = [2 −1; −1 2] (3, 5) / 3 = (1/3, 7/3).
   // (τ_h − Aᵀλ_m = (2/3, −2/3, 2/3) is orthogonal to A's rows: λ_m is the least-squares push.)
   ASSERT_EQ(lambda_m.size(), 2);
