@@ -2,7 +2,7 @@
 // calls these in order. Each states what it reads and what it writes; signs and forms are the
 // corrected ones of docs/CONTROLLER.md, which maps every equation to its function and test.
 // Functions that take τ by reference add their terms, times the blend weight w, to it. All
-// allocation-free, and inline: out of line, the calls added 0.2 % to the tick's instructions.
+// allocation-free, and defined here so that step() ([[gnu::flatten]]) inlines them.
 #pragma once
 
 #include <algorithm>
