@@ -11,6 +11,7 @@
 #include "engine/vulkan/vk_check.hpp"
 #include "engine/vulkan/vulkan_context.hpp"
 #include "spirv/ultrasound_axial_comp.h"
+#include "spirv/ultrasound_cells_comp.h"
 #include "spirv/ultrasound_image_comp.h"
 #include "spirv/ultrasound_scan_comp.h"
 
@@ -63,7 +64,7 @@ struct LineRecordGpu {
 };
 static_assert(sizeof(LineRecordGpu) == 16 + 16 * ScanLine::kMaxInterfaces, "std430 layout of LineRecord");
 
-enum Binding : uint32_t { kUniforms, kLayers, kEchoes, kAxial, kLines, kPicture, kBindings };
+enum Binding : uint32_t { kUniforms, kLayers, kEchoes, kAxial, kLines, kPicture, kCells, kBindings };
 
 void check(const EchoScene& scene, const UltrasoundSettings& settings) {
   if (settings.lines == 0 || settings.samples == 0) throw std::invalid_argument("an ultrasound image needs lines and samples");
@@ -99,10 +100,10 @@ std::vector<float> gaussian_weights(double sigma, double spacing) {
   return w;
 }
 
-// Σ of the squared weights over the kernel's whole width (both sides).
-double sum_of_squares(const std::vector<float>& w) {
-  double s = double(w[0]) * w[0];
-  for (size_t k = 1; k < w.size(); ++k) s += 2.0 * double(w[k]) * w[k];
+// Σ of the weights (or of their squares) over the kernel's whole width (both sides).
+double sum(const std::vector<float>& w, int power) {
+  double s = std::pow(double(w[0]), power);
+  for (size_t k = 1; k < w.size(); ++k) s += 2.0 * std::pow(double(w[k]), power);
   return s;
 }
 
@@ -149,7 +150,8 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
   pipeline_layout_info.setLayoutCount = 1;
   pipeline_layout_info.pSetLayouts = &set_layout_;
   VK_CHECK(vkCreatePipelineLayout(device_, &pipeline_layout_info, nullptr, &pipeline_layout_));
-  pipelines_ = {compute_pipeline(device_, pipeline_layout_, ultrasound_scan_comp_spv, sizeof(ultrasound_scan_comp_spv)),
+  pipelines_ = {compute_pipeline(device_, pipeline_layout_, ultrasound_cells_comp_spv, sizeof(ultrasound_cells_comp_spv)),
+                compute_pipeline(device_, pipeline_layout_, ultrasound_scan_comp_spv, sizeof(ultrasound_scan_comp_spv)),
                 compute_pipeline(device_, pipeline_layout_, ultrasound_axial_comp_spv, sizeof(ultrasound_axial_comp_spv)),
                 compute_pipeline(device_, pipeline_layout_, ultrasound_image_comp_spv, sizeof(ultrasound_image_comp_spv))};
 
@@ -158,13 +160,14 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
   const VkDeviceSize samples = VkDeviceSize(settings_.lines) * settings_.samples;
   echoes_ = GpuBuffer(context_, samples * sizeof(glm::vec2), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   axial_ = GpuBuffer(context_, samples * sizeof(glm::vec2), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  cells_ = GpuBuffer(context_, samples * sizeof(int32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   lines_ = GpuBuffer::host_visible(context_, settings_.lines * sizeof(LineRecordGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   image_ = GpuImage(context_, {{settings_.lines, settings_.samples},
                                VK_FORMAT_R8G8B8A8_UNORM,
                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
 
   std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kRing},
-                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4 * kRing},
+                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5 * kRing},
                                              {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kRing}}};
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pool_info.maxSets = kRing;
@@ -183,7 +186,8 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
                                                                  {echoes_.handle(), 0, VK_WHOLE_SIZE},
                                                                  {axial_.handle(), 0, VK_WHOLE_SIZE},
                                                                  {lines_.handle(), 0, VK_WHOLE_SIZE},
-                                                                 {}}};
+                                                                 {},
+                                                                 {cells_.handle(), 0, VK_WHOLE_SIZE}}};
     const VkDescriptorImageInfo picture{VK_NULL_HANDLE, image_.view(), VK_IMAGE_LAYOUT_GENERAL};
     std::array<VkWriteDescriptorSet, kBindings> writes{};
     for (uint32_t b = 0; b < kBindings; ++b) {
@@ -237,9 +241,10 @@ std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProb
   }
   u.needle = glm::vec4(float(scene_.needle.radius_m), float(probe.slice_thickness_m / 2.3548200450309493),
                        float(echo::kReverberationEchoes), 0.0f);
-  // Speckle's mean power is the echogenicity's whatever the sampling: 1/√(Σ h²) over the 2-D kernel.
-  u.display = glm::vec4(float(s.dynamic_range_dB), float(s.gain_dB),
-                        float(1.0 / std::sqrt(sum_of_squares(axial) * sum_of_squares(lateral))), float(echo::kScattererCell_m));
+  // The tissue's level after the point spread function is its backscatter whatever the sampling:
+  // speckle's mean power over 1/√(Σ h²) of the 2-D kernel, a uniform level (no speckle) over 1/Σ h.
+  const double normalisation = s.speckle ? 1.0 / std::sqrt(sum(axial, 2) * sum(lateral, 2)) : 1.0 / (sum(axial, 1) * sum(lateral, 1));
+  u.display = glm::vec4(float(s.dynamic_range_dB), float(s.gain_dB), float(normalisation), float(echo::kScattererCell_m));
   u.material = glm::vec4(float(field.material.a()), float(field.material.b()), 0.0f, 0.0f);
   for (size_t k = 0; k < axial.size(); ++k) u.axial_weights[k / 4][int(k % 4)] = axial[k];
   for (size_t k = 0; k < lateral.size(); ++k) u.lateral_weights[k / 4][int(k % 4)] = lateral[k];
@@ -266,14 +271,14 @@ void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uni
                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &sets_[slot], 0, nullptr);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[0]);
-  vkCmdDispatch(cmd, (lines + kWorkgroup - 1) / kWorkgroup, 1, 1);
-  compute_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[1]);
-  vkCmdDispatch(cmd, (items + kWorkgroup - 1) / kWorkgroup, 1, 1);
-  compute_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[2]);
-  vkCmdDispatch(cmd, (items + kWorkgroup - 1) / kWorkgroup, 1, 1);
+  const std::array<uint32_t, 4> work_items{items, lines, items, items};  // cells, scan lines, axial, image
+  for (size_t p = 0; p < pipelines_.size(); ++p) {
+    if (p > 0)
+      compute_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[p]);
+    vkCmdDispatch(cmd, (work_items[p] + kWorkgroup - 1) / kWorkgroup, 1, 1);
+  }
 
   // The picture goes to fragment shaders (the UI pass); the scan lines to the host.
   transition_image(cmd, image_.image(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,

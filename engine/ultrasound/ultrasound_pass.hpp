@@ -1,5 +1,6 @@
-// The ultrasound image's compute passes behind UltrasoundView (engine/ultrasound.hpp): scan lines
-// (shaders/ultrasound_scan.comp), the point spread function along them (ultrasound_axial.comp),
+// The ultrasound image's compute passes behind UltrasoundView (engine/ultrasound.hpp): each
+// sample's layer and scatterer (shaders/ultrasound_cells.comp), the scan lines walking them
+// (ultrasound_scan.comp), the point spread function along the lines (ultrasound_axial.comp),
 // across them with the envelope and log compression into an RGBA8 storage image
 // (ultrasound_image.comp). The image is left for fragment shaders to sample (the UI pass draws it).
 #pragma once
@@ -49,12 +50,12 @@ class UltrasoundPass {
   UltrasoundSettings settings_;
   VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
   VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
-  std::array<VkPipeline, 3> pipelines_{};  // scan, axial, image
+  std::array<VkPipeline, 4> pipelines_{};  // cells, scan lines, axial, image
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   std::array<VkDescriptorSet, kRing> sets_{};
   std::array<GpuBuffer, kRing> uniforms_;
   GpuBuffer layers_;
-  GpuBuffer echoes_, axial_;
+  GpuBuffer cells_, echoes_, axial_;
   GpuBuffer lines_;  // host-visible: read back after an image
   GpuImage image_;
   VkImageLayout image_layout_ = VK_IMAGE_LAYOUT_UNDEFINED;
