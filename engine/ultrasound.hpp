@@ -87,6 +87,10 @@ struct UltrasoundProbe {
 // when the needle runs along the beam.
 UltrasoundProbe probe_following(const UltrasoundProbe& probe, const NeedleLoad& needle);
 
+// The probe moved along its beams so that its face lies where a beam from `above` first enters a
+// layer (the skin), to 1 µm; as given when that beam meets none within a metre.
+UltrasoundProbe probe_on_skin(const EchoScene& scene, const UltrasoundProbe& probe, const glm::dvec3& above);
+
 struct UltrasoundSettings {
   uint32_t lines = 256;     // scan lines, the image's width in pixels
   uint32_t samples = 512;   // per line, its height

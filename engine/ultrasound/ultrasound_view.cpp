@@ -4,6 +4,7 @@
 #include "engine/gpu_device.hpp"
 #include "engine/passes/scene_pass.hpp"
 #include "engine/ultrasound.hpp"
+#include "engine/ultrasound/echo_model.hpp"
 #include "engine/ultrasound/ultrasound_pass.hpp"
 #include "engine/vulkan/vulkan_context.hpp"
 
@@ -39,6 +40,20 @@ UltrasoundProbe probe_following(const UltrasoundProbe& probe, const NeedleLoad& 
   const glm::dvec3 to_tip = needle.tip - probe.position;
   out.position = probe.position + to_tip - glm::dot(to_tip, d) * d;
   return out;
+}
+
+UltrasoundProbe probe_on_skin(const EchoScene& scene, const UltrasoundProbe& probe, const glm::dvec3& above) {
+  const auto inside = [&](double s) { return echo::layer_at(scene, above + s * probe.direction) >= 0; };
+  constexpr double kStep = 1e-4, kReach = 1.0;
+  for (double s = 0.0; s <= kReach; s += kStep) {
+    if (!inside(s)) continue;
+    double lo = std::max(0.0, s - kStep), hi = s;
+    while (hi - lo > 1e-6) (inside(0.5 * (lo + hi)) ? hi : lo) = 0.5 * (lo + hi);
+    UltrasoundProbe out = probe;
+    out.position = above + hi * probe.direction;
+    return out;
+  }
+  return probe;
 }
 
 RgbaImage to_picture(const RgbaImage& image, const UltrasoundProbe& probe) {
