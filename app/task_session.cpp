@@ -8,6 +8,7 @@
 #include <ctime>
 #include <fstream>
 
+#include "app/echo_scene.hpp"
 #include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/render_target.hpp"
@@ -190,8 +191,25 @@ int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa)
     }
     engine::write_png(out_dir / (name + ".png"), image);
   };
-  run.run_offline([&](size_t k) { shoot("step_" + std::to_string(k + 1) + "_" + run.task().steps[k].id, k); });
+  // The task's ultrasound image beside each picture; none made in a task without a probe.
+  std::optional<engine::UltrasoundView> ultrasound;
+  engine::UltrasoundProbe probe;
+  if (run.task().ultrasound_probe) {
+    ultrasound.emplace(device, echo_scene(run.task()));
+    probe = to_engine(*run.task().ultrasound_probe);
+  }
+  auto sonogram = [&](const std::string& name) {
+    if (!ultrasound) return;
+    const engine::NeedleLoad needle = run.needle();
+    ultrasound->render(probe, &needle);
+    engine::write_png(out_dir / (name + ".png"), engine::to_picture(ultrasound->image(), probe));
+  };
+  run.run_offline([&](size_t k) {
+    shoot("step_" + std::to_string(k + 1) + "_" + run.task().steps[k].id, k);
+    sonogram("ultrasound_step_" + std::to_string(k + 1));
+  });
   shoot("final");
+  sonogram("ultrasound_final");
   run.finish();
   shoot("score_panel");
   std::printf("wrote the pictures of the run in %s\n", out_dir.c_str());

@@ -83,7 +83,8 @@ class TaskSession {
 };
 
 // Headless: runs the session through, writing OUT/step_<n>_<id>.png as each step ends,
-// OUT/final.png and OUT/score_panel.png. Returns 0.
+// OUT/final.png and OUT/score_panel.png; in a task with an ultrasound probe also the probe's
+// image, OUT/ultrasound_step_<n>.png and OUT/ultrasound_final.png. Returns 0.
 int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa);
 
 }  // namespace needle::app

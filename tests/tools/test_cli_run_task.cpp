@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_process.hpp"
+#include "tests/engine/image_compare.hpp"
 #include "training/sessions/session_store.hpp"
 #include "tests/support/test_paths.hpp"
 
@@ -33,12 +34,32 @@ TEST(CliRunTask, GoodOperatorPassesAndEverythingIsWritten) {
   for (const char* picture : {"final.png", "score_panel.png", "step_1_approach.png"}) {
     EXPECT_TRUE(fs::is_regular_file(dir / picture)) << picture;
   }
+  // The task has no ultrasound probe: no ultrasound image is made.
+  for (const auto& entry : fs::directory_iterator(dir)) EXPECT_NE(entry.path().filename().string().rfind("ultrasound", 0), 0u) << entry.path();
   training::SessionStore store(dir / "sessions.db");
   std::vector<training::SessionInfo> sessions = store.sessions();
   ASSERT_EQ(sessions.size(), 1u);
   EXPECT_TRUE(sessions[0].complete);
   EXPECT_EQ(sessions[0].trainee, "ana");
   EXPECT_DOUBLE_EQ(sessions[0].score, score["score"].get<double>());
+}
+
+// A task with an ultrasound probe writes the probe's image beside each step's picture, at the
+// probe's proportions: in the insert step the needle lies in the image plane, a bright line.
+TEST(CliRunTask, AnUltrasoundTaskWritesTheProbesImageAtEachStep) {
+  const fs::path dir = test_output_dir("cli_run_task") / "ultrasound";
+  fs::remove_all(dir);
+  ProcessResult r = run_needle_sim("run --headless --size 320x240 --task " + quoted(source_dir() / "assets/tasks/sphere_ultrasound.json") +
+                                   " --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  for (const char* picture : {"ultrasound_step_1.png", "ultrasound_step_2.png", "ultrasound_step_3.png", "ultrasound_final.png"}) {
+    ASSERT_TRUE(fs::is_regular_file(dir / picture)) << picture;
+  }
+  const engine::RgbaImage insert = engine::read_png(dir / "ultrasound_step_2.png");
+  EXPECT_EQ(insert.height, 512u);  // the image's samples; 50 mm wide by 50 mm deep
+  EXPECT_EQ(insert.width, 512u);
+  EXPECT_TRUE(matches_golden(insert, "ultrasound_sphere_task_insert"));
 }
 
 TEST(CliRunTask, SloppyOperatorFailsThePassMark) {
