@@ -12,6 +12,7 @@
 #include "engine/scripted_needle.hpp"
 #include "engine/ui_pass.hpp"
 #include "ui/status_panel.hpp"
+#include "ui/view_panel.hpp"
 
 namespace needle::app {
 namespace {
@@ -61,6 +62,7 @@ int run_window(const engine::Scene& scene, const WindowOptions& options, const s
   ui::FrameClock clock;
   WindowFrames frames(options.frames, options.screenshot);
   const auto start = std::chrono::steady_clock::now();
+  ui::ViewState view{options.section};
 
   while (!vw.window.should_close()) {
     vw.window.poll_events();
@@ -74,8 +76,10 @@ int run_window(const engine::Scene& scene, const WindowOptions& options, const s
       ui::draw_status_panel({vw.device.device_description(), scene.assets.empty() ? "" : scene.assets[0].name,
                              renderer.msaa_samples(), clock.mean_frame_ms()});
       if (show.panel) show.panel();
+      ui::draw_view_panel(view);
       params.overlay = ui_pass->end_frame();
     }
+    if (view.section) params.section = engine::section_through_needle(params.camera, needle ? &*needle : nullptr, *view.section);
     frames.draw(vw.window, renderer, vw.target, params);
   }
   renderer.wait_idle();
@@ -92,7 +96,9 @@ int run_scene_headless(const engine::Scene& scene, const WindowOptions& options,
   engine::GpuScene gpu_scene(renderer, scene);
   const std::optional<engine::NeedleLoad> needle = scripted_needle_show(gpu_scene).needle(kHeadlessMoment_s);
   engine::RgbaImage image;
-  renderer.draw(target, gpu_scene.frame_params(needle ? &*needle : nullptr), &image);
+  engine::FrameParams params = gpu_scene.frame_params(needle ? &*needle : nullptr);
+  if (options.section) params.section = engine::section_through_needle(params.camera, needle ? &*needle : nullptr, *options.section);
+  renderer.draw(target, params, &image);
   const fs::path out = out_dir / "scene.png";
   engine::write_png(out, image);
   std::printf("wrote %s (%ux%u)\n", out.c_str(), image.width, image.height);

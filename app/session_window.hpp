@@ -19,6 +19,7 @@ struct WindowOptions {
   long frames = 0;          // close after this many frames (0: when the user closes the window)
   std::optional<std::string> screenshot;  // save the last of `frames` as presented
   bool hud = true;                        // the panels
+  std::optional<engine::Section::Mode> section;  // the section view at the start (X and the view panel change it)
 };
 
 // The task in real time; the results are written when it ends, and the score stays on screen

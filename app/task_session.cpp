@@ -171,7 +171,7 @@ void TaskSession::draw_panel(std::optional<size_t> step) const {
   });
 }
 
-int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa) {
+int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa, std::optional<engine::Section::Mode> section) {
   const fs::path out_dir = options.out_dir;
   TaskSession run(std::move(options));
   engine::GpuDevice device;
@@ -186,6 +186,7 @@ int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa)
       run.draw_panel(step);
       const engine::NeedleLoad needle = run.needle();
       engine::FrameParams params = scene.frame_params(&needle);
+      if (section) params.section = engine::section_through_needle(params.camera, &needle, *section);
       params.overlay = ui.end_frame();
       renderer.draw(target, params, frame == 1 ? &image : nullptr);
     }

@@ -360,6 +360,11 @@ void ScenePass::fill_uniforms(FrameSlot& slot, VkExtent2D extent, const FramePar
     u.light_radiance[i] = glm::vec4(l.color * l.intensity, 0.0f);
   }
   u.light_count = glm::ivec4(int(count), 0, 0, 0);
+  if (params.section) {
+    const glm::vec3 n = glm::normalize(params.section->normal);
+    u.section_plane = glm::vec4(n, -glm::dot(n, params.section->point));
+    u.section = glm::ivec4(params.section->mode == Section::Mode::Cut ? 1 : 2, 0, 0, 0);
+  }
   std::memcpy(slot.uniforms.mapped(), &u, sizeof u);
 }
 
@@ -442,7 +447,10 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
     glm::mat4 transform;
     float depth;  // distance from the camera, for back-to-front blending
     std::vector<IndexRange> ranges;  // of the primitive's indices
+    bool sectioned;
   };
+  // A cut shows the inside of what it cuts: its back faces are drawn, so none are culled.
+  const bool cut = params.section && params.section->mode == Section::Mode::Cut;
   std::vector<Draw> opaque, blended;
   for (const DrawItem& item : params.items) {
     for (const MeshInstance& instance : item.model->instances()) {
@@ -453,11 +461,12 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
       float depth = glm::length(glm::vec3(transform[3]) - params.camera.position);
       const GpuLevel& level = p.levels[level_of_detail_ ? level_to_draw(p, transform, params.camera, target.extent()) : 0];
       if (level.index_count == 0) continue;
-      std::vector<IndexRange> ranges = cull_chunks_ && !m.double_sided
+      const bool sectioned = params.section && item.sectioned;
+      std::vector<IndexRange> ranges = cull_chunks_ && !m.double_sided && !(cut && sectioned)
                                            ? visible_ranges(level.chunks, transform, params.camera.position, item.moved)
                                            : std::vector<IndexRange>{{level.first_index, level.index_count}};
       (m.alpha_mode == AlphaMode::Blend ? blended : opaque)
-          .push_back({item.model, instance.primitive, transform, depth, std::move(ranges)});
+          .push_back({item.model, instance.primitive, transform, depth, std::move(ranges), sectioned});
     }
   }
   std::sort(blended.begin(), blended.end(), [](const Draw& a, const Draw& b) { return a.depth > b.depth; });
@@ -489,7 +498,7 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
     for (const Draw& d : draws) {
       const GpuPrimitive& p = d.model->primitives()[d.primitive];
       const Material& m = d.model->material_of(d.primitive);
-      VkPipeline pipeline = pipelines_[blend][m.double_sided ? 1 : 0];
+      VkPipeline pipeline = pipelines_[blend][m.double_sided || (cut && d.sectioned) ? 1 : 0];
       if (pipeline != bound) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
         bound = pipeline;
@@ -501,6 +510,7 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
       // Inverse-transpose keeps normals perpendicular under non-uniform scale.
       glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(d.transform)));
       for (int c = 0; c < 3; ++c) push.normal_matrix[c] = glm::vec4(normal_matrix[c], 0.0f);
+      push.normal_matrix[0].w = d.sectioned ? 1.0f : 0.0f;
       vkCmdPushConstants(cmd, pipeline_layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
       VkDeviceSize offset = 0;
       VkBuffer vb = p.vertices.handle();

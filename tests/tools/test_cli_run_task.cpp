@@ -89,6 +89,7 @@ TEST(CliRunTask, UnknownOperatorAndDeviceAreClearErrors) {
   EXPECT_EQ(missing.exit_code, 1) << missing.output;
   EXPECT_NE(missing.output.find("/nonexistent/script.json"), std::string::npos) << missing.output;
   EXPECT_EQ(run_needle_sim("run --headless --device mouse").exit_code, 2);
+  EXPECT_EQ(run_needle_sim("run --headless --section sideways").exit_code, 2);
 }
 
 }  // namespace
