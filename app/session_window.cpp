@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "app/ultrasound_window.hpp"
 #include "app/window_frames.hpp"
 #include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
@@ -25,6 +26,9 @@ struct Show {
   std::function<std::optional<engine::NeedleLoad>(double t_s)> needle;
   std::function<void()> panel;
   std::function<void(engine::Window&)> input;
+  // A task's ultrasound view, offered in the view panel; made on the window's device and gone before it.
+  std::shared_ptr<UltrasoundWindow> ultrasound;
+  bool ultrasound_open = false;            // at the start (a task with a probe)
 };
 
 // The scripted needle's target: the first deformable tissue's bounding sphere, if any.
@@ -52,17 +56,18 @@ Show scripted_needle_show(const engine::GpuScene& scene) {
 // The moment of the script a headless scene run shows: the needle pivoted in the tissue.
 constexpr double kHeadlessMoment_s = 7.0;
 
-int run_window(const engine::Scene& scene, const WindowOptions& options, const std::function<Show(engine::GpuScene&)>& make_show) {
+int run_window(const engine::Scene& scene, const WindowOptions& options,
+               const std::function<Show(engine::GpuScene&, const engine::GpuDevice&)>& make_show) {
   GpuWindow vw("needle-sim", options.size);
   engine::SceneRenderer renderer(vw.device, vw.target, {options.msaa.value_or(vw.default_msaa_samples())});
   engine::GpuScene gpu_scene(renderer, scene);
-  const Show show = make_show(gpu_scene);
+  const Show show = make_show(gpu_scene, vw.device);
   std::optional<engine::UiPass> ui_pass;
   if (options.hud) ui_pass.emplace(renderer, &vw.window);
   ui::FrameClock clock;
   WindowFrames frames(options.frames, options.screenshot);
   const auto start = std::chrono::steady_clock::now();
-  ui::ViewState view{options.section};
+  ui::ViewState view{options.section, show.ultrasound_open, show.ultrasound != nullptr};
 
   while (!vw.window.should_close()) {
     vw.window.poll_events();
@@ -71,14 +76,18 @@ int run_window(const engine::Scene& scene, const WindowOptions& options, const s
     const std::optional<engine::NeedleLoad> needle = show.needle(t);
     engine::FrameParams params = gpu_scene.frame_params(needle ? &*needle : nullptr);
     const float dt = clock.tick();
+    const bool ultrasound = show.ultrasound && view.ultrasound && ui_pass && needle;
     if (ui_pass) {
       ui_pass->begin_frame(vw.target.extent(), dt);
       ui::draw_status_panel({vw.device.device_description(), scene.assets.empty() ? "" : scene.assets[0].name,
                              renderer.msaa_samples(), clock.mean_frame_ms()});
       if (show.panel) show.panel();
       ui::draw_view_panel(view);
+      if (ultrasound) show.ultrasound->draw_panel(*needle);
       params.overlay = ui_pass->end_frame();
     }
+    // The ultrasound passes run only while its window is open.
+    if (ultrasound) show.ultrasound->add_to_frame(params, renderer, vw.target.extent(), *needle);
     if (view.section) params.section = engine::section_through_needle(params.camera, needle ? &*needle : nullptr, *view.section);
     frames.draw(vw.window, renderer, vw.target, params);
   }
@@ -108,7 +117,7 @@ int run_scene_headless(const engine::Scene& scene, const WindowOptions& options,
 int run_task_window(const TaskSessionOptions& task, const WindowOptions& options) {
   TaskSession session(task);
   bool started = false;
-  return run_window(session.scene(), options, [&](engine::GpuScene&) {
+  return run_window(session.scene(), options, [&](engine::GpuScene&, const engine::GpuDevice& device) {
     return Show{[&session, &started](double) -> std::optional<engine::NeedleLoad> {
                   // The loop starts at the first frame, after its input: the mouse's first
                   // reading is the cursor, not the device's centre.
@@ -125,12 +134,14 @@ int run_task_window(const TaskSessionOptions& task, const WindowOptions& options
                   window.cursor_normalized(x, y);
                   mouse->set_pointer(x, y);
                   mouse->add_depth_steps(window.take_scroll());
-                }};
+                },
+                std::make_shared<UltrasoundWindow>(device, session.task()),
+                session.task().ultrasound_probe.has_value()};
   });
 }
 
 int run_scene_window(const engine::Scene& scene, const WindowOptions& options) {
-  return run_window(scene, options, scripted_needle_show);
+  return run_window(scene, options, [](engine::GpuScene& gpu_scene, const engine::GpuDevice&) { return scripted_needle_show(gpu_scene); });
 }
 
 }  // namespace needle::app

@@ -8,7 +8,7 @@
 #include <ctime>
 #include <fstream>
 
-#include "app/echo_scene.hpp"
+#include "app/ultrasound_window.hpp"
 #include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/render_target.hpp"
@@ -179,31 +179,27 @@ int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa,
   engine::SceneRenderer renderer(device, target, {msaa});
   engine::GpuScene scene(renderer, run.scene());
   engine::UiPass ui(renderer, nullptr);
+  // The task's ultrasound image, in its window in each picture and on its own beside it; none
+  // made in a task without a probe.
+  std::optional<UltrasoundWindow> ultrasound;
+  if (run.task().ultrasound_probe) ultrasound.emplace(device, run.task());
   auto shoot = [&](const std::string& name, std::optional<size_t> step = std::nullopt) {
     engine::RgbaImage image;
     for (int frame = 0; frame < 2; ++frame) {  // ImGui fits its auto-sized windows on the first frame
       ui.begin_frame(target.extent(), 1.0f / 60.0f);
       run.draw_panel(step);
       const engine::NeedleLoad needle = run.needle();
+      if (ultrasound) ultrasound->draw_panel(needle);
       engine::FrameParams params = scene.frame_params(&needle);
       if (section) params.section = engine::section_through_needle(params.camera, &needle, *section);
       params.overlay = ui.end_frame();
+      if (ultrasound) ultrasound->add_to_frame(params, renderer, target.extent(), needle);
       renderer.draw(target, params, frame == 1 ? &image : nullptr);
     }
     engine::write_png(out_dir / (name + ".png"), image);
   };
-  // The task's ultrasound image beside each picture; none made in a task without a probe.
-  std::optional<engine::UltrasoundView> ultrasound;
-  engine::UltrasoundProbe probe;
-  if (run.task().ultrasound_probe) {
-    ultrasound.emplace(device, echo_scene(run.task()));
-    probe = to_engine(*run.task().ultrasound_probe);
-  }
   auto sonogram = [&](const std::string& name) {
-    if (!ultrasound) return;
-    const engine::NeedleLoad needle = run.needle();
-    ultrasound->render(probe, &needle);
-    engine::write_png(out_dir / (name + ".png"), engine::to_picture(ultrasound->image(), probe));
+    if (ultrasound) engine::write_png(out_dir / (name + ".png"), ultrasound->picture(run.needle()));
   };
   run.run_offline([&](size_t k) {
     shoot("step_" + std::to_string(k + 1) + "_" + run.task().steps[k].id, k);

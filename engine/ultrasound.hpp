@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/extent.hpp"
 #include "engine/rgba_image.hpp"
 #include "engine/scene_renderer.hpp"
 #include "engine/tissue.hpp"
@@ -22,7 +23,13 @@
 namespace needle::engine {
 
 class GpuDevice;
+class UltrasoundDisplay;
 class UltrasoundPass;
+
+// A rectangle of a frame, in pixels from its top left corner.
+struct ScreenRect {
+  float x = 0.0f, y = 0.0f, width = 0.0f, height = 0.0f;
+};
 
 // What a layer is to sound. The defaults are a generic soft tissue (the docs say why), used for
 // a layer whose tissue file gives no ultrasound parameters.
@@ -135,8 +142,12 @@ class UltrasoundView {
   const UltrasoundSettings& settings() const;
 
   // This frame's image, to record before the scene's render pass (FrameParams::before_pass,
-  // after what is there: chain_recorders); the UI pass then draws it (UiPass::image).
+  // after what is there); draw() then shows it.
   CommandRecorder record(const UltrasoundProbe& probe, const NeedleLoad* needle);
+  // Records drawing the last image recorded into `rect` of a frame of `renderer`'s (`frame` its
+  // size), stretched to the rectangle: to run after the UI pass in FrameParams::overlay, so it
+  // lies on top of its panel (an ImGui window keeps the room for it). Nothing before the first image.
+  CommandRecorder draw(const SceneRenderer& renderer, ScreenRect rect, Extent frame);
   // Makes the image now and waits for it (headless pictures, tests, the bench).
   void render(const UltrasoundProbe& probe, const NeedleLoad* needle);
   // The last image made, read back: `lines` wide, `samples` high, grey (R = G = B).
@@ -149,6 +160,7 @@ class UltrasoundView {
 
  private:
   std::unique_ptr<UltrasoundPass> pass_;
+  std::unique_ptr<UltrasoundDisplay> display_;  // made for the first renderer draw() is given
 };
 
 // The image stretched to the probe's proportions (width_m : depth_m) at its height, for a picture

@@ -36,6 +36,7 @@ class UltrasoundPass {
 
   // The image: sampled by fragment shaders in SHADER_READ_ONLY_OPTIMAL once an image was recorded.
   VkImageView image_view() const { return image_.view(); }
+  bool has_image() const { return image_layout_ == VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL; }
   RgbaImage read_image() const;
   std::vector<ScanLine> read_lines() const;
 

@@ -5,6 +5,7 @@
 #include "engine/passes/scene_pass.hpp"
 #include "engine/ultrasound.hpp"
 #include "engine/ultrasound/echo_model.hpp"
+#include "engine/ultrasound/ultrasound_display.hpp"
 #include "engine/ultrasound/ultrasound_pass.hpp"
 #include "engine/vulkan/vulkan_context.hpp"
 
@@ -25,6 +26,14 @@ CommandRecorder UltrasoundView::record(const UltrasoundProbe& probe, const Needl
 
 void UltrasoundView::render(const UltrasoundProbe& probe, const NeedleLoad* needle) {
   pass_->context().submit_and_wait(pass_->update(probe, needle));
+}
+
+CommandRecorder UltrasoundView::draw(const SceneRenderer& renderer, ScreenRect rect, Extent frame) {
+  if (!display_ || &display_->scene_pass() != &renderer.pass()) display_ = std::make_unique<UltrasoundDisplay>(renderer.pass(), *pass_);
+  if (!pass_->has_image()) return {};
+  return [display = display_.get(), rect, frame](const CommandBuffer& cmd) {
+    display->record(cmd.handle, rect, {frame.width, frame.height});
+  };
 }
 
 RgbaImage UltrasoundView::image() const { return pass_->read_image(); }

@@ -62,6 +62,30 @@ TEST(CliRunTask, AnUltrasoundTaskWritesTheProbesImageAtEachStep) {
   EXPECT_TRUE(matches_golden(insert, "ultrasound_sphere_task_insert"));
 }
 
+// In the window, a task with a probe opens the ultrasound window beside the 3D view: its image
+// (grey speckle, R = G = B) fills the room the window keeps on the left; validation-clean.
+TEST(CliRunTask, TheWindowShowsTheUltrasoundImageBesideTheView) {
+  const fs::path dir = test_output_dir("cli_run_task") / "ultrasound_window";
+  fs::remove_all(dir);
+  const fs::path shot = dir / "window.png";
+  ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' " + test::needle_sim_exe().string() +
+                                " run --task " + quoted(source_dir() / "assets/tasks/sphere_ultrasound.json") +
+                                " --size 640x480 --frames 4 --screenshot " + quoted(shot) + " --out " + quoted(dir) + " --db " +
+                                quoted(dir / "sessions.db"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  const engine::RgbaImage image = engine::read_png(shot);
+  // The left third, rows 30 % to 70 %: the image's middle (0.45 of the height, at half height).
+  size_t speckle = 0, pixels = 0;
+  for (uint32_t y = image.height * 3 / 10; y < image.height * 7 / 10; ++y)
+    for (uint32_t x = 20; x < image.width / 3; ++x) {
+      const uint8_t* p = &image.pixels[(size_t(y) * image.width + x) * 4];
+      ++pixels;
+      speckle += p[0] == p[1] && p[1] == p[2] && p[0] > 60;
+    }
+  EXPECT_GT(speckle, pixels / 3) << speckle << " of " << pixels;
+}
+
 TEST(CliRunTask, SloppyOperatorFailsThePassMark) {
   nlohmann::json score = run_task("sloppy", test_output_dir("cli_run_task") / "sloppy");
   EXPECT_FALSE(score["passed"].get<bool>()) << score.dump(2);
