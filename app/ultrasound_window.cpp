@@ -41,8 +41,9 @@ void UltrasoundWindow::draw_panel(const engine::NeedleLoad& needle) {
   const engine::UltrasoundProbe shown = probe(needle);
   const float height = std::round(0.45f * io.DisplaySize.y);
   const float width = std::round(height * float(shown.width_m / shown.depth_m));
-  // On the left, between the status panel above and the view panel below; the task's is on the right.
-  ImGui::SetNextWindowPos(ImVec2(10.0f, 0.5f * io.DisplaySize.y), ImGuiCond_Always, ImVec2(0.0f, 0.5f));
+  // By default on the left, between the status panel above and the view panel below; the task's is on the right.
+  const Placement at = placement_.value_or(Placement{10.0f, 0.5f * io.DisplaySize.y, 0.0f, 0.5f});
+  ImGui::SetNextWindowPos(ImVec2(at.x, at.y), ImGuiCond_Always, ImVec2(at.pivot_x, at.pivot_y));
   ImGui::Begin("Ultrasound", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
   ImGui::Text("%.1f MHz linear, %.0f mm deep, %.0f mm wide", shown.frequency_MHz, 1000.0 * shown.depth_m, 1000.0 * shown.width_m);
   ImGui::Dummy(ImVec2(width, height));

@@ -20,6 +20,9 @@ class UltrasoundWindow {
 
   // The probe of now for this needle (the task's as moved, or following the needle).
   engine::UltrasoundProbe probe(const engine::NeedleLoad& needle) const;
+  // Where the window goes: its corner `pivot` (0 to 1 of its size) at (x, y) pixels; by default
+  // its left edge's middle at (10, half the height).
+  void place(float x, float y, float pivot_x, float pivot_y) { placement_ = {x, y, pivot_x, pivot_y}; }
   // Inside an ImGui frame: the window and its keys (when ImGui does not want the keyboard).
   void draw_panel(const engine::NeedleLoad& needle);
   // This frame's image (params.before_pass) and its drawing into the window (params.overlay,
@@ -35,6 +38,10 @@ class UltrasoundWindow {
   ProbePlan plan_;
   std::unique_ptr<engine::UltrasoundView> view_;  // made when first shown
   std::optional<engine::ScreenRect> rect_;        // where the window kept room, this frame
+  struct Placement {
+    float x, y, pivot_x, pivot_y;
+  };
+  std::optional<Placement> placement_;
 };
 
 }  // namespace needle::app
