@@ -8,6 +8,7 @@
 #include <string>
 
 #include "engine/ultrasound/echo_model.hpp"
+#include "engine/vulkan/pipelines.hpp"
 #include "engine/vulkan/vk_check.hpp"
 #include "engine/vulkan/vulkan_context.hpp"
 #include "spirv/ultrasound_axial_comp.h"
@@ -107,21 +108,6 @@ double sum(const std::vector<float>& w, int power) {
   return s;
 }
 
-VkPipeline compute_pipeline(VkDevice device, VkPipelineLayout layout, const uint32_t* code, size_t bytes) {
-  VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  module_info.codeSize = bytes;
-  module_info.pCode = code;
-  VkShaderModule module;
-  VK_CHECK(vkCreateShaderModule(device, &module_info, nullptr, &module));
-  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-  info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_COMPUTE_BIT, module, "main", nullptr};
-  info.layout = layout;
-  VkPipeline pipeline;
-  VkResult r = vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
-  vkDestroyShaderModule(device, module, nullptr);
-  vk_check(r, "vkCreateComputePipelines");
-  return pipeline;
-}
 
 void compute_barrier(VkCommandBuffer cmd, VkPipelineStageFlags src_stage, VkAccessFlags src, VkAccessFlags dst) {
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
@@ -142,14 +128,8 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
                                                   : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     bindings[b] = {b, type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
   }
-  VkDescriptorSetLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  layout_info.bindingCount = uint32_t(bindings.size());
-  layout_info.pBindings = bindings.data();
-  VK_CHECK(vkCreateDescriptorSetLayout(device_, &layout_info, nullptr, &set_layout_));
-  VkPipelineLayoutCreateInfo pipeline_layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  pipeline_layout_info.setLayoutCount = 1;
-  pipeline_layout_info.pSetLayouts = &set_layout_;
-  VK_CHECK(vkCreatePipelineLayout(device_, &pipeline_layout_info, nullptr, &pipeline_layout_));
+  set_layout_ = descriptor_set_layout(device_, {bindings.begin(), bindings.end()});
+  pipeline_layout_ = single_set_pipeline_layout(device_, set_layout_);
   pipelines_ = {compute_pipeline(device_, pipeline_layout_, ultrasound_cells_comp_spv, sizeof(ultrasound_cells_comp_spv)),
                 compute_pipeline(device_, pipeline_layout_, ultrasound_scan_comp_spv, sizeof(ultrasound_scan_comp_spv)),
                 compute_pipeline(device_, pipeline_layout_, ultrasound_axial_comp_spv, sizeof(ultrasound_axial_comp_spv)),

@@ -15,7 +15,7 @@ using nlohmann::json;
 
 // The keys of a layer's parameters (every mechanical number, "rigid" and "ultrasound") after `first`.
 std::vector<const char*> with_mechanics_keys(std::vector<const char*> first) {
-  for (const MechanicsField& f : kMechanicsFields) first.push_back(f.key);
+  for (const auto& f : kMechanicsFields) first.push_back(f.key);
   first.push_back("rigid");
   first.push_back("ultrasound");
   return first;
@@ -37,7 +37,7 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
   // `references` is the file's references object, or nullptr inline (sources optional there).
   LayerMechanics mechanics(const json& j, const std::string& at, const json* references) {
     LayerMechanics m;
-    for (const MechanicsField& f : kMechanicsFields)
+    for (const auto& f : kMechanicsFields)
       if (j.contains(f.key)) m.*f.member = non_negative(value(j[f.key], at + "/" + f.key, references), pointer_to(at, f.key, j[f.key]));
     if (j.contains("rigid")) {
       const json& rigid = value(j["rigid"], at + "/rigid", references);
@@ -54,10 +54,10 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
     const json& u = j["ultrasound"];
     const std::string where = at + "/ultrasound";
     std::vector<const char*> keys;
-    for (const AcousticsField& f : kAcousticsFields) keys.push_back(f.key);
+    for (const auto& f : kAcousticsFields) keys.push_back(f.key);
     object(u, where, keys);
     LayerAcoustics a;
-    for (const AcousticsField& f : kAcousticsFields)
+    for (const auto& f : kAcousticsFields)
       a.*f.member = number(value(member(u, where, f.key), where + "/" + f.key, references), pointer_to(where, f.key, u[f.key]));
     if (const auto problem = acoustics_problem(a)) fail(pointer_to(where, problem->key, u[problem->key]), problem->what);
     return a;

@@ -6,7 +6,7 @@
 namespace needle::haptics {
 
 std::optional<MechanicsProblem> mechanics_problem(const LayerMechanics& m) {
-  for (const MechanicsField& f : kMechanicsFields) {
+  for (const auto& f : kMechanicsFields) {
     const double value = m.*f.member;
     if (!(value >= 0.0) || !std::isfinite(value)) return MechanicsProblem{f.key, "must be a finite number >= 0"};
     if (m.rigid && value != 0.0)
@@ -23,7 +23,7 @@ std::optional<MechanicsProblem> mechanics_problem(const LayerMechanics& m) {
 }
 
 std::optional<MechanicsProblem> acoustics_problem(const LayerAcoustics& a) {
-  for (const AcousticsField& f : kAcousticsFields)
+  for (const auto& f : kAcousticsFields)
     if (!std::isfinite(a.*f.member)) return MechanicsProblem{f.key, "must be a finite number"};
   if (!(a.impedance_MRayl > 0.0)) return MechanicsProblem{"impedance_MRayl", "must be > 0"};
   if (!(a.attenuation_dB_per_cm_MHz >= 0.0)) return MechanicsProblem{"attenuation_dB_per_cm_MHz", "must be >= 0"};

@@ -25,12 +25,14 @@ struct LayerMechanics {
   bool rigid = false;                    // bone: never punctured, every other number zero
 };
 
-// The numeric parameters by their keys in scenario and parameter set files, in file order.
-struct MechanicsField {
+// A numeric parameter of `Set` by its key in scenario and parameter set files.
+template <class Set>
+struct ParameterField {
   const char* key;
-  double LayerMechanics::*member;
+  double Set::*member;
 };
-inline constexpr MechanicsField kMechanicsFields[] = {
+// The mechanical parameters, in file order.
+inline constexpr ParameterField<LayerMechanics> kMechanicsFields[] = {
     {"stiffness_N_per_m", &LayerMechanics::stiffness_N_per_m},
     {"stiffness2_N_per_m2", &LayerMechanics::stiffness2_N_per_m2},
     {"puncture_force_N", &LayerMechanics::puncture_force_N},
@@ -55,11 +57,7 @@ struct LayerAcoustics {
   double scatterer_density = 0.0;          // share of scatterer cells that hold one, (0, 1]
 };
 
-struct AcousticsField {
-  const char* key;
-  double LayerAcoustics::*member;
-};
-inline constexpr AcousticsField kAcousticsFields[] = {
+inline constexpr ParameterField<LayerAcoustics> kAcousticsFields[] = {
     {"impedance_MRayl", &LayerAcoustics::impedance_MRayl},
     {"attenuation_dB_per_cm_MHz", &LayerAcoustics::attenuation_dB_per_cm_MHz},
     {"echogenicity", &LayerAcoustics::echogenicity},

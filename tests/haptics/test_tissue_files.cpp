@@ -116,7 +116,7 @@ TEST(TissueFiles, TheSingleSurfaceFormIsOneLayerWithEveryParameterZero) {
   const Scenario s = load_scenario(test::asset("assets/scenarios/nonholonomic_needle.json"));
   ASSERT_EQ(s.tissue.layer_count(), 1);
   const LayerMechanics& m = s.tissue.layer(0).mechanics;
-  for (const MechanicsField& f : kMechanicsFields) EXPECT_EQ(m.*f.member, 0.0) << f.key;
+  for (const auto& f : kMechanicsFields) EXPECT_EQ(m.*f.member, 0.0) << f.key;
   EXPECT_FALSE(m.rigid);
   // Same region as the closed loop's tissue: the thesis's sphere, r = 0.1 m at (0.4, 0, 0).
   for (const Vector3d& x :
