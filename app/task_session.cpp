@@ -151,7 +151,11 @@ const training::SessionResult& TaskSession::finish() {
   return *result_;
 }
 
-void TaskSession::draw_panel(std::optional<size_t> step) const {
+void TaskSession::reset_fault() {
+  if (loop_->running()) loop_->submit(haptics::LoopCommand::reset_fault());
+}
+
+void TaskSession::draw_panel(std::optional<size_t> step, const char* controls, const std::vector<ui::Choice>& choices) {
   feed_.read([&](const training::SessionScorer& scorer, const haptics::ToolSnapshot& last) {
     const size_t shown = std::min(step.value_or(scorer.progress().current_step()), task_.steps.size() - 1);
     ui::TraineeView view{&task_, &scorer.progress()};
@@ -163,7 +167,9 @@ void TaskSession::draw_panel(std::optional<size_t> step) const {
     const haptics::LoopStatsSummary stats = loop_->stats();
     view.loop_rate_hz = loop_->running() ? stats.rate_hz : rig_->rate_hz();
     if (last.fault != 0) view.fault = haptics::fault_cause_name(static_cast<haptics::FaultCause>(last.fault));
-    if (loop_->running()) view.reset_fault = [this] { loop_->submit(haptics::LoopCommand::reset_fault()); };
+    if (loop_->running()) view.reset_fault = [this] { reset_fault(); };
+    view.controls = controls;
+    view.choices = choices;
     if (result_) view.result = &*result_;
     ui::draw_trainee_panel(view);
     if (!result_) ui::draw_guidance({&task_, shown, training::vec3(last.needle_tip_m), scene_.camera});

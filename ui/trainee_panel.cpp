@@ -149,6 +149,17 @@ void draw_trainee_panel(const TraineeView& v) {
     } else {
       ImGui::TextColored(kDim, "haptic loop %.0f Hz   no fault", v.loop_rate_hz);
     }
+    if (v.controls && !v.result) {
+      ImGui::Separator();
+      ImGui::TextWrapped("%s", v.controls);
+    }
+    if (!v.choices.empty()) {
+      ImGui::Separator();
+      for (size_t i = 0; i < v.choices.size(); ++i) {
+        if (i > 0) ImGui::SameLine();
+        if (ImGui::Button(v.choices[i].label.c_str())) v.choices[i].chosen();
+      }
+    }
   }
   ImGui::End();
 }
