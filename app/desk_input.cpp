@@ -4,6 +4,8 @@
 
 #include <stdexcept>
 
+#include "engine/screen_projection.hpp"
+
 namespace needle::app {
 namespace {
 
@@ -65,10 +67,22 @@ void DeskInput::frame(engine::Window& window, const std::vector<engine::Window::
   const double scroll = window.take_scroll();
   switch (kind_) {
     case Kind::kMouse: {
-      if (pointer_on_panel) return;
-      double x = 0.0, y = 0.0;
-      window.cursor_normalized(x, y);
-      mouse_.pointer(x, y, glfwGetMouseButton(window.handle(), GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS);
+      if (pointer_on_panel && !turning_) return;
+      GLFWwindow* handle = window.handle();
+      int width = 0, height = 0;
+      glfwGetWindowSize(handle, &width, &height);
+      if (width <= 0 || height <= 0) return;  // minimised
+      double px = 0.0, py = 0.0;
+      glfwGetCursorPos(handle, &px, &py);
+      const bool turning = glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+      if (turning && !turning_) turn_from_[0] = px, turn_from_[1] = py;
+      if (!turning && turning_) {  // the turn is over: the cursor goes back to the tip
+        glfwSetCursorPos(handle, turn_from_[0], turn_from_[1]);
+        px = turn_from_[0], py = turn_from_[1];
+      }
+      turning_ = turning;
+      const double half = 0.5 * height;
+      mouse_.pointer((px - 0.5 * width) / half, (half - py) / half, turning);
       mouse_.scroll(scroll);
       device_.set_pose(mouse_.pose());
       return;
@@ -91,6 +105,16 @@ void DeskInput::frame(engine::Window& window, const std::vector<engine::Window::
       return;
     }
   }
+}
+
+void DeskInput::place_cursor(engine::Window& window, const engine::Camera& camera, const glm::vec3& world) {
+  if (kind_ != Kind::kMouse) return;
+  const engine::Extent pixels = window.framebuffer_extent();
+  int width = 0, height = 0;
+  glfwGetWindowSize(window.handle(), &width, &height);
+  const std::optional<glm::vec2> at = engine::project_to_screen(camera, pixels, world);
+  if (!at || pixels.width == 0 || pixels.height == 0) return;
+  glfwSetCursorPos(window.handle(), at->x * width / pixels.width, at->y * height / pixels.height);
 }
 
 const char* DeskInput::help(const std::string& spec) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/scene.hpp"
 #include "engine/window.hpp"
 #include "haptics/devices/desk_mapping.hpp"
 
@@ -38,6 +39,9 @@ class DeskInput {
   // cursor is over a panel, whose clicks and motion are the panel's, so the mouse leaves the
   // needle where it is.
   void frame(engine::Window& window, const std::vector<engine::Window::KeyPress>& keys, bool pointer_on_panel);
+  // The mouse: puts the cursor on `world` (the tool's start) as `camera` shows it in `window`, so
+  // that the tip starts under the cursor; the first frame's reading is then the tool's start.
+  void place_cursor(engine::Window& window, const engine::Camera& camera, const glm::vec3& world);
   // True once after each press of the gamepad's reset button.
   bool take_fault_reset() { return gamepad_ && pad_.take_fault_reset(); }
   // What moves the needle, in one line for the panel.
@@ -49,6 +53,8 @@ class DeskInput {
   haptics::MouseMapping mouse_;
   haptics::KeyboardMapping keys_;
   haptics::GamepadMapping pad_;
+  bool turning_ = false;          // the mouse's turning button is held
+  double turn_from_[2] = {0, 0};  // where the cursor was when it went down, screen coordinates
   bool gamepad_ = false;
   int gamepad_id_ = 0;
   std::optional<std::chrono::steady_clock::time_point> last_frame_;

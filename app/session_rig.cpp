@@ -176,7 +176,9 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
     rate_hz_ = options.rate_hz.value_or(1000.0);
     const haptics::TaskCoupling task_coupling = coupling_for(spec, options.camera);
     coupling = coupling_json(task_coupling);
-    owned_step_ = std::make_unique<haptics::TaskSpaceStep>(*scenario_, task_coupling);
+    auto task_space = std::make_unique<haptics::TaskSpaceStep>(*scenario_, task_coupling);
+    task_space_ = task_space.get();
+    owned_step_ = std::move(task_space);
     description_ = spec;
   }
   if (owned_device_) device_ = owned_device_.get();
@@ -192,6 +194,11 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
                   {"coupling", coupling},
                   {"safety_limits", limits_json(limits_)}}
                  .dump();
+}
+
+std::optional<Eigen::Vector3d> SessionRig::tool_start() const {
+  if (!task_space_) return std::nullopt;
+  return task_space_->start_tip() + scenario_->base_in_world;
 }
 
 SessionRig::~SessionRig() {

@@ -14,6 +14,7 @@
 #include "engine/scene.hpp"
 #include "haptics/devices/desk_device.hpp"
 #include "haptics/realtime/servo_step.hpp"
+#include "haptics/realtime/task_space_step.hpp"
 #include "haptics/realtime/sim_session.hpp"
 #include "haptics/safety/safety_monitor.hpp"
 #include "haptics/sim/scenario.hpp"
@@ -52,6 +53,9 @@ class SessionRig {
   std::optional<uint64_t> ticks() const { return ticks_; }
   // The desk device (mouse, keyboard, gamepad) whose pose the app sets; nullptr for the others.
   haptics::DeskDevice* desk() { return desk_; }
+  // Where a task-space device's tool starts, world frame (its first reading lands there);
+  // nullopt for the joint-space and replayed devices.
+  std::optional<Eigen::Vector3d> tool_start() const;
   // For the session store and the recording header: "sim (good)", "mouse", "replay of ...".
   const std::string& description() const { return description_; }
   // JSON for the recording header (haptics::SessionHeader::context).
@@ -65,6 +69,7 @@ class SessionRig {
   haptics::HapticDevice* device_ = nullptr;
   haptics::ServoStep* step_ = nullptr;
   haptics::DeskDevice* desk_ = nullptr;
+  const haptics::TaskSpaceStep* task_space_ = nullptr;  // the live device's step, when in task space
   haptics::SafetyLimits limits_;
   double rate_hz_ = 1000.0;
   std::optional<uint64_t> ticks_;

@@ -83,6 +83,8 @@ void SessionWindow::run(engine::GpuScene& scene, const Show& show, const std::fu
 TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices) {
   std::optional<DeskInput> desk;
   if (haptics::DeskDevice* device = session.desk()) desk.emplace(*device);
+  if (const std::optional<Eigen::Vector3d> start = session.tool_start(); desk && start)
+    desk->place_cursor(window.window(), session.scene().camera, glm::vec3(start->x(), start->y(), start->z()));
   engine::GpuScene scene(window.renderer(), session.scene());
   bool started = false;
   std::optional<TaskEnd> end;

@@ -22,10 +22,13 @@ struct DeskPose {
   double wrist_rad[2] = {0.0, 0.0};  // swing, tilt
 };
 
-// The reach of a desk device: a box for the handle and limits for the wrist.
+// The reach of a desk device: a box for the handle and limits for the wrist. The handle starts at
+// the box's centre and its first reading lands on the tool's start, so the box is the reach around
+// it: 20 cm each way in the view's plane (a task's needle travels up to about 11 cm), 10 cm in
+// depth.
 struct DeskWorkspace {
-  double min_m[3] = {-0.1, -0.1, 0.0};
-  double max_m[3] = {0.1, 0.1, 0.2};
+  double min_m[3] = {-0.2, -0.2, 0.0};
+  double max_m[3] = {0.2, 0.2, 0.2};
   double swing_limit_rad = 3.141592653589793;  // ±180°
   double tilt_limit_rad = 1.3962634015954636;  // ±80°: the needle never points along the view
 

@@ -12,15 +12,18 @@ double finite_or_zero(double v) { return std::isfinite(v) ? v : 0.0; }
 
 MouseMapping::MouseMapping(const DeskWorkspace& workspace) : workspace_(workspace), pose_(workspace.centre()) {}
 
-void MouseMapping::pointer(double x_norm, double y_norm, bool turning) noexcept {
-  const double cursor[2] = {std::clamp(finite_or_zero(x_norm), -1.0, 1.0), std::clamp(finite_or_zero(y_norm), -1.0, 1.0)};
+void MouseMapping::pointer(double x, double y, bool turning) noexcept {
+  const double cursor[2] = {finite_or_zero(x), finite_or_zero(y)};
+  const DeskPose middle = workspace_.centre();
   double at[2];  // the cursor's point of the workspace
-  for (int i = 0; i < 2; ++i)
-    at[i] = workspace_.min_m[i] + 0.5 * (cursor[i] + 1.0) * (workspace_.max_m[i] - workspace_.min_m[i]);
-  if (turning && have_last_) {
-    pose_.wrist_rad[0] += (cursor[0] - last_[0]) * kRadPerHalfWindow;
-    pose_.wrist_rad[1] += (cursor[1] - last_[1]) * kRadPerHalfWindow;
-    for (int i = 0; i < 2; ++i) offset_m_[i] = pose_.position_m[i] - at[i];
+  for (int i = 0; i < 2; ++i) at[i] = middle.position_m[i] + cursor[i] * kMetresPerHalfHeight;
+  if (turning) {
+    if (have_last_ && turning_) {
+      pose_.wrist_rad[0] += (cursor[0] - last_[0]) * kRadPerHalfHeight;
+      pose_.wrist_rad[1] += (cursor[1] - last_[1]) * kRadPerHalfHeight;
+    }
+  } else if (turning_) {
+    for (int i = 0; i < 2; ++i) offset_m_[i] = pose_.position_m[i] - at[i];  // carry on from where it stayed
   } else {
     for (int i = 0; i < 2; ++i) pose_.position_m[i] = at[i] + offset_m_[i];
   }
@@ -28,6 +31,7 @@ void MouseMapping::pointer(double x_norm, double y_norm, bool turning) noexcept 
   last_[0] = cursor[0];
   last_[1] = cursor[1];
   have_last_ = true;
+  turning_ = turning;
 }
 
 void MouseMapping::scroll(double notches) noexcept {

@@ -11,20 +11,24 @@
 
 namespace needle::haptics {
 
-// The mouse: the cursor moves the handle in the view's plane (the window spans the workspace's
-// x and y), the wheel pushes it into the view. With the turning button held (the right one),
-// cursor motion turns the wrist instead, as if the mouse held the needle's hub: right swings it
-// clockwise as seen, up (forward on the desk) tilts the hub away; the handle stays where it is,
-// and moves on from there once the button is released.
+// The mouse: the cursor moves the handle in the view's plane, the same distance for the same
+// motion across and up (a tenth of a metre for half the window's height: about what the view
+// shows at the task's depth, so the tip keeps near the cursor), the wheel pushes it into the view.
+// With the turning button held (the right one), cursor motion turns the wrist instead, as if the
+// mouse held the needle's hub: right swings it clockwise as seen, up (forward on the desk) tilts
+// the hub away; the handle stays where it is and, once the button is released, moves on from
+// there (the app puts the cursor back where the turn began, so cursor and tip stay together).
 class MouseMapping {
  public:
+  static constexpr double kMetresPerHalfHeight = 0.1;
+  static constexpr double kRadPerHalfHeight = 3.141592653589793;  // 180° for half the window's height
   static constexpr double kDepthPerNotch_m = 0.002;
-  static constexpr double kRadPerHalfWindow = 1.5707963267948966;  // across half the window: 90°
 
   explicit MouseMapping(const DeskWorkspace& workspace = {});
 
-  // The cursor in normalised window coordinates (x right, y up, ±1 at the edges; clamped there).
-  void pointer(double x_norm, double y_norm, bool turning) noexcept;
+  // The cursor from the window's centre in half window heights: x to the right (± the aspect
+  // ratio at the edges), y up (±1 at the edges).
+  void pointer(double x, double y, bool turning) noexcept;
   // Wheel notches, forward (into the view) positive.
   void scroll(double notches) noexcept;
   const DeskPose& pose() const noexcept { return pose_; }
@@ -32,9 +36,10 @@ class MouseMapping {
  private:
   DeskWorkspace workspace_;
   DeskPose pose_;
-  double offset_m_[2] = {0.0, 0.0};  // handle minus the cursor's point, changed only while turning
+  double offset_m_[2] = {0.0, 0.0};  // handle minus the cursor's point, changed only by a turn
   double last_[2] = {0.0, 0.0};
   bool have_last_ = false;
+  bool turning_ = false;
 };
 
 // The keyboard, one step a press (the system's key repeat gives steps while a key is held).

@@ -25,6 +25,7 @@ class TaskSpaceStep : public ServoStep {
   void step(const DeviceReading& reading, double dt_s, DeviceCommand& command, ToolSnapshot& state) noexcept override;
 
   const VirtualWorld& world() const noexcept { return world_; }
+  const TaskCoupling& coupling() const noexcept { return coupling_; }
   // Where the tool started, robot base frame: the tip and the needle axis x5.
   const Eigen::Vector3d& start_tip() const noexcept { return tip_start_; }
   const Eigen::Vector3d& start_direction() const noexcept { return direction_start_; }

@@ -48,10 +48,21 @@ TEST(DeviceDesk, APoseOutsideTheReachIsClampedAndNonFiniteValuesAreRefused) {
   desk.set_pose(pose);
   DeviceReading r;
   desk.read(r);
-  EXPECT_EQ(r.position_m[0], 0.1);
+  EXPECT_EQ(r.position_m[0], 0.2);
   EXPECT_EQ(r.position_m[1], 0.0) << "a NaN goes to the centre, never to the loop";
   EXPECT_NEAR(r.joint_rad[0], M_PI, 1e-15);
   EXPECT_NEAR(r.joint_rad[1], -80.0 * kDeg, 1e-15);
+}
+
+TEST(DeviceDesk, AnInputThatIsGoneReadsAsDisconnected) {
+  DeskDevice pad("gamepad:0");
+  pad.set_connected(false);  // unplugged: the safety monitor latches a disconnection fault
+  DeviceReading r;
+  pad.read(r);
+  EXPECT_EQ(r.connected, 0u);
+  pad.set_connected(true);
+  pad.read(r);
+  EXPECT_EQ(r.connected, 1u);
 }
 
 TEST(DeviceDesk, DeskSpecs) {
@@ -59,22 +70,22 @@ TEST(DeviceDesk, DeskSpecs) {
   for (const char* spec : {"gamepad:", "gamepad:x", "gamepad:123", "falcon", "Mouse"}) EXPECT_FALSE(is_desk_spec(spec)) << spec;
 }
 
-TEST(DeviceDeskMouse, CursorAndWheelMapOntoTheWorkspace) {
-  MouseMapping mouse;  // x, y in [-0.1, 0.1] m, z in [0, 0.2] m, 2 mm a notch
-  mouse.pointer(0.5, -1.0, false);
+TEST(DeviceDeskMouse, CursorAndWheelMapOntoTheWorkspaceAlikeAcrossAndUp) {
+  MouseMapping mouse;  // 0.1 m for half the window's height, either way; 2 mm a notch
+  mouse.pointer(1.5, -1.0, false);  // at the right edge of a 3:2 window, at its bottom
   mouse.scroll(3);
-  EXPECT_NEAR(mouse.pose().position_m[0], 0.05, 1e-15);  // three quarters across [-0.1, 0.1]
+  EXPECT_NEAR(mouse.pose().position_m[0], 0.15, 1e-15);
   EXPECT_NEAR(mouse.pose().position_m[1], -0.1, 1e-15);
   EXPECT_NEAR(mouse.pose().position_m[2], 0.106, 1e-15);  // 0.1 + 3 x 2 mm
 }
 
-TEST(DeviceDeskMouse, InputOutsideTheWindowOrRangeIsClamped) {
+TEST(DeviceDeskMouse, InputOutsideTheRangeIsClamped) {
   MouseMapping mouse;
   mouse.pointer(7.0, -3.0, false);
   mouse.scroll(1000);  // far past the top: 50 notches reach it
   mouse.scroll(-1);    // one notch back down is felt at once
-  EXPECT_NEAR(mouse.pose().position_m[0], 0.1, 1e-15);
-  EXPECT_NEAR(mouse.pose().position_m[1], -0.1, 1e-15);
+  EXPECT_NEAR(mouse.pose().position_m[0], 0.2, 1e-15);
+  EXPECT_NEAR(mouse.pose().position_m[1], -0.2, 1e-15);
   EXPECT_NEAR(mouse.pose().position_m[2], 0.198, 1e-12);
 }
 
@@ -83,18 +94,29 @@ TEST(DeviceDeskMouse, WithTheButtonHeldMotionTurnsTheWristAndTheHandleStays) {
   mouse.pointer(0.0, 0.0, false);
   mouse.pointer(-0.2, 0.1, false);
   const DeskPose before = mouse.pose();
-  mouse.pointer(-0.2, 0.1, true);   // pressed where it was: nothing turns yet
-  mouse.pointer(0.3, -0.1, true);   // half a window right, a fifth down
+  mouse.pointer(-0.2, 0.1, true);  // pressed where it was: nothing turns yet
+  mouse.pointer(0.3, -0.1, true);  // half a window's height right, a fifth down
   EXPECT_EQ(mouse.pose().position_m[0], before.position_m[0]);
   EXPECT_EQ(mouse.pose().position_m[1], before.position_m[1]);
-  EXPECT_NEAR(mouse.pose().wrist_rad[0], 0.5 * M_PI / 2, 1e-12) << "right: the hub swings clockwise";
-  EXPECT_NEAR(mouse.pose().wrist_rad[1], -0.2 * M_PI / 2, 1e-12) << "down: the hub tilts towards the viewer";
-  // Released, the handle moves on from where it stayed, not from where the cursor now is.
-  mouse.pointer(0.3, -0.1, false);
-  EXPECT_NEAR(mouse.pose().position_m[0], before.position_m[0], 1e-15);
-  mouse.pointer(0.4, -0.1, false);
+  EXPECT_NEAR(mouse.pose().wrist_rad[0], 0.5 * M_PI, 1e-12) << "right: the hub swings clockwise";
+  EXPECT_NEAR(mouse.pose().wrist_rad[1], -0.2 * M_PI, 1e-12) << "down: the hub tilts towards the viewer";
+  // The app puts the cursor back where the turn began: the handle goes on from there.
+  mouse.pointer(-0.2, 0.1, false);
+  EXPECT_EQ(mouse.pose().position_m[0], before.position_m[0]);
+  mouse.pointer(-0.1, 0.1, false);
   EXPECT_NEAR(mouse.pose().position_m[0], before.position_m[0] + 0.01, 1e-15);
-  EXPECT_NEAR(mouse.pose().wrist_rad[0], 0.5 * M_PI / 2, 1e-12);
+  EXPECT_NEAR(mouse.pose().wrist_rad[0], 0.5 * M_PI, 1e-12);
+}
+
+TEST(DeviceDeskMouse, ReleasedElsewhereTheHandleMovesOnFromWhereItStayed) {
+  MouseMapping mouse;
+  mouse.pointer(0.0, 0.0, false);
+  mouse.pointer(0.0, 0.0, true);
+  mouse.pointer(0.4, 0.0, true);
+  mouse.pointer(0.4, 0.0, false);  // the cursor was not put back
+  EXPECT_EQ(mouse.pose().position_m[0], 0.0);
+  mouse.pointer(0.5, 0.0, false);
+  EXPECT_NEAR(mouse.pose().position_m[0], 0.01, 1e-15);
 }
 
 TEST(DeviceDeskKeyboard, EachPressIsOneStepAndShiftAFifth) {
