@@ -58,6 +58,15 @@ SessionWindow::SessionWindow(const WindowOptions& options)
 SessionWindow::~SessionWindow() { renderer_.wait_idle(); }
 
 void SessionWindow::run(engine::GpuScene& scene, const Show& show, const std::function<bool()>& done) {
+  try {
+    frames(scene, show, done);
+  } catch (...) {
+    renderer_.wait_idle();  // the caller's scene may go with the exception: the GPU is done with it first
+    throw;
+  }
+}
+
+void SessionWindow::frames(engine::GpuScene& scene, const Show& show, const std::function<bool()>& done) {
   const auto start = std::chrono::steady_clock::now();
   const auto& assets = scene.scene().assets;
   while (!vw_.window.should_close()) {
@@ -101,7 +110,10 @@ TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices
       Show{[&](double) -> std::optional<engine::NeedleLoad> {
              // The loop starts at the first frame, after its input: a desk device's first reading
              // is where the trainee's input put it, not the device's centre.
-             if (!started) std::printf("%s\n", session.start_realtime().c_str());
+             if (!started) {
+               std::printf("%s\n", session.start_realtime().c_str());
+               std::fflush(stdout);
+             }
              started = true;
              if (session.over()) session.finish();
              return session.needle();

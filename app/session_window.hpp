@@ -52,6 +52,8 @@ class SessionWindow {
   long frames_drawn() const { return frames_.drawn(); }
 
  private:
+  void frames(engine::GpuScene& scene, const Show& show, const std::function<bool()>& done);
+
   WindowOptions options_;
   GpuWindow vw_;
   engine::SceneRenderer renderer_;

@@ -148,6 +148,7 @@ const training::SessionResult& TaskSession::finish() {
   std::printf("score %.0f / 100: %s\n", result_->score.total, result_->score.passed ? "passed" : "not passed");
   for (const std::string& why : result_->score.reasons_failed) std::printf("  %s\n", why.c_str());
   std::printf("wrote %s\n", score_file.c_str());
+  std::fflush(stdout);  // a window's run goes on: whoever reads the output sees the score now
   return *result_;
 }
 

@@ -76,14 +76,8 @@ DeskRun run_desk(const std::string& device, uint64_t input_ticks, Input input) {
 }
 
 DeskStart planning_start(const std::string& device) {
-  const fs::path dir = process_folder(output_dir() / "desk_sessions" / (device + "_plan"));
-  const training::Task task = training::load_task(source_dir() / "assets/tasks/penetrable_sphere.json");
-  app::RigOptions options;
-  options.device = device;
-  options.camera = engine::load_scene(task.scene).camera;
-  options.out_dir = dir;
-  app::SessionRig rig(task, options);
-  return desk_start(rig);
+  return desk_start(source_dir() / "assets/tasks/penetrable_sphere.json", device,
+                    process_folder(output_dir() / "desk_sessions" / (device + "_plan")));
 }
 
 void expect_every_step_completed(const DeskRun& run) {
@@ -129,44 +123,21 @@ TEST(DeskSessions, PenetrableSphereWithTheKeyboard) {
 TEST(DeskSessions, PenetrableSphereWithTheMouse) {
   const training::Task task = training::load_task(source_dir() / "assets/tasks/penetrable_sphere.json");
   const DeskStart start = planning_start("mouse");
-  // The app puts the cursor on the tool's start in a 1280x720 window; in half window heights:
-  const std::optional<glm::vec2> px =
-      engine::project_to_screen(engine::load_scene(task.scene).camera, {1280, 720}, glm::vec3(start.tip.x(), start.tip.y(), start.tip.z()));
-  ASSERT_TRUE(px);
-  double cursor[2] = {(px->x - 640.0) / 360.0, (360.0 - px->y) / 360.0};
-  const Eigen::Vector3d device_start(cursor[0] * 0.1, cursor[1] * 0.1, 0.1);
-  const std::vector<DeskWaypoint> plan = penetrable_plan(task, start, device_start);
-  haptics::MouseMapping mouse;
-  mouse.pointer(cursor[0], cursor[1], false);
-  double lowest[2] = {cursor[0], cursor[1]}, highest[2] = {cursor[0], cursor[1]}, pressed[2] = {0, 0};
-  bool was_turning = false;
-  // 50 frames a second: the wrist turns with the right button held (and the cursor goes back
-  // where it was pressed when it is released, as the app does), else the cursor moves the handle
-  // and the wheel pushes it in, a notch at a time.
+  // The app puts the cursor on the tool's start in a 1280x720 window.
+  const Eigen::Vector2d cursor = mouse_cursor_start(task, start, {1280, 720});
+  const Eigen::Vector3d device_start(cursor.x() * 0.1, cursor.y() * 0.1, 0.1);
+  MousePlayer mouse(penetrable_plan(task, start, device_start), device_start, cursor);
+  // 50 frames a second.
   const DeskRun run = run_desk("mouse", 20, [&](double t, haptics::DeskDevice& desk) {
-    const DeskWaypoint want = plan_at(plan, device_start, t);
-    const haptics::DeskPose& pose = mouse.pose();
-    const double turn[2] = {want.swing_rad - pose.wrist_rad[0], want.tilt_rad - pose.wrist_rad[1]};
-    const bool turning = std::abs(turn[0]) > 1e-4 || std::abs(turn[1]) > 1e-4;
-    if (turning && !was_turning) pressed[0] = cursor[0], pressed[1] = cursor[1];
-    if (!turning && was_turning) cursor[0] = pressed[0], cursor[1] = pressed[1];
-    was_turning = turning;
-    for (int i = 0; i < 2; ++i) {
-      cursor[i] += turning ? turn[i] / haptics::MouseMapping::kRadPerHalfHeight
-                           : (want.device_m[i] - pose.position_m[i]) / haptics::MouseMapping::kMetresPerHalfHeight;
-      lowest[i] = std::min(lowest[i], cursor[i]);
-      highest[i] = std::max(highest[i], cursor[i]);
-    }
-    mouse.pointer(cursor[0], cursor[1], turning);
-    if (!turning) mouse.scroll(std::round((want.device_m[2] - mouse.pose().position_m[2]) / haptics::MouseMapping::kDepthPerNotch_m));
+    mouse.step(t);
     desk.set_pose(mouse.pose());
   });
   expect_every_step_completed(run);
-  std::cout << "cursor from (" << lowest[0] << ", " << lowest[1] << ") to (" << highest[0] << ", " << highest[1] << ")\n";
-  EXPECT_GT(lowest[0], -1280.0 / 720.0) << "the plan stays inside the window";
-  EXPECT_LT(highest[0], 1280.0 / 720.0);
-  EXPECT_GT(lowest[1], -1.0);
-  EXPECT_LT(highest[1], 1.0);
+  std::cout << "cursor from (" << mouse.lowest().transpose() << ") to (" << mouse.highest().transpose() << ")\n";
+  EXPECT_GT(mouse.lowest().x(), -1280.0 / 720.0) << "the plan stays inside the window";
+  EXPECT_LT(mouse.highest().x(), 1280.0 / 720.0);
+  EXPECT_GT(mouse.lowest().y(), -1.0);
+  EXPECT_LT(mouse.highest().y(), 1.0);
 }
 
 TEST(DeskSessions, PenetrableSphereWithAGamepad) {

@@ -5,10 +5,16 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <string>
 #include <vector>
 
 #include "app/session_rig.hpp"
+#include "engine/scene.hpp"
+#include "engine/screen_projection.hpp"
+#include "haptics/devices/desk_mapping.hpp"
 #include "haptics/realtime/task_space_step.hpp"
 #include "training/tasks/task.hpp"
 
@@ -50,6 +56,17 @@ inline DeskStart desk_start(app::SessionRig& rig) {
   start.direction = Eigen::Vector3d(haptics::needle_axis(state).data());
   start.device_to_scene = step.coupling().device_to_scene;
   return start;
+}
+
+// The start of the rig `needle-sim run --device DEVICE` builds for `task_file` (its files in `dir`).
+inline DeskStart desk_start(const std::filesystem::path& task_file, const std::string& device, const std::filesystem::path& dir) {
+  const training::Task task = training::load_task(task_file);
+  app::RigOptions options;
+  options.device = device;
+  options.camera = engine::load_scene(task.scene).camera;
+  options.out_dir = dir;
+  app::SessionRig rig(task, options);
+  return desk_start(rig);
 }
 
 // Come to 15 mm above the entry and turn onto the insertion axis; insert 3 cm along the axis;
@@ -110,5 +127,90 @@ inline double plan_seconds(const std::vector<DeskWaypoint>& plan) {
   for (const DeskWaypoint& w : plan) total += w.seconds;
   return total;
 }
+
+// Where the app puts the mouse's cursor when a session of `task` starts in a window of `extent`
+// (on the tool's start), in half window heights from the centre, x right, y up.
+inline Eigen::Vector2d mouse_cursor_start(const training::Task& task, const DeskStart& start, engine::Extent extent) {
+  const std::optional<glm::vec2> px = engine::project_to_screen(engine::load_scene(task.scene).camera, extent,
+                                                                 glm::vec3(start.tip.x(), start.tip.y(), start.tip.z()));
+  if (!px) throw std::logic_error("the tool's start is not in the view");
+  const double half = 0.5 * extent.height;
+  return {(px->x - 0.5 * extent.width) / half, (half - px->y) / half};
+}
+
+// One input of a mouse playing a plan: where the cursor goes (half window heights), whether the
+// right button goes down before the move or up instead of it, and the wheel's notches after it
+// (into the view positive).
+struct MouseInput {
+  Eigen::Vector2d cursor;
+  bool press = false, release = false;
+  double notches = 0.0;
+};
+
+// A trainee's mouse playing a plan as the app reads it (app/desk_input.cpp): the right button held
+// turns the wrist (and once it is released the cursor is back where it went down), else the cursor
+// moves the handle and the wheel pushes it in a notch at a time. It keeps its own MouseMapping, fed
+// as the app feeds it, to know what is left to do. `pixel`: the cursor's resolution in half
+// heights (0: exact); a turn or move under half of it is not made.
+class MousePlayer {
+ public:
+  MousePlayer(std::vector<DeskWaypoint> plan, const Eigen::Vector3d& device_start, const Eigen::Vector2d& cursor, double pixel = 0.0)
+      : plan_(std::move(plan)), device_start_(device_start), cursor_(cursor), pixel_(pixel), lowest_(cursor), highest_(cursor) {
+    mouse_.pointer(cursor_.x(), cursor_.y(), false);
+  }
+
+  // The input for `t` seconds into the plan.
+  MouseInput step(double t) {
+    const DeskWaypoint want = plan_at(plan_, device_start_, t);
+    const haptics::DeskPose& pose = mouse_.pose();
+    const Eigen::Vector2d turn(want.swing_rad - pose.wrist_rad[0], want.tilt_rad - pose.wrist_rad[1]);
+    const double least_turn = std::max(1e-4, 0.5 * pixel_ * haptics::MouseMapping::kRadPerHalfHeight);
+    const bool turning = std::abs(turn.x()) > least_turn || std::abs(turn.y()) > least_turn;
+    MouseInput input;
+    if (!turning && turning_) {  // the button goes up; the app puts the cursor back where it went down
+      turning_ = false;
+      cursor_ = pressed_;
+      mouse_.pointer(cursor_.x(), cursor_.y(), false);
+      input.cursor = cursor_;
+      input.release = true;
+      return input;
+    }
+    if (turning && !turning_) {  // the button goes down where the cursor is
+      input.press = true;
+      turning_ = true;
+      pressed_ = cursor_;
+      mouse_.pointer(cursor_.x(), cursor_.y(), true);
+    }
+    const Eigen::Vector2d move =
+        turning ? Eigen::Vector2d(turn / haptics::MouseMapping::kRadPerHalfHeight)
+                : Eigen::Vector2d((want.device_m.x() - pose.position_m[0]) / haptics::MouseMapping::kMetresPerHalfHeight,
+                                  (want.device_m.y() - pose.position_m[1]) / haptics::MouseMapping::kMetresPerHalfHeight);
+    cursor_ += move;
+    if (pixel_ > 0) cursor_ = (cursor_ / pixel_).array().round().matrix() * pixel_;
+    lowest_ = lowest_.cwiseMin(cursor_);
+    highest_ = highest_.cwiseMax(cursor_);
+    mouse_.pointer(cursor_.x(), cursor_.y(), turning);
+    if (!turning) {
+      input.notches = std::round((want.device_m.z() - mouse_.pose().position_m[2]) / haptics::MouseMapping::kDepthPerNotch_m);
+      mouse_.scroll(input.notches);
+    }
+    input.cursor = cursor_;
+    return input;
+  }
+
+  const haptics::DeskPose& pose() const { return mouse_.pose(); }
+  // How far the cursor went, in half heights.
+  const Eigen::Vector2d& lowest() const { return lowest_; }
+  const Eigen::Vector2d& highest() const { return highest_; }
+
+ private:
+  std::vector<DeskWaypoint> plan_;
+  Eigen::Vector3d device_start_;
+  Eigen::Vector2d cursor_, pressed_ = Eigen::Vector2d::Zero();
+  double pixel_;
+  haptics::MouseMapping mouse_;
+  bool turning_ = false;
+  Eigen::Vector2d lowest_, highest_;
+};
 
 }  // namespace needle::test

@@ -1,0 +1,143 @@
+// `needle-sim` with no arguments, as a trainee meets it: under Xvfb the start screen opens,
+// xdotool types the trainee's name and starts the penetrable-sphere task with the mouse, plays a
+// trainee's plan (tests/support/desk_plan.hpp) with the cursor, the right button for the turns
+// (the pivot about the tip included) and the wheel, then goes Back and quits; the session is in
+// the store, complete, every step completed, and the settings remember the trainee. Without a
+// display it says so and `run` is what to use.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli_process.hpp"
+#include "tests/support/desk_plan.hpp"
+#include "training/sessions/session_store.hpp"
+#include "tests/support/test_paths.hpp"
+
+namespace needle::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr engine::Extent kWindow{960, 540};  // inside the virtual display's 1024x768
+constexpr double kPlanStep_s = 0.05;          // an xdotool input every 50 ms of the plan
+constexpr const char* kSettle = "sleep 0.4";  // a few frames, so the app sees a button change on its own
+
+// The user's folders for one run: settings in config/, the session store in data/.
+struct UserFolders {
+  fs::path root, config, data;
+  explicit UserFolders(const fs::path& dir) : root(dir), config(dir / "config"), data(dir / "data") {
+    fs::remove_all(dir);
+    fs::create_directories(config / "needle-sim");
+    fs::create_directories(data);
+  }
+  fs::path settings() const { return config / "needle-sim" / "settings.json"; }
+  fs::path db() const { return data / "needle-sim" / "sessions.db"; }
+  std::string environment() const {
+    return "export XDG_CONFIG_HOME=" + quoted(config) + " XDG_DATA_HOME=" + quoted(data) + "\n";
+  }
+};
+
+// An xdotool script (one command a line, run by one xdotool) that plays the penetrable-sphere
+// plan with the mouse in the window WID, from where the app puts the cursor when the session starts.
+std::string mouse_plan_script() {
+  const fs::path task_file = source_dir() / "assets/tasks/penetrable_sphere.json";
+  const training::Task task = training::load_task(task_file);
+  const fs::path plan_dir = test_output_dir("cli_start_screen") / ("plan_" + std::to_string(::getpid()));
+  const DeskStart start = desk_start(task_file, "mouse", plan_dir);
+  fs::remove_all(plan_dir);
+  const Eigen::Vector2d cursor = mouse_cursor_start(task, start, kWindow);
+  const Eigen::Vector3d device_start(cursor.x() * 0.1, cursor.y() * 0.1, 0.1);
+  const std::vector<DeskWaypoint> plan = penetrable_plan(task, start, device_start);
+  const double half = 0.5 * kWindow.height;
+  MousePlayer mouse(plan, device_start, cursor, 1.0 / half);
+  std::ostringstream lines;
+  for (double t = 0.0; t <= plan_seconds(plan) + 1.0; t += kPlanStep_s) {
+    const MouseInput input = mouse.step(t);
+    if (input.release) {
+      lines << "mouseup 3\n" << kSettle << "\n";
+      continue;
+    }
+    if (input.press) lines << "mousedown 3\n" << kSettle << "\n";
+    lines << "mousemove --window WID " << std::lround(0.5 * kWindow.width + input.cursor.x() * half) << " "
+          << std::lround(half - input.cursor.y() * half) << "\n";
+    if (input.notches != 0.0)
+      lines << "click --repeat " << std::lround(std::abs(input.notches)) << " --delay 5 " << (input.notches > 0 ? 4 : 5) << "\n";
+    lines << "sleep " << kPlanStep_s << "\n";
+  }
+  return lines.str();
+}
+
+// Waits (up to `seconds`) for `pattern` in the app's output, else stops the script with `what`.
+std::string wait_for(const std::string& pattern, int seconds, const std::string& what) {
+  return "n=0; until grep -q '" + pattern + "' \"$log\"; do n=$((n+1)); if [ $n -gt " + std::to_string(seconds * 10) +
+         " ]; then echo 'driver: " + what + "'; kill $app; exit 1; fi; sleep 0.1; done\n";
+}
+
+TEST(CliStartScreen, ATraineeStartsTheTaskWithTheMouseAndFinishesItPivotIncluded) {
+  const UserFolders user(test_output_dir("cli_start_screen") / "mouse");
+  {  // the window's size, remembered from an earlier run; no trainee yet
+    std::ofstream(user.settings()) << R"({"version": 1, "device": "mouse", "window": {"width": 960, "height": 540}})";
+  }
+  const fs::path log = user.root / "needle-sim.log", script = user.root / "drive.sh", plan = user.root / "plan.xdo";
+  std::ofstream(plan) << mouse_plan_script();
+  std::ofstream(script) << "set -u\n"
+                        << user.environment() << "log=" << quoted(log) << "\n"
+                        << test::needle_sim_exe().string() << " > \"$log\" 2>&1 &\napp=$!\n"
+                        << "id=$(xdotool search --sync --name '^needle-sim$' | head -1)\n"
+                        << "xdotool mousemove --window \"$id\" 480 500; sleep 2\n"  // the start screen's frames begin
+                        // The name field has the keyboard: type, Enter starts (the first task, the mouse).
+                        << "xdotool type --delay 50 'ana b'; sleep 0.5; xdotool key Return\n"
+                        << wait_for("^real-time: ", 60, "the task did not start") << "sleep 1\n"
+                        << "sed \"s/WID/$id/\" " << quoted(plan) << " | xdotool -\n"
+                        << wait_for("^score ", 30, "the task did not end")
+                        << "sleep 1; xdotool key Escape; sleep 2; xdotool key Escape\n"  // Back, then Quit
+                        << "wait $app; rc=$?; cat \"$log\"; exit $rc\n";
+  const ProcessResult r = run_on_virtual_display("sh " + script.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+
+  training::SessionStore store(user.db());
+  ASSERT_EQ(store.sessions().size(), 1u) << r.output;
+  const training::SessionInfo session = store.sessions()[0];
+  EXPECT_EQ(session.trainee, "ana b");
+  EXPECT_EQ(session.task, "penetrable_sphere");
+  EXPECT_EQ(session.device, "mouse");
+  EXPECT_TRUE(session.complete);
+  EXPECT_TRUE(fs::is_regular_file(session.recording_path)) << session.recording_path;
+
+  const fs::path score_file = user.data / "needle-sim" / "runs" / "penetrable_sphere" / "score.json";
+  ASSERT_TRUE(fs::is_regular_file(score_file));
+  const nlohmann::json score = nlohmann::json::parse(std::ifstream(score_file));
+  std::string outcomes;
+  for (const nlohmann::json& step : score["steps"]) outcomes += step.dump() + "\n";
+  ASSERT_EQ(score["steps"].size(), 5u);
+  for (const nlohmann::json& step : score["steps"])
+    EXPECT_EQ(step["outcome"], "completed") << step["id"] << "\n" << outcomes << r.output;
+  EXPECT_DOUBLE_EQ(score["score"].get<double>(), session.score);
+
+  const nlohmann::json settings = nlohmann::json::parse(std::ifstream(user.settings()));
+  EXPECT_EQ(settings["trainee"], "ana b");
+  EXPECT_EQ(settings["device"], "mouse");
+  EXPECT_EQ(settings["window"], (nlohmann::json{{"width", 960}, {"height", 540}}));
+}
+
+TEST(CliStartScreen, WithoutADisplayItSaysSoAndRunStillWorks) {
+  const UserFolders user(test_output_dir("cli_start_screen") / "no_display");
+  const ProcessResult bare =
+      run_command("env -u DISPLAY -u WAYLAND_DISPLAY XDG_CONFIG_HOME=" + quoted(user.config) + " " + needle_sim_exe().string());
+  EXPECT_EQ(bare.exit_code, 2) << bare.output;
+  EXPECT_NE(bare.output.find("no display"), std::string::npos) << bare.output;
+  EXPECT_NE(bare.output.find("needle-sim run"), std::string::npos) << bare.output;
+  EXPECT_FALSE(fs::exists(user.settings())) << "nothing written";
+  // README's main command: the guided task, headless.
+  const ProcessResult run = run_command("env -u DISPLAY -u WAYLAND_DISPLAY NEEDLE_VALIDATION=1 " + needle_sim_exe().string() +
+                                        " run --size 160x120 --out " + quoted(user.root / "out") + " --db " +
+                                        quoted(user.data / "s.db"));
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(fs::is_regular_file(user.root / "out" / "score.json")) << run.output;
+}
+
+}  // namespace
+}  // namespace needle::test
