@@ -69,11 +69,23 @@ std::string mouse_plan_script() {
   return lines.str();
 }
 
-// Waits (up to `seconds`) for `pattern` in the app's output, else stops the script with `what`.
-std::string wait_for(const std::string& pattern, int seconds, const std::string& what) {
-  return "n=0; until grep -q '" + pattern + "' \"$log\"; do n=$((n+1)); if [ $n -gt " + std::to_string(seconds * 10) +
-         " ]; then echo 'driver: " + what + "'; kill $app; exit 1; fi; sleep 0.1; done\n";
+// Waits (up to `seconds`) until `pattern` is in `count` lines of the app's output, else stops the
+// script saying `what`.
+std::string wait_for(const std::string& pattern, int seconds, const std::string& what, int count = 1) {
+  return "n=0; until [ $(grep -c '" + pattern + "' \"$log\") -ge " + std::to_string(count) + " ]; do n=$((n+1)); if [ $n -gt " +
+         std::to_string(seconds * 10) + " ]; then echo 'driver: " + what + "'; kill $app; exit 1; fi; sleep 0.1; done\n";
 }
+
+// The script's start: needle-sim with no arguments in the background, its output in $log, its
+// window in $id with the pointer over it (the virtual display has no window manager: the keys go
+// to the window under the pointer).
+std::string open_start_screen(const UserFolders& user, const fs::path& log, const std::string& environment = "") {
+  return "set -u\n" + user.environment() + environment + "log=" + quoted(log) + "\n" + test::needle_sim_exe().string() +
+         " > \"$log\" 2>&1 &\napp=$!\nid=$(xdotool search --sync --name '^needle-sim$' | head -1)\n"
+         "xdotool mousemove --window \"$id\" 480 500; sleep 2\n";
+}
+
+const char* const kWaitForTheApp = "wait $app; rc=$?; cat \"$log\"; exit $rc\n";
 
 TEST(CliStartScreen, ATraineeStartsTheTaskWithTheMouseAndFinishesItPivotIncluded) {
   const UserFolders user(test_output_dir("cli_start_screen") / "mouse");
@@ -82,18 +94,14 @@ TEST(CliStartScreen, ATraineeStartsTheTaskWithTheMouseAndFinishesItPivotIncluded
   }
   const fs::path log = user.root / "needle-sim.log", script = user.root / "drive.sh", plan = user.root / "plan.xdo";
   std::ofstream(plan) << mouse_plan_script();
-  std::ofstream(script) << "set -u\n"
-                        << user.environment() << "log=" << quoted(log) << "\n"
-                        << test::needle_sim_exe().string() << " > \"$log\" 2>&1 &\napp=$!\n"
-                        << "id=$(xdotool search --sync --name '^needle-sim$' | head -1)\n"
-                        << "xdotool mousemove --window \"$id\" 480 500; sleep 2\n"  // the start screen's frames begin
+  std::ofstream(script) << open_start_screen(user, log)
                         // The name field has the keyboard: type, Enter starts (the first task, the mouse).
                         << "xdotool type --delay 50 'ana b'; sleep 0.5; xdotool key Return\n"
                         << wait_for("^real-time: ", 60, "the task did not start") << "sleep 1\n"
                         << "sed \"s/WID/$id/\" " << quoted(plan) << " | xdotool -\n"
                         << wait_for("^score ", 30, "the task did not end")
                         << "sleep 1; xdotool key Escape; sleep 2; xdotool key Escape\n"  // Back, then Quit
-                        << "wait $app; rc=$?; cat \"$log\"; exit $rc\n";
+                        << kWaitForTheApp;
   const ProcessResult r = run_on_virtual_display("sh " + script.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
@@ -121,6 +129,52 @@ TEST(CliStartScreen, ATraineeStartsTheTaskWithTheMouseAndFinishesItPivotIncluded
   EXPECT_EQ(settings["trainee"], "ana b");
   EXPECT_EQ(settings["device"], "mouse");
   EXPECT_EQ(settings["window"], (nlohmann::json{{"width", 960}, {"height", 540}}));
+}
+
+// A task whose one step holds from the first tick (the tip starts out of the tissue, far from
+// the sphere's centre): it ends at once and the score panel's choices can be driven.
+void write_quick_task(const fs::path& file, const std::string& name) {
+  const fs::path assets = source_dir() / "assets";
+  const nlohmann::json task = {
+      {"name", name},
+      {"title", "Quick " + name},
+      {"description", "ends at once"},
+      {"scene", (assets / "scenes/penetrable_sphere.json").string()},
+      {"scenario", (assets / "scenarios/nonholonomic_needle.json").string()},
+      {"markers", {{{"name", "centre"}, {"point", {0.4, 0.0, 0.0}}}}},
+      {"steps", {{{"id", "out"}, {"instruction", "Stay out."}, {"condition", {{"type", "withdrawn"}, {"marker", "centre"}, {"within_m", 0.01}}}}}}};
+  std::ofstream(file) << task.dump(2);
+}
+
+// Start, then from the score panel Next task (N), Retry (R) and Back (Esc), then Quit (Esc): every
+// run is a session of its own in the store, and the trainee the settings remembered is used.
+TEST(CliStartScreen, TheScorePanelsNextTaskRetryAndBackLeadWhereTheySay) {
+  const UserFolders user(test_output_dir("cli_start_screen") / "flow");
+  std::ofstream(user.settings()) << R"({"version": 1, "trainee": "carla", "device": "keyboard", "window": {"width": 960, "height": 540}})";
+  const fs::path assets = user.root / "assets";
+  fs::create_directories(assets / "tasks");
+  write_quick_task(assets / "tasks" / "a.json", "quick_a");
+  write_quick_task(assets / "tasks" / "b.json", "quick_b");
+  const fs::path log = user.root / "needle-sim.log", script = user.root / "drive.sh";
+  std::ofstream(script) << open_start_screen(user, log, "export NEEDLE_ASSETS=" + quoted(assets) + "\n")
+                        << "xdotool key Return\n" << wait_for("^score ", 60, "quick_a did not end", 1)
+                        << "sleep 1; xdotool key n\n" << wait_for("^score ", 60, "quick_b did not end", 2)
+                        << "sleep 1; xdotool key r\n" << wait_for("^score ", 60, "the retry did not end", 3)
+                        << "sleep 1; xdotool key Escape; sleep 2; xdotool key Escape\n" << kWaitForTheApp;
+  const ProcessResult r = run_on_virtual_display("sh " + script.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+
+  training::SessionStore store(user.db());
+  const std::vector<training::SessionInfo> sessions = store.sessions();  // newest first
+  ASSERT_EQ(sessions.size(), 3u) << r.output;
+  const char* tasks[] = {"quick_b", "quick_b", "quick_a"};
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(sessions[i].task, tasks[i]) << i;
+    EXPECT_EQ(sessions[i].trainee, "carla");
+    EXPECT_EQ(sessions[i].device, "keyboard");
+    EXPECT_TRUE(sessions[i].complete);
+  }
 }
 
 TEST(CliStartScreen, WithoutADisplayItSaysSoAndRunStillWorks) {
