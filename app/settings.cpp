@@ -1,17 +1,13 @@
 #include "app/settings.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cstdlib>
-#include <cstring>
 #include <ctime>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "haptics/devices/desk_device.hpp"
 #include "io/strict_json.hpp"
+#include "io/write_file.hpp"
 
 namespace needle::app {
 namespace fs = std::filesystem;
@@ -64,30 +60,6 @@ std::string utc_stamp() {
   return stamp;
 }
 
-[[noreturn]] void write_failed(const fs::path& file, const std::string& what, int error) {
-  throw std::runtime_error(file.string() + ": cannot write: " + what + (error ? std::string(": ") + std::strerror(error) : ""));
-}
-
-// A temporary file in the same folder, written, flushed to the disk and renamed over `file`.
-void write_whole(const fs::path& file, const std::string& bytes) {
-  const fs::path temporary = file.parent_path() / ("." + file.filename().string() + ".tmp-" + std::to_string(::getpid()));
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) write_failed(file, "creating " + temporary.string(), errno);
-  int error = 0;
-  for (size_t done = 0; done < bytes.size() && error == 0;) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno != EINTR) error = errno;
-    if (n > 0) done += size_t(n);
-  }
-  if (error == 0 && ::fsync(fd) != 0) error = errno;
-  if (::close(fd) != 0 && error == 0) error = errno;
-  if (error == 0 && ::rename(temporary.c_str(), file.c_str()) != 0) error = errno;
-  if (error != 0) {
-    ::unlink(temporary.c_str());
-    write_failed(file, "", error);
-  }
-}
-
 }  // namespace
 
 fs::path default_settings_file() {
@@ -127,13 +99,13 @@ LoadedSettings load_settings(const fs::path& file) {
 void save_settings(const fs::path& file, const Settings& settings) {
   std::error_code ec;
   fs::create_directories(file.parent_path(), ec);
-  if (ec) write_failed(file, "making its folder", ec.value());
+  if (ec) throw std::runtime_error(file.string() + ": cannot write: making its folder: " + ec.message());
   json j = {{"version", kSettingsVersion},
             {"device", settings.device},
             {"window", {{"width", settings.window.width}, {"height", settings.window.height}}},
             {"views", json::object()}};
   if (!settings.trainee.empty()) j["trainee"] = settings.trainee;
-  write_whole(file, j.dump(2) + "\n");
+  io::write_file(file, j.dump(2) + "\n");
 }
 
 }  // namespace needle::app

@@ -6,13 +6,13 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
-#include <fstream>
 
 #include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/render_target.hpp"
 #include "engine/ui_pass.hpp"
 #include "haptics/safety/fault_cause.hpp"
+#include "io/write_file.hpp"
 #include "ui/guidance_overlay.hpp"
 #include "training/sessions/session_export.hpp"
 
@@ -144,7 +144,7 @@ const training::SessionResult& TaskSession::finish() {
   const fs::path score_file = options_.out_dir / "score.json";
   nlohmann::json score = training::result_json(*result_);
   score["recording"] = recording_path_.string();
-  std::ofstream(score_file) << score.dump(2) << "\n";
+  io::write_file(score_file, score.dump(2) + "\n");
   std::printf("score %.0f / 100: %s\n", result_->score.total, result_->score.passed ? "passed" : "not passed");
   for (const std::string& why : result_->score.reasons_failed) std::printf("  %s\n", why.c_str());
   std::printf("wrote %s\n", score_file.c_str());
