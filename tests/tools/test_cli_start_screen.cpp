@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -175,6 +176,37 @@ TEST(CliStartScreen, TheScorePanelsNextTaskRetryAndBackLeadWhereTheySay) {
     EXPECT_EQ(sessions[i].device, "keyboard");
     EXPECT_TRUE(sessions[i].complete);
   }
+}
+
+// The desktop launcher the build makes (build/tools/needle-sim.desktop) starts needle-sim with no
+// arguments; started as a desktop starts it, from another folder with only HOME set, it opens the
+// start screen on the defaults, Esc leaves the name field and Esc quits, and the settings land in
+// ~/.config/needle-sim/.
+TEST(CliStartScreen, TheDesktopLauncherOpensTheStartScreen) {
+  const fs::path desktop = needle_sim_exe().parent_path() / "needle-sim.desktop";
+  std::ifstream in(desktop);
+  ASSERT_TRUE(in) << desktop;
+  std::map<std::string, std::string> entry;
+  for (std::string line; std::getline(in, line);)
+    if (const size_t eq = line.find('='); eq != std::string::npos) entry[line.substr(0, eq)] = line.substr(eq + 1);
+  EXPECT_EQ(entry["Type"], "Application");
+  EXPECT_EQ(entry["Terminal"], "false");
+  EXPECT_EQ(entry["Exec"], "\"" + needle_sim_exe().string() + "\"") << "needle-sim itself, no arguments";
+
+  const fs::path home = test_output_dir("cli_start_screen") / "launcher";
+  fs::remove_all(home);
+  fs::create_directories(home);
+  const fs::path log = home / "needle-sim.log";
+  const ProcessResult r = run_on_virtual_display(
+      "cd / && env -u XDG_CONFIG_HOME -u XDG_DATA_HOME HOME=" + quoted(home) + " " + entry["Exec"] + " > " + quoted(log) +
+      " 2>&1 & app=\\$!; id=\\$(xdotool search --sync --name '^needle-sim\\$' | head -1); "
+      "xdotool mousemove --window \\$id 100 100; sleep 2; xdotool key Escape; sleep 1; xdotool key Escape; "
+      "wait \\$app; rc=\\$?; cat " + quoted(log) + "; exit \\$rc");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  const nlohmann::json settings = nlohmann::json::parse(std::ifstream(home / ".config/needle-sim/settings.json"));
+  EXPECT_EQ(settings["device"], "mouse");
+  EXPECT_EQ(settings["window"], (nlohmann::json{{"width", 1280}, {"height", 720}}));
 }
 
 TEST(CliStartScreen, WithoutADisplayItSaysSoAndRunStillWorks) {
