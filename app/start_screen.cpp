@@ -49,9 +49,13 @@ std::string record_line(const training::TaskHistory& h) {
 class StartScreen {
  public:
   StartScreen(const StartScreenOptions& options, const Settings& settings) : options_(options) {
-    for (const training::TaskEntry& entry : training::find_tasks(options.tasks)) {
-      entries_.push_back(entry);
-      state_.tasks.push_back({entry.title, entry.description, entry.error, std::nullopt});
+    try {
+      for (const training::TaskEntry& entry : training::find_tasks(options.tasks)) {
+        entries_.push_back(entry);
+        state_.tasks.push_back({entry.title, entry.description, entry.error, std::nullopt});
+      }
+    } catch (const std::exception& e) {  // no tasks folder: the screen says so, the trainee can still quit
+      state_.notice = e.what();
     }
     ui::set_trainee_name(state_, settings.trainee);
     state_.focus_name = settings.trainee.empty();
@@ -175,7 +179,8 @@ int run_start_screen(const StartScreenOptions& options) {
   window_options.size = settings.window;
   SessionWindow window(window_options);
   StartScreen screen(options, settings);
-  screen.state().notice = loaded.notice;
+  if (!loaded.notice.empty())
+    screen.state().notice = screen.state().notice.empty() ? loaded.notice : loaded.notice + "\n" + screen.state().notice;
   auto save = [&] {
     if (!loaded.writable) return;
     const engine::Extent size = window.window().framebuffer_extent();

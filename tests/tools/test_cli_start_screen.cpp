@@ -209,6 +209,20 @@ TEST(CliStartScreen, TheDesktopLauncherOpensTheStartScreen) {
   EXPECT_EQ(settings["window"], (nlohmann::json{{"width", 1280}, {"height", 720}}));
 }
 
+// No tasks folder where the assets should be: the start screen still opens (saying so, with no
+// task to start) and quits cleanly, rather than the program failing before any window.
+TEST(CliStartScreen, NoTasksFolderStillOpensTheScreen) {
+  const UserFolders user(test_output_dir("cli_start_screen") / "no_tasks");
+  std::ofstream(user.settings()) << R"({"version": 1, "trainee": "dee", "window": {"width": 640, "height": 360}})";
+  const fs::path log = user.root / "needle-sim.log", script = user.root / "drive.sh";
+  std::ofstream(script) << open_start_screen(user, log, "export NEEDLE_ASSETS=" + quoted(user.root / "nothing") + "\n")
+                        << "xdotool key Return; sleep 1; xdotool key Escape\n" << kWaitForTheApp;
+  const ProcessResult r = run_on_virtual_display("sh " + script.string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(user.db())) << "nothing started";
+}
+
 TEST(CliStartScreen, WithoutADisplayItSaysSoAndRunStillWorks) {
   const UserFolders user(test_output_dir("cli_start_screen") / "no_display");
   const ProcessResult bare =
