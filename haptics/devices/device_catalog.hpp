@@ -27,7 +27,7 @@ struct BackendStatus {
 };
 
 // Every backend, probing the USB bus for Falcons (no device is opened). Gamepads are found
-// through the window system, by the app (app/present_devices.hpp).
+// through the window system, by the app (app/desk_input.hpp, present_gamepads).
 std::vector<BackendStatus> list_backends();
 
 }  // namespace needle::haptics
