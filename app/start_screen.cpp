@@ -163,7 +163,8 @@ std::vector<ui::StartDevice> present_devices() {
   for (int i = 0; i < falcons.count; ++i)
     devices.push_back({"falcon:" + std::to_string(i), "Falcon " + std::to_string(i),
                        "the Falcon's handle moves the tool and you feel the forces; it is homed when the task starts "
-                       "(move the grip all the way out and back in)",
+                       "(move the grip all the way out and back in); its firmware must have been loaded since it was powered on "
+                       "(needle-sim run --device falcon --firmware FILE loads it)",
                        true});
   if (falcons.count == 0)
     devices.push_back({"falcon", falcons.error.empty() ? "Falcon (none connected)" : "Falcon (USB not readable)",

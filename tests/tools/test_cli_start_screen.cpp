@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "cli_process.hpp"
+#include "haptics/recording/session_format.hpp"
 #include "tests/support/desk_plan.hpp"
 #include "training/sessions/session_store.hpp"
 #include "tests/support/test_paths.hpp"
@@ -130,6 +131,38 @@ TEST(CliStartScreen, ATraineeStartsTheTaskWithTheMouseAndFinishesItPivotIncluded
   EXPECT_EQ(settings["trainee"], "ana b");
   EXPECT_EQ(settings["device"], "mouse");
   EXPECT_EQ(settings["window"], (nlohmann::json{{"width", 960}, {"height", 540}}));
+}
+
+// The keyboard chosen with Right on the start screen, then its keys in the task's window: each
+// press is one step of the pose the device reads (1 mm, 1°, a fifth with Shift), as the recording
+// shows; Esc stops the task (the session stays incomplete) and Esc quits.
+TEST(CliStartScreen, TheKeyboardsKeysMoveAndTurnTheNeedleInTheWindow) {
+  const UserFolders user(test_output_dir("cli_start_screen") / "keyboard");
+  std::ofstream(user.settings()) << R"({"version": 1, "trainee": "eve", "device": "mouse", "window": {"width": 640, "height": 360}})";
+  const fs::path log = user.root / "needle-sim.log", script = user.root / "drive.sh";
+  std::ofstream(script) << open_start_screen(user, log) << "xdotool key Right; sleep 0.5; xdotool key Return\n"
+                        << wait_for("^real-time: ", 60, "the task did not start") << "sleep 1\n"
+                        << "xdotool key --delay 100 d d d d d r r r w w w w Left Left shift+Up\n"
+                        << "sleep 1; xdotool key Escape; sleep 2; xdotool key Escape\n" << kWaitForTheApp;
+  const ProcessResult r = run_on_virtual_display("sh " + script.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+
+  training::SessionStore store(user.db());
+  ASSERT_EQ(store.sessions().size(), 1u) << r.output;
+  const training::SessionInfo session = store.sessions()[0];
+  EXPECT_EQ(session.device, "keyboard");
+  EXPECT_EQ(session.trainee, "eve");
+  EXPECT_FALSE(session.complete) << "stopped before the task ended";
+  const haptics::Session recording = haptics::read_session(session.recording_path);
+  ASSERT_FALSE(recording.records.empty());
+  const haptics::DeviceReading& last = recording.records.back().reading;
+  const double degree = 3.141592653589793 / 180.0;
+  EXPECT_NEAR(last.joint_rad[0], 5 * degree, 1e-9) << "D swings";
+  EXPECT_NEAR(last.joint_rad[1], 3 * degree, 1e-9) << "R tilts away";
+  EXPECT_NEAR(last.position_m[0], -0.002, 1e-9) << "Left";
+  EXPECT_NEAR(last.position_m[1], 0.0002, 1e-9) << "Shift+Up: a fifth of a step";
+  EXPECT_NEAR(last.position_m[2], 0.104, 1e-9) << "W pushes in";
 }
 
 // A task whose one step holds from the first tick (the tip starts out of the tissue, far from
