@@ -36,6 +36,7 @@ struct UserFolders {
   }
   fs::path settings() const { return config / "needle-sim" / "settings.json"; }
   fs::path db() const { return data / "needle-sim" / "sessions.db"; }
+  fs::path log() const { return root / "needle-sim.log"; }  // the app's output
   std::string environment() const {
     return "export XDG_CONFIG_HOME=" + quoted(config) + " XDG_DATA_HOME=" + quoted(data) + "\n";
   }
@@ -81,36 +82,49 @@ std::string wait_for(const std::string& pattern, int seconds, const std::string&
 // The script's start: needle-sim with no arguments in the background, its output in $log, its
 // window in $id with the pointer over it (the virtual display has no window manager: the keys go
 // to the window under the pointer).
-std::string open_start_screen(const UserFolders& user, const fs::path& log, const std::string& environment = "") {
-  return "set -u\n" + user.environment() + environment + "log=" + quoted(log) + "\n" + test::needle_sim_exe().string() +
+std::string open_start_screen(const UserFolders& user, const std::string& environment = "") {
+  return "set -u\n" + user.environment() + environment + "log=" + quoted(user.log()) + "\n" + test::needle_sim_exe().string() +
          " > \"$log\" 2>&1 &\napp=$!\nid=$(xdotool search --sync --name '^needle-sim$' | head -1)\n"
          "xdotool mousemove --window \"$id\" 480 500; sleep 2\n";
 }
 
 const char* const kWaitForTheApp = "wait $app; rc=$?; cat \"$log\"; exit $rc\n";
 
+// Runs `script` (kept as drive.sh in the user's folder) on the virtual display: the app must
+// have exited with 0 and no validation message.
+ProcessResult drive(const UserFolders& user, const std::string& script) {
+  const fs::path file = user.root / "drive.sh";
+  std::ofstream(file) << script;
+  ProcessResult r = run_on_virtual_display("sh " + file.string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  return r;
+}
+
+// The sessions in the user's store, newest first.
+std::vector<training::SessionInfo> sessions_of(const UserFolders& user) {
+  if (!fs::exists(user.db())) return {};
+  return training::SessionStore(user.db()).sessions();
+}
+
 TEST(CliStartScreen, ATraineeStartsTheTaskWithTheMouseAndFinishesItPivotIncluded) {
   const UserFolders user(test_output_dir("cli_start_screen") / "mouse");
   {  // the window's size, remembered from an earlier run; no trainee yet
     std::ofstream(user.settings()) << R"({"version": 1, "device": "mouse", "window": {"width": 960, "height": 540}})";
   }
-  const fs::path log = user.root / "needle-sim.log", script = user.root / "drive.sh", plan = user.root / "plan.xdo";
+  const fs::path plan = user.root / "plan.xdo";
   std::ofstream(plan) << mouse_plan_script();
-  std::ofstream(script) << open_start_screen(user, log)
-                        // The name field has the keyboard: type, Enter starts (the first task, the mouse).
-                        << "xdotool type --delay 50 'ana b'; sleep 0.5; xdotool key Return\n"
-                        << wait_for("^real-time: ", 60, "the task did not start") << "sleep 1\n"
-                        << "sed \"s/WID/$id/\" " << quoted(plan) << " | xdotool -\n"
-                        << wait_for("^score ", 30, "the task did not end")
-                        << "sleep 1; xdotool key Escape; sleep 2; xdotool key Escape\n"  // Back, then Quit
-                        << kWaitForTheApp;
-  const ProcessResult r = run_on_virtual_display("sh " + script.string());
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
-
-  training::SessionStore store(user.db());
-  ASSERT_EQ(store.sessions().size(), 1u) << r.output;
-  const training::SessionInfo session = store.sessions()[0];
+  const ProcessResult r = drive(user, open_start_screen(user)
+                                          // The name field has the keyboard: type, Enter starts (the first task, the mouse).
+                                          + "xdotool type --delay 50 'ana b'; sleep 0.5; xdotool key Return\n" +
+                                          wait_for("^real-time: ", 60, "the task did not start") + "sleep 1\n" +
+                                          "sed \"s/WID/$id/\" " + quoted(plan) + " | xdotool -\n" +
+                                          wait_for("^score ", 30, "the task did not end") +
+                                          "sleep 1; xdotool key Escape; sleep 2; xdotool key Escape\n"  // Back, then Quit
+                                          + kWaitForTheApp);
+  const std::vector<training::SessionInfo> sessions = sessions_of(user);
+  ASSERT_EQ(sessions.size(), 1u) << r.output;
+  const training::SessionInfo& session = sessions[0];
   EXPECT_EQ(session.trainee, "ana b");
   EXPECT_EQ(session.task, "penetrable_sphere");
   EXPECT_EQ(session.device, "mouse");
@@ -139,18 +153,13 @@ TEST(CliStartScreen, ATraineeStartsTheTaskWithTheMouseAndFinishesItPivotIncluded
 TEST(CliStartScreen, TheKeyboardsKeysMoveAndTurnTheNeedleInTheWindow) {
   const UserFolders user(test_output_dir("cli_start_screen") / "keyboard");
   std::ofstream(user.settings()) << R"({"version": 1, "trainee": "eve", "device": "mouse", "window": {"width": 640, "height": 360}})";
-  const fs::path log = user.root / "needle-sim.log", script = user.root / "drive.sh";
-  std::ofstream(script) << open_start_screen(user, log) << "xdotool key Right; sleep 0.5; xdotool key Return\n"
-                        << wait_for("^real-time: ", 60, "the task did not start") << "sleep 1\n"
-                        << "xdotool key --delay 100 d d d d d r r r w w w w Left Left shift+Up\n"
-                        << "sleep 1; xdotool key Escape; sleep 2; xdotool key Escape\n" << kWaitForTheApp;
-  const ProcessResult r = run_on_virtual_display("sh " + script.string());
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
-
-  training::SessionStore store(user.db());
-  ASSERT_EQ(store.sessions().size(), 1u) << r.output;
-  const training::SessionInfo session = store.sessions()[0];
+  const ProcessResult r = drive(user, open_start_screen(user) + "xdotool key Right; sleep 0.5; xdotool key Return\n" +
+                                          wait_for("^real-time: ", 60, "the task did not start") + "sleep 1\n" +
+                                          "xdotool key --delay 100 d d d d d r r r w w w w Left Left shift+Up\n" +
+                                          "sleep 1; xdotool key Escape; sleep 2; xdotool key Escape\n" + kWaitForTheApp);
+  const std::vector<training::SessionInfo> sessions = sessions_of(user);
+  ASSERT_EQ(sessions.size(), 1u) << r.output;
+  const training::SessionInfo& session = sessions[0];
   EXPECT_EQ(session.device, "keyboard");
   EXPECT_EQ(session.trainee, "eve");
   EXPECT_FALSE(session.complete) << "stopped before the task ended";
@@ -189,18 +198,13 @@ TEST(CliStartScreen, TheScorePanelsNextTaskRetryAndBackLeadWhereTheySay) {
   fs::create_directories(assets / "tasks");
   write_quick_task(assets / "tasks" / "a.json", "quick_a");
   write_quick_task(assets / "tasks" / "b.json", "quick_b");
-  const fs::path log = user.root / "needle-sim.log", script = user.root / "drive.sh";
-  std::ofstream(script) << open_start_screen(user, log, "export NEEDLE_ASSETS=" + quoted(assets) + "\n")
-                        << "xdotool key Return\n" << wait_for("^score ", 60, "quick_a did not end", 1)
-                        << "sleep 1; xdotool key n\n" << wait_for("^score ", 60, "quick_b did not end", 2)
-                        << "sleep 1; xdotool key r\n" << wait_for("^score ", 60, "the retry did not end", 3)
-                        << "sleep 1; xdotool key Escape; sleep 2; xdotool key Escape\n" << kWaitForTheApp;
-  const ProcessResult r = run_on_virtual_display("sh " + script.string());
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
-
-  training::SessionStore store(user.db());
-  const std::vector<training::SessionInfo> sessions = store.sessions();  // newest first
+  const ProcessResult r =
+      drive(user, open_start_screen(user, "export NEEDLE_ASSETS=" + quoted(assets) + "\n") + "xdotool key Return\n" +
+                      wait_for("^score ", 60, "quick_a did not end", 1) + "sleep 1; xdotool key n\n" +
+                      wait_for("^score ", 60, "quick_b did not end", 2) + "sleep 1; xdotool key r\n" +
+                      wait_for("^score ", 60, "the retry did not end", 3) +
+                      "sleep 1; xdotool key Escape; sleep 2; xdotool key Escape\n" + kWaitForTheApp);
+  const std::vector<training::SessionInfo> sessions = sessions_of(user);  // newest first
   ASSERT_EQ(sessions.size(), 3u) << r.output;
   const char* tasks[] = {"quick_b", "quick_b", "quick_a"};
   for (size_t i = 0; i < 3; ++i) {
@@ -247,12 +251,8 @@ TEST(CliStartScreen, TheDesktopLauncherOpensTheStartScreen) {
 TEST(CliStartScreen, NoTasksFolderStillOpensTheScreen) {
   const UserFolders user(test_output_dir("cli_start_screen") / "no_tasks");
   std::ofstream(user.settings()) << R"({"version": 1, "trainee": "dee", "window": {"width": 640, "height": 360}})";
-  const fs::path log = user.root / "needle-sim.log", script = user.root / "drive.sh";
-  std::ofstream(script) << open_start_screen(user, log, "export NEEDLE_ASSETS=" + quoted(user.root / "nothing") + "\n")
-                        << "xdotool key Return; sleep 1; xdotool key Escape\n" << kWaitForTheApp;
-  const ProcessResult r = run_on_virtual_display("sh " + script.string());
-  EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  drive(user, open_start_screen(user, "export NEEDLE_ASSETS=" + quoted(user.root / "nothing") + "\n") +
+                  "xdotool key Return; sleep 1; xdotool key Escape\n" + kWaitForTheApp);
   EXPECT_FALSE(fs::exists(user.db())) << "nothing started";
 }
 
