@@ -148,30 +148,18 @@ TEST(RealtimeTaskSpace, AWristSwingsTheDirectionClockwiseAsSeenAndTiltsItTowards
   EXPECT_LT((wrist_direction(side_view(), Eigen::Vector3d::UnitY(), 0.0, M_PI / 2) - Eigen::Vector3d::UnitZ()).norm(), 1e-12);
 }
 
-// A device with a virtual wrist (a desk device) put where the test wants.
-class WristHandle : public HapticDevice {
+// A handle with a virtual wrist (as a desk device has) put where the test wants.
+class WristHandle : public HeldHandle {
  public:
-  WristHandle() { caps_.name = "wrist"; }
-  void open() override {}
-  void close() noexcept override {}
-  void home() override {}
-  const DeviceCapabilities& capabilities() const noexcept override { return caps_; }
+  WristHandle() { position = Eigen::Vector3d::Zero(); }
   void read(DeviceReading& out) noexcept override {
-    out.sequence = ++sequence_;
-    out.connected = 1;
+    HeldHandle::read(out);
     out.joint_count = 2;
-    for (int i = 0; i < 3; ++i) out.position_m[i] = position[i];
     out.joint_rad[0] = swing;
     out.joint_rad[1] = tilt;
   }
-  void write(const DeviceCommand&) noexcept override {}
 
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();
   double swing = 0.0, tilt = 0.0;
-
- private:
-  DeviceCapabilities caps_;
-  uint64_t sequence_ = 0;
 };
 
 // The thesis's penetrable sphere (section 4.4) with a wrist: aligned with the insertion axis in

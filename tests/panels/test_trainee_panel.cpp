@@ -18,6 +18,17 @@ namespace {
 
 const std::filesystem::path kTask = test::source_dir() / "assets/tasks/penetrable_sphere.json";
 
+// A result with the score's six components at these fractions of their weight.
+training::SessionResult result_of(double total, bool passed, const double (&fractions)[6]) {
+  training::SessionResult result;
+  result.score.total = total;
+  result.score.passed = passed;
+  const char* names[6] = {"completion", "tip_error", "axis_deviation", "lateral_load", "peak_force", "time"};
+  const double weights[6] = {30, 15, 10, 10, 10, 25};
+  for (int i = 0; i < 6; ++i) result.score.components.push_back({names[i], fractions[i], weights[i]});
+  return result;
+}
+
 class TraineePanel : public VulkanTest {
  protected:
   engine::RgbaImage draw(const ui::TraineeView& view, engine::Extent extent = {480, 420}) {
@@ -56,11 +67,7 @@ TEST_F(TraineePanel, MidTaskMatchesGolden) {
 TEST_F(TraineePanel, ResultMatchesGolden) {
   training::Task task = training::load_task(kTask);
   training::TaskProgress progress(task);
-  training::SessionResult result;
-  result.score.total = 62.0;
-  result.score.passed = false;
-  result.score.components = {{"completion", 1.0, 30}, {"tip_error", 0.4, 15}, {"axis_deviation", 0.2, 10},
-                             {"lateral_load", 0.9, 10}, {"peak_force", 1.0, 10}, {"time", 0.8, 25}};
+  training::SessionResult result = result_of(62.0, false, {1.0, 0.4, 0.2, 0.9, 1.0, 0.8});
   result.score.reasons_failed = {"score 62 is below the pass mark 70"};
   ui::TraineeView view{&task, &progress};
   view.result = &result;
@@ -74,11 +81,7 @@ TEST_F(TraineePanel, ResultMatchesGolden) {
 TEST_F(TraineePanel, ResultWithTheStartScreensChoicesAt1920x1080MatchesGolden) {
   training::Task task = training::load_task(kTask);
   training::TaskProgress progress(task);
-  training::SessionResult result;
-  result.score.total = 86.0;
-  result.score.passed = true;
-  result.score.components = {{"completion", 1.0, 30}, {"tip_error", 0.8, 15}, {"axis_deviation", 0.7, 10},
-                             {"lateral_load", 0.9, 10}, {"peak_force", 1.0, 10}, {"time", 0.6, 25}};
+  const training::SessionResult result = result_of(86.0, true, {1.0, 0.8, 0.7, 0.9, 1.0, 0.6});
   ui::TraineeView view{&task, &progress};
   view.result = &result;
   view.loop_rate_hz = 1000.0;
