@@ -1,9 +1,10 @@
 // `needle-sim` with no arguments, as a trainee meets it: under Xvfb the start screen opens,
-// xdotool types the trainee's name and starts the penetrable-sphere task with the mouse, plays a
-// trainee's plan (tests/support/desk_plan.hpp) with the cursor, the right button for the turns
-// (the pivot about the tip included) and the wheel, then goes Back and quits; the session is in
-// the store, complete, every step completed, and the settings remember the trainee. Without a
-// display it says so and `run` is what to use.
+// xdotool types the trainee's name, chooses the penetrable-sphere task and the mouse with the keys
+// and starts, plays a trainee's plan (tests/support/desk_plan.hpp) with the cursor, the right
+// button for the turns (the pivot about the tip included) and the wheel, then goes Back and quits;
+// the session is in the store, complete, every step completed, and the settings remember the
+// trainee and the device. Also: the keyboard in the task's window, the score panel's choices, the
+// desktop launcher, a missing tasks folder, and no display (`run` is what to use there).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -109,14 +110,16 @@ std::vector<training::SessionInfo> sessions_of(const UserFolders& user) {
 
 TEST(CliStartScreen, ATraineeStartsTheTaskWithTheMouseAndFinishesItPivotIncluded) {
   const UserFolders user(test_output_dir("cli_start_screen") / "mouse");
-  {  // the window's size, remembered from an earlier run; no trainee yet
-    std::ofstream(user.settings()) << R"({"version": 1, "device": "mouse", "window": {"width": 960, "height": 540}})";
+  {  // the window's size and the keyboard, remembered from an earlier run; no trainee yet
+    std::ofstream(user.settings()) << R"({"version": 1, "device": "keyboard", "window": {"width": 960, "height": 540}})";
   }
   const fs::path plan = user.root / "plan.xdo";
   std::ofstream(plan) << mouse_plan_script();
   const ProcessResult r = drive(user, open_start_screen(user)
-                                          // The name field has the keyboard: type, Enter starts (the first task, the mouse).
-                                          + "xdotool type --delay 50 'ana b'; sleep 0.5; xdotool key Return\n" +
+                                          // The name field has the keyboard: type, Esc leaves it; Down and Up
+                                          // come back to the first task, Left from the keyboard to the mouse.
+                                          + "xdotool type --delay 50 'ana b'; sleep 0.5; xdotool key Escape; sleep 0.5\n" +
+                                          "xdotool key --delay 300 Down Up Left; sleep 0.5; xdotool key Return\n" +
                                           wait_for("^real-time: ", 60, "the task did not start") + "sleep 1\n" +
                                           "sed \"s/WID/$id/\" " + quoted(plan) + " | xdotool -\n" +
                                           wait_for("^score ", 30, "the task did not end") +
