@@ -51,7 +51,8 @@ SessionWindow::SessionWindow(const WindowOptions& options)
     : options_(options),
       vw_("needle-sim", options.size),
       renderer_(vw_.device, vw_.target, {options.msaa.value_or(vw_.default_msaa_samples())}),
-      frames_(options.frames, options.screenshot) {
+      frames_(options.frames, options.screenshot),
+      view_{options.section} {
   if (options.hud) ui_pass_.emplace(renderer_, &vw_.window);
 }
 
@@ -69,6 +70,8 @@ void SessionWindow::run(engine::GpuScene& scene, const Show& show, const std::fu
 void SessionWindow::frames(engine::GpuScene& scene, const Show& show, const std::function<bool()>& done) {
   const auto start = std::chrono::steady_clock::now();
   const auto& assets = scene.scene().assets;
+  view_.has_ultrasound = show.ultrasound != nullptr;
+  view_.ultrasound = view_.ultrasound || show.ultrasound_open;
   while (!vw_.window.should_close()) {
     vw_.window.poll_events();
     if (show.input) show.input(vw_.window);
@@ -76,13 +79,19 @@ void SessionWindow::frames(engine::GpuScene& scene, const Show& show, const std:
     const std::optional<engine::NeedleLoad> needle = show.needle ? show.needle(t) : std::nullopt;
     engine::FrameParams params = scene.frame_params(needle ? &*needle : nullptr);
     const float dt = clock_.tick();
+    const bool ultrasound = show.ultrasound && view_.ultrasound && ui_pass_ && needle;
     if (ui_pass_) {
       ui_pass_->begin_frame(vw_.target.extent(), dt);
       ui::draw_status_panel({vw_.device.device_description(), assets.empty() ? "" : assets[0].name, renderer_.msaa_samples(),
                              clock_.mean_frame_ms()});
       if (show.panel) show.panel();
+      if (show.needle) ui::draw_view_panel(view_);  // a view of the tissue (not the start screen)
+      if (ultrasound) show.ultrasound->draw_panel(*needle);
       params.overlay = ui_pass_->end_frame();
     }
+    // The ultrasound passes run only while its window is open.
+    if (ultrasound) show.ultrasound->add_to_frame(params, renderer_, vw_.target.extent(), *needle);
+    if (view_.section) params.section = engine::section_through_needle(params.camera, needle ? &*needle : nullptr, *view_.section);
     frames_.draw(vw_.window, renderer_, vw_.target, params);
     if (done && done()) break;
   }
@@ -134,7 +143,9 @@ TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices
              }
              desk->frame(w, keys, pointer_on_panel());
              if (desk->take_fault_reset()) session.reset_fault();
-           }},
+           },
+           std::make_shared<UltrasoundWindow>(window.device(), session.task()),
+           session.task().ultrasound_probe.has_value()},
       [&end] { return end.has_value(); });
   return end.value_or(TaskEnd::kWindowClosed);
 }
@@ -146,7 +157,9 @@ int run_scene_headless(const engine::Scene& scene, const WindowOptions& options,
   engine::GpuScene gpu_scene(renderer, scene);
   const std::optional<engine::NeedleLoad> needle = scripted_needle_show(gpu_scene).needle(kHeadlessMoment_s);
   engine::RgbaImage image;
-  renderer.draw(target, gpu_scene.frame_params(needle ? &*needle : nullptr), &image);
+  engine::FrameParams params = gpu_scene.frame_params(needle ? &*needle : nullptr);
+  if (options.section) params.section = engine::section_through_needle(params.camera, needle ? &*needle : nullptr, *options.section);
+  renderer.draw(target, params, &image);
   const fs::path out = out_dir / "scene.png";
   engine::write_png(out, image);
   std::printf("wrote %s (%ux%u)\n", out.c_str(), image.width, image.height);

@@ -6,16 +6,19 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "app/task_session.hpp"
+#include "app/ultrasound_window.hpp"
 #include "app/window_frames.hpp"
 #include "engine/extent.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/scene.hpp"
 #include "engine/ui_pass.hpp"
 #include "ui/status_panel.hpp"
+#include "ui/view_panel.hpp"
 
 namespace needle::app {
 
@@ -25,6 +28,7 @@ struct WindowOptions {
   long frames = 0;          // close after this many frames (0: when the user closes the window)
   std::optional<std::string> screenshot;  // save the last of `frames` as presented
   bool hud = true;                        // the panels
+  std::optional<engine::Section::Mode> section;  // the section view at the start (X and the view panel change it)
 };
 
 // What the window shows each frame: where the needle is, and a panel beside the status panel;
@@ -33,6 +37,9 @@ struct Show {
   std::function<std::optional<engine::NeedleLoad>(double t_s)> needle;
   std::function<void()> panel;
   std::function<void(engine::Window&)> input;
+  // A task's ultrasound view, offered in the view panel; made on the window's device and gone before it.
+  std::shared_ptr<UltrasoundWindow> ultrasound;
+  bool ultrasound_open = false;  // at the start (a task with a probe)
 };
 
 // The window, kept open across what it shows (a task, the start screen and the tasks it
@@ -45,6 +52,7 @@ class SessionWindow {
   SessionWindow& operator=(const SessionWindow&) = delete;
 
   engine::Window& window() { return vw_.window; }
+  const engine::GpuDevice& device() const { return vw_.device; }
   engine::SceneRenderer& renderer() { return renderer_; }
   bool closed() const { return vw_.window.should_close(); }
   // Draws `scene` with `show` until the window closes or, checked after each frame, `done()`.
@@ -60,6 +68,7 @@ class SessionWindow {
   std::optional<engine::UiPass> ui_pass_;
   ui::FrameClock clock_;
   WindowFrames frames_;
+  ui::ViewState view_;  // the section view and the ultrasound window, kept from task to task
 };
 
 // How a task run from the start screen ended: the score panel's choice, or the window closed.
