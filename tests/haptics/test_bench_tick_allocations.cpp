@@ -34,6 +34,18 @@ TEST(BenchTickAllocations, NonholonomicContactTickAllocatesNothing) {
   EXPECT_EQ(workload.teleoperation().world().report().mode, ContactMode::Nonholonomic);
 }
 
+TEST(BenchTickAllocations, LayeredTissueTickAllocatesNothing) {
+  // lumbar_epidural at 22 s: the tip in the interspinous ligament, the shaft through skin, fat and the
+  // supraspinous ligament (friction on three layers, the track's events).
+  TickWorkload workload(test::scenario("lumbar_epidural"), 22.0);
+  EXPECT_EQ(allocations_during([&] {
+              for (int k = 0; k < 2000; ++k) workload.tick();
+            }),
+            0);
+  EXPECT_EQ(workload.teleoperation().world().report().mode, ContactMode::Nonholonomic);
+  EXPECT_TRUE(workload.teleoperation().world().report().axial);
+}
+
 TEST(BenchTickAllocations, RigidContactAndFreeMotionTicksAllocateNothing) {
   const Scenario& sc = test::scenario("holonomic_sphere");
   Teleoperation tele(sc.master, sc.virt, sc.scene, sc.gains, sc.period_s, sc.virtual_substeps);
