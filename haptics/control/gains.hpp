@@ -63,6 +63,13 @@ struct TeleoperationGains {
   // of the lateral force reflection is gone (band 3-50 Hz of F_h 0.038 -> 0.009 N rms in the thesis's
   // insertion) while the hand moves sideways at most millimetres a second in tissue (0.01 N felt).
   double lateral_damping_Ns_per_m = 10.0;
+  // ControlLaw::Tool: damping of the master tip's motion along the needle while the tissue's axial
+  // force acts (layers with friction, cutting or a surface), N·s/m at the hand (docs/CONTROLLER.md,
+  // "The tissue along the needle"). Design value: the axial loop (hand push -> virtual needle ->
+  // friction -> hand) limit-cycled at about 6 Hz with ±1.2 N when withdrawing through muscle; band
+  // 3-50 Hz of F_h in tissue_block_layers 0.34 N at 0, 0.24 at 15, 0.08 at 20, 0.015 at 30 N·s/m.
+  // An insertion at 5 mm/s feels 0.15 N of it.
+  double axial_damping_Ns_per_m = 30.0;
 };
 
 // Section 4.3 (holonomic experiment, law (3.20)-(3.21)) and 4.4 (nonholonomic, (3.27)-(3.28)),

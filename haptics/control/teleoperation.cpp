@@ -102,9 +102,11 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
       lateral_damping_torque(world_.data().tip.linear(), master_data_.J, in.dq_m, gains_.lateral_damping_Ns_per_m,
                              blend_.tissue, out_.tau_m);
   }
-  if (blend_.axial > 0.0)
+  if (blend_.axial > 0.0) {
+    axial_damping_torque(contact.axis, master_data_.J, in.dq_m, gains_.axial_damping_Ns_per_m, blend_.axial, out_.tau_m);
     out_.push_axial_N = axial_force_torques(contact.axis, wrench_scene_, contact.axial_force_N, world_.data().J,
                                             master_data_.J, scale, blend_.axial, out_.tau_v, out_.tau_m);
+  }
 
   // (2.21) with the contact's constraint, then report the whole virtual torque.
   world_.advance(out_.tau_v, velocity_gain_v_, T, substeps_);

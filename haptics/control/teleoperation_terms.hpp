@@ -160,6 +160,15 @@ inline void lateral_damping_torque(const Eigen::Matrix3d& needle_frame, const Ma
   tau_m.noalias() += J_m.topRows<3>().transpose() * force;
 }
 
+// (x₅, J_m, q̇_m, b, w; τ_m) => (τ_m −= w b J_mᵀ x₅x₅ᵀ ẋ_m)   the master's motion along the needle
+// damped while the tissue's axial force acts (not in the thesis: docs/CONTROLLER.md, "The tissue
+// along the needle"); dissipative by construction.
+inline void axial_damping_torque(const Eigen::Vector3d& axis, const Mat6N& J_m, const VecN& dq_m, double b, double w,
+                                 VecN& tau_m) {
+  const double v = axis.dot(J_m.topRows<3>() * dq_m);
+  tau_m.noalias() -= (w * b * v) * (J_m.topRows<3>().transpose() * axis);
+}
+
 // (x₅, f_h in the scene's newtons, F_t, J_v, J_m, s, w; τ) => (F_h,a = x₅ᵀ f_h; τ_v += w J_vᵀ x₅ F_h,a,
 // τ_m −= w s J_mᵀ x₅ F_t)   the tissue along the needle (not in the thesis: docs/CONTROLLER.md, "The
 // tissue along the needle"): (3.21) and (3.20)'s force terms with n̂ = x₅ and F_v = F_t x₅, F_t the

@@ -271,6 +271,29 @@ TEST(ControllerEquations, AxialForceTorquesFeedTheHandsPushToTheToolAndTheTissue
   EXPECT_TRUE(tau_m.isApprox(vec({-0.36, 0.24}), 1e-14));
 }
 
+TEST(ControllerEquations, AxialAndLateralDampingOpposeTheMastersMotionAlongAndAcrossTheNeedle) {
+  // Master tip velocity ẋ = J_lin q̇ with J_lin rows x = 2 q₁, z = q₂; q̇ = (0.5, −1): ẋ = (1, 0, −1).
+  Mat6N J_m = Mat6N::Constant(6, 2, 7.0);
+  J_m.topRows<3>() << 2, 0, 0, 0, 0, 1;
+  const VecN dq = vec({0.5, -1});
+  const Eigen::Vector3d axis(0.6, 0, -0.8);
+  // Along x₅: v = x₅ᵀẋ = 1.4; F = −w b v x₅ = −0.5 · 30 · 1.4 (0.6, 0, −0.8) = (−12.6, 0, 16.8);
+  // τ = J_linᵀ F = (−25.2, 16.8).
+  VecN tau = vec({0, 0});
+  axial_damping_torque(axis, J_m, dq, 30.0, 0.5, tau);
+  EXPECT_TRUE(tau.isApprox(vec({-25.2, 16.8}), 1e-14));
+  EXPECT_LT(tau.dot(dq), 0.0);  // dissipative: power τᵀq̇ = Fᵀẋ < 0
+  // Across it (y₅, z₅ spanning the plane ⊥ x₅): F = −w b (ẋ − x₅x₅ᵀẋ) = −5 ((1, 0, −1) − 1.4 x₅) = −5 (0.16, 0, 0.12).
+  Eigen::Matrix3d frame;
+  frame.col(0) = axis;
+  frame.col(1) = Eigen::Vector3d(0.8, 0, 0.6);
+  frame.col(2) = Eigen::Vector3d(0, 1, 0);
+  tau = vec({0, 0});
+  lateral_damping_torque(frame, J_m, dq, 10.0, 0.5, tau);
+  EXPECT_TRUE(tau.isApprox(vec({-1.6, -0.6}), 1e-14));
+  EXPECT_LT(tau.dot(dq), 0.0);
+}
+
 TEST(ControllerEquations, TaskSpaceCouplingIsASpringOnTheTipAndOneOnTheDirection) {
   const RobotModel model = test::planar::arm();
   RobotData data(model);

@@ -2,6 +2,7 @@
 // the force held at rest in free motion, the sensed force's content in the 3-50 Hz band and above
 // it, the needle's lateral speed in tissue and the position tracking. haptics/sim/feel_metrics.hpp
 // measures; this file runs the scenarios and prints.
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -37,19 +38,21 @@ int run_bench_feel(ArgList& args) {
   }
 
   BenchTable table({"scenario", "law", "phase", "seconds", "free_force_rest_N", "force_band_rms_N", "force_hf_rms_N",
-                    "max_lateral_speed_mps", "tracking_rms_m", "faults"});
+                    "max_lateral_speed_mps", "tracking_rms_m", "run_s", "faults"});
   for (const std::string& path : paths) {
     haptics::Scenario scenario = haptics::load_scenario(path);
     for (haptics::ControlLaw law : laws) {
       scenario.gains.law = law;
       const double rest = haptics::free_force_at_rest(scenario);
+      const auto t0 = std::chrono::steady_clock::now();
       const haptics::SimResult run = haptics::run_closed_loop(scenario, true);
+      const double run_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       const std::string faults = run.summary.faults.empty() ? "none" : run.summary.faults.front();
       for (const haptics::PhaseFeel& p : haptics::feel_by_phase(run.ticks, scenario.period_s)) {
         const bool free = p.phase == haptics::FeelPhase::Free;
         table.add_row({scenario.name, haptics::control_law_name(law), haptics::feel_phase_name(p.phase), p.seconds,
                        free ? nlohmann::json(rest) : nlohmann::json(nullptr), p.force_band_rms_N, p.force_hf_rms_N,
-                       number_or_null(p.max_lateral_speed_mps), p.tracking_rms_m, faults});
+                       number_or_null(p.max_lateral_speed_mps), p.tracking_rms_m, run_s, faults});
       }
     }
   }
@@ -66,7 +69,8 @@ const CommandRegistrar reg{{"bench feel",
                             "                   side by side (default both)\n"
                             "  --json FILE      also write the rows as JSON (its folder must exist)\n"
                             "  per scenario, law and phase (free, rigid contact, tissue): free_force_rest_N,\n"
-                            "  force_band_rms_N (3-50 Hz), force_hf_rms_N (> 50 Hz), max_lateral_speed_mps, tracking_rms_m",
+                            "  force_band_rms_N (3-50 Hz), force_hf_rms_N (> 50 Hz), max_lateral_speed_mps, tracking_rms_m,\n"
+                            "  run_s (wall time of the closed-loop run)",
                             run_bench_feel}};
 
 }  // namespace
