@@ -29,7 +29,7 @@ glm::dvec3 glm_of(const training::Vec3& v) { return {v[0], v[1], v[2]}; }
 
 engine::EchoScene echo_scene(const haptics::Scenario& scenario, const engine::Scene& scene) {
   engine::EchoScene out;
-  for (const haptics::TissueLayer& layer : scenario.tissue.layers()) {
+  for (const haptics::TissueLayer& layer : scenario.scene.tissue.layers()) {
     engine::EchoLayer echo;
     echo.name = layer.name;
     const haptics::ImplicitSurface& surface = layer.shape.surface();

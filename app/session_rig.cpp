@@ -4,6 +4,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "haptics/control/gains.hpp"
 #include "haptics/devices/device_catalog.hpp"
 #include "haptics/devices/replay_device.hpp"
 #include "haptics/realtime/haptic_loop.hpp"
@@ -144,6 +145,9 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
     const json context = read_context(path, replay->header());
     try {
       scenario_json = context.at("scenario");
+      // Recorded before issue 13's tool law existed: replayed with the law it was recorded with.
+      if (scenario_json.contains("gains") && !scenario_json["gains"].contains("law"))
+        scenario_json["gains"]["law"] = haptics::control_law_name(haptics::ControlLaw::Thesis);
       coupling = context.value("coupling", json(nullptr));
       limits_ = limits_from(context.at("safety_limits"));
       scenario_ = std::make_unique<haptics::Scenario>(training::write_scenario(scenario_json, scenario_file));
@@ -186,6 +190,9 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
   if (!is_replay(spec)) limits_ = haptics::safety_limits_for(device_->capabilities());
   if (spec == "sim") device_->open();
 
+  // The law is part of what the recording replays with (the default may change again).
+  if (scenario_json.contains("gains") && !scenario_json["gains"].contains("law"))
+    scenario_json["gains"]["law"] = haptics::control_law_name(haptics::TeleoperationGains{}.law);
   const std::string recorded_device = is_replay(spec) ? description_ : spec;
   context_ = json{{"version", kContextVersion},
                   {"task", fs::absolute(task.source).string()},

@@ -28,6 +28,14 @@ void NonholonomicMultiplier::reset(int k) { psi_integral_.setZero(k); }
   ddq.noalias() += hinv_at_.transpose() * lambda;
 }
 
+void NonholonomicMultiplier::response(RobotData& data, const VecN& f, VecN& m, VecK& l) const {
+  m = f;
+  data.llt.solveInPlace(m);  // H⁻¹ f
+  l.noalias() = -(hinv_at_ * f);  // −A H⁻¹ f (H symmetric: row r of hinv_at_ is (H⁻¹ a_r)ᵀ)
+  schur_factor_.solveInPlace(l);
+  m.noalias() += hinv_at_.transpose() * l;
+}
+
 void NonholonomicMultiplier::advance(const MatKN& A, const VecN& dq, double h) {
   if (psi_integral_.size() != A.rows()) reset(static_cast<int>(A.rows()));
   psi_integral_ += h * (A * dq);

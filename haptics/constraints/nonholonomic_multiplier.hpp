@@ -26,6 +26,10 @@ class NonholonomicMultiplier {
   // of the constrained dynamics. Allocation-free.
   void solve(const RobotModel& model, RobotData& data, const MatKN& A, const MatKN& A_dot, const VecN& tau, VecK& lambda,
              VecN& ddq);
+  // After solve, with the same data: how an extra joint torque f changes the solution: q̈ += m,
+  // λ += l, with m = M f, M = H⁻¹ − H⁻¹Aᵀ(AH⁻¹Aᵀ)⁻¹AH⁻¹ (what the constraint lets f move) and
+  // l = −(AH⁻¹Aᵀ)⁻¹AH⁻¹ f (the multipliers that keep (3.23) with f applied).
+  void response(RobotData& data, const VecN& f, VecN& m, VecK& l) const;
   // ∫ψ += ψ h, after a step of length h.
   void advance(const MatKN& A, const VecN& dq, double h);
 
@@ -34,7 +38,7 @@ class NonholonomicMultiplier {
   VecK psi_integral_;
   MatKN hinv_at_;  // H⁻¹Aᵀ, stored as (H⁻¹Aᵀ)ᵀ rows
   MatKK schur_;  // A H⁻¹ Aᵀ
-  SmallCholesky<kMaxConstraints> schur_factor_;
+  SmallCholesky<kMaxConstraints> schur_factor_;  // of A H⁻¹ Aᵀ
 };
 
 }  // namespace needle::haptics

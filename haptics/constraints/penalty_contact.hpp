@@ -36,4 +36,15 @@ struct PenaltyResult {
 PenaltyResult penalty_acceleration(const GpmParams& p, const RobotModel& model, RobotData& data,
                                    const SurfaceSample& surface, const VecN& tau, double step, VecN& ddq);
 
+using RowN = Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, kMaxDof>;
+// (data with J, surface) => J_φ = n̂ᵀ J_lin, the rate of φ per joint rate.
+RowN surface_jacobian(const RobotData& data, const SurfaceSample& surface);
+// (α, ξ, ω; data with J, J̇ and q̇; surface, J_φ, m = ∂q̈/∂(−λ) = M J_φᵀ, h; q̈ without the penalty)
+// => (λ; q̈ −= m λ)   (3.15) solved with dynamics whose response to a joint torque f is q̈ += M f:
+// λ = (α' J_φ q̈ + λ₀) / (1 + α' J_φ m), α' = ∂λ/∂φ̈, λ₀ = λ at J_φ q̈ = 0 (Sherman-Morrison on the
+// rank-one term). M = H⁻¹ for the free robot (penalty_acceleration); inside tissue it is the
+// nonholonomic constraint's (NonholonomicMultiplier::response). Inactive (q̈ untouched) when λ ≥ 0.
+PenaltyResult penalty_response(const GpmParams& p, const RobotData& data, const SurfaceSample& surface,
+                               const RowN& j_phi, const VecN& mobility, double step, VecN& ddq);
+
 }  // namespace needle::haptics

@@ -16,6 +16,14 @@ RobotGains thesis_virtual(int n, double kf) {
 
 }  // namespace
 
+const char* control_law_name(ControlLaw law) { return law == ControlLaw::Thesis ? "thesis" : "tool"; }
+
+std::optional<ControlLaw> control_law_named(std::string_view name) {
+  if (name == "thesis") return ControlLaw::Thesis;
+  if (name == "tool") return ControlLaw::Tool;
+  return std::nullopt;
+}
+
 TeleoperationGains thesis_holonomic_gains(int n) {
   TeleoperationGains g;
   g.master = uniform(n, 0.055, 0.0055, 10.05, 0.25, 0.01, 0.015);  // section 4.3

@@ -2,6 +2,10 @@
 // values of the thesis's experiments as named defaults.
 #pragma once
 
+#include <optional>
+#include <string>
+#include <string_view>
+
 #include "haptics/constraints/nonholonomic_multiplier.hpp"
 #include "haptics/constraints/penalty_contact.hpp"
 #include "haptics/model/types.hpp"
@@ -19,6 +23,25 @@ struct RobotGains {
 // positively; kept only to show (tests, bench stability) that it is the form that diverges.
 enum class VirtualFeedback { Dissipative, AsPrinted };
 
+// Which controller runs (docs/CONTROLLER.md, "The laws"). Thesis: the thesis's laws as this code ran
+// them before issue 13 (signs corrected, the blend and the wrench filter added, nothing else): the
+// master's gravity cancelled only in contact, the virtual robot's weight carried by its tracking
+// terms, the tissue entered while the tip is inside its surface. A recording that names no law was
+// made with it. Tool: what the hand holds is the tool: both robots' gravity compensated in every
+// mode, the tool's weight rendered, the sensed wrench taken net of it, entry into tissue one event
+// of the needle's track, and the tissue's axial force fed back to the hand (issues 12 and 13).
+enum class ControlLaw { Thesis, Tool };
+const char* control_law_name(ControlLaw law);
+std::optional<ControlLaw> control_law_named(std::string_view name);
+
+// The instrument the trainee holds (issue 13). Default: an 18 G needle on a 5 ml syringe, 15 g
+// (design value: a 5 ml plastic syringe weighs about 10 g, the needle and its hub 1 to 2 g, a few
+// millilitres of saline or air the rest). Its weight is what the hand carries in free motion.
+struct Tool {
+  std::string name = "needle with syringe";
+  double mass_kg = 0.015;
+};
+
 struct TeleoperationGains {
   RobotGains master, virt;
   GpmParams gpm;
@@ -29,6 +52,24 @@ struct TeleoperationGains {
   // mass and the master limit-cycles in tissue (see docs/CONTROLLER.md). Not in the thesis.
   double force_filter_Hz = 15.0;
   VirtualFeedback virtual_feedback = VirtualFeedback::Dissipative;
+  ControlLaw law = ControlLaw::Tool;
+  Tool tool;  // used by ControlLaw::Tool
+  // Newtons at the hand per newton in the scene, for every force term: the hand feels s F_scene,
+  // its push enters the scene as F_h / s. Below 1 for tissue whose forces exceed the device's
+  // (docs/CONTROLLER.md, "Force scale"). 1 keeps the thesis's laws as they are.
+  double force_scale = 1.0;
+  // ControlLaw::Tool: damping of the master tip's motion across the needle while it is in tissue,
+  // N·s/m at the hand (docs/CONTROLLER.md, "No wobble"). Design value: at 10 N·s/m the 6 Hz ring
+  // of the lateral force reflection is gone (band 3-50 Hz of F_h 0.038 -> 0.009 N rms in the thesis's
+  // insertion) while the hand moves sideways at most millimetres a second in tissue (0.01 N felt).
+  double lateral_damping_Ns_per_m = 10.0;
+  // ControlLaw::Tool: damping of the master tip's motion along the needle while the tissue's axial
+  // force acts (layers with friction, cutting or a surface), N·s/m at the hand (docs/CONTROLLER.md,
+  // "The tissue along the needle"). Design value: the axial loop (hand push -> virtual needle ->
+  // friction -> hand) limit-cycled at about 6 Hz with ±1.2 N when withdrawing through muscle; band
+  // 3-50 Hz of F_h in tissue_block_layers 0.34 N at 0, 0.24 at 15, 0.08 at 20, 0.015 at 30 N·s/m.
+  // An insertion at 5 mm/s feels 0.15 N of it.
+  double axial_damping_Ns_per_m = 30.0;
 };
 
 // Section 4.3 (holonomic experiment, law (3.20)-(3.21)) and 4.4 (nonholonomic, (3.27)-(3.28)),

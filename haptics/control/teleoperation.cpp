@@ -4,6 +4,14 @@
 #include "haptics/model/kinematics.hpp"
 
 namespace needle::haptics {
+namespace {
+
+VirtualWorldOptions world_options(ControlLaw law) {
+  const bool tool = law == ControlLaw::Tool;
+  return {tool ? TissueEntry::Track : TissueEntry::Surface, tool};
+}
+
+}  // namespace
 
 Teleoperation::Teleoperation(const RobotModel& master, const RobotModel& virt, Scene scene, TeleoperationGains gains,
                              double period, int virtual_substeps)
@@ -12,7 +20,7 @@ Teleoperation::Teleoperation(const RobotModel& master, const RobotModel& virt, S
       period_(period),
       substeps_(virtual_substeps),
       master_data_(master),
-      world_(virt, scene, gains.gpm, gains.nonholonomic) {
+      world_(virt, std::move(scene), gains.gpm, gains.nonholonomic, world_options(gains.law)) {
   reset(VecN::Zero(master.dof()), VecN::Zero(master.dof()));
 }
 
@@ -22,9 +30,11 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
   track_m_.reset(n);
   track_v_.reset(n);
   blend_ = ContactBlend{};
+  held_axially_ = false;
   integrals_ = ForceErrorIntegrals{};
   out_ = TickOutput{};
   wrench_filtered_.setZero();
+  wrench_scene_.setZero();
   out_.tau_m.setZero(n);
   out_.tau_v.setZero(n);
   out_.lambda_m.setZero(2);
@@ -41,12 +51,25 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
   const ContactReport& contact = world_.report();         // of the virtual robot's last sub-step
   update_frames(master_, master_data_, in.q_m, in.dq_m);  // J_m and the state Newton-Euler needs
 
-  // Blend weight and the sensed wrench (not in the thesis).
-  if (advance_contact_blend(contact.mode, T / gains_.switch_time_s, blend_)) integrals_ = ForceErrorIntegrals{};
-  const double w = blend_.weight;
-  out_.blend = w;
+  const bool tool = gains_.law == ControlLaw::Tool;
+  const double scale = gains_.force_scale;
+
+  // Blend weights and the sensed wrench (not in the thesis).
+  advance_contact_blend(contact.rigid, contact.tissue, tool && contact.axial, T / gains_.switch_time_s, blend_,
+                        integrals_);
+  out_.weights = blend_;
+  out_.blend = blend_.any();
   out_.mode = contact.mode;
   filter_wrench(in.wrench_h, gains_.force_filter_Hz, T, wrench_filtered_);
+
+  // Tool law: while the tissue's axial grip (friction, cutting) holds the virtual needle against the
+  // tracking terms, the sliding integral σ (3.10) winds up, and it threw the needle out of the tissue
+  // when the grip let go (docs/CONTROLLER.md, "The tissue along the needle"). σ restarts there.
+  if (tool && held_axially_ && !contact.axial) {
+    track_m_.reset(master_.dof());
+    track_v_.reset(master_.dof());
+  }
+  held_axially_ = contact.axial;
 
   // (3.6)-(3.12), each robot following the other; (3.13), (3.14).
   track_m_.update(gm, in.q_m, in.dq_m, world_.q(), world_.dq(), T, terms_m_);
@@ -54,19 +77,35 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
   master_free_motion_torque(gm, in.dq_m, terms_m_.s_a, out_.tau_m);
   virtual_free_motion_torque(gv, gains_.virtual_feedback, world_.dq(), terms_v_.s_a, out_.tau_v, velocity_gain_v_);
 
-  // The contact terms, blended in by w: Y θ of (3.20), (3.27); rigid (3.17)-(3.21); tissue (3.24)-(3.28).
+  // Y θ of (3.20), (3.27), blended in by w (its gravity part always, under the tool law); the tool's
+  // weight; the hand's wrench in the scene's newtons.
+  master_dynamics_cancellation(master_, master_data_, out_.blend, tool, out_.tau_m);
+  if (tool) tool_weight(gains_.tool.mass_kg, master_.gravity, master_data_.J, wrench_filtered_, out_.tau_m, wrench_scene_);
+  else wrench_scene_ = wrench_filtered_;
+  wrench_scene_ /= scale;
+
+  // The contact terms, each blended in by its w: rigid (3.17)-(3.21); tissue (3.24)-(3.28); along the needle.
   out_.force_h_normal.setZero();
   out_.lambda_m.setZero(2);
-  if (blend_.kind != ContactMode::Free) master_dynamics_cancellation(master_, master_data_, w, out_.tau_m);
-  if (blend_.kind == ContactMode::Holonomic) {
-    rigid_force_errors(contact.normal, wrench_filtered_, contact.force_rigid, w, T, out_.force_h_normal, integrals_);
+  out_.push_axial_N = 0.0;
+  if (blend_.rigid > 0.0) {
+    rigid_force_errors(contact.normal, wrench_scene_, contact.force_rigid, blend_.rigid, T, out_.force_h_normal, integrals_);
     rigid_force_torques(world_.data().J, master_data_.J, out_.force_h_normal, contact.force_rigid, integrals_, gv.Kf,
-                        gm.Kf, w, out_.tau_v, out_.tau_m);
-  } else if (blend_.kind == ContactMode::Nonholonomic) {
-    operator_multiplier(contact.A, master_data_.J, wrench_filtered_, multiplier_scratch_, out_.lambda_m);
-    tissue_force_error(out_.lambda_m, contact.lambda_tissue, w, T, integrals_);
-    tissue_force_torques(contact.A, out_.lambda_m, contact.lambda_tissue, integrals_, gv.Kf, gm.Kf, w, out_.tau_v,
-                         out_.tau_m);
+                        gm.Kf, scale, blend_.rigid, out_.tau_v, out_.tau_m);
+  }
+  if (blend_.tissue > 0.0) {
+    operator_multiplier(contact.A, master_data_.J, wrench_scene_, multiplier_scratch_, out_.lambda_m);
+    tissue_force_error(out_.lambda_m, contact.lambda_tissue, blend_.tissue, T, integrals_);
+    tissue_force_torques(contact.A, out_.lambda_m, contact.lambda_tissue, integrals_, gv.Kf, gm.Kf, scale,
+                         blend_.tissue, out_.tau_v, out_.tau_m);
+    if (tool)
+      lateral_damping_torque(world_.data().tip.linear(), master_data_.J, in.dq_m, gains_.lateral_damping_Ns_per_m,
+                             blend_.tissue, out_.tau_m);
+  }
+  if (blend_.axial > 0.0) {
+    axial_damping_torque(contact.axis, master_data_.J, in.dq_m, gains_.axial_damping_Ns_per_m, blend_.axial, out_.tau_m);
+    out_.push_axial_N = axial_force_torques(contact.axis, wrench_scene_, contact.axial_force_N, world_.data().J,
+                                            master_data_.J, scale, blend_.axial, out_.tau_v, out_.tau_m);
   }
 
   // (2.21) with the contact's constraint, then report the whole virtual torque.

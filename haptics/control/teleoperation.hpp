@@ -2,8 +2,10 @@
 // contact-dependent force terms, the virtual robot's integration, and the master torque.
 // Free motion (3.13)-(3.14); rigid contact (3.17)-(3.21); tissue (3.24)-(3.28); signs corrected
 // where printed ones feed velocity back positively (docs/CONTROLLER.md). Contact terms blend in
-// and out over gains.switch_time_s. The equations are the functions of teleoperation_terms.hpp;
-// step() calls them in order, allocates nothing and throws nothing.
+// and out over gains.switch_time_s. The tool law (gains.law) adds the robots' gravity compensation
+// in every mode, the tool's weight and the tissue's force along the needle (issues 12 and 13). The
+// equations are the functions of teleoperation_terms.hpp; step() calls them in order, allocates
+// nothing and throws nothing.
 #pragma once
 
 #include "haptics/control/gains.hpp"
@@ -21,13 +23,17 @@ struct TickInput {
 struct TickOutput {
   VecN tau_m, tau_v;             // master command (all joints; the device applies what it can)
   ContactMode mode = ContactMode::Free;
-  double blend = 0.0;            // 0 free ... 1 contact terms fully on
-  Eigen::Vector3d force_h_normal = Eigen::Vector3d::Zero();  // F_h along the rigid normal
-  VecK lambda_m;                 // (3.24), hand's push along the needle constraints
+  double blend = 0.0;            // 0 free ... 1 contact terms fully on (the largest of `weights`)
+  ContactBlend weights;          // per contact
+  Eigen::Vector3d force_h_normal = Eigen::Vector3d::Zero();  // F_h along the rigid normal, scene newtons
+  VecK lambda_m;                 // (3.24), hand's push along the needle constraints, scene newtons
+  double push_axial_N = 0.0;     // F_h,a: the hand's push along the needle, scene newtons (tool law, in tissue)
 };
 
 class Teleoperation {
  public:
+  // The virtual world follows the law: under ControlLaw::Tool its robot is weightless and the
+  // needle's track decides entry (VirtualWorldOptions).
   Teleoperation(const RobotModel& master, const RobotModel& virt, Scene scene, TeleoperationGains gains, double period,
                 int virtual_substeps);
 
@@ -52,10 +58,12 @@ class Teleoperation {
   TrackingState track_m_, track_v_;
   TrackingTerms terms_m_, terms_v_;
   ContactBlend blend_;
+  bool held_axially_ = false;  // the tissue's axial grip held the virtual needle at the last tick
   ForceErrorIntegrals integrals_;
   VecN velocity_gain_v_;  // B of τ_v = τ_v0 − B q̇_v
   OperatorMultiplierScratch multiplier_scratch_;
   Wrench wrench_filtered_ = Wrench::Zero();
+  Wrench wrench_scene_ = Wrench::Zero();  // filtered, net of the tool's weight (tool law), divided by the force scale
   TickOutput out_;
 };
 

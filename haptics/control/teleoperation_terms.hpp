@@ -17,31 +17,34 @@ namespace needle::haptics {
 
 using Wrench = Eigen::Matrix<double, 6, 1>;
 
-// Which contact's terms are on, and how far (not in the thesis: docs/CONTROLLER.md, blending).
+// How far each contact's terms are on (not in the thesis: docs/CONTROLLER.md, blending).
 struct ContactBlend {
-  ContactMode kind = ContactMode::Free;  // the contact whose terms are blending
-  double weight = 0.0;                   // w: 0 free ... 1 contact terms fully on
+  double rigid = 0.0;   // (3.17)-(3.21)
+  double tissue = 0.0;  // (3.24)-(3.28)
+  double axial = 0.0;   // the tissue along the needle
+  double any() const { return std::max({rigid, tissue, axial}); }
 };
 
-// The integrals of the force errors, restarted at each new contact.
+// The integrals of the force errors, each restarted at a new contact of its kind.
 struct ForceErrorIntegrals {
   Eigen::Vector3d momentum_h = Eigen::Vector3d::Zero();  // Δp_h (3.19)
   Eigen::Vector3d momentum_v = Eigen::Vector3d::Zero();  // Δp_v (3.19)
   VecK lambda = VecK::Zero(2);                           // E = ∫(λ_m + λ_v) dt (3.26)
 };
 
-// (contact mode now, T / switch time; blend) => (blend; true at a new contact)   contact blending:
-// w ramps toward 1 in contact, toward 0 in free motion; a new contact restarts w (and the caller's
-// force integrals).
-inline bool advance_contact_blend(ContactMode mode, double rate, ContactBlend& blend) {
-  const bool new_contact = mode != ContactMode::Free && mode != blend.kind;
-  if (new_contact) {
-    blend.kind = mode;
-    blend.weight = 0.0;
-  }
-  blend.weight = std::clamp(blend.weight + (mode == ContactMode::Free ? -rate : rate), 0.0, 1.0);
-  if (blend.weight == 0.0) blend.kind = ContactMode::Free;
-  return new_contact;
+// (which contacts hold, T / switch time; blend, integrals) => (blend, integrals)   contact
+// blending: each weight ramps toward 1 while its contact holds and toward 0 after it; a contact is
+// new when it holds while its weight is 0, and its force integrals restart then.
+inline void advance_contact_blend(bool rigid, bool tissue, bool axial, double rate, ContactBlend& blend,
+                                  ForceErrorIntegrals& integrals) {
+  auto ramp = [rate](bool holds, double& w) {
+    const bool starts = holds && w == 0.0;
+    w = std::clamp(w + (holds ? rate : -rate), 0.0, 1.0);
+    return starts;
+  };
+  if (ramp(rigid, blend.rigid)) integrals.momentum_h.setZero(), integrals.momentum_v.setZero();
+  if (ramp(tissue, blend.tissue)) integrals.lambda.setZero();
+  ramp(axial, blend.axial);
 }
 
 // (sensed w_h, cutoff, T; filtered) => (filtered)   first-order low-pass of the wrench entering
@@ -65,13 +68,32 @@ inline void virtual_free_motion_torque(const RobotGains& g, VirtualFeedback feed
   tau0 = sign * g.Kp.cwiseProduct(s_a - dq);
 }
 
-// (master model, data after update_frames, w; τ_m) => (τ_m += w Y_m(q_m, q̇_m, 0) θ_m)   the dynamic
-// cancellation of (3.20), (3.27): Y θ = C_m q̇_m + D_m q̇_m + g_m, without H_m q̈_m (q̈_m is not
-// measured), by Newton-Euler at q̈ = 0 with the model's own inertias (the regressor's sum, Y unformed).
-inline void master_dynamics_cancellation(const RobotModel& model, RobotData& data, double w, VecN& tau_m) {
+// (master model, data after update_frames, w, gravity in every mode; τ_m) => (τ_m += w Y_m(q_m, q̇_m, 0) θ_m,
+// or with the gravity always: τ_m += g_m + w (Y_m(q_m, q̇_m, 0) θ_m − g_m))   the dynamic cancellation of
+// (3.20), (3.27): Y θ = C_m q̇_m + D_m q̇_m + g_m, without H_m q̈_m (q̈_m is not measured), by Newton-Euler
+// at q̈ = 0 with the model's own inertias (the regressor's sum, Y unformed). The tool law keeps its
+// gravity part on in free motion too (docs/CONTROLLER.md, "The tool").
+inline void master_dynamics_cancellation(const RobotModel& model, RobotData& data, double w, bool gravity_always,
+                                         VecN& tau_m) {
+  if (gravity_always) {
+    update_gravity(model, data);
+    tau_m += (1.0 - w) * data.g;
+  }
+  if (w == 0.0) return;
   update_bias(model, data);
   for (int i = 0; i < data.n; ++i)
     tau_m[i] += w * (data.bias[i] + model.joints[static_cast<size_t>(i)].damping * data.dq[i]);
+}
+
+// (m, g, J_m, w_h; τ_m) => (τ_m += J_mᵀ [m g; 0]; w_net = w_h + [m g; 0])   the tool's weight (not in the
+// thesis: docs/CONTROLLER.md, "The tool"): the device presses the stylus down with it, and the force
+// terms take what the hand does to the tool beyond carrying it.
+inline void tool_weight(double mass, const Eigen::Vector3d& gravity, const Mat6N& J_m, const Wrench& wrench_h,
+                        VecN& tau_m, Wrench& wrench_net) {
+  const Eigen::Vector3d weight = mass * gravity;
+  tau_m.noalias() += J_m.topRows<3>().transpose() * weight;
+  wrench_net = wrench_h;
+  wrench_net.head<3>() += weight;
 }
 
 // (n̂, w_h, F_v, w, T; Δp) => (F_h,n = n̂ n̂ᵀ F_h; Δp_v += T w (F_v − F_h,n), Δp_h += T w (F_h,n − F_v))
@@ -84,13 +106,13 @@ inline void rigid_force_errors(const Eigen::Vector3d& normal, const Wrench& wren
   integrals.momentum_h += T * w * (force_h_normal - force_v);
 }
 
-// (J_v, J_m, F_h,n, F_v, Δp, K_fv, K_fm, w; τ) => (τ_v += w J_vᵀ(F_h,n − K_fv Δp_v), τ_m −= w J_mᵀ(F_v − K_fm Δp_h))
-// the force terms of (3.21) and (3.20).
+// (J_v, J_m, F_h,n, F_v, Δp, K_fv, K_fm, s, w; τ) => (τ_v += w J_vᵀ(F_h,n − K_fv Δp_v), τ_m −= w s J_mᵀ(F_v − K_fm Δp_h))
+// the force terms of (3.21) and (3.20), forces in the scene's newtons, s the force scale (hand per scene).
 inline void rigid_force_torques(const Mat6N& J_v, const Mat6N& J_m, const Eigen::Vector3d& force_h_normal,
                                 const Eigen::Vector3d& force_v, const ForceErrorIntegrals& integrals, double Kf_v,
-                                double Kf_m, double w, VecN& tau_v, VecN& tau_m) {
+                                double Kf_m, double scale, double w, VecN& tau_v, VecN& tau_m) {
   tau_v += w * (J_v.topRows<3>().transpose() * (force_h_normal - Kf_v * integrals.momentum_v));
-  tau_m -= w * (J_m.topRows<3>().transpose() * (force_v - Kf_m * integrals.momentum_h));
+  tau_m -= (w * scale) * (J_m.topRows<3>().transpose() * (force_v - Kf_m * integrals.momentum_h));
 }
 
 // Storage of operator_multiplier, kept by the caller from tick to tick.
@@ -117,13 +139,47 @@ inline void tissue_force_error(const VecK& lambda_m, const VecK& lambda_v, doubl
   integrals.lambda += T * w * (lambda_m + lambda_v);
 }
 
-// (A, λ_m, λ_v, E, K_fv, K_fm, w; τ) => (τ_v += w Aᵀ(λ_m + K_fv E), τ_m += w Aᵀ(λ_v + K_fm E))
-// the force terms of (3.28) and (3.27).
+// (A, λ_m, λ_v, E, K_fv, K_fm, s, w; τ) => (τ_v += w Aᵀ(λ_m + K_fv E), τ_m += w s Aᵀ(λ_v + K_fm E))
+// the force terms of (3.28) and (3.27), multipliers in the scene's newtons, s the force scale.
 inline void tissue_force_torques(const MatKN& A, const VecK& lambda_m, const VecK& lambda_v,
-                                 const ForceErrorIntegrals& integrals, double Kf_v, double Kf_m, double w, VecN& tau_v,
-                                 VecN& tau_m) {
+                                 const ForceErrorIntegrals& integrals, double Kf_v, double Kf_m, double scale, double w,
+                                 VecN& tau_v, VecN& tau_m) {
   tau_v += w * (A.transpose() * (lambda_m + Kf_v * integrals.lambda));
-  tau_m += w * (A.transpose() * (lambda_v + Kf_m * integrals.lambda));
+  tau_m += (w * scale) * (A.transpose() * (lambda_v + Kf_m * integrals.lambda));
+}
+
+// (needle frame [x₅ y₅ z₅] of the virtual tip, J_m, q̇_m, b, w; τ_m) => (τ_m −= w b J_mᵀ P ẋ_m,
+// P = y₅y₅ᵀ + z₅z₅ᵀ)   the master's sideways motion damped while the needle is in tissue, where
+// the virtual needle cannot move sideways (not in the thesis: docs/CONTROLLER.md, "No wobble"):
+// a damper b on the master tip's velocity across the needle, dissipative by construction.
+inline void lateral_damping_torque(const Eigen::Matrix3d& needle_frame, const Mat6N& J_m, const VecN& dq_m, double b,
+                                   double w, VecN& tau_m) {
+  const Eigen::Vector3d v = J_m.topRows<3>() * dq_m;
+  const Eigen::Vector3d y = needle_frame.col(1), z = needle_frame.col(2);
+  const Eigen::Vector3d force = -(w * b) * (y * y.dot(v) + z * z.dot(v));
+  tau_m.noalias() += J_m.topRows<3>().transpose() * force;
+}
+
+// (x₅, J_m, q̇_m, b, w; τ_m) => (τ_m −= w b J_mᵀ x₅x₅ᵀ ẋ_m)   the master's motion along the needle
+// damped while the tissue's axial force acts (not in the thesis: docs/CONTROLLER.md, "The tissue
+// along the needle"); dissipative by construction.
+inline void axial_damping_torque(const Eigen::Vector3d& axis, const Mat6N& J_m, const VecN& dq_m, double b, double w,
+                                 VecN& tau_m) {
+  const double v = axis.dot(J_m.topRows<3>() * dq_m);
+  tau_m.noalias() -= (w * b * v) * (J_m.topRows<3>().transpose() * axis);
+}
+
+// (x₅, f_h in the scene's newtons, F_t, J_v, J_m, s, w; τ) => (F_h,a = x₅ᵀ f_h; τ_v += w J_vᵀ x₅ F_h,a,
+// τ_m −= w s J_mᵀ x₅ F_t)   the tissue along the needle (not in the thesis: docs/CONTROLLER.md, "The
+// tissue along the needle"): (3.21) and (3.20)'s force terms with n̂ = x₅ and F_v = F_t x₅, F_t the
+// tissue's axial force (needle on tissue), without their integrals. Returns F_h,a.
+inline double axial_force_torques(const Eigen::Vector3d& axis, const Wrench& wrench_h, double axial_force,
+                                  const Mat6N& J_v, const Mat6N& J_m, double scale, double w, VecN& tau_v,
+                                  VecN& tau_m) {
+  const double push = axis.dot(wrench_h.head<3>());
+  tau_v.noalias() += (w * push) * (J_v.topRows<3>().transpose() * axis);
+  tau_m.noalias() -= (w * scale * axial_force) * (J_m.topRows<3>().transpose() * axis);
+  return push;
 }
 
 }  // namespace needle::haptics

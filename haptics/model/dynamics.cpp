@@ -67,6 +67,18 @@ void update_dynamics(const RobotModel& model, RobotData& data) {
   }
 }
 
+// The inward pass of update_bias with every body at rest: each carries −m g at its centre of mass.
+[[gnu::flatten]] void update_gravity(const RobotModel& model, RobotData& data) {
+  Eigen::Vector3d f = Eigen::Vector3d::Zero(), m = Eigen::Vector3d::Zero();
+  for (int i = data.n - 1; i >= 0; --i) {
+    const Eigen::Vector3d weight = -model.joints[static_cast<size_t>(i)].body.mass * model.gravity;
+    if (i < data.n - 1) m += (data.origin[i + 1] - data.origin[i]).cross(f);
+    f += weight;
+    m += (data.com[i] - data.origin[i]).cross(weight);
+    data.g[i] = data.axis[i].dot(m);
+  }
+}
+
 [[gnu::flatten]] void update_tick_dynamics(const RobotModel& model, RobotData& data) {
   update_bias(model, data);  // also the base-frame inertias
   const int n = data.n;

@@ -11,6 +11,9 @@ void update_dynamics(const RobotModel& model, RobotData& data);
 // bias = C q̇ + g (Newton-Euler at q̈ = 0, with the model's inertias) and inertia_world, after
 // update_frames; the servo tick's master needs no more.
 void update_bias(const RobotModel& model, RobotData& data);
+// g = g(q) alone (Newton-Euler at q̇ = q̈ = 0), after update_frames: the torque that holds the robot
+// still against its weight. For the controller's gravity compensation.
+void update_gravity(const RobotModel& model, RobotData& data);
 // update_bias, then H (composite rigid bodies), after update_frames: the servo tick's cheaper path;
 // C and g are left as they were.
 void update_tick_dynamics(const RobotModel& model, RobotData& data);

@@ -22,11 +22,14 @@ bool finite(const VecN& v) { return v.allFinite(); }
 }  // namespace
 
 nlohmann::json SimSummary::to_json() const {
+  nlohmann::json pops = nlohmann::json::array();
+  for (const SimPuncture& p : punctures) pops.push_back({{"layer", p.layer}, {"depth_m", p.depth_m}, {"peak_force_N", p.peak_force_N}});
   return {{"position_rms_free_m", position_rms_free_m},   {"position_max_free_m", position_max_free_m},
           {"position_rms_contact_m", position_rms_contact_m}, {"position_max_contact_m", position_max_contact_m},
           {"force_rms_N", force_rms_N},                   {"force_max_N", force_max_N},
           {"max_penetration_m", max_penetration_m},       {"max_lateral_speed_mps", max_lateral_speed_mps},
           {"max_axis_deviation_m", max_axis_deviation_m}, {"energy_error_J", energy_error_J},
+          {"punctures", pops},                            {"tissue_work_J", tissue_work_J},
           {"faults", faults}};
 }
 
@@ -76,6 +79,8 @@ SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::functi
     rec.psi[1] = c.psi[1];
     rec.energy = plant.energy() + world.energy();
     rec.mode = c.mode;
+    rec.axial_force_N = world.tissue().out.axial_force_N;
+    rec.layer = world.tissue().out.holding_layer;
     rec.position_error = (rec.x_m - rec.x_v).norm();
     rec.force_error = 0.0;
 
@@ -98,6 +103,10 @@ SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::functi
     } else {
       deviation = 0.0;
     }
+    const TissueOutput& tissue = world.tissue().out;
+    if (tissue.punctured_layer >= 0)
+      s.punctures.push_back({sc.scene.tissue.layer(tissue.punctured_layer).name, world.tissue().s, tissue.axial_force_N, rec.t});
+    s.tissue_work_J = world.tissue().tissue_work_J;
     s.energy_error_J = std::max(s.energy_error_J, std::abs(rec.energy - e0 - plant.external_work() - world.external_work()));
     if (keep_ticks) result.ticks.push_back(rec);
     if (on_tick) on_tick(rec);

@@ -30,6 +30,17 @@ struct TickRecord {
   ContactMode mode = ContactMode::Free;
   double position_error = 0.0;  // |x_m − x_v|
   double force_error = 0.0;     // rigid: |F_h,n − F_v|; tissue: |λ_m + λ_v|
+  double axial_force_N = 0.0;   // the tissue's along the needle (needle on tissue, > 0 resists advancing)
+  int layer = -1;               // the tissue layer holding the tip, −1 in none
+};
+
+// A surface that gave way in closed loop (as bench insertion's InsertionPuncture, the depth being the
+// tip's travel along the needle since it met the tissue).
+struct SimPuncture {
+  std::string layer;
+  double depth_m = 0.0;
+  double peak_force_N = 0.0;  // the tissue's axial force when it gave way
+  double t = 0.0;
 };
 
 struct SimSummary {
@@ -40,6 +51,8 @@ struct SimSummary {
   double max_lateral_speed_mps = 0;   // |ψ| in tissue
   double max_axis_deviation_m = 0;    // ∫|ψ| dt over each stay in tissue
   double energy_error_J = 0;          // max |E(t) − E(0) − W_ext(t)|
+  std::vector<SimPuncture> punctures; // in order
+  double tissue_work_J = 0;           // work of the needle on the tissue (≥ 0: the tissue is passive)
   std::vector<std::string> faults;
   nlohmann::json to_json() const;     // the keys, SI units
 };

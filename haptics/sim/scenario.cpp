@@ -118,7 +118,7 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
 
   Scenario scenario(const json& j) {
     object(j, "", {"name", "description", "master_urdf", "virtual_urdf", "robot_base_in_world_m", "period_s",
-                   "duration_s", "master_substeps", "virtual_substeps", "q0_rad", "gains", "rigid", "tissue", "hand",
+                   "duration_s", "master_substeps", "virtual_substeps", "q0_rad", "gains", "tool", "rigid", "tissue", "hand",
                    "sensor", "device", "energy_bound_J"});
     Scenario s;
     s.source = file_;
@@ -134,6 +134,7 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     s.virtual_substeps = int(whole(member(j, "", "virtual_substeps"), "/virtual_substeps", 1, 1000000));
     s.q0 = vector(member(j, "", "q0_rad"), "/q0_rad", n);
     gains(member(j, "", "gains"), "/gains", n, s.gains);
+    if (j.contains("tool")) tool(j["tool"], "/tool", s.gains.tool);
     if (j.contains("rigid")) {
       const Primitives rigid = surface(j["rigid"], "/rigid", s.base_in_world);
       s.scene.rigid = ImplicitSurface(rigid.list, rigid.combine);
@@ -165,7 +166,8 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
   }
 
   void gains(const json& g, const std::string& at, int n, TeleoperationGains& out) const {
-    object(g, at, {"preset", "gpm", "nonholonomic", "switch_time_s"});
+    object(g, at, {"preset", "law", "gpm", "nonholonomic", "switch_time_s", "force_scale",
+                   "lateral_damping_Ns_per_m", "axial_damping_Ns_per_m"});
     const std::string preset = string(member(g, at, "preset"), at + "/preset");
     if (preset == "thesis_holonomic") out = thesis_holonomic_gains(n);
     else if (preset == "thesis_nonholonomic") out = thesis_nonholonomic_gains(n);
@@ -185,6 +187,23 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
                           positive(member(p, where, "beta"), where + "/beta")};
     }
     if (g.contains("switch_time_s")) out.switch_time_s = positive(g["switch_time_s"], at + "/switch_time_s");
+    if (g.contains("law")) {
+      const std::string law = string(g["law"], at + "/law");
+      const auto named = control_law_named(law);
+      if (!named) fail(at + "/law", "expected \"tool\" or \"thesis\", got \"" + law + "\"");
+      out.law = *named;
+    }
+    if (g.contains("force_scale")) out.force_scale = positive(g["force_scale"], at + "/force_scale");
+    if (g.contains("axial_damping_Ns_per_m"))
+      out.axial_damping_Ns_per_m = non_negative(g["axial_damping_Ns_per_m"], at + "/axial_damping_Ns_per_m");
+    if (g.contains("lateral_damping_Ns_per_m"))
+      out.lateral_damping_Ns_per_m = non_negative(g["lateral_damping_Ns_per_m"], at + "/lateral_damping_Ns_per_m");
+  }
+
+  void tool(const json& t, const std::string& at, Tool& out) const {
+    object(t, at, {"name", "mass_kg"});
+    if (t.contains("name")) out.name = string(t["name"], at + "/name");
+    if (t.contains("mass_kg")) out.mass_kg = non_negative(t["mass_kg"], at + "/mass_kg");
   }
 
   struct Primitives {
@@ -208,8 +227,7 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
   void tissue(const json& j, const std::string& at, Scenario& s) const {
     if (!j.is_object() || !j.contains("layers")) {
       const Primitives single = surface(j, at, s.base_in_world);
-      s.scene.tissue = ImplicitSurface(single.list, single.combine);
-      s.tissue = TissueModel::single_surface(LayerShape::of_surface(single.list, single.combine));
+      s.scene.tissue = TissueModel::single_surface(LayerShape::of_surface(single.list, single.combine));
       return;
     }
     object(j, at, {"layers", "stick"});
@@ -228,7 +246,7 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     std::vector<TissueLayer> layers;
     for (size_t i = 0; i < list.size(); ++i) layers.push_back(layer(list[i], where + "/" + std::to_string(i), s.base_in_world));
     try {
-      s.tissue = TissueModel(std::move(layers), stick);
+      s.scene.tissue = TissueModel(std::move(layers), stick);
     } catch (const TissueLayerError& e) {
       fail(where + "/" + std::to_string(e.layer) + "/" + e.key, e.what());
     }

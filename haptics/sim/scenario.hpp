@@ -30,12 +30,10 @@ struct Scenario {
   int master_substeps = 8;
   int virtual_substeps = 4;
   Integrator master_integrator = Integrator::SemiImplicitEuler;
-  TeleoperationGains gains;
-  Scene scene;  // base frame
-  // Base frame. The penetrable tissue as layers (issue 12): `tissue.layers`, or the single-surface
-  // form, which is one layer with every parameter zero and is also scene.tissue. The closed loop
-  // does not use the layers yet (phase B): a layered scenario's scene.tissue is empty.
-  TissueModel tissue;
+  TeleoperationGains gains;  // with the law, the tool (`tool`) and the force scale
+  // Base frame. The penetrable tissue is scene.tissue: layers (`tissue.layers`, issue 12) or the
+  // single-surface form, one layer with every parameter zero.
+  Scene scene;
   VecN q0;
   HandImpedance hand;
   HandTrajectory trajectory;  // base frame

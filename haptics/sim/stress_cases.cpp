@@ -45,7 +45,10 @@ Scenario holding_pose(Scenario s, const VecN& q0, bool in_tissue) {
                                  {4.0, tip.translation() + 0.01 * axis, axis},
                                  {6.0, tip.translation(), axis}});
   s.scene = Scene{};
-  if (in_tissue) s.scene.tissue = ImplicitSurface{SurfacePrimitive::sphere(tip.translation(), 0.05)};
+  if (in_tissue) {
+    const SurfacePrimitive sphere = SurfacePrimitive::sphere(tip.translation(), 0.05);
+    s.scene.tissue = TissueModel::single_surface(LayerShape::of_surface({&sphere, 1}, ImplicitSurface::Combine::Union));
+  }
   s.duration_s = 8.0;
   return s;
 }

@@ -1,6 +1,8 @@
 #include "haptics/tissue/tissue_model.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace needle::haptics {
@@ -64,6 +66,20 @@ int TissueModel::layer_at(const Eigen::Vector3d& x) const {
   for (int i = layer_count() - 1; i >= 0; --i)
     if (layers_[size_t(i)].shape.contains(x)) return i;
   return -1;
+}
+
+double TissueModel::distance(const Eigen::Vector3d& x) const {
+  double phi = std::numeric_limits<double>::infinity();
+  for (const TissueLayer& l : layers_)
+    if (!l.mechanics.rigid) phi = std::min(phi, l.shape.evaluate(x).phi);
+  return phi;
+}
+
+bool TissueModel::has_axial_mechanics() const {
+  for (const TissueLayer& l : layers_)
+    for (const auto& f : kMechanicsFields)
+      if (l.mechanics.*f.member > 0.0) return true;
+  return false;
 }
 
 }  // namespace needle::haptics

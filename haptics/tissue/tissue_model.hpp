@@ -110,6 +110,12 @@ class TissueModel {
 
   // x => the last layer whose shape holds x (layers are listed outside in), −1 in none.
   int layer_at(const Eigen::Vector3d& x) const;
+  // x => the tissue's signed distance: the least φ of its non-rigid layers (< 0 inside the tissue;
+  // +∞ with none). For a single surface, that surface's φ.
+  double distance(const Eigen::Vector3d& x) const;
+  // Whether any non-rigid layer has a surface, cutting, friction or damping: whether the needle can
+  // feel anything along its axis (the thesis's penetrable sphere cannot).
+  bool has_axial_mechanics() const;
 
  private:
   std::vector<TissueLayer> layers_;

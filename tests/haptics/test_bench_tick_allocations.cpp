@@ -25,13 +25,24 @@ TEST(BenchTickAllocations, CounterSeesAllocations) {
   EXPECT_GE(allocations_during([] { Eigen::VectorXd v(100); (void)v; }), 1);
 }
 
+// (scenario played settle_s seconds) => allocations over its next 2000 ticks; the needle still in tissue.
+long allocations_in_tissue(const char* scenario, double settle_s) {
+  TickWorkload workload(test::scenario(scenario), settle_s);
+  const long count = allocations_during([&] {
+    for (int k = 0; k < 2000; ++k) workload.tick();
+  });
+  EXPECT_EQ(workload.teleoperation().world().report().mode, ContactMode::Nonholonomic) << scenario;
+  return count;
+}
+
 TEST(BenchTickAllocations, NonholonomicContactTickAllocatesNothing) {
-  TickWorkload workload(test::scenario("nonholonomic_needle"), 8.0);
-  EXPECT_EQ(allocations_during([&] {
-              for (int k = 0; k < 2000; ++k) workload.tick();
-            }),
-            0);
-  EXPECT_EQ(workload.teleoperation().world().report().mode, ContactMode::Nonholonomic);
+  EXPECT_EQ(allocations_in_tissue("nonholonomic_needle", 8.0), 0);
+}
+
+TEST(BenchTickAllocations, LayeredTissueTickAllocatesNothing) {
+  // lumbar_epidural at 22 s: the tip in the interspinous ligament, the shaft through skin, fat and the
+  // supraspinous ligament (friction on three layers, the track's events).
+  EXPECT_EQ(allocations_in_tissue("lumbar_epidural", 22.0), 0);
 }
 
 TEST(BenchTickAllocations, RigidContactAndFreeMotionTicksAllocateNothing) {

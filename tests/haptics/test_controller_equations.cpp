@@ -26,30 +26,47 @@ RobotGains gains(const VecN& Ka, const VecN& Kp) { return {Ka, Kp, VecN::Zero(2)
 
 TEST(ControllerEquations, ContactBlendRampsInAtEachNewContactAndOutAfterIt) {
   ContactBlend b;
+  ForceErrorIntegrals e;
+  auto dirty = [&e] {
+    e.momentum_h.setConstant(1.0);
+    e.momentum_v.setConstant(1.0);
+    e.lambda.setConstant(1.0);
+  };
   const double rate = 0.25;  // T / switch time, e.g. 2 ms / 8 ms
-  EXPECT_FALSE(advance_contact_blend(ContactMode::Free, rate, b));
-  EXPECT_EQ(b.weight, 0.0);
-  EXPECT_EQ(b.kind, ContactMode::Free);
-  EXPECT_TRUE(advance_contact_blend(ContactMode::Holonomic, rate, b));  // new contact: restart the integrals
-  EXPECT_EQ(b.weight, 0.25);
-  EXPECT_EQ(b.kind, ContactMode::Holonomic);
+  advance_contact_blend(false, false, false, rate, b, e);
+  EXPECT_EQ(b.any(), 0.0);
+  dirty();
+  advance_contact_blend(true, false, false, rate, b, e);  // new rigid contact: its integrals restart
+  EXPECT_EQ(b.rigid, 0.25);
+  EXPECT_EQ(e.momentum_h.norm() + e.momentum_v.norm(), 0.0);
+  EXPECT_EQ(e.lambda[0], 1.0);  // the tissue's are not touched
   for (double expected : {0.5, 0.75, 1.0, 1.0}) {  // clamped at 1
-    EXPECT_FALSE(advance_contact_blend(ContactMode::Holonomic, rate, b));
-    EXPECT_EQ(b.weight, expected);
+    dirty();
+    advance_contact_blend(true, false, false, rate, b, e);
+    EXPECT_EQ(b.rigid, expected);
+    EXPECT_EQ(e.momentum_h[0], 1.0);  // not a new contact
   }
-  for (double expected : {0.75, 0.5, 0.25}) {  // out of contact the terms ramp out, still the rigid ones
-    EXPECT_FALSE(advance_contact_blend(ContactMode::Free, rate, b));
-    EXPECT_EQ(b.weight, expected);
-    EXPECT_EQ(b.kind, ContactMode::Holonomic);
+  for (double expected : {0.75, 0.5, 0.25, 0.0}) {  // out of contact the terms ramp out
+    advance_contact_blend(false, false, false, rate, b, e);
+    EXPECT_EQ(b.rigid, expected);
   }
-  EXPECT_FALSE(advance_contact_blend(ContactMode::Free, rate, b));
-  EXPECT_EQ(b.weight, 0.0);
-  EXPECT_EQ(b.kind, ContactMode::Free);
-  // From one contact straight into the other kind: a new contact, from w = 0.
-  b = {ContactMode::Holonomic, 1.0};
-  EXPECT_TRUE(advance_contact_blend(ContactMode::Nonholonomic, rate, b));
-  EXPECT_EQ(b.weight, 0.25);
-  EXPECT_EQ(b.kind, ContactMode::Nonholonomic);
+  // Touching again before the weight reached 0 is the same contact; after, a new one.
+  b.rigid = 0.25;
+  dirty();
+  advance_contact_blend(true, false, false, rate, b, e);
+  EXPECT_EQ(e.momentum_v[0], 1.0);
+  // Two contacts at once (bone reached in the tissue): each its own weight; the tissue's is new.
+  dirty();
+  advance_contact_blend(true, true, false, rate, b, e);
+  EXPECT_EQ(b.rigid, 0.75);
+  EXPECT_EQ(b.tissue, 0.25);
+  EXPECT_EQ(e.lambda.norm(), 0.0);
+  EXPECT_EQ(e.momentum_h[0], 1.0);
+  advance_contact_blend(false, true, true, rate, b, e);
+  EXPECT_EQ(b.rigid, 0.5);
+  EXPECT_EQ(b.tissue, 0.5);
+  EXPECT_EQ(b.axial, 0.25);
+  EXPECT_EQ(b.any(), 0.5);
 }
 
 TEST(ControllerEquations, WrenchFilterIsAFirstOrderLowPass) {
@@ -101,15 +118,41 @@ TEST(ControllerEquations, MasterDynamicsCancellationIsCoriolisDampingAndGravity)
   const double a = 0.3, b = 0.8, da = 0.7, db = -1.3;
   update_frames(model, data, vec({a, b}), vec({da, db}));
   VecN tau_m = vec({1, -1});
-  master_dynamics_cancellation(model, data, 0.5, tau_m);
+  master_dynamics_cancellation(model, data, 0.5, false, tau_m);
   // Closed forms of the planar arm: h = −m₂ l₁ l_c2 sin b, C q̇ = (h ḃ² + 2h ȧ ḃ, −h ȧ²),
   // g = ((m₁ l_c1 + m₂ l₁) g₀ cos a + m₂ l_c2 g₀ cos(a + b), m₂ l_c2 g₀ cos(a + b)), D q̇ = (0.05 ȧ, 0.02 ḃ);
   // τ_m = (1, −1) + 0.5 (C q̇ + D q̇ + g).
   const double h = -m2 * l1 * lc2 * std::sin(b), g2 = m2 * lc2 * g0 * std::cos(a + b);
-  const double y1 = h * db * db + 2 * h * da * db + 0.05 * da + (m1 * lc1 + m2 * l1) * g0 * std::cos(a) + g2;
+  const double g1 = (m1 * lc1 + m2 * l1) * g0 * std::cos(a) + g2;
+  const double y1 = h * db * db + 2 * h * da * db + 0.05 * da + g1;
   const double y2 = -h * da * da + 0.02 * db + g2;
   EXPECT_NEAR(tau_m[0], 1 + 0.5 * y1, 1e-12);
   EXPECT_NEAR(tau_m[1], -1 + 0.5 * y2, 1e-12);
+  // The tool law: gravity whatever w, the rest blended: τ_m = (1, −1) + g + 0.5 (C q̇ + D q̇).
+  tau_m = vec({1, -1});
+  master_dynamics_cancellation(model, data, 0.5, true, tau_m);
+  EXPECT_NEAR(tau_m[0], 1 + g1 + 0.5 * (y1 - g1), 1e-12);
+  EXPECT_NEAR(tau_m[1], -1 + g2 + 0.5 * (y2 - g2), 1e-12);
+  tau_m = vec({1, -1});
+  master_dynamics_cancellation(model, data, 0.0, true, tau_m);  // free motion: gravity alone
+  EXPECT_NEAR(tau_m[0], 1 + g1, 1e-12);
+  EXPECT_NEAR(tau_m[1], -1 + g2, 1e-12);
+}
+
+TEST(ControllerEquations, ToolWeightPressesTheStylusDownAndIsTakenOutOfTheHandsWrench) {
+  // Linear rows of J_m: x = q₁, z = 2 q₂ (+ angular 7s, which must not enter).
+  Mat6N J_m = Mat6N::Constant(6, 2, 7.0);
+  J_m.topRows<3>() << 1, 0, 0, 0, 0, 2;
+  Wrench wrench_h, net;
+  wrench_h << 0.1, 0, 0.147, 0.01, 0, 0;  // the hand holds a 15 g tool up and pushes 0.1 N along x
+  VecN tau_m = vec({1, 1});
+  tool_weight(0.015, Eigen::Vector3d(0, 0, -9.8), J_m, wrench_h, tau_m, net);
+  // m g = (0, 0, −0.147): τ_m += J_mᵀ m g = (0, −0.294); w_net = (0.1, 0, 0, 0.01, 0, 0).
+  EXPECT_NEAR(tau_m[0], 1.0, 1e-15);
+  EXPECT_NEAR(tau_m[1], 1.0 - 0.294, 1e-15);
+  EXPECT_NEAR(net[0], 0.1, 1e-15);
+  EXPECT_NEAR(net[2], 0.0, 1e-15);
+  EXPECT_EQ(net[3], 0.01);
 }
 
 TEST(ControllerEquations, RigidForceErrorsIntegrateTheNormalForceDifference) {
@@ -138,13 +181,21 @@ TEST(ControllerEquations, RigidForceTorquesAre320And321ForceTerms) {
   e.momentum_v = Eigen::Vector3d(0, 0, 0.5);
   e.momentum_h = Eigen::Vector3d(0, 0, -1.0);
   VecN tau_v = vec({1, 1}), tau_m = vec({1, 1});
-  rigid_force_torques(J_v, J_m, Eigen::Vector3d(0, 0, -3), Eigen::Vector3d(0.5, 0, -2), e, 2.0, 4.0, 0.5, tau_v, tau_m);
+  rigid_force_torques(J_v, J_m, Eigen::Vector3d(0, 0, -3), Eigen::Vector3d(0.5, 0, -2), e, 2.0, 4.0, 1.0, 0.5, tau_v,
+                      tau_m);
   // τ_v += 0.5 J_vᵀ (F_h,n − 2 Δp_v) = 0.5 J_vᵀ (0, 0, −4) = (−2, −2)  → (−1, −1).
   // τ_m −= 0.5 J_mᵀ (F_v − 4 Δp_h) = 0.5 J_mᵀ (0.5, 0, 2) = (0.5, 1) → (0.5, 0).
   EXPECT_NEAR(tau_v[0], -1.0, 1e-15);
   EXPECT_NEAR(tau_v[1], -1.0, 1e-15);
   EXPECT_NEAR(tau_m[0], 0.5, 1e-15);
   EXPECT_NEAR(tau_m[1], 0.0, 1e-15);
+  // Force scale 0.4: the master's term is 0.4 times as large, the virtual's the same.
+  tau_v = vec({1, 1}), tau_m = vec({1, 1});
+  rigid_force_torques(J_v, J_m, Eigen::Vector3d(0, 0, -3), Eigen::Vector3d(0.5, 0, -2), e, 2.0, 4.0, 0.4, 0.5, tau_v,
+                      tau_m);
+  EXPECT_NEAR(tau_v[0], -1.0, 1e-15);
+  EXPECT_NEAR(tau_m[0], 1 - 0.4 * 0.5, 1e-15);
+  EXPECT_NEAR(tau_m[1], 1 - 0.4 * 1.0, 1e-15);
 }
 
 // Two constraint rows on three joints: A = [1 1 0; 0 1 1], A Aᵀ = [2 1; 1 2], (A Aᵀ)⁻¹ = [2 −1; −1 2] / 3.
@@ -191,11 +242,56 @@ TEST(ControllerEquations, TissueForceTorquesAre327And328ForceTerms) {
   lambda_m << 1, 0;
   lambda_v << -1, 0;
   VecN tau_v = VecN::Zero(3), tau_m = VecN::Zero(3);
-  tissue_force_torques(two_rows(), lambda_m, lambda_v, e, 2.0, 4.0, 0.5, tau_v, tau_m);
+  tissue_force_torques(two_rows(), lambda_m, lambda_v, e, 2.0, 4.0, 1.0, 0.5, tau_v, tau_m);
   // τ_v += 0.5 Aᵀ (λ_m + 2E) = 0.5 Aᵀ (2, 1) = 0.5 (2, 3, 1) = (1, 1.5, 0.5).
   // τ_m += 0.5 Aᵀ (λ_v + 4E) = 0.5 Aᵀ (1, 2) = 0.5 (1, 3, 2) = (0.5, 1.5, 1).
   EXPECT_TRUE(tau_v.isApprox(vec({1, 1.5, 0.5}), 1e-15));
   EXPECT_TRUE(tau_m.isApprox(vec({0.5, 1.5, 1}), 1e-15));
+  // Force scale 0.4 on the master's term only.
+  tau_v.setZero(), tau_m.setZero();
+  tissue_force_torques(two_rows(), lambda_m, lambda_v, e, 2.0, 4.0, 0.4, 0.5, tau_v, tau_m);
+  EXPECT_TRUE(tau_v.isApprox(vec({1, 1.5, 0.5}), 1e-15));
+  EXPECT_TRUE(tau_m.isApprox(vec({0.2, 0.6, 0.4}), 1e-15));
+}
+
+TEST(ControllerEquations, AxialForceTorquesFeedTheHandsPushToTheToolAndTheTissueToTheHand) {
+  // Needle along x₅ = (0.6, 0, −0.8); linear rows of J_v: x = q₁, z = q₂; of J_m: x = 2 q₁, z = q₂.
+  const Eigen::Vector3d axis(0.6, 0, -0.8);
+  Mat6N J_v = Mat6N::Constant(6, 2, 7.0), J_m = Mat6N::Constant(6, 2, 7.0);
+  J_v.topRows<3>() << 1, 0, 0, 0, 0, 1;
+  J_m.topRows<3>() << 2, 0, 0, 0, 0, 1;
+  Wrench wrench_h;
+  wrench_h << 1, 5, -2, 3, 3, 3;  // the lateral y and the torque do not enter
+  VecN tau_v = vec({0, 0}), tau_m = vec({0, 0});
+  const double push = axial_force_torques(axis, wrench_h, 1.5, J_v, J_m, 0.4, 0.5, tau_v, tau_m);
+  // F_h,a = x₅ᵀ f = 0.6 + 1.6 = 2.2; τ_v += 0.5 · 2.2 J_vᵀ x₅ = 1.1 (0.6, −0.8) = (0.66, −0.88).
+  // τ_m −= 0.5 · 0.4 · 1.5 J_mᵀ x₅ = 0.3 (1.2, −0.8) = (0.36, −0.24)  → (−0.36, 0.24).
+  EXPECT_NEAR(push, 2.2, 1e-15);
+  EXPECT_TRUE(tau_v.isApprox(vec({0.66, -0.88}), 1e-14));
+  EXPECT_TRUE(tau_m.isApprox(vec({-0.36, 0.24}), 1e-14));
+}
+
+TEST(ControllerEquations, AxialAndLateralDampingOpposeTheMastersMotionAlongAndAcrossTheNeedle) {
+  // Master tip velocity ẋ = J_lin q̇ with J_lin rows x = 2 q₁, z = q₂; q̇ = (0.5, −1): ẋ = (1, 0, −1).
+  Mat6N J_m = Mat6N::Constant(6, 2, 7.0);
+  J_m.topRows<3>() << 2, 0, 0, 0, 0, 1;
+  const VecN dq = vec({0.5, -1});
+  const Eigen::Vector3d axis(0.6, 0, -0.8);
+  // Along x₅: v = x₅ᵀẋ = 1.4; F = −w b v x₅ = −0.5 · 30 · 1.4 (0.6, 0, −0.8) = (−12.6, 0, 16.8);
+  // τ = J_linᵀ F = (−25.2, 16.8).
+  VecN tau = vec({0, 0});
+  axial_damping_torque(axis, J_m, dq, 30.0, 0.5, tau);
+  EXPECT_TRUE(tau.isApprox(vec({-25.2, 16.8}), 1e-14));
+  EXPECT_LT(tau.dot(dq), 0.0);  // dissipative: power τᵀq̇ = Fᵀẋ < 0
+  // Across it (y₅, z₅ spanning the plane ⊥ x₅): F = −w b (ẋ − x₅x₅ᵀẋ) = −5 ((1, 0, −1) − 1.4 x₅) = −5 (0.16, 0, 0.12).
+  Eigen::Matrix3d frame;
+  frame.col(0) = axis;
+  frame.col(1) = Eigen::Vector3d(0.8, 0, 0.6);
+  frame.col(2) = Eigen::Vector3d(0, 1, 0);
+  tau = vec({0, 0});
+  lateral_damping_torque(frame, J_m, dq, 10.0, 0.5, tau);
+  EXPECT_TRUE(tau.isApprox(vec({-1.6, -0.6}), 1e-14));
+  EXPECT_LT(tau.dot(dq), 0.0);
 }
 
 TEST(ControllerEquations, TaskSpaceCouplingIsASpringOnTheTipAndOneOnTheDirection) {

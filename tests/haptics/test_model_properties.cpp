@@ -114,6 +114,31 @@ TEST_P(ModelProperties, TickPathMatchesTheFullDynamics) {
   }
 }
 
+TEST_P(ModelProperties, GravityPassIsTheGradientOfThePotentialEnergy) {
+  // update_gravity (Newton-Euler at rest, the controller's compensation) against ∂V/∂q by central
+  // differences of the potential energy, and against the centre-of-mass-Jacobian g.
+  RobotData fast(model), probe(model);
+  for (int trial = 0; trial < 20; ++trial) {
+    const VecN q = test::random_vector(rng, n, 3.0), dq = test::random_vector(rng, n, 2.0);
+    at(q, dq);
+    update_frames(model, fast, q, dq);
+    update_gravity(model, fast);
+    VecN gradient(n);
+    const double eps = 1e-6;
+    for (int i = 0; i < n; ++i) {
+      VecN qp = q, qm = q;
+      qp[i] += eps;
+      qm[i] -= eps;
+      update_frames(model, probe, qp, dq);
+      const double vp = potential_energy(model, probe);
+      update_frames(model, probe, qm, dq);
+      gradient[i] = (vp - potential_energy(model, probe)) / (2 * eps);
+    }
+    EXPECT_LT((fast.g - gradient).norm(), 1e-8 * (1.0 + gradient.norm()));
+    EXPECT_LT((fast.g - data.g).norm(), 1e-13 * (1.0 + data.g.norm()));
+  }
+}
+
 TEST_P(ModelProperties, BiasAloneEqualsTheRegressorAtZeroAcceleration) {
   // The controller's master term Y(q, q̇, 0) θ = C q̇ + D q̇ + g (3.20), by update_bias (no H).
   const ParamVec theta = parameter_vector(model);

@@ -23,7 +23,8 @@ TEST(SimNonholonomic, RunsToTheEndWithoutFault) {
   EXPECT_LT(run().summary.energy_error_J, 1e-3);
 }
 
-// While the hand starts the insertion slowly the tip grazes the surface (in, out, in) until about 5.2 s.
+// Entry at about 3.8 s (tool law; 3.7 s under the thesis's law, which then flickers in and out until
+// 5.2 s: test_sim_feel.cpp).
 TEST(SimNonholonomic, NeedleEntersTheTissueAroundFourSecondsAndStaysIn) {
   double first = -1;
   for (const TickRecord& r : run().ticks)
@@ -34,17 +35,29 @@ TEST(SimNonholonomic, NeedleEntersTheTissueAroundFourSecondsAndStaysIn) {
   EXPECT_GT(first, 3.0);
   EXPECT_LT(first, 4.5);
   for (const TickRecord& r : run().ticks) {
-    if (r.t > 5.5) ASSERT_EQ(r.mode, ContactMode::Nonholonomic) << "left the tissue at t = " << r.t;
+    if (r.t > 5.5) {
+      ASSERT_EQ(r.mode, ContactMode::Nonholonomic) << "left the tissue at t = " << r.t;
+    }
   }
 }
 
 TEST(SimNonholonomic, TipPathStaysAlongTheNeedleAxis) {
   EXPECT_LT(run().summary.max_axis_deviation_m, 1e-3);
   EXPECT_LT(run().summary.max_lateral_speed_mps, 0.02);
-  // Straight insertion 4-10 s: displacement parallel to the needle.
-  const Eigen::Vector3d d = at(10.0).x_v - at(5.0).x_v;
-  EXPECT_GT(d.norm(), 0.015);
-  EXPECT_LT(degrees(d, at(5.0).needle_v), 3.0);
+  // Straight insertion 4-10 s: displacement parallel to the needle, within 3 degrees under the
+  // thesis's law. Under the tool law the wrist no longer hangs in its gravity equilibrium: the
+  // scripted hand holds the stylus's direction only through its 5 cm grip, the wrist roll drifts
+  // (0.45 -> 1.64 rad from 5 to 10 s), the needle turns and the tip follows it, 3.55 degrees off the
+  // direction it had at 5 s (docs/CONTROLLER.md, "The tool").
+  for (ControlLaw law : {ControlLaw::Thesis, ControlLaw::Tool}) {
+    const auto& ticks = test::scenario_run("nonholonomic_needle", law).ticks;
+    const auto tick = [&](double t) -> const TickRecord& {
+      return ticks.at(static_cast<size_t>(std::lround(t / test::scenario("nonholonomic_needle").period_s)) - 1);
+    };
+    const Eigen::Vector3d d = tick(10.0).x_v - tick(5.0).x_v;
+    EXPECT_GT(d.norm(), 0.015) << control_law_name(law);
+    EXPECT_LT(degrees(d, tick(5.0).needle_v), law == ControlLaw::Thesis ? 3.0 : 4.0) << control_law_name(law);
+  }
 }
 
 TEST(SimNonholonomic, PivotTurnsTheNeedleAbout45DegreesWithoutMovingTheTip) {

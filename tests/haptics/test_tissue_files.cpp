@@ -64,26 +64,25 @@ json two_slabs() {
 
 TEST(TissueFiles, TheShippedLayeredScenariosLoad) {
   const Scenario block = load_scenario(test::asset("assets/scenarios/tissue_block_layers.json"));
-  ASSERT_EQ(block.tissue.layer_count(), 4);
-  EXPECT_EQ(block.tissue.layer(0).name, "skin");
-  EXPECT_TRUE(block.tissue.layer(3).mechanics.rigid);
+  ASSERT_EQ(block.scene.tissue.layer_count(), 4);
+  EXPECT_EQ(block.scene.tissue.layer(0).name, "skin");
+  EXPECT_TRUE(block.scene.tissue.layer(3).mechanics.rigid);
   // The block of tools/asset-gen (skin 0 to −2 mm, ..., bone −40 to −50 mm) at (0.33, 0, 0.07) m in the world.
-  EXPECT_EQ(block.tissue.layer_at(Vector3d(0.33, 0.0, 0.069) - block.base_in_world), 0);
-  EXPECT_EQ(block.tissue.layer_at(Vector3d(0.33, 0.0, 0.060) - block.base_in_world), 1);
-  EXPECT_EQ(block.tissue.layer_at(Vector3d(0.33, 0.0, 0.040) - block.base_in_world), 2);
-  EXPECT_EQ(block.tissue.layer_at(Vector3d(0.33, 0.0, 0.025) - block.base_in_world), 3);
-  EXPECT_EQ(block.tissue.layer_at(Vector3d(0.39, 0.0, 0.060) - block.base_in_world), -1);  // beside the block
-  EXPECT_TRUE(block.scene.tissue.empty());  // the closed loop does not see layers before phase B
+  EXPECT_EQ(block.scene.tissue.layer_at(Vector3d(0.33, 0.0, 0.069) - block.base_in_world), 0);
+  EXPECT_EQ(block.scene.tissue.layer_at(Vector3d(0.33, 0.0, 0.060) - block.base_in_world), 1);
+  EXPECT_EQ(block.scene.tissue.layer_at(Vector3d(0.33, 0.0, 0.040) - block.base_in_world), 2);
+  EXPECT_EQ(block.scene.tissue.layer_at(Vector3d(0.33, 0.0, 0.025) - block.base_in_world), 3);
+  EXPECT_EQ(block.scene.tissue.layer_at(Vector3d(0.39, 0.0, 0.060) - block.base_in_world), -1);  // beside the block
 
   const Scenario epidural = load_scenario(test::asset("assets/scenarios/lumbar_epidural.json"));
-  EXPECT_EQ(epidural.tissue.layer_count(), 9);
-  EXPECT_EQ(epidural.tissue.layer(4).name, "ligamentum flavum");
-  EXPECT_DOUBLE_EQ(epidural.tissue.layer(4).mechanics.puncture_force_N, 5.0);
+  EXPECT_EQ(epidural.scene.tissue.layer_count(), 9);
+  EXPECT_EQ(epidural.scene.tissue.layer(4).name, "ligamentum flavum");
+  EXPECT_DOUBLE_EQ(epidural.scene.tissue.layer(4).mechanics.puncture_force_N, 5.0);
 
   const Scenario liver = load_scenario(test::asset("assets/scenarios/liver_biopsy.json"));
-  EXPECT_EQ(liver.tissue.layer_count(), 4);
-  EXPECT_EQ(liver.tissue.layer_at(Vector3d(0.4, 0, 0) - liver.base_in_world), 3);  // the liver, innermost
-  EXPECT_EQ(liver.tissue.layer_at(Vector3d(0.4, 0, 0.099) - liver.base_in_world), 0);
+  EXPECT_EQ(liver.scene.tissue.layer_count(), 4);
+  EXPECT_EQ(liver.scene.tissue.layer_at(Vector3d(0.4, 0, 0) - liver.base_in_world), 3);  // the liver, innermost
+  EXPECT_EQ(liver.scene.tissue.layer_at(Vector3d(0.4, 0, 0.099) - liver.base_in_world), 0);
 }
 
 TEST(TissueFiles, EveryParameterSetLoadsAndEveryNumberCarriesItsSource) {
@@ -104,7 +103,7 @@ TEST(TissueFiles, EveryParameterSetLoadsAndEveryNumberCarriesItsSource) {
     const json tissue = {
         {"layers", {{{"name", "x"}, {"shape", slab(0.05, 0.01)}, {"parameters", entry.path().string()}}}}};
     EXPECT_EQ(error_of(scenario_with_tissue(tissue)), "no error") << entry.path();
-    const LayerAcoustics acoustics = load_scenario(scenario_with_tissue(tissue)).tissue.layer(0).acoustics.value();
+    const LayerAcoustics acoustics = load_scenario(scenario_with_tissue(tissue)).scene.tissue.layer(0).acoustics.value();
     EXPECT_EQ(acoustics.impedance_MRayl, set["ultrasound"]["impedance_MRayl"]["value"].get<double>()) << entry.path();
     EXPECT_EQ(acoustics.echogenicity, set["ultrasound"]["echogenicity"]["value"].get<double>()) << entry.path();
     ++sets;
@@ -114,15 +113,16 @@ TEST(TissueFiles, EveryParameterSetLoadsAndEveryNumberCarriesItsSource) {
 
 TEST(TissueFiles, TheSingleSurfaceFormIsOneLayerWithEveryParameterZero) {
   const Scenario s = load_scenario(test::asset("assets/scenarios/nonholonomic_needle.json"));
-  ASSERT_EQ(s.tissue.layer_count(), 1);
-  const LayerMechanics& m = s.tissue.layer(0).mechanics;
+  ASSERT_EQ(s.scene.tissue.layer_count(), 1);
+  const LayerMechanics& m = s.scene.tissue.layer(0).mechanics;
   for (const auto& f : kMechanicsFields) EXPECT_EQ(m.*f.member, 0.0) << f.key;
   EXPECT_FALSE(m.rigid);
   // Same region as the closed loop's tissue: the thesis's sphere, r = 0.1 m at (0.4, 0, 0).
   for (const Vector3d& x :
        {Vector3d(0.4, 0, 0), Vector3d(0.4, 0, 0.099), Vector3d(0.4, 0, 0.101), Vector3d(0.2, 0, 0)}) {
     const Vector3d base = x - s.base_in_world;
-    EXPECT_EQ(s.tissue.layer_at(base) == 0, s.scene.tissue.evaluate(base).phi < 0.0);
+    EXPECT_EQ(s.scene.tissue.layer_at(base) == 0, (x - Vector3d(0.4, 0, 0)).norm() < 0.1);
+    EXPECT_NEAR(s.scene.tissue.distance(base), (x - Vector3d(0.4, 0, 0)).norm() - 0.1, 1e-15);
   }
 }
 
@@ -253,9 +253,9 @@ TEST(TissueFiles, UltrasoundParametersInlineOrFromTheSetNotBoth) {
   t["layers"][1]["ultrasound"] = {{"impedance_MRayl", 1.39}, {"attenuation_dB_per_cm_MHz", 0.63},
                                   {"echogenicity", 0.25}, {"scatterer_density", 0.5}};
   const Scenario s = load_scenario(scenario_with_tissue(t));
-  EXPECT_FALSE(s.tissue.layer(0).acoustics.has_value());  // the image takes a generic soft tissue
-  ASSERT_TRUE(s.tissue.layer(1).acoustics.has_value());
-  EXPECT_EQ(s.tissue.layer(1).acoustics->scatterer_density, 0.5);
+  EXPECT_FALSE(s.scene.tissue.layer(0).acoustics.has_value());  // the image takes a generic soft tissue
+  ASSERT_TRUE(s.scene.tissue.layer(1).acoustics.has_value());
+  EXPECT_EQ(s.scene.tissue.layer(1).acoustics->scatterer_density, 0.5);
 
   t["layers"][1]["ultrasound"]["scatterer_density"] = 0.0;
   EXPECT_EQ(error_of(scenario_with_tissue(t)), "/tissue/layers/1/ultrasound/scatterer_density: must be in (0, 1]");

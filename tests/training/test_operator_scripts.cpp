@@ -55,8 +55,8 @@ TEST(OperatorScriptFiles, ALayeredScenariosParameterFilesAreFoundFromTheMergedCo
   task.scenario = test::source_dir() / "assets/scenarios/tissue_block_layers.json";
   const haptics::Scenario merged =
       scenario_with_operator(task, kTasks / "penetrable_sphere_good.json", kOutput / "layered" / "scenario.json");
-  ASSERT_EQ(merged.tissue.layers().size(), 4u);
-  EXPECT_EQ(merged.tissue.layers()[3].name, "bone");
+  ASSERT_EQ(merged.scene.tissue.layers().size(), 4u);
+  EXPECT_EQ(merged.scene.tissue.layers()[3].name, "bone");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 
 #include "command.hpp"
 
@@ -104,6 +105,12 @@ engine::Extent parse_size(const std::string& text, const std::string& flag) {
   };
   std::string_view all(text);
   return {parse_dim(all.substr(0, x)), parse_dim(all.substr(x + 1))};
+}
+
+void check_output_folder(const std::optional<std::string>& file, const std::string& flag) {
+  if (!file) return;
+  const std::filesystem::path folder = std::filesystem::absolute(*file).parent_path();
+  if (!std::filesystem::is_directory(folder)) throw UsageError(flag + ": folder " + folder.string() + " does not exist");
 }
 
 }  // namespace needle::cli

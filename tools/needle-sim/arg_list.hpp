@@ -40,4 +40,8 @@ int parse_msaa(const std::string& text, const std::string& flag);
 // Comma-separated numbers, "0.1,0.2,-1".
 std::vector<double> parse_number_list(const std::string& text, const std::string& flag);
 
+// An output file's folder must exist before a run, not be found missing after it: UsageError
+// naming the flag and the folder otherwise. Nothing to check without a file.
+void check_output_folder(const std::optional<std::string>& file, const std::string& flag);
+
 }  // namespace needle::cli

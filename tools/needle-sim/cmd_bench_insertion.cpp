@@ -29,14 +29,6 @@ double parse_positive(const std::string& text, const std::string& flag) {
   return v;
 }
 
-// An output file's folder must exist before the run, not be found missing after it.
-void check_output_folder(const std::optional<std::string>& file, const std::string& flag) {
-  if (!file) return;
-  const std::filesystem::path folder = std::filesystem::absolute(*file).parent_path();
-  if (!std::filesystem::is_directory(folder))
-    throw UsageError(flag + ": folder " + folder.string() + " does not exist");
-}
-
 std::string layer_name(const haptics::TissueModel& model, int layer) {
   return layer < 0 ? "" : model.layer(layer).name;
 }
@@ -98,7 +90,7 @@ int run_bench_insertion(ArgList& args) {
   check_output_folder(plot_path, "--plot");
 
   const haptics::Scenario scenario = haptics::load_scenario(scenario_path);
-  if (scenario.tissue.empty()) throw UsageError("--scenario: " + scenario_path + " has no tissue");
+  if (scenario.scene.tissue.empty()) throw UsageError("--scenario: " + scenario_path + " has no tissue");
   haptics::InsertionPlan plan;
   plan.from = from_world - scenario.base_in_world;  // the scenario's tissue is in the robots' base frame
   plan.dir = dir.normalized();
@@ -106,26 +98,26 @@ int run_bench_insertion(ArgList& args) {
   plan.speed_mps = speed;
   plan.hold_s = hold;
   plan.period_s = scenario.period_s;
-  const haptics::InsertionRun run = haptics::run_kinematic_insertion(scenario.tissue, plan);
+  const haptics::InsertionRun run = haptics::run_kinematic_insertion(scenario.scene.tissue, plan);
   // The layers along the line as far as the tip went (and the rigid surface that stopped it).
   const double reached = run.hard_stop ? std::min(depth, run.hard_stop->depth_m + 1e-3) : depth;
-  const auto boundaries = haptics::layer_boundaries(scenario.tissue, plan.from, plan.dir, reached);
+  const auto boundaries = haptics::layer_boundaries(scenario.scene.tissue, plan.from, plan.dir, reached);
 
   BenchTable table({"layer", "depth_m", "peak_force_N"});
-  for (const auto& p : run.punctures) table.add_row({layer_name(scenario.tissue, p.layer), p.depth_m, p.peak_force_N});
+  for (const auto& p : run.punctures) table.add_row({layer_name(scenario.scene.tissue, p.layer), p.depth_m, p.peak_force_N});
   table.print("bench insertion: " + scenario.name + ", punctures (" + std::to_string(run.samples.size()) +
               " ticks of " + std::to_string(scenario.period_s * 1e3) + " ms)");
   if (run.hard_stop)
     std::printf("hard stop: %s at depth %.4g m (a rigid layer: the drive stops there)\n",
-                layer_name(scenario.tissue, run.hard_stop->layer).c_str(), run.hard_stop->depth_m);
+                layer_name(scenario.scene.tissue, run.hard_stop->layer).c_str(), run.hard_stop->depth_m);
   std::printf("tissue_work_J %.6g, tick_us_median %.4g\n", run.tissue_work_J, run.tick_us_median);
   if (json_path) {
-    io::write_file(*json_path, run_json(scenario.tissue, run, boundaries).dump(1) + "\n");
+    io::write_file(*json_path, run_json(scenario.scene.tissue, run, boundaries).dump(1) + "\n");
   }
   if (plot_path) {
     char title[160];
     std::snprintf(title, sizeof title, "%s: %.3g mm/s in, %.3g s held, out", scenario.name.c_str(), speed * 1e3, hold);
-    write_plot(*plot_path, title, scenario.tissue, run, boundaries);
+    write_plot(*plot_path, title, scenario.scene.tissue, run, boundaries);
   }
   return 0;
 }

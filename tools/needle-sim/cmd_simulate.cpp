@@ -18,7 +18,7 @@ int run_simulate(ArgList& args) {
   const haptics::SimResult result = haptics::run_closed_loop(scenario, true);
   const std::string csv = (std::filesystem::path(out_dir) / "ticks.csv").string();
   const std::string summary = (std::filesystem::path(out_dir) / "summary.json").string();
-  haptics::write_ticks_csv(csv, result.ticks, scenario.master.dof());
+  haptics::write_ticks_csv(csv, result.ticks, scenario.master.dof(), scenario.scene.tissue);
   haptics::write_summary_json(summary, result.summary);
   std::printf("%s: %.3f s simulated, %zu ticks -> %s, %s\n", scenario.name.c_str(), result.simulated_s, result.ticks.size(),
               csv.c_str(), summary.c_str());
