@@ -10,26 +10,41 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 
 namespace needle::io {
 
-// The document in `file`; Error("FILE: /: what") when it is not a readable regular file or not JSON.
+// The text of `file`; Error("FILE: /: what") when it is not a readable regular file.
 template <typename Error>
-nlohmann::json read_json_file(const std::filesystem::path& file) {
+std::string read_text_file(const std::filesystem::path& file) {
   std::error_code ec;
   const auto status = std::filesystem::status(file, ec);
   if (!std::filesystem::exists(status)) throw Error(file.string() + ": /: file not found");
   if (std::filesystem::is_directory(status)) throw Error(file.string() + ": /: is a folder, not a file");
   if (!std::filesystem::is_regular_file(status)) throw Error(file.string() + ": /: not a regular file");
-  std::ifstream in(file);
+  std::ifstream in(file, std::ios::binary);
   if (!in) throw Error(file.string() + ": /: cannot open the file for reading");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw Error(file.string() + ": /: cannot be read");
+  return text;
+}
+
+// The document in `text`, read from `label` (a file name); Error("LABEL: /: not valid JSON: ...").
+template <typename Error>
+nlohmann::json parse_json(const std::string& text, const std::string& label) {
   try {
-    return nlohmann::json::parse(in);
+    return nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {
-    throw Error(file.string() + ": /: not valid JSON: " + e.what());
+    throw Error(label + ": /: not valid JSON: " + e.what());
   }
+}
+
+// The document in `file`; Error("FILE: /: what") when it is not a readable regular file or not JSON.
+template <typename Error>
+nlohmann::json read_json_file(const std::filesystem::path& file) {
+  return parse_json<Error>(read_text_file<Error>(file), file.string());
 }
 
 template <typename Error>

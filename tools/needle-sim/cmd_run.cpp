@@ -73,8 +73,7 @@ int run_run(ArgList& args) {
       throw UsageError(std::string("--rate: ") + e.what());
     }
   }
-  const std::optional<fs::path> recorded = options.scene ? std::nullopt : app::recorded_task(device);
-  options.task.task = recorded ? *recorded : fs::path(task.value_or((asset_dir() / "tasks" / "penetrable_sphere.json").string()));
+  options.task.task = task.value_or((asset_dir() / "tasks" / "penetrable_sphere.json").string());  // a replay's is its own
 
   const bool window = !headless && engine::Window::display_available();
   if (!headless && !window) std::printf("no display: running headless\n");

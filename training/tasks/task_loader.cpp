@@ -22,7 +22,6 @@ class TaskReader : io::StrictJsonReader<TaskError> {
   Task task(const json& root) {
     object(root, "", {"name", "title", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps", "scoring"});
     Task t;
-    t.source = file_;
     t.name = string(member(root, "", "name"), "/name");
     t.title = root.contains("title") ? string(root["title"], "/title") : t.name;
     t.scene = existing_file(member(root, "", "scene"), "/scene", folder_);
@@ -253,8 +252,23 @@ class TaskReader : io::StrictJsonReader<TaskError> {
 
 }  // namespace
 
+namespace {
+
+Task task_from_text(const std::string& text, const std::string& label, const fs::path& source) {
+  Task task = TaskReader(label, source.parent_path()).task(io::parse_json<TaskError>(text, label));
+  task.source = source.string();
+  task.text = text;
+  return task;
+}
+
+}  // namespace
+
 Task load_task(const fs::path& file) {
-  return TaskReader(file.string(), file.parent_path()).task(io::read_json_file<TaskError>(file));
+  return task_from_text(io::read_text_file<TaskError>(file), file.string(), file);
+}
+
+Task parse_task(const std::string& text, const fs::path& source) {
+  return task_from_text(text, source.string() + " (as recorded)", source);
 }
 
 }  // namespace needle::training
