@@ -39,6 +39,11 @@ class FullTmpfs {
   FullTmpfs(const FullTmpfs&) = delete;
   FullTmpfs& operator=(const FullTmpfs&) = delete;
 
+  // Frees about `bytes` (whole 4 KiB pages) for the next writes, the rest still full.
+  void leave_free(size_t bytes) {
+    std::filesystem::resize_file(dir_ / "filler", std::filesystem::file_size(dir_ / "filler") - (bytes + 4095) / 4096 * 4096);
+  }
+
   bool mounted() const { return mounted_; }
   const std::string& why_not() const { return why_; }
   const std::filesystem::path& dir() const { return dir_; }
