@@ -4,14 +4,14 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "cli_haptics_run.hpp"
+#include "cli_process.hpp"
 #include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 namespace {
 
 nlohmann::json rows_of(const std::string& command, const std::string& json_path) {
-  const auto r = test::run_needle_sim(command + " --json " + json_path);
+  const auto r = test::run_needle_sim_split(command + " --json " + json_path);
   EXPECT_EQ(r.exit_code, 0) << command;
   std::ifstream in(json_path);
   return nlohmann::json::parse(in);
@@ -38,9 +38,9 @@ TEST(CliHapticsBench, PrecisionRowsCarryTheContractKeys) {
 }
 
 TEST(CliHapticsBench, BadArgumentsAreUsageErrors) {
-  EXPECT_EQ(test::run_needle_sim("bench tick --ticks 0").exit_code, 2);
-  EXPECT_EQ(test::run_needle_sim("bench precision --horizon 0.001").exit_code, 2);
-  EXPECT_EQ(test::run_needle_sim("bench stability --sustained 1").exit_code, 2);
+  EXPECT_EQ(test::run_needle_sim_split("bench tick --ticks 0").exit_code, 2);
+  EXPECT_EQ(test::run_needle_sim_split("bench precision --horizon 0.001").exit_code, 2);
+  EXPECT_EQ(test::run_needle_sim_split("bench stability --sustained 1").exit_code, 2);
 }
 
 }  // namespace
