@@ -9,7 +9,7 @@
 
 #include <optional>
 
-#include "engine/deformation_field.hpp"
+#include "engine/tissue.hpp"
 #include "haptics/realtime/tool_snapshot.hpp"
 
 namespace needle::app {

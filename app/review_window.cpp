@@ -57,15 +57,14 @@ int run_review_window(const ReviewOptions& options) {
         "no display: the review is a window; for a headless export use needle-sim report --session ID --out DIR");
   }
   const std::unique_ptr<training::SessionStore> store = open_existing_db(options.db);
-  VulkanWindow vw("needle-sim review", options.size);
+  GpuWindow vw("needle-sim review", options.size);
   engine::Window& window = vw.window;
-  engine::VulkanContext& context = vw.context;
   engine::WindowTarget& target = vw.target;
-  engine::SceneRenderer renderer(context, target, {vw.cpu_device() ? VK_SAMPLE_COUNT_1_BIT : VK_SAMPLE_COUNT_4_BIT});
+  engine::SceneRenderer renderer(vw.device, target, {vw.default_msaa_samples()});
   auto scene = std::make_unique<engine::GpuScene>(renderer, engine::Model{}, engine::Scene{});
   fs::path scene_file;
   std::string scene_error;
-  engine::UiPass ui_pass(context, renderer, &window);
+  engine::UiPass ui_pass(renderer, &window);
   ui::FrameClock clock;
 
   ui::SessionTableState table;
@@ -112,7 +111,7 @@ int run_review_window(const ReviewOptions& options) {
       if (t >= a.review->end_s()) t = a.review->end_s(), playing = false;
     }
 
-    const VkExtent2D extent = target.extent();
+    const engine::Extent extent = target.extent();
     const float w = float(extent.width), h = float(extent.height), left = kPanelsFraction * w, bar = 64.0f;
     ui_pass.begin_frame(extent, dt);
     ui::draw_session_table(sessions, table, {ImVec2(0, 0), ImVec2(left, 0.32f * h)});

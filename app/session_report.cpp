@@ -5,7 +5,7 @@
 
 #include "app/default_db.hpp"
 #include "app/replay_cursor.hpp"
-#include "engine/vulkan_context.hpp"
+#include "engine/gpu_device.hpp"
 #include "training/sessions/session_export.hpp"
 #include "ui/panel_picture.hpp"
 #include "ui/review_panels.hpp"
@@ -21,7 +21,7 @@ void write_picture(const fs::path& file, const engine::RgbaImage& image) {
   std::printf("wrote %s\n", file.c_str());
 }
 
-ui::PanelRect whole(VkExtent2D e) { return {ImVec2(0, 0), ImVec2(float(e.width), float(e.height))}; }
+ui::PanelRect whole(engine::Extent e) { return {ImVec2(0, 0), ImVec2(float(e.width), float(e.height))}; }
 
 }  // namespace
 
@@ -37,16 +37,16 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
                 static_cast<long long>(id));
   }
 
-  engine::VulkanContext context(engine::ContextOptions{});
+  engine::GpuDevice device;
   ui::SessionTableState table;
   table.selected = id;
   const std::vector<training::SessionInfo> sessions = store->sessions();
-  const VkExtent2D table_size{960, 360}, detail_size{820, 1380}, plot_size{900, 320}, replay_size{1280, 720};
-  write_picture(out / "review_table.png", ui::panel_picture(context, table_size, [&] {
+  const engine::Extent table_size{960, 360}, detail_size{820, 1380}, plot_size{900, 320}, replay_size{1280, 720};
+  write_picture(out / "review_table.png", ui::panel_picture(device, table_size, [&] {
                   ui::draw_session_table(sessions, table, whole(table_size));
                 }));
   const double t = std::clamp(at.value_or(review.end_s()), review.start_s(), review.end_s());
-  write_picture(out / "review_detail.png", ui::panel_picture(context, detail_size, [&] {
+  write_picture(out / "review_detail.png", ui::panel_picture(device, detail_size, [&] {
                   ui::draw_session_detail(review, {t, false, ""}, whole(detail_size));
                 }));
   if (!review.has_recording()) {
@@ -65,7 +65,7 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
       std::printf("no %s: %s\n", names[k], plots[k]->missing.c_str());
       continue;
     }
-    write_picture(out / names[k], ui::panel_picture(context, plot_size, [&] {
+    write_picture(out / names[k], ui::panel_picture(device, plot_size, [&] {
                     ui::draw_plot_window(review, *plots[k], whole(plot_size));
                   }));
   }
@@ -77,9 +77,9 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
   ui::PictureScene scene{engine::load_scene(review.task->scene), cursor.at(review.states, t), 0.0f};
   double shown_t = t;
   const ui::PanelRect bar{ImVec2(0, float(replay_size.height) - 64.0f), ImVec2(float(replay_size.width), 64.0f)};
-  write_picture(out / "review_replay.png", ui::panel_picture(context, replay_size, [&] {
+  write_picture(out / "review_replay.png", ui::panel_picture(device, replay_size, [&] {
                   ui::draw_replay_bar(review, shown_t, false, bar);
-                }, &scene, VK_SAMPLE_COUNT_4_BIT));
+                }, &scene, 4));
   return 0;
 }
 

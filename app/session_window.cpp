@@ -6,8 +6,9 @@
 #include <cstdio>
 
 #include "app/window_frames.hpp"
+#include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
-#include "engine/headless_target.hpp"
+#include "engine/render_target.hpp"
 #include "engine/scripted_needle.hpp"
 #include "engine/ui_pass.hpp"
 #include "ui/status_panel.hpp"
@@ -30,7 +31,7 @@ std::optional<engine::ScriptedSphere> script_target(const engine::GpuScene& scen
   const auto& assets = scene.scene().assets;
   for (size_t i = 0; i < assets.size(); ++i) {
     if (!assets[i].deformation) continue;
-    const engine::Bounds& b = scene.asset_model(i).world_bounds();
+    const engine::Bounds& b = scene.model_bounds(i);
     engine::ScriptedSphere sphere;
     sphere.centre = glm::dvec3(assets[i].transform() * glm::vec4((b.min + b.max) * 0.5f, 1.0f));
     sphere.radius = 0.5 * double(b.max.x - b.min.x) * double(assets[i].scale.x);
@@ -51,14 +52,12 @@ Show scripted_needle_show(const engine::GpuScene& scene) {
 constexpr double kHeadlessMoment_s = 7.0;
 
 int run_window(const engine::Scene& scene, const WindowOptions& options, const std::function<Show(engine::GpuScene&)>& make_show) {
-  VulkanWindow vw("needle-sim", options.size);
-  // Unless asked, the interactive window on a CPU device keeps its frame rate instead of MSAA.
-  engine::SceneRenderer renderer(vw.context, vw.target,
-                                 {static_cast<VkSampleCountFlagBits>(options.msaa.value_or(vw.cpu_device() ? 1 : 4))});
+  GpuWindow vw("needle-sim", options.size);
+  engine::SceneRenderer renderer(vw.device, vw.target, {options.msaa.value_or(vw.default_msaa_samples())});
   engine::GpuScene gpu_scene(renderer, scene);
   const Show show = make_show(gpu_scene);
   std::optional<engine::UiPass> ui_pass;
-  if (options.hud) ui_pass.emplace(vw.context, renderer, &vw.window);
+  if (options.hud) ui_pass.emplace(renderer, &vw.window);
   ui::FrameClock clock;
   WindowFrames frames(options.frames, options.screenshot);
   const auto start = std::chrono::steady_clock::now();
@@ -72,8 +71,8 @@ int run_window(const engine::Scene& scene, const WindowOptions& options, const s
     const float dt = clock.tick();
     if (ui_pass) {
       ui_pass->begin_frame(vw.target.extent(), dt);
-      ui::draw_status_panel({vw.context.device_description(), scene.assets.empty() ? "" : scene.assets[0].name,
-                             int(renderer.samples()), clock.mean_frame_ms()});
+      ui::draw_status_panel({vw.device.device_description(), scene.assets.empty() ? "" : scene.assets[0].name,
+                             renderer.msaa_samples(), clock.mean_frame_ms()});
       if (show.panel) show.panel();
       params.overlay = ui_pass->end_frame();
     }
@@ -87,9 +86,9 @@ int run_window(const engine::Scene& scene, const WindowOptions& options, const s
 }  // namespace
 
 int run_scene_headless(const engine::Scene& scene, const WindowOptions& options, const fs::path& out_dir) {
-  engine::VulkanContext context(engine::ContextOptions{});
-  engine::HeadlessTarget target(context, {options.size.width, options.size.height});
-  engine::SceneRenderer renderer(context, target, {static_cast<VkSampleCountFlagBits>(options.msaa.value_or(4))});
+  engine::GpuDevice device;
+  engine::HeadlessTarget target(device, options.size);
+  engine::SceneRenderer renderer(device, target, {options.msaa.value_or(4)});
   engine::GpuScene gpu_scene(renderer, scene);
   const std::optional<engine::NeedleLoad> needle = scripted_needle_show(gpu_scene).needle(kHeadlessMoment_s);
   engine::RgbaImage image;

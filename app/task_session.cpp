@@ -8,10 +8,10 @@
 #include <ctime>
 #include <cctype>
 
+#include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
-#include "engine/headless_target.hpp"
+#include "engine/render_target.hpp"
 #include "engine/ui_pass.hpp"
-#include "engine/vulkan_context.hpp"
 #include "haptics/safety/fault_cause.hpp"
 #include "io/file_write.hpp"
 #include "ui/guidance_overlay.hpp"
@@ -216,11 +216,11 @@ void TaskSession::draw_panel(std::optional<size_t> step) const {
 int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa) {
   const fs::path out_dir = options.out_dir;
   TaskSession run(std::move(options));
-  engine::VulkanContext context(engine::ContextOptions{});
-  engine::HeadlessTarget target(context, {size.width, size.height});
-  engine::SceneRenderer renderer(context, target, {static_cast<VkSampleCountFlagBits>(msaa)});
+  engine::GpuDevice device;
+  engine::HeadlessTarget target(device, size);
+  engine::SceneRenderer renderer(device, target, {msaa});
   engine::GpuScene scene(renderer, run.scene());
-  engine::UiPass ui(context, renderer, nullptr);
+  engine::UiPass ui(renderer, nullptr);
   auto shoot = [&](const std::string& name, std::optional<size_t> step = std::nullopt) {
     engine::RgbaImage image;
     for (int frame = 0; frame < 2; ++frame) {  // ImGui fits its auto-sized windows on the first frame

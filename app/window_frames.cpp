@@ -3,19 +3,9 @@
 #include <cstdio>
 
 namespace needle::app {
-namespace {
 
-engine::ContextOptions presenting_to(engine::Window& window) {
-  engine::ContextOptions options;
-  options.instance_extensions = engine::Window::required_instance_extensions();
-  options.make_surface = [&window](VkInstance instance) { return window.create_surface(instance); };
-  return options;
-}
-
-}  // namespace
-
-VulkanWindow::VulkanWindow(const std::string& title, engine::Extent size)
-    : window(title, int(size.width), int(size.height)), context(presenting_to(window)), target(context, window) {}
+GpuWindow::GpuWindow(const std::string& title, engine::Extent size)
+    : window(title, int(size.width), int(size.height)), device(window), target(device, window) {}
 
 void WindowFrames::draw(engine::Window& window, engine::SceneRenderer& renderer, engine::RenderTarget& target,
                         const engine::FrameParams& params) {

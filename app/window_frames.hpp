@@ -1,4 +1,4 @@
-// What the window commands share: a window with its Vulkan context and swapchain target, and
+// What the window commands share: a window with its GPU device and swapchain target, and
 // the frame count that draws each frame and, for --frames N, closes the window after frame N,
 // saving it first when --screenshot names a file (the CLI tests under Xvfb use both).
 #pragma once
@@ -7,20 +7,21 @@
 #include <string>
 
 #include "engine/extent.hpp"
+#include "engine/gpu_device.hpp"
+#include "engine/render_target.hpp"
 #include "engine/scene_renderer.hpp"
-#include "engine/vulkan_context.hpp"
 #include "engine/window.hpp"
-#include "engine/window_target.hpp"
 
 namespace needle::app {
 
-struct VulkanWindow {
-  VulkanWindow(const std::string& title, engine::Extent size);
-  // On a CPU device (lavapipe) 4x MSAA costs 1.8 to 3.3x the frame time (docs/BENCHMARKS.md).
-  bool cpu_device() const { return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
+struct GpuWindow {
+  GpuWindow(const std::string& title, engine::Extent size);
+  // The MSAA samples an interactive window asks for: on a CPU device (lavapipe) 4x costs 1.8 to
+  // 3.3x the frame time (docs/BENCHMARKS.md), so there it keeps its frame rate instead.
+  int default_msaa_samples() const { return device.is_cpu_device() ? 1 : 4; }
 
   engine::Window window;
-  engine::VulkanContext context;
+  engine::GpuDevice device;
   engine::WindowTarget target;
 };
 

@@ -4,14 +4,18 @@
 #pragma once
 
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
-#include "engine/deformation_pass.hpp"
-#include "engine/gpu_model.hpp"
+#include "engine/model.hpp"
 #include "engine/scene.hpp"
 #include "engine/scene_renderer.hpp"
+#include "engine/tissue.hpp"
 
 namespace needle::engine {
+
+class DeformationPass;
 
 class GpuScene {
  public:
@@ -21,19 +25,21 @@ class GpuScene {
   // tissue when given its parameters.
   GpuScene(const SceneRenderer& renderer, const Model& model, const Scene& view,
            const std::optional<TissueParams>& deformation = std::nullopt);
+  ~GpuScene();
+  GpuScene(GpuScene&&) noexcept;
+  GpuScene& operator=(GpuScene&&) noexcept;
 
   const Scene& scene() const { return scene_; }
   // The asset with this name; std::out_of_range naming it when there is none.
   size_t asset_index(const std::string& name) const;
   void set_asset_transform(size_t asset, const glm::mat4& transform);
-  const GpuModel& asset_model(size_t asset) const { return *models_[model_of_asset_[asset]]; }
+  // The bounds of the asset's model with its nodes placed, before the asset's own transform.
+  const Bounds& model_bounds(size_t asset) const;
 
   // This frame's parameters. With the needle's state, tool assets are posed at it and the
   // deformation passes' work for it comes along; without, tools keep their scene transform and
   // the tissue relaxes to rest.
   FrameParams frame_params(const NeedleLoad* needle = nullptr);
-  // What the deformation passes did in the last recorded frame, summed over the tissues.
-  DeformationPass::FrameStats deformation_stats() const;
 
  private:
   struct DeformableTissue {

@@ -65,6 +65,12 @@ struct Bounds {
   bool empty() const { return min.x > max.x; }
 };
 
+// A ball: a mesh's bounds, or where a deformation reaches.
+struct Sphere {
+  glm::dvec3 center{0.0};
+  double radius = 0.0;
+};
+
 struct Model {
   std::vector<Primitive> primitives;
   std::vector<Material> materials;

@@ -2,6 +2,7 @@
 // golden-image tests.
 #pragma once
 
+#include "engine/extent.hpp"
 #include "engine/model.hpp"
 #include "engine/rgba_image.hpp"
 #include "engine/scene.hpp"
@@ -9,14 +10,14 @@
 
 namespace needle::engine {
 
-class VulkanContext;
+class GpuDevice;
 
-RgbaImage render_scene_offscreen(const VulkanContext& context, const Scene& scene, VkExtent2D extent,
+RgbaImage render_scene_offscreen(const GpuDevice& device, const Scene& scene, Extent extent,
                                  const RendererSettings& settings = {});
 // The model at the origin seen with the view's camera, lights and background (its assets unused).
-RgbaImage render_model_offscreen(const VulkanContext& context, const Model& model, VkExtent2D extent,
+RgbaImage render_model_offscreen(const GpuDevice& device, const Model& model, Extent extent,
                                  const Scene& view, const RendererSettings& settings = {});
 // A view that frames the model (framing_camera) under default_lights().
-Scene framing_view(const Model& model, VkExtent2D extent);
+Scene framing_view(const Model& model, Extent extent);
 
 }  // namespace needle::engine

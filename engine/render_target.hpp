@@ -1,35 +1,49 @@
-// Where a frame goes: an offscreen image read back to memory (HeadlessTarget) or a window's
-// swapchain (WindowTarget). The renderer draws the same passes into either.
+// Where a frame goes: an offscreen image whose pixels come back to memory (HeadlessTarget: CI,
+// tests, `render`) or a window's swapchain (WindowTarget). The renderer draws the same passes
+// into either and captures a frame from either the same way.
 #pragma once
 
-#include <vulkan/vulkan.h>
+#include <memory>
 
-#include <cstdint>
-#include <optional>
-#include <vector>
+#include "engine/extent.hpp"
 
 namespace needle::engine {
 
+class GpuDevice;
+class TargetImages;
+class Window;
+
 class RenderTarget {
  public:
-  virtual ~RenderTarget() = default;
+  ~RenderTarget();
+  RenderTarget(const RenderTarget&) = delete;
+  RenderTarget& operator=(const RenderTarget&) = delete;
 
-  virtual VkFormat format() const = 0;
-  virtual VkExtent2D extent() const = 0;
-  virtual const std::vector<VkImageView>& image_views() const = 0;
-  virtual VkImage image(uint32_t index) const = 0;
-  // Layout the image must be in when the frame's render pass ends.
-  virtual VkImageLayout final_layout() const = 0;
-  // Changes whenever the images are recreated (window resize), so framebuffers follow.
-  virtual uint64_t generation() const = 0;
-  // Swapchains hand images over with semaphores; an offscreen image needs none.
-  virtual bool uses_semaphores() const = 0;
+  // In pixels; a window's follows its framebuffer.
+  Extent extent() const;
 
-  // Index of the image to draw into next, or nullopt when no frame can be drawn now
-  // (minimised window, swapchain being recreated). Signals `image_ready` when uses_semaphores().
-  virtual std::optional<uint32_t> acquire(VkSemaphore image_ready) = 0;
-  // Hands the finished image on (present); waits on `render_done` when uses_semaphores().
-  virtual void present(uint32_t index, VkSemaphore render_done) = 0;
+  // The engine's own access (engine/vulkan/target_images.hpp); an incomplete type outside it.
+  const TargetImages& images() const { return *images_; }
+  TargetImages& images() { return *images_; }
+
+ protected:
+  explicit RenderTarget(std::unique_ptr<TargetImages> images);
+
+ private:
+  std::unique_ptr<TargetImages> images_;
+};
+
+class HeadlessTarget final : public RenderTarget {
+ public:
+  // sRGB RGBA8, so captured bytes are display-ready PNG pixels.
+  HeadlessTarget(const GpuDevice& device, Extent extent);
+};
+
+class WindowTarget final : public RenderTarget {
+ public:
+  // sRGB, FIFO presentation, recreated when the window is resized or the surface asks for it; no
+  // frames while minimised. The device must have been made for this window.
+  WindowTarget(const GpuDevice& device, Window& window);
 };
 
 }  // namespace needle::engine

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/deformation_field.hpp"
 #include "engine/model.hpp"
+#include "engine/tissue.hpp"
 
 namespace needle::engine {
 

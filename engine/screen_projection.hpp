@@ -3,18 +3,17 @@
 // guidance over the 3D view.
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <glm/glm.hpp>
 #include <optional>
 
+#include "engine/extent.hpp"
 #include "engine/scene.hpp"
 
 namespace needle::engine {
 
-glm::mat4 view_projection(const Camera& camera, VkExtent2D extent);
+glm::mat4 view_projection(const Camera& camera, Extent extent);
 
 // Pixel coordinates with the origin at the top left; nullopt for a point behind the camera.
-std::optional<glm::vec2> project_to_screen(const Camera& camera, VkExtent2D extent, const glm::vec3& world);
+std::optional<glm::vec2> project_to_screen(const Camera& camera, Extent extent, const glm::vec3& world);
 
 }  // namespace needle::engine

@@ -4,7 +4,7 @@
 // new direction, withdraw.
 #pragma once
 
-#include "engine/deformation_field.hpp"
+#include "engine/tissue.hpp"
 
 namespace needle::engine {
 

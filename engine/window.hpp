@@ -1,10 +1,10 @@
-// A GLFW window with no client API (Vulkan draws into it).
+// A GLFW window with no client API: the engine presents to it (a GpuDevice made for it, then a
+// WindowTarget), and reads its input.
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <string>
-#include <vector>
+
+#include "engine/extent.hpp"
 
 struct GLFWwindow;
 
@@ -20,10 +20,7 @@ class Window {
 
   // True when GLFW can reach a display (X11 or Wayland); cheap, and safe to call first.
   static bool display_available();
-  // Instance extensions Vulkan needs to present to a GLFW window.
-  static std::vector<std::string> required_instance_extensions();
 
-  VkSurfaceKHR create_surface(VkInstance instance) const;
   GLFWwindow* handle() const { return window_; }
   bool should_close() const;
   void request_close();
@@ -31,7 +28,7 @@ class Window {
   // Blocks until an event arrives (used while minimised).
   void wait_events() const;
   // Framebuffer size in pixels; 0x0 while minimised.
-  VkExtent2D framebuffer_extent() const;
+  Extent framebuffer_extent() const;
   // True once after the framebuffer was resized.
   bool take_resized();
   // The cursor in normalised window coordinates: x right and y up, (0, 0) at the centre,

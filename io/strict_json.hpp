@@ -12,6 +12,7 @@
 #include <initializer_list>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 
 namespace needle::io {
@@ -58,7 +59,7 @@ class StrictJsonReader {
   }
 
   // Checks `value` is an object with no keys but `allowed`.
-  void object(const json& value, const std::string& at, std::initializer_list<const char*> allowed) const {
+  void object(const json& value, const std::string& at, std::span<const char* const> allowed) const {
     if (!value.is_object()) fail(at, "expected an object, got " + std::string(value.type_name()));
     for (const auto& [key, _] : value.items()) {
       if (std::none_of(allowed.begin(), allowed.end(), [&](const char* k) { return key == k; })) {
@@ -67,6 +68,9 @@ class StrictJsonReader {
         fail(at + (json::json_pointer() / key).to_string(), "unknown key (allowed: " + keys + ")");
       }
     }
+  }
+  void object(const json& value, const std::string& at, std::initializer_list<const char*> allowed) const {
+    object(value, at, std::span<const char* const>(allowed.begin(), allowed.size()));
   }
 
   const json& member(const json& value, const std::string& at, const char* key) const {

@@ -1,7 +1,8 @@
 #version 450
 // Tissue deformation: each work item moves one rest vertex by the windowed regularized
 // Kelvinlets of this frame and turns its normal by the field's Jacobian. Mirrors
-// engine/kelvinlet.cpp and engine/deformation_field.cpp (deform), the double-precision reference.
+// engine/deformation/kelvinlet.cpp and engine/deformation/deformation_field.cpp (deform), the
+// double-precision reference.
 layout(local_size_x = 64) in;
 
 #define MAX_LOADS 8

@@ -1,4 +1,4 @@
-// Per-frame uniforms shared by the scene shaders; mirrored by engine/frame_uniforms.hpp (std140).
+// Per-frame uniforms shared by the scene shaders; mirrored by engine/passes/frame_uniforms.hpp (std140).
 #define MAX_DIRECTIONAL_LIGHTS 4
 layout(set = 0, binding = 0, std140) uniform Frame {
   mat4 view_proj;
@@ -16,7 +16,7 @@ layout(push_constant, std430) uniform Draw {
   mat3 normal_matrix;
 } draw;
 
-// Per material (set 1): base colour texture and factors; mirrored by engine/frame_uniforms.hpp.
+// Per material (set 1): base colour texture and factors; mirrored by engine/passes/frame_uniforms.hpp.
 layout(set = 1, binding = 1, std140) uniform MaterialBlock {
   vec4 base_color;
   vec4 params;  // x alpha cutoff (<0: no cutoff), y metallic, z roughness, w has texture (0/1)

@@ -2,7 +2,8 @@
 # Checks that every project include follows the rules of docs/ARCHITECTURE.md ("What may include
 # what"): the `include-rules` block there is read as the source of truth, so the layout and its
 # description cannot drift apart. For each source file the longest matching folder prefix gives
-# what its `#include "a/b.hpp"` lines may name besides its own folder; includes without a folder
+# what its `#include "a/b.hpp"` lines may name besides its own folder (a prefix, or `dir/*.hpp` for
+# the files directly in dir and not in its sub-folders); includes without a folder
 # (same-folder headers) and <system> includes are not checked. Prints every violation; exit 1 if any.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -45,7 +46,14 @@ while IFS= read -r file; do
     [[ $target == */* ]] || continue
     fine=0
     for prefix in "${ok[@]}"; do
-      [[ $target == "$prefix"* || "tools/$target" == "$prefix"* ]] && { fine=1; break; }
+      if [[ $prefix == *'*'* ]]; then  # "dir/*.hpp": files directly in dir, not in its sub-folders
+        dir=${prefix%%\**}
+        rest=${target#"$dir"}
+        [[ $target == "$dir"* && $rest != */* && $target == $prefix ]] && { fine=1; break; }
+      elif [[ $target == "$prefix"* || "tools/$target" == "$prefix"* ]]; then
+        fine=1
+        break
+      fi
     done
     if ((!fine)); then
       echo "$file:$lineno: includes \"$target\", which $folder may not (allowed: ${ok[*]})"

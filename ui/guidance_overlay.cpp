@@ -77,7 +77,7 @@ class Painter {
   }
 
   const engine::Camera& camera_;
-  VkExtent2D extent_;
+  engine::Extent extent_;
   ImDrawList* list_;
 };
 

@@ -1,19 +1,19 @@
 #include "ui/panel_picture.hpp"
 
 #include "engine/gpu_scene.hpp"
-#include "engine/headless_target.hpp"
+#include "engine/render_target.hpp"
 #include "engine/ui_pass.hpp"
 #include "ui/review_replay.hpp"
 
 namespace needle::ui {
 
-engine::RgbaImage panel_picture(const engine::VulkanContext& context, VkExtent2D extent, const std::function<void()>& draw,
-                                const PictureScene* picture, VkSampleCountFlagBits msaa) {
-  engine::HeadlessTarget target(context, extent);
-  engine::SceneRenderer renderer(context, target, {msaa});
+engine::RgbaImage panel_picture(const engine::GpuDevice& device, engine::Extent extent, const std::function<void()>& draw,
+                                const PictureScene* picture, int msaa_samples) {
+  engine::HeadlessTarget target(device, extent);
+  engine::SceneRenderer renderer(device, target, {msaa_samples});
   engine::GpuScene scene = picture ? engine::GpuScene(renderer, picture->scene)
                                    : engine::GpuScene(renderer, engine::Model{}, engine::Scene{});
-  engine::UiPass ui(context, renderer, nullptr);
+  engine::UiPass ui(renderer, nullptr);
   engine::RgbaImage image;
   for (int frame = 0; frame < 2; ++frame) {
     ui.begin_frame(extent, 1.0f / 60.0f);

@@ -5,14 +5,11 @@
 #include <functional>
 #include <optional>
 
-#include "engine/deformation_field.hpp"
+#include "engine/extent.hpp"
+#include "engine/gpu_device.hpp"
 #include "engine/rgba_image.hpp"
 #include "engine/scene.hpp"
-#include "engine/scene_renderer.hpp"
-
-namespace needle::engine {
-class VulkanContext;
-}
+#include "engine/tissue.hpp"
 
 namespace needle::ui {
 
@@ -23,8 +20,7 @@ struct PictureScene {
 };
 
 // Two frames are drawn, since ImGui fits auto-sized windows on the first; the second is read back.
-engine::RgbaImage panel_picture(const engine::VulkanContext& context, VkExtent2D extent, const std::function<void()>& draw,
-                                const PictureScene* scene = nullptr,
-                                VkSampleCountFlagBits msaa = VK_SAMPLE_COUNT_1_BIT);
+engine::RgbaImage panel_picture(const engine::GpuDevice& device, engine::Extent extent, const std::function<void()>& draw,
+                                const PictureScene* scene = nullptr, int msaa_samples = 1);
 
 }  // namespace needle::ui

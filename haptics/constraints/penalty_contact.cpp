@@ -4,8 +4,9 @@
 
 namespace needle::haptics {
 
-double gpm_multiplier(const GpmParams& p, const SurfaceMotion& m) {
-  return p.alpha * (m.phi_ddot + 2.0 * p.xi * p.omega * m.phi_dot + p.omega * p.omega * m.phi);
+double gpm_multiplier(const GpmParams& p, const SurfaceMotion& m, double step) {
+  const double c = 2.0 * p.xi * p.omega, k = p.omega * p.omega, h = step;
+  return p.alpha * (m.phi_ddot * (1.0 + c * h + k * h * h) + c * m.phi_dot + k * (m.phi + h * m.phi_dot));
 }
 
 Eigen::Vector3d gpm_force(const SurfaceSample& s, double lambda) { return s.gradient * lambda; }
@@ -14,16 +15,16 @@ PenaltyResult penalty_acceleration(const GpmParams& p, const RobotModel& model, 
                                    const SurfaceSample& surface, const VecN& tau, double step, VecN& ddq) {
   forward_dynamics(model, data, tau, ddq);  // also factorizes H
   if (surface.phi > 0.0) return {};
-  const double c = 2.0 * p.xi * p.omega, k = p.omega * p.omega, h = step;
   const Eigen::Vector3d v = data.tip_twist.head<3>();
   // J_φ = n̂ᵀ J_lin (1×n); φ̈ = J_φ q̈ + γ0 with γ0 = n̂ᵀ J̇_lin q̇ + ẋᵀ∇²φ ẋ.
   Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, kMaxDof> j_phi = surface.gradient.transpose() * data.J.topRows<3>();
   const double phi_dot = surface.gradient.dot(v);
   const double gamma0 = surface.gradient.dot(data.Jdot.topRows<3>() * data.dq) +
                         v.dot(surface.hessian * v);
-  const double a_eff = p.alpha * (1.0 + c * h + k * h * h);
-  const double rest = p.alpha * (gamma0 * (1.0 + c * h + k * h * h) + c * phi_dot + k * (surface.phi + h * phi_dot));
-  // λ = a_eff J_φ q̈ + rest, with H q̈ = f − J_φᵀλ. Eliminate q̈ (Sherman-Morrison on the rank-1 term):
+  // λ is affine in φ̈: λ = a_eff J_φ q̈ + rest, with a_eff = ∂λ/∂φ̈ and rest = λ at J_φ q̈ = 0.
+  const double a_eff = gpm_multiplier(p, {0.0, 0.0, 1.0}, step);
+  const double rest = gpm_multiplier(p, {surface.phi, phi_dot, gamma0}, step);
+  // With H q̈ = f − J_φᵀλ, eliminate q̈ (Sherman-Morrison on the rank-1 term):
   // q̈ = q̈_free − H⁻¹J_φᵀ λ  ⇒  λ = (a_eff J_φ q̈_free + rest) / (1 + a_eff J_φ H⁻¹ J_φᵀ).
   VecN hinv_jt = j_phi.transpose();
   data.llt.solveInPlace(hinv_jt);

@@ -18,20 +18,21 @@ struct GpmParams {
   double damping() const { return 2.0 * alpha * xi * omega; } // N·s/m
 };
 
-// (3.15) as printed, from a known φ̈.
-double gpm_multiplier(const GpmParams& p, const SurfaceMotion& m);
-// (3.16) with the unit gradient.
+// (α, ξ, ω; φ, φ̇, φ̈; h) => (λ)   (3.15), damping and stiffness at the end of a step of length h:
+// λ = α(φ̈ + 2ξω (φ̇ + h φ̈) + ω² (φ + h φ̇ + h² φ̈)), the semi-implicit Euler form that keeps the
+// stiff penalty stable at any step (docs/CONTROLLER.md). h = 0 is (3.15) as printed; the servo
+// passes its sub-step. λ is affine in φ̈.
+double gpm_multiplier(const GpmParams& p, const SurfaceMotion& m, double step);
+// (n̂, λ) => (F_v = J_φᵀ λ = n̂ λ)   (3.16), with the unit gradient.
 Eigen::Vector3d gpm_force(const SurfaceSample& s, double lambda);
 
-// Acceleration and λ of a robot whose tip is held by the penalty, solved together (φ̈ depends on
-// q̈): (H + α' J_φᵀJ_φ) q̈ = τ − C q̇ − D q̇ − g − J_φᵀ α γ. With step > 0 the damping and
-// stiffness terms are taken at the end of a semi-implicit Euler step of that length
-// (φ̇ → φ̇ + h φ̈, φ → φ + h φ̇ + h² φ̈), which keeps the stiff penalty stable at any step;
-// step = 0 is (3.15) in continuous time. Needs the kinematics (J, J̇) and H, bias at the state.
 struct PenaltyResult {
   double lambda = 0.0;
   bool active = false;  // false: φ > 0 or λ would pull; q̈ is then the free acceleration
 };
+// (model, data with J, J̇, H and bias; surface, τ, h) => (q̈, λ)   (2.21) with (3.15): the robot
+// whose tip the penalty holds, λ = gpm_multiplier(…, h) solved together with the dynamics (φ̈
+// depends on q̈): (H + α' J_φᵀJ_φ) q̈ = τ − C q̇ − D q̇ − g − J_φᵀ α γ.
 PenaltyResult penalty_acceleration(const GpmParams& p, const RobotModel& model, RobotData& data,
                                    const SurfaceSample& surface, const VecN& tau, double step, VecN& ddq);
 

@@ -2,17 +2,16 @@
 // contact-dependent force terms, the virtual robot's integration, and the master torque.
 // Free motion (3.13)-(3.14); rigid contact (3.17)-(3.21); tissue (3.24)-(3.28); signs corrected
 // where printed ones feed velocity back positively (docs/CONTROLLER.md). Contact terms blend in
-// and out over gains.switch_time_s. step() allocates nothing and throws nothing.
+// and out over gains.switch_time_s. The equations are the functions of teleoperation_terms.hpp;
+// step() calls them in order, allocates nothing and throws nothing.
 #pragma once
 
 #include "haptics/control/gains.hpp"
+#include "haptics/control/teleoperation_terms.hpp"
 #include "haptics/control/tracking.hpp"
 #include "haptics/control/virtual_world.hpp"
-#include "haptics/model/small_cholesky.hpp"
 
 namespace needle::haptics {
-
-using Wrench = Eigen::Matrix<double, 6, 1>;
 
 struct TickInput {
   VecN q_m, dq_m;  // measured master joints
@@ -52,12 +51,10 @@ class Teleoperation {
   VirtualWorld world_;
   TrackingState track_m_, track_v_;
   TrackingTerms terms_m_, terms_v_;
-  ContactMode contact_kind_ = ContactMode::Free;  // the kind whose terms are blending
-  Eigen::Vector3d momentum_h_, momentum_v_;         // Δp_h, Δp_v (3.19)
-  VecK lambda_integral_;                            // ∫(λ_m + λ_v), (3.26)
-  VecN damping_m_, velocity_gain_v_;
-  MatKK aat_;                                 // A Aᵀ of (3.24)
-  SmallCholesky<kMaxConstraints> aat_factor_;
+  ContactBlend blend_;
+  ForceErrorIntegrals integrals_;
+  VecN velocity_gain_v_;  // B of τ_v = τ_v0 − B q̇_v
+  OperatorMultiplierScratch multiplier_scratch_;
   Wrench wrench_filtered_ = Wrench::Zero();
   TickOutput out_;
 };

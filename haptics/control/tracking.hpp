@@ -18,7 +18,8 @@ class TrackingState {
   void reset(int n) { sigma_.setZero(n); }
   const VecN& sigma() const { return sigma_; }
 
-  // s and s_a at this tick (with σ before the update), then σ += T (K_β s + sign s).
+  // (Λ, K_β, K_γ, q_i, q̇_i, q_j, q̇_j, T; σ) => (s, s_a; σ)   (3.6)-(3.12): s and s_a at this tick
+  // (with σ before the update), then σ += T (K_β s + sign s).
   void update(const RobotGains& g, const VecN& q_i, const VecN& dq_i, const VecN& q_j, const VecN& dq_j, double T,
               TrackingTerms& out);
 

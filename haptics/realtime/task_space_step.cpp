@@ -37,14 +37,8 @@ void TaskSpaceStep::step(const DeviceReading& reading, double dt_s, DeviceComman
   // hold only what its own integration needed.
   update_kinematics(scenario_.virt, data_, world_.q(), world_.dq());
   update_dynamics(scenario_.virt, data_);
-  const RobotData& data = data_;
-  const Eigen::Vector3d force = coupling_.stiffness_n_per_m * (target_ - data.tip.translation());
-  // A torque about x5 x d0 turns the needle axis x5 towards its start direction d0.
-  const Eigen::Vector3d axis = data.tip.linear().col(0);
-  const Eigen::Vector3d torque = coupling_.orientation_stiffness_nm_per_rad * axis.cross(direction_start_);
-  Eigen::Matrix<double, 6, 1> wrench;
-  wrench << force, torque;
-  tau_ = data.J.transpose() * wrench + data.g;
+  Eigen::Vector3d force;
+  task_space_coupling(coupling_, data_, target_, direction_start_, force, tau_);
   world_.advance(tau_, damping_, dt_s, substeps_);
 
   // The handle feels the spring's reaction, in device axes.

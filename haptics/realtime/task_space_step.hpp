@@ -1,31 +1,18 @@
-// Task-space coupling for devices whose geometry differs from the virtual robot's (the
-// Falcon, a translational delta; the mouse, no geometry at all), through the virtual robot's
-// Jacobian (docs/DEVICES.md). A virtual coupling: the handle position, mapped into the scene,
-// pulls the virtual needle tip through a spring; the virtual robot carries it as the wrench
-// J^T [F; tau_r] plus gravity compensation, integrates with its constraints (VirtualWorld:
-// rigid surface by the penalty method, tissue by the nonholonomic multipliers), and the device
-// feels the spring's reaction. The needle's direction is held at its start direction by a
-// rotational spring (position-only devices sense no orientation).
+// The task-space coupling (haptics/control/task_space_coupling.hpp) as the loop's ServoStep, for
+// position-only devices (falcon, mouse): maps the handle into the scene, applies the coupling to
+// the virtual robot it owns (VirtualWorld: rigid surface by the penalty method, tissue by the
+// nonholonomic multipliers), commands the spring's reaction in device axes and publishes the
+// virtual robot's state.
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
 
+#include "haptics/control/task_space_coupling.hpp"
 #include "haptics/control/virtual_world.hpp"
 #include "haptics/realtime/servo_step.hpp"
 #include "haptics/sim/scenario.hpp"
 
 namespace needle::haptics {
-
-struct TaskCoupling {
-  // Device axes to scene axes (the Falcon's z points at the user, the scene's may not).
-  Eigen::Matrix3d device_to_scene = Eigen::Matrix3d::Identity();
-  double workspace_scale = 1.0;          // scene metres per device metre
-  double stiffness_n_per_m = 300.0;      // coupling spring, scene side
-  double orientation_stiffness_nm_per_rad = 0.5;
-  double joint_damping_nms_per_rad = 0.05;  // implicit, on every virtual joint
-  double force_scale = 1.0;              // device newtons per scene newton
-};
 
 class TaskSpaceStep : public ServoStep {
  public:

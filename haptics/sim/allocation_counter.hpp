@@ -1,30 +1,13 @@
 // Counts every call into the C allocator (malloc, calloc, realloc, the aligned variants) while
 // armed: operator new, Eigen's aligned_malloc and everything else end there. glibc lets the
 // executable define these symbols; they forward to __libc_*.
-// Include in exactly ONE translation unit of an executable (it defines malloc and friends).
+// Include in exactly ONE translation unit of an executable (it defines malloc and friends); the
+// others read the count through haptics/sim/allocation_count.hpp.
 #pragma once
 
-#include <atomic>
 #include <cstddef>
 
-namespace needle::haptics::allocation_counter {
-
-inline std::atomic<long> calls{0};
-inline std::atomic<bool> armed{false};
-
-inline void start() {
-  calls = 0;
-  armed = true;
-}
-inline long stop() {
-  armed = false;
-  return calls.load();
-}
-inline void note() {
-  if (armed.load(std::memory_order_relaxed)) calls.fetch_add(1, std::memory_order_relaxed);
-}
-
-}  // namespace needle::haptics::allocation_counter
+#include "haptics/sim/allocation_count.hpp"
 
 extern "C" {
 void* __libc_malloc(size_t);

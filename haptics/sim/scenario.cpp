@@ -1,5 +1,6 @@
 #include "haptics/sim/scenario.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +12,81 @@ namespace needle::haptics {
 namespace {
 
 using nlohmann::json;
+
+// The keys of a layer's mechanics (every number, and "rigid") after `first`.
+std::vector<const char*> with_mechanics_keys(std::vector<const char*> first) {
+  for (const MechanicsField& f : kMechanicsFields) first.push_back(f.key);
+  first.push_back("rigid");
+  return first;
+}
+
+// A layer's mechanical parameters: inline in a scenario (each a number, or {value, source}) or a
+// parameter set file (assets/tissues/*.json), where every parameter is {value, source} and the
+// source cites one of the file's `references` ("key: where in it") or reads "design value: why".
+class MechanicsReader : io::StrictJsonReader<ScenarioError> {
+ public:
+  using StrictJsonReader::StrictJsonReader;
+
+  // `references` is the file's references object, or nullptr inline (sources optional there).
+  LayerMechanics mechanics(const json& j, const std::string& at, const json* references) {
+    LayerMechanics m;
+    for (const MechanicsField& f : kMechanicsFields)
+      if (j.contains(f.key)) m.*f.member = non_negative(value(j[f.key], at + "/" + f.key, references), pointer_to(at, f.key, j[f.key]));
+    if (j.contains("rigid")) {
+      const json& rigid = value(j["rigid"], at + "/rigid", references);
+      if (!rigid.is_boolean()) fail(pointer_to(at, "rigid", j["rigid"]), "expected true or false");
+      m.rigid = rigid.get<bool>();
+    }
+    if (const auto problem = mechanics_problem(m)) fail(pointer_to(at, problem->key, j.value(problem->key, json())), problem->what);
+    return m;
+  }
+
+  LayerMechanics parameter_set(const json& j) {
+    object(j, "", with_mechanics_keys({"tissue", "description", "references"}));
+    string(member(j, "", "tissue"), "/tissue");
+    string(member(j, "", "description"), "/description");
+    const json& references = member(j, "", "references");
+    if (!references.is_object()) fail("/references", "expected an object of citations");
+    const bool rigid = j.contains("rigid");
+    const std::vector<const char*> required = rigid ? std::vector<const char*>{"rigid"}
+                                                    : std::vector<const char*>{"stiffness_N_per_m", "puncture_force_N", "cutting_force_N",
+                                                                               "friction_N_per_m", "static_friction_N_per_m"};
+    for (const char* key : required) member(j, "", key);
+    const LayerMechanics m = mechanics(j, "", &references);
+    for (const auto& [key, text] : references.items()) {
+      string(text, "/references/" + key);
+      if (std::none_of(sources_.begin(), sources_.end(), [&](const std::string& s) { return s.find(key) != std::string::npos; }))
+        fail("/references/" + key, "not cited by any parameter's source");
+    }
+    return m;
+  }
+
+ private:
+  // Where a parameter's number sits: the key itself, or its "value" when given with a source.
+  static std::string pointer_to(const std::string& at, const std::string& key, const json& given) {
+    return at + "/" + key + (given.is_object() ? "/value" : "");
+  }
+
+  // A parameter's value: a bare value (inline only) or {value, source}.
+  const json& value(const json& given, const std::string& at, const json* references) {
+    if (!given.is_object()) {
+      if (references) fail(at, "expected {\"value\": ..., \"source\": \"...\"}: every number in a parameter set carries its source");
+      return given;
+    }
+    object(given, at, {"value", "source"});
+    const std::string source = string(member(given, at, "source"), at + "/source");
+    const std::string cited = source.substr(0, source.find(':'));
+    const bool design = cited == "design value";
+    if (source.find(':') == std::string::npos || source.find_first_not_of(' ', cited.size() + 1) == std::string::npos)
+      fail(at + "/source", "expected \"design value: why\" or \"<reference>: where in it\"");
+    if (!design && references && !references->contains(cited))
+      fail(at + "/source", "cites \"" + cited + "\", which is not in /references");
+    sources_.push_back(source);
+    return member(given, at, "value");
+  }
+
+  std::vector<std::string> sources_;  // every source read, for the references' check
+};
 
 // Scenario files through the project's one strict reader: "FILE: /json/pointer: what is wrong".
 class ScenarioReader : io::StrictJsonReader<ScenarioError> {
@@ -36,8 +112,11 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     s.virtual_substeps = int(whole(member(j, "", "virtual_substeps"), "/virtual_substeps", 1, 1000000));
     s.q0 = vector(member(j, "", "q0_rad"), "/q0_rad", n);
     gains(member(j, "", "gains"), "/gains", n, s.gains);
-    if (j.contains("rigid")) s.scene.rigid = surface(j["rigid"], "/rigid", s.base_in_world);
-    if (j.contains("tissue")) s.scene.tissue = surface(j["tissue"], "/tissue", s.base_in_world);
+    if (j.contains("rigid")) {
+      const Primitives rigid = surface(j["rigid"], "/rigid", s.base_in_world);
+      s.scene.rigid = ImplicitSurface(rigid.list, rigid.combine);
+    }
+    if (j.contains("tissue")) tissue(j["tissue"], "/tissue", s);
     hand(member(j, "", "hand"), "/hand", s);
     if (j.contains("sensor")) sensor(j["sensor"], "/sensor", s.sensor);
     if (j.contains("device")) {
@@ -86,17 +165,94 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     if (g.contains("switch_time_s")) out.switch_time_s = positive(g["switch_time_s"], at + "/switch_time_s");
   }
 
-  ImplicitSurface surface(const json& j, const std::string& at, const Eigen::Vector3d& base) const {
+  struct Primitives {
+    std::vector<SurfacePrimitive> list;
+    ImplicitSurface::Combine combine;
+  };
+
+  Primitives surface(const json& j, const std::string& at, const Eigen::Vector3d& base) const {
     object(j, at, {"combine", "primitives"});
     const std::string combine = j.contains("combine") ? string(j["combine"], at + "/combine") : "union";
     if (combine != "union" && combine != "intersection") fail(at + "/combine", "expected \"union\" or \"intersection\"");
     const json& list = member(j, at, "primitives");
     if (!list.is_array() || list.empty() || list.size() > static_cast<size_t>(ImplicitSurface::kMaxPrimitives))
       fail(at + "/primitives", "expected an array of 1 to " + std::to_string(ImplicitSurface::kMaxPrimitives) + " primitives");
-    std::vector<SurfacePrimitive> prims;
-    for (size_t i = 0; i < list.size(); ++i) prims.push_back(primitive(list[i], at + "/primitives/" + std::to_string(i), base));
-    const auto mode = combine == "union" ? ImplicitSurface::Combine::Union : ImplicitSurface::Combine::Intersection;
-    return ImplicitSurface(prims, mode);
+    Primitives out{{}, combine == "union" ? ImplicitSurface::Combine::Union : ImplicitSurface::Combine::Intersection};
+    for (size_t i = 0; i < list.size(); ++i) out.list.push_back(primitive(list[i], at + "/primitives/" + std::to_string(i), base));
+    return out;
+  }
+
+  // The scenario's tissue: {layers: [...], stick} or the single-surface form {combine, primitives}.
+  void tissue(const json& j, const std::string& at, Scenario& s) const {
+    if (!j.is_object() || !j.contains("layers")) {
+      const Primitives single = surface(j, at, s.base_in_world);
+      s.scene.tissue = ImplicitSurface(single.list, single.combine);
+      s.tissue = TissueModel::single_surface(LayerShape::of_surface(single.list, single.combine));
+      return;
+    }
+    object(j, at, {"layers", "stick"});
+    StickParams stick;
+    if (j.contains("stick")) {
+      const json& p = j["stick"];
+      const std::string where = at + "/stick";
+      object(p, where, {"stiffness_N_per_m", "band_mps"});
+      if (p.contains("stiffness_N_per_m")) stick.stiffness_N_per_m = positive(p["stiffness_N_per_m"], where + "/stiffness_N_per_m");
+      if (p.contains("band_mps")) stick.band_mps = positive(p["band_mps"], where + "/band_mps");
+    }
+    const json& list = member(j, at, "layers");
+    const std::string where = at + "/layers";
+    if (!list.is_array() || list.empty() || list.size() > size_t(TissueModel::kMaxLayers))
+      fail(where, "expected an array of 1 to " + std::to_string(TissueModel::kMaxLayers) + " layers");
+    std::vector<TissueLayer> layers;
+    for (size_t i = 0; i < list.size(); ++i) layers.push_back(layer(list[i], where + "/" + std::to_string(i), s.base_in_world));
+    try {
+      s.tissue = TissueModel(std::move(layers), stick);
+    } catch (const TissueLayerError& e) {
+      fail(where + "/" + std::to_string(e.layer) + "/" + e.key, e.what());
+    }
+  }
+
+  TissueLayer layer(const json& l, const std::string& at, const Eigen::Vector3d& base) const {
+    object(l, at, with_mechanics_keys({"name", "shape", "parameters"}));
+    TissueLayer layer{string(member(l, at, "name"), at + "/name"), layer_shape(member(l, at, "shape"), at + "/shape", base), {}};
+    if (!l.contains("parameters")) {
+      layer.mechanics = MechanicsReader(file_).mechanics(l, at, nullptr);
+      return layer;
+    }
+    for (const char* key : with_mechanics_keys({}))
+      if (l.contains(key)) fail(at + "/" + key, "given beside \"parameters\": a layer's parameters come from the file or inline, not both");
+    const std::string set = existing_file(l["parameters"], at + "/parameters", folder_).string();
+    layer.mechanics = MechanicsReader(set).parameter_set(io::read_json_file<ScenarioError>(set));
+    return layer;
+  }
+
+  // A layer's region: one of the surface primitives, a slab, a box, or a combined surface.
+  LayerShape layer_shape(const json& j, const std::string& at, const Eigen::Vector3d& base) const {
+    object(j, at, {"sphere", "plane", "capsule", "slab", "box", "surface"});
+    if (j.size() != 1) fail(at, "expected exactly one of \"sphere\", \"plane\", \"capsule\", \"slab\", \"box\", \"surface\"");
+    if (j.contains("slab")) {
+      const json& p = j["slab"];
+      const std::string where = at + "/slab";
+      object(p, where, {"point", "normal", "thickness_m"});
+      const Eigen::Vector3d normal = vec3(member(p, where, "normal"), where + "/normal");
+      if (normal.norm() < 1e-9) fail(where + "/normal", "must not be the zero vector");
+      return LayerShape::slab(vec3(member(p, where, "point"), where + "/point") - base, normal,
+                              positive(member(p, where, "thickness_m"), where + "/thickness_m"));
+    }
+    if (j.contains("box")) {
+      const json& p = j["box"];
+      const std::string where = at + "/box";
+      object(p, where, {"min", "max"});
+      const Eigen::Vector3d lo = vec3(member(p, where, "min"), where + "/min"), hi = vec3(member(p, where, "max"), where + "/max");
+      if (!(lo.array() < hi.array()).all()) fail(where + "/max", "must exceed min on every axis");
+      return LayerShape::box(lo - base, hi - base);
+    }
+    if (j.contains("surface")) {
+      const Primitives combined = surface(j["surface"], at + "/surface", base);
+      return LayerShape::of_surface(combined.list, combined.combine);
+    }
+    const SurfacePrimitive single = primitive(j, at, base);
+    return LayerShape::of_surface(std::span<const SurfacePrimitive>(&single, 1), ImplicitSurface::Combine::Union);
   }
 
   SurfacePrimitive primitive(const json& e, const std::string& at, const Eigen::Vector3d& base) const {

@@ -11,6 +11,7 @@
 #include "haptics/sim/integrator.hpp"
 #include "haptics/sim/master_plant.hpp"
 #include "haptics/sim/operator_model.hpp"
+#include "haptics/tissue/tissue_model.hpp"
 
 namespace needle::haptics {
 
@@ -31,6 +32,10 @@ struct Scenario {
   Integrator master_integrator = Integrator::SemiImplicitEuler;
   TeleoperationGains gains;
   Scene scene;  // base frame
+  // Base frame. The penetrable tissue as layers (issue 12): `tissue.layers`, or the single-surface
+  // form, which is one layer with every parameter zero and is also scene.tissue. The closed loop
+  // does not use the layers yet (phase B): a layered scenario's scene.tissue is empty.
+  TissueModel tissue;
   VecN q0;
   HandImpedance hand;
   HandTrajectory trajectory;  // base frame

@@ -5,9 +5,9 @@
 #include <cstring>
 
 #include "asset-gen/assets.hpp"
-#include "engine/deformation_pass.hpp"
+#include "engine/deformation/deformation_pass.hpp"
 #include "engine/gltf_loader.hpp"
-#include "engine/vulkan_context.hpp"
+#include "engine/vulkan/vulkan_context.hpp"
 
 namespace needle::test {
 

@@ -3,7 +3,7 @@
 // the needle is free or pulled back.
 #include <gtest/gtest.h>
 
-#include "engine/deformation_field.hpp"
+#include "engine/deformation/deformation_field.hpp"
 
 namespace needle::test {
 namespace {

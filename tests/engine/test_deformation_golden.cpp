@@ -5,7 +5,7 @@
 
 #include "deformation_fixture.hpp"
 #include "engine/gpu_scene.hpp"
-#include "engine/headless_target.hpp"
+#include "engine/render_target.hpp"
 #include "image_compare.hpp"
 #include "vulkan_fixture.hpp"
 #include "tests/support/test_paths.hpp"
@@ -13,15 +13,15 @@
 namespace needle::test {
 namespace {
 
-constexpr VkExtent2D kSize{320, 240};
+constexpr engine::Extent kSize{320, 240};
 const std::filesystem::path kScene = test::source_dir() / "assets/scenes/penetrable_sphere.json";
 const glm::dvec3 kEntryDirection{-1.0, 0.0, 0.35};  // where the needle meets the sphere, from its centre
 
 class DeformationGolden : public VulkanTest {};
 
 TEST_F(DeformationGolden, DimpleInsertPivotWithdraw) {
-  engine::HeadlessTarget target(context(), kSize);
-  engine::SceneRenderer renderer(context(), target);
+  engine::HeadlessTarget target(device(), kSize);
+  engine::SceneRenderer renderer(device(), target);
   engine::GpuScene scene(renderer, engine::load_scene(kScene));
 
   struct Step {

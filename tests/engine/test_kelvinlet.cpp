@@ -6,7 +6,7 @@
 #include <numbers>
 #include <random>
 
-#include "engine/kelvinlet.hpp"
+#include "engine/deformation/kelvinlet.hpp"
 
 namespace needle::test {
 namespace {

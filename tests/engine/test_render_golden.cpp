@@ -15,7 +15,7 @@ namespace needle::test {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr VkExtent2D kGoldenSize{320, 240};
+constexpr engine::Extent kGoldenSize{320, 240};
 const fs::path kAssets = test::source_dir() / "assets";
 
 std::vector<fs::path> files_in(const fs::path& dir, std::initializer_list<const char*> extensions) {
@@ -40,12 +40,12 @@ class SceneGolden : public VulkanTest, public ::testing::WithParamInterface<fs::
 
 TEST_P(AssetGolden, MatchesGolden) {
   engine::Model model = engine::load_gltf(GetParam());
-  engine::RgbaImage image = engine::render_model_offscreen(context(), model, kGoldenSize, engine::framing_view(model, kGoldenSize));
+  engine::RgbaImage image = engine::render_model_offscreen(device(), model, kGoldenSize, engine::framing_view(model, kGoldenSize));
   EXPECT_TRUE(matches_golden(image, "asset_" + GetParam().stem().string()));
 }
 
 TEST_P(SceneGolden, MatchesGolden) {
-  engine::RgbaImage image = engine::render_scene_offscreen(context(), engine::load_scene(GetParam()), kGoldenSize);
+  engine::RgbaImage image = engine::render_scene_offscreen(device(), engine::load_scene(GetParam()), kGoldenSize);
   EXPECT_TRUE(matches_golden(image, "scene_" + GetParam().stem().string()));
 }
 

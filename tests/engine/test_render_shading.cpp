@@ -14,7 +14,7 @@ using engine::AlphaMode;
 using engine::Material;
 using engine::Model;
 
-constexpr VkExtent2D kSize{64, 48};
+constexpr engine::Extent kSize{64, 48};
 // mesh.frag's specular term with n = l = v, roughness 1 (shininess 0), metallic 0:
 // F0 * (shininess + 8) / (8 pi) with F0 = 0.04.
 constexpr double kHeadOnSpecular = 0.04 * 8.0 / 25.1327;
@@ -67,7 +67,7 @@ engine::Scene head_on_scene() {
 class RenderShading : public VulkanTest {
  protected:
   engine::RgbaImage render(const Model& model, const engine::Scene& scene) {
-    return engine::render_model_offscreen(context(), model, kSize, scene);
+    return engine::render_model_offscreen(device(), model, kSize, scene);
   }
   static const uint8_t* centre(const engine::RgbaImage& image) { return image.at(image.width / 2, image.height / 2); }
 };

@@ -21,7 +21,7 @@ Camera looking_along_y() {
 }
 
 TEST(ScreenProjection, PinholeCameraInClosedForm) {
-  const VkExtent2D extent{200, 100};  // aspect 2
+  const engine::Extent extent{200, 100};  // aspect 2
   const Camera camera = looking_along_y();
   const auto centre = project_to_screen(camera, extent, {0.0f, 3.0f, 0.0f});
   ASSERT_TRUE(centre);

@@ -6,7 +6,7 @@
 
 #include "asset-gen/assets.hpp"
 #include "engine/gltf_loader.hpp"
-#include "engine/triangle_chunks.hpp"
+#include "engine/passes/triangle_chunks.hpp"
 
 namespace needle::engine {
 namespace {

@@ -4,7 +4,7 @@
 #include <imgui.h>
 
 #include "engine/gpu_scene.hpp"
-#include "engine/headless_target.hpp"
+#include "engine/render_target.hpp"
 #include "engine/ui_pass.hpp"
 #include "vulkan_fixture.hpp"
 
@@ -14,13 +14,13 @@ namespace {
 class UiPassTest : public VulkanTest {};
 
 TEST_F(UiPassTest, PanelIsDrawnOverTheSceneHeadless) {
-  const VkExtent2D extent{200, 120};
-  engine::HeadlessTarget target(context(), extent);
-  engine::SceneRenderer renderer(context(), target);
+  const engine::Extent extent{200, 120};
+  engine::HeadlessTarget target(device(), extent);
+  engine::SceneRenderer renderer(device(), target);
   engine::Scene view;
   view.background = {0.0f, 0.0f, 0.0f};
   engine::GpuScene scene(renderer, engine::Model{}, view);
-  engine::UiPass ui(context(), renderer, nullptr);
+  engine::UiPass ui(renderer, nullptr);
 
   engine::RgbaImage image;
   for (int frame = 0; frame < 4; ++frame) {  // more frames than the backend's buffer sets cycle through

@@ -5,27 +5,24 @@
 
 #include <memory>
 
-#include "engine/vulkan_context.hpp"
+#include "engine/gpu_device.hpp"
 
 namespace needle::test {
 
 class VulkanTest : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    engine::ContextOptions options;
-    options.validation = true;
-    options.announce_device = false;
-    context_ = std::make_unique<engine::VulkanContext>(options);
-  }
-  static void TearDownTestSuite() { context_.reset(); }
+  static void SetUpTestSuite() { device_ = std::make_unique<engine::GpuDevice>(engine::DeviceOptions{.validation = true, .announce_device = false}); }
+  static void TearDownTestSuite() { device_.reset(); }
   void TearDown() override {
-    auto messages = context_->validation_messages();
+    auto messages = device_->validation_messages();
     for (size_t i = seen_messages_; i < messages.size(); ++i) ADD_FAILURE() << "Vulkan validation " << messages[i];
     seen_messages_ = messages.size();
   }
-  const engine::VulkanContext& context() const { return *context_; }
+  const engine::GpuDevice& device() const { return *device_; }
+  // For tests of the engine's internals (engine/vulkan/vulkan_context.hpp).
+  const engine::VulkanContext& context() const { return device_->context(); }
 
-  static inline std::unique_ptr<engine::VulkanContext> context_;
+  static inline std::unique_ptr<engine::GpuDevice> device_;
   static inline size_t seen_messages_ = 0;
 };
 

@@ -73,12 +73,22 @@ TEST(ConstraintSurfaces, ContactClassificationFollowsTheSignOfPhi) {
 
 TEST(ConstraintSurfaces, GpmMultiplierIsPrintedFormulaWithThesisGains) {
   const GpmParams p;  // α = 0.02, ξ = 100, ω = 200
-  EXPECT_DOUBLE_EQ(gpm_multiplier(p, {-1e-3, -0.01, 0.5}), 0.02 * (0.5 + 2 * 100 * 200 * -0.01 + 40000 * -1e-3));
+  EXPECT_DOUBLE_EQ(gpm_multiplier(p, {-1e-3, -0.01, 0.5}, 0.0), 0.02 * (0.5 + 2 * 100 * 200 * -0.01 + 40000 * -1e-3));
   EXPECT_DOUBLE_EQ(p.stiffness(), 800.0);
   EXPECT_DOUBLE_EQ(p.damping(), 800.0);
   SurfaceSample s;
   s.gradient = Vector3d(0, 0, 1);
   EXPECT_TRUE(gpm_force(s, -2.0).isApprox(Vector3d(0, 0, -2)));  // the tool presses into the surface
+}
+
+TEST(ConstraintSurfaces, GpmMultiplierTakesDampingAndStiffnessAtTheEndOfTheStep) {
+  const GpmParams p{1.0, 1.0, 1.0};  // α = ξ = ω = 1: λ = φ̈ + 2 φ̇⁺ + φ⁺
+  // h = 0.5, φ = −1, φ̇ = −2, φ̈ = 4: φ̇⁺ = −2 + 0.5·4 = 0, φ⁺ = −1 + 0.5·(−2) + 0.25·4 = −1,
+  // λ = 4 + 0 − 1 = 3 (the printed form at the same state: 4 − 4 − 1 = −1).
+  EXPECT_DOUBLE_EQ(gpm_multiplier(p, {-1.0, -2.0, 4.0}, 0.5), 3.0);
+  EXPECT_DOUBLE_EQ(gpm_multiplier(p, {-1.0, -2.0, 4.0}, 0.0), -1.0);
+  // Its slope in φ̈, which penalty_acceleration solves with: 1 + 2h + h² = 2.25.
+  EXPECT_DOUBLE_EQ(gpm_multiplier(p, {0.0, 0.0, 1.0}, 0.5), 2.25);
 }
 
 class PenaltyOnRobot : public ::testing::Test {

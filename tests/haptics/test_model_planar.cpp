@@ -6,33 +6,16 @@
 
 #include "haptics/model/dynamics.hpp"
 #include "haptics/model/kinematics.hpp"
-#include "haptics/model/urdf_loader.hpp"
+#include "robot_fixtures.hpp"
 
 namespace needle::haptics {
 namespace {
 
-constexpr double l1 = 0.3, l2 = 0.2, m1 = 1.2, m2 = 0.7, i1 = 0.011, i2 = 0.004;  // lc = l/2
-
-const char* kPlanarUrdf = R"(<?xml version="1.0"?>
-<robot name="planar2">
-  <link name="base"/>
-  <joint name="j1" type="revolute"><parent link="base"/><child link="l1"/>
-    <origin xyz="0 0 0"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="10" velocity="10"/></joint>
-  <link name="l1"><inertial><origin xyz="0.15 0 0"/><mass value="1.2"/>
-    <inertia ixx="0.011" ixy="0" ixz="0" iyy="0.011" iyz="0" izz="0.011"/></inertial></link>
-  <joint name="j2" type="continuous"><parent link="l1"/><child link="l2"/>
-    <origin xyz="0.3 0 0"/><axis xyz="0 0 1"/></joint>
-  <link name="l2"><inertial><origin xyz="0.1 0 0"/><mass value="0.7"/>
-    <inertia ixx="0.004" ixy="0" ixz="0" iyy="0.004" iyz="0" izz="0.004"/></inertial></link>
-  <joint name="tool" type="fixed"><parent link="l2"/><child link="tip"/><origin xyz="0.2 0 0"/></joint>
-  <link name="tip"/>
-</robot>)";
+using namespace test::planar;
 
 TEST(ModelPlanar, MatchesClosedForms) {
-  RobotModel model = parse_robot_urdf(kPlanarUrdf, "planar2", 2);
-  model.gravity = Eigen::Vector3d(0, -9.81, 0);
+  const RobotModel model = arm();
   RobotData data(model);
-  const double lc1 = l1 / 2, lc2 = l2 / 2, g0 = 9.81;
   for (double a : {-1.0, 0.3, 2.0}) {
     for (double b : {-2.5, 0.0, 0.8}) {
       VecN q(2), dq(2);

@@ -33,7 +33,7 @@ class GuidanceOverlay : public VulkanTest {
     state.needle_orientation[3] = h[1] / hn;
     scene.needle = app::NeedleTracker().update(state);
     const engine::Camera camera = scene.scene.camera;
-    return ui::panel_picture(context(), {480, 320}, [&] { ui::draw_guidance({&task, step, tip, camera}); }, &scene);
+    return ui::panel_picture(device(), {480, 320}, [&] { ui::draw_guidance({&task, step, tip, camera}); }, &scene);
   }
 };
 

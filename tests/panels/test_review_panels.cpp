@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/app/recorded_session.hpp"
-#include "engine/vulkan_context.hpp"
+#include "engine/gpu_device.hpp"
 #include "image_compare.hpp"
 #include "ui/panel_picture.hpp"
 #include "ui/review_panels.hpp"
@@ -18,7 +18,7 @@ namespace needle::test {
 namespace {
 namespace fs = std::filesystem;
 
-ui::PanelRect whole(VkExtent2D e) { return {ImVec2(0, 0), ImVec2(float(e.width), float(e.height))}; }
+ui::PanelRect whole(engine::Extent e) { return {ImVec2(0, 0), ImVec2(float(e.width), float(e.height))}; }
 
 class ReviewPanels : public VulkanTest {
  protected:
@@ -58,31 +58,31 @@ TEST_F(ReviewPanels, SessionTableMatchesGolden) {
   ui::SessionTableState table;
   table.selected = good_.id;
   table.compared = sloppy_.id;
-  const VkExtent2D size{760, 200};
-  EXPECT_TRUE(matches_golden(ui::panel_picture(context(), size, [&] { ui::draw_session_table(sessions, table, whole(size)); }),
+  const engine::Extent size{760, 200};
+  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] { ui::draw_session_table(sessions, table, whole(size)); }),
                              "panel_review_table"));
 }
 
 TEST_F(ReviewPanels, SessionDetailWithPlotsMatchesGolden) {
   const training::SessionReview r = review(good_.id);
   ASSERT_TRUE(r.has_recording());
-  const VkExtent2D size{720, 1340};
-  EXPECT_TRUE(matches_golden(ui::panel_picture(context(), size, [&] { ui::draw_session_detail(r, {12.0, false, ""}, whole(size)); }),
+  const engine::Extent size{720, 1340};
+  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] { ui::draw_session_detail(r, {12.0, false, ""}, whole(size)); }),
                              "panel_review_detail"));
 }
 
 TEST_F(ReviewPanels, SessionWithoutRecordingSaysSo) {
   const training::SessionReview r = review(3);
   EXPECT_FALSE(r.has_recording());
-  const VkExtent2D size{600, 300};
-  EXPECT_TRUE(matches_golden(ui::panel_picture(context(), size, [&] { ui::draw_session_detail(r, {}, whole(size)); }),
+  const engine::Extent size{600, 300};
+  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] { ui::draw_session_detail(r, {}, whole(size)); }),
                              "panel_review_no_recording"));
 }
 
 TEST_F(ReviewPanels, ComparisonMatchesGolden) {
   const training::SessionReview a = review(good_.id), b = review(sloppy_.id);
-  const VkExtent2D size{720, 1080};
-  EXPECT_TRUE(matches_golden(ui::panel_picture(context(), size, [&] { ui::draw_comparison(a, b, whole(size)); }),
+  const engine::Extent size{720, 1080};
+  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] { ui::draw_comparison(a, b, whole(size)); }),
                              "panel_review_compare"));
 }
 
@@ -94,10 +94,10 @@ TEST_F(ReviewPanels, ReplayFrameMatchesGolden) {
   app::ReplayCursor cursor;
   double t = 12.0;
   ui::PictureScene scene{engine::load_scene(r.task->scene), cursor.at(r.states, t), 0.3f};
-  const VkExtent2D size{640, 360};
-  EXPECT_TRUE(matches_golden(ui::panel_picture(context(), size, [&] {
+  const engine::Extent size{640, 360};
+  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] {
     ui::draw_replay_bar(r, t, false, {ImVec2(0, 300), ImVec2(640, 60)});
-  }, &scene, VK_SAMPLE_COUNT_4_BIT), "panel_review_replay"));
+  }, &scene, 4), "panel_review_replay"));
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 #include <imgui.h>
 
 #include "engine/gpu_scene.hpp"
-#include "engine/headless_target.hpp"
+#include "engine/render_target.hpp"
 #include "engine/ui_pass.hpp"
 #include "image_compare.hpp"
 #include "ui/trainee_panel.hpp"
@@ -19,11 +19,11 @@ const std::filesystem::path kTask = test::source_dir() / "assets/tasks/penetrabl
 class TraineePanel : public VulkanTest {
  protected:
   engine::RgbaImage draw(const ui::TraineeView& view) {
-    const VkExtent2D extent{480, 420};
-    engine::HeadlessTarget target(context(), extent);
-    engine::SceneRenderer renderer(context(), target, {VK_SAMPLE_COUNT_1_BIT});
+    const engine::Extent extent{480, 420};
+    engine::HeadlessTarget target(device(), extent);
+    engine::SceneRenderer renderer(device(), target, {1});
     engine::GpuScene scene(renderer, engine::Model{}, engine::Scene{});
-    engine::UiPass ui(context(), renderer, nullptr);
+    engine::UiPass ui(renderer, nullptr);
     engine::RgbaImage image;
     for (int frame = 0; frame < 2; ++frame) {  // ImGui sizes auto-fitting windows on the first frame
       ui.begin_frame(extent, 1.0f / 60.0f);

@@ -6,10 +6,11 @@
 #include <chrono>
 #include <thread>
 
+#include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
-#include "engine/vulkan_context.hpp"
+#include "engine/render_target.hpp"
+#include "engine/vulkan/target_images.hpp"  // the swapchain's generation
 #include "engine/window.hpp"
-#include "engine/window_target.hpp"
 
 namespace needle::test {
 namespace {
@@ -30,15 +31,10 @@ engine::RgbaImage draw_until_presented(engine::SceneRenderer& renderer, engine::
 TEST(WindowTarget, PresentsAndFollowsAResize) {
   ASSERT_TRUE(engine::Window::display_available()) << "run under xvfb-run";
   engine::Window window("needle-sim test", 320, 240);
-  engine::ContextOptions options;
-  options.validation = true;
-  options.announce_device = false;
-  options.instance_extensions = engine::Window::required_instance_extensions();
-  options.make_surface = [&](VkInstance instance) { return window.create_surface(instance); };
-  engine::VulkanContext context(options);
+  engine::GpuDevice device(window, {.validation = true, .announce_device = false});
   {
-    engine::WindowTarget target(context, window);
-    engine::SceneRenderer renderer(context, target, {VK_SAMPLE_COUNT_1_BIT});
+    engine::WindowTarget target(device, window);
+    engine::SceneRenderer renderer(device, target, {1});
     engine::Scene view;
     view.background = {1.0f, 0.0f, 0.0f};
     engine::GpuScene scene(renderer, engine::Model{}, view);
@@ -48,7 +44,7 @@ TEST(WindowTarget, PresentsAndFollowsAResize) {
     EXPECT_EQ(first.height, 240u);
     EXPECT_EQ(first.at(10, 10)[0], 255);  // red background, channels swizzled back from BGRA
     EXPECT_EQ(first.at(10, 10)[2], 0);
-    const uint64_t generation = target.generation();
+    const uint64_t generation = target.images().generation();
 
     glfwSetWindowSize(window.handle(), 400, 300);
     for (int i = 0; i < 100 && window.framebuffer_extent().width != 400; ++i) {
@@ -59,11 +55,11 @@ TEST(WindowTarget, PresentsAndFollowsAResize) {
     engine::RgbaImage second = draw_until_presented(renderer, target, window, scene.frame_params());
     EXPECT_EQ(second.width, 400u);
     EXPECT_EQ(second.height, 300u);
-    EXPECT_GT(target.generation(), generation);
+    EXPECT_GT(target.images().generation(), generation);
     for (int i = 0; i < 5; ++i) draw_until_presented(renderer, target, window, scene.frame_params());
     renderer.wait_idle();
   }
-  for (const auto& m : context.validation_messages()) ADD_FAILURE() << "Vulkan validation " << m;
+  for (const auto& m : device.validation_messages()) ADD_FAILURE() << "Vulkan validation " << m;
 }
 
 }  // namespace

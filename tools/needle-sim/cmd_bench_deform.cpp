@@ -8,10 +8,10 @@
 #include "asset-gen/assets.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
-#include "engine/deformation_pass.hpp"
+#include "engine/deformation_bench.hpp"
 #include "engine/gltf_loader.hpp"
+#include "engine/gpu_device.hpp"
 #include "engine/scripted_needle.hpp"
-#include "engine/vulkan_context.hpp"
 #include "sample_stats.hpp"
 
 namespace needle::cli {
@@ -36,65 +36,32 @@ int run_bench_deform(ArgList& args) {
     if (r < 3 || r > 2000 || r != double(long(r))) throw UsageError("--spheres: each resolution a whole number in 3..2000");
   }
 
-  engine::VulkanContext context(engine::ContextOptions{});
+  engine::GpuDevice device;
   const engine::TissueParams tissue;
   BenchTable table({"sphere", "vertices", "processed", "skipped", "gpu_ms", "gpu_ms_p95", "cpu_ms", "cpu_over_gpu",
                     "max_abs_error_m"});
   for (double r : resolutions) {
     const int n = int(r);
-    engine::Model model = engine::convert_gltf(asset_gen::make_sphere(n, n), "sphere_" + std::to_string(n));
-    engine::Primitive rest = model.primitives.at(0);
-    const glm::dmat4 model_to_world(model.instances.at(0).world);
-    engine::VertexGrid grid = engine::VertexGrid::sort_vertices(rest, 0.5 * tissue.falloff * tissue.radius_m);
-    engine::GpuPrimitive gpu = engine::upload_primitive(context, rest);
-    engine::DeformationPass pass(context);
-    pass.add_target(gpu, rest, grid, model_to_world);
-
-    // The CPU keeps its own deformed mesh (world positions) through the same frames.
-    std::vector<glm::dvec3> cpu_state(rest.vertices.size());
-    for (size_t v = 0; v < cpu_state.size(); ++v) {
-      cpu_state[v] = glm::dvec3(model_to_world * glm::dvec4(glm::dvec3(rest.vertices[v].position), 1.0));
-    }
-    std::vector<engine::Sphere> previous_reach;
+    engine::DeformationBench bench(device, engine::convert_gltf(asset_gen::make_sphere(n, n), "sphere_" + std::to_string(n)),
+                                   tissue);
     std::vector<double> gpu_ms, cpu_ms, processed;
     for (int f = 0; f < int(frames); ++f) {
-      engine::DeformationField field = engine::build_field(needle_at_frame(f, int(frames)), tissue);
+      bench.set_needle(needle_at_frame(f, int(frames)));
       auto start = Clock::now();
-      auto record = pass.update(field);
-      if (record) context.submit_and_wait(record);
+      const size_t processed_now = bench.deform_on_gpu();
       gpu_ms.push_back(ms_since(start));
-      processed.push_back(double(pass.last_frame().processed));
-
-      // The same work on the CPU: the vertices of the grid cells this frame's and the last
-      // frame's loads reach, as the pass visits them.
-      std::vector<engine::Sphere> reach;
-      for (const engine::Kelvinlet& k : field.loads) {
-        reach.push_back({glm::dvec3(glm::inverse(model_to_world) * glm::dvec4(k.center, 1.0)), k.support});
-      }
-      std::vector<engine::Sphere> visit = reach;
-      visit.insert(visit.end(), previous_reach.begin(), previous_reach.end());
-      previous_reach = reach;
+      processed.push_back(double(processed_now));
       start = Clock::now();
-      for (const engine::VertexRange& range : grid.ranges_near(visit)) {
-        for (uint32_t v = range.first; v < range.first + range.count; ++v) {
-          glm::dvec3 p = glm::dvec3(model_to_world * glm::dvec4(glm::dvec3(rest.vertices[v].position), 1.0));
-          cpu_state[v] = engine::deform(field, p, glm::dvec3(rest.vertices[v].normal)).position;
-        }
-      }
+      bench.deform_on_cpu();
       cpu_ms.push_back(ms_since(start));
     }
-    double max_error = 0.0;  // after the last frame, over every vertex
-    std::vector<engine::MeshVertex> out = engine::read_back_vertices(context, gpu);
-    for (size_t v = 0; v < out.size(); ++v) {
-      glm::dvec3 got = glm::dvec3(model_to_world * glm::dvec4(glm::dvec3(out[v].position), 1.0));
-      max_error = std::max(max_error, glm::length(got - cpu_state[v]));
-    }
+    const double max_error = bench.max_distance_m();  // after the last frame, over every vertex
     const double gpu_median = percentile(gpu_ms, 0.5), cpu_median = percentile(cpu_ms, 0.5);
-    const long vertices = long(rest.vertices.size()), processed_median = long(percentile(processed, 0.5));
+    const long vertices = long(bench.vertex_count()), processed_median = long(percentile(processed, 0.5));
     table.add_row({std::to_string(n) + "x" + std::to_string(n), vertices, processed_median, vertices - processed_median,
                    gpu_median, percentile(gpu_ms, 0.95), cpu_median, cpu_median / gpu_median, max_error});
   }
-  table.emit("bench deform: deformation pass per frame on " + context.device_description() +
+  table.emit("bench deform: deformation pass per frame on " + device.device_description() +
                  " (processed: median over frames; cpu: the same vertices, one thread, double)",
              json);
   return 0;

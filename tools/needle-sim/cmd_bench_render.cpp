@@ -11,10 +11,10 @@
 #include "bench_table.hpp"
 #include "command.hpp"
 #include "engine/gltf_loader.hpp"
+#include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
-#include "engine/headless_target.hpp"
 #include "engine/offscreen.hpp"
-#include "engine/vulkan_context.hpp"
+#include "engine/render_target.hpp"
 #include "sample_stats.hpp"
 
 namespace needle::cli {
@@ -49,9 +49,8 @@ int run_bench_render(ArgList& args) {
       throw UsageError("--spheres: each resolution a whole number in 3..4000");
   }
 
-  engine::VulkanContext context(engine::ContextOptions{});
-  VkExtent2D extent{size.width, size.height};
-  engine::HeadlessTarget target(context, extent);
+  engine::GpuDevice device;
+  engine::HeadlessTarget target(device, size);
 
   BenchTable table({"sphere", "vertices", "triangles", "width", "height", "msaa", "draws", "frames", "frame_ms_median",
                     "frame_ms_p95", "fps_median", "triangles_drawn"});
@@ -81,10 +80,8 @@ int run_bench_render(ArgList& args) {
       for (const std::string& draws : draw_modes) {
         Variant v{draws};
         v.renderer = std::make_unique<engine::SceneRenderer>(
-            context, target,
-            engine::RendererSettings{static_cast<VkSampleCountFlagBits>(msaa), draws.starts_with("lod"),
-                                     draws.ends_with("culled")});
-        v.scene = std::make_unique<engine::GpuScene>(*v.renderer, model, engine::framing_view(model, extent));
+            device, target, engine::RendererSettings{msaa, draws.starts_with("lod"), draws.ends_with("culled")});
+        v.scene = std::make_unique<engine::GpuScene>(*v.renderer, model, engine::framing_view(model, size));
         v.params = v.scene->frame_params();
         for (int warmup = 0; warmup < 5; ++warmup) v.renderer->draw(target, v.params);
         v.renderer->wait_idle();
@@ -101,13 +98,13 @@ int run_bench_render(ArgList& args) {
       }
       for (const Variant& v : variants) {
         double median = percentile(v.ms, 0.5);
-        table.add_row({std::to_string(n) + "x" + std::to_string(n), vertices, triangles, extent.width, extent.height,
-                       int(v.renderer->samples()), v.draws, long(frames), median, percentile(v.ms, 0.95),
+        table.add_row({std::to_string(n) + "x" + std::to_string(n), vertices, triangles, size.width, size.height,
+                       v.renderer->msaa_samples(), v.draws, long(frames), median, percentile(v.ms, 0.95),
                        1000.0 / median, v.renderer->triangles_drawn()});
       }
     }
   }
-  table.emit("bench render: scene pass on " + context.device_description(), json);
+  table.emit("bench render: scene pass on " + device.device_description(), json);
   return 0;
 }
 

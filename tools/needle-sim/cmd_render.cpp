@@ -4,8 +4,8 @@
 #include "arg_list.hpp"
 #include "command.hpp"
 #include "engine/gltf_loader.hpp"
+#include "engine/gpu_device.hpp"
 #include "engine/offscreen.hpp"
-#include "engine/vulkan_context.hpp"
 
 namespace needle::cli {
 namespace {
@@ -25,12 +25,11 @@ int run_render(ArgList& args) {
   if (scene_file) scene = engine::load_scene(*scene_file);
   if (gltf_file) model = engine::load_gltf(*gltf_file);
 
-  engine::VulkanContext context(engine::ContextOptions{});
-  VkExtent2D extent{size.width, size.height};
-  engine::RendererSettings settings{static_cast<VkSampleCountFlagBits>(msaa)};
+  engine::GpuDevice device;
+  engine::RendererSettings settings{msaa};
   engine::RgbaImage image =
-      scene ? engine::render_scene_offscreen(context, *scene, extent, settings)
-            : engine::render_model_offscreen(context, *model, extent, engine::framing_view(*model, extent), settings);
+      scene ? engine::render_scene_offscreen(device, *scene, size, settings)
+            : engine::render_model_offscreen(device, *model, size, engine::framing_view(*model, size), settings);
   engine::write_png(out, image);
   std::printf("wrote %s (%ux%u)\n", out.c_str(), image.width, image.height);
   return 0;

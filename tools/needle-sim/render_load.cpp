@@ -3,22 +3,22 @@
 // CPU cores), as the window would draw it.
 #include "asset-gen/assets.hpp"
 #include "engine/gltf_loader.hpp"
+#include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
-#include "engine/headless_target.hpp"
 #include "engine/offscreen.hpp"
-#include "engine/vulkan_context.hpp"
+#include "engine/render_target.hpp"
 #include "render_load_hook.hpp"
 
 namespace needle::cli {
 namespace {
 
 void draw_sphere_until(const std::atomic<bool>& stop) {
-  engine::ContextOptions options;
+  engine::DeviceOptions options;
   options.announce_device = false;
-  engine::VulkanContext context(options);
-  const VkExtent2D extent{1280, 720};
-  engine::HeadlessTarget target(context, extent);
-  engine::SceneRenderer renderer(context, target, {VK_SAMPLE_COUNT_1_BIT});
+  engine::GpuDevice device(options);
+  const engine::Extent extent{1280, 720};
+  engine::HeadlessTarget target(device, extent);
+  engine::SceneRenderer renderer(device, target, {1});
   engine::Model sphere = engine::convert_gltf(asset_gen::make_sphere(400, 400), "sphere_400");
   engine::GpuScene scene(renderer, sphere, engine::framing_view(sphere, extent));
   while (!stop.load(std::memory_order_relaxed)) renderer.draw(target, scene.frame_params());

@@ -1,0 +1,99 @@
+// The scene pass behind SceneRenderer (scene_renderer.hpp): lit, depth-tested, multisampled
+// meshes into any TargetImages. Frames in flight overlap recording with the device's execution;
+// opaque and masked primitives draw first, blended ones after, back to front.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "engine/vulkan/gpu_buffer.hpp"
+#include "engine/vulkan/gpu_image.hpp"
+#include "engine/vulkan/gpu_model.hpp"
+#include "engine/rgba_image.hpp"
+#include "engine/scene_renderer.hpp"
+#include "engine/vulkan/target_images.hpp"
+
+namespace needle::engine {
+
+class VulkanContext;
+
+// What FrameParams' recorders get: the frame's command buffer.
+struct CommandBuffer {
+  VkCommandBuffer handle;
+};
+
+class ScenePass {
+ public:
+  // The target fixes the colour format and the final layout (present or read back).
+  ScenePass(const VulkanContext& context, const TargetImages& target, const RendererSettings& settings);
+  ~ScenePass();
+  ScenePass(const ScenePass&) = delete;
+  ScenePass& operator=(const ScenePass&) = delete;
+
+  std::unique_ptr<GpuModel> upload(const Model& model) const;
+
+  // SceneRenderer's draw and wait_idle (scene_renderer.hpp).
+  bool draw(TargetImages& target, const FrameParams& params, RgbaImage* capture = nullptr);
+  void wait_idle() const;
+
+  VkSampleCountFlagBits samples() const { return samples_; }
+  size_t triangles_drawn() const { return triangles_drawn_; }
+  const VulkanContext& context() const { return context_; }
+  // For passes drawn inside the scene's render pass (the UI pass).
+  VkRenderPass render_pass() const { return render_pass_; }
+
+ private:
+  static constexpr size_t kFramesInFlight = 2;
+  struct FrameSlot {
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    VkFence done = VK_NULL_HANDLE;
+    VkSemaphore image_ready = VK_NULL_HANDLE;
+    GpuBuffer uniforms;
+    VkDescriptorSet frame_set = VK_NULL_HANDLE;
+  };
+
+  void create_render_pass(const TargetImages& target);
+  void create_layouts_and_sampler();
+  void create_pipelines();
+  void create_frame_slots();
+  void ensure_framebuffers(const TargetImages& target);
+  void destroy_framebuffers();
+  void record(VkCommandBuffer cmd, const TargetImages& target, uint32_t image, const FrameParams& params);
+  void record_capture(VkCommandBuffer cmd, const TargetImages& target, uint32_t image);
+  RgbaImage read_capture(const TargetImages& target) const;
+  void fill_uniforms(FrameSlot& slot, VkExtent2D extent, const FrameParams& params) const;
+
+  const VulkanContext& context_;
+  VkDevice device_;
+  VkFormat color_format_;
+  VkSampleCountFlagBits samples_;
+  bool level_of_detail_;
+  bool cull_chunks_;
+  VkRenderPass render_pass_ = VK_NULL_HANDLE;
+  VkDescriptorSetLayout frame_layout_ = VK_NULL_HANDLE;
+  VkDescriptorSetLayout material_layout_ = VK_NULL_HANDLE;
+  VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
+  // [blended][double sided]
+  std::array<std::array<VkPipeline, 2>, 2> pipelines_{};
+  VkSampler sampler_ = VK_NULL_HANDLE;
+  GpuImage white_texture_;
+  VkDescriptorPool frame_pool_ = VK_NULL_HANDLE;
+  std::array<FrameSlot, kFramesInFlight> slots_;
+  size_t next_slot_ = 0;
+  size_t triangles_drawn_ = 0;
+
+  // Per target generation: attachments shared by the images, a framebuffer and a
+  // render-done semaphore per target image.
+  uint64_t framebuffer_generation_ = 0;
+  VkExtent2D framebuffer_extent_{};
+  GpuImage msaa_color_;
+  GpuImage depth_;
+  std::vector<VkFramebuffer> framebuffers_;
+  std::vector<VkSemaphore> render_done_;
+  GpuBuffer capture_buffer_;  // host-visible, sized for the target on first capture
+};
+
+}  // namespace needle::engine

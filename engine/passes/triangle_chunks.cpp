@@ -1,0 +1,121 @@
+#include "engine/passes/triangle_chunks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace needle::engine {
+namespace {
+
+// How far past edge-on (in the cosine) a chunk must turn before it is left out: the rasterizer
+// decides facing from rounded screen coordinates, so nearly edge-on triangles stay in.
+constexpr float kFacingMargin = 0.01f;
+// A chunk's normals stay within 15° of its first triangle's, so its cone is at most about that
+// wide: the chunk is culled once it has turned past ~105° from the eye.
+const float kMaxNormalSpreadCos = std::cos(glm::radians(15.0f));
+
+TriangleChunk make_chunk(const std::vector<MeshVertex>& vertices, const std::vector<uint32_t>& indices, uint32_t first,
+                         uint32_t count) {
+  TriangleChunk chunk{first, count};
+  glm::vec3 lo(INFINITY), hi(-INFINITY), normal_sum(0.0f);
+  std::vector<glm::vec3> normals;
+  for (uint32_t i = first; i < first + count; i += 3) {
+    const glm::vec3 a = vertices[indices[i]].position, b = vertices[indices[i + 1]].position,
+                    c = vertices[indices[i + 2]].position;
+    for (const glm::vec3& v : {a, b, c}) lo = glm::min(lo, v), hi = glm::max(hi, v);
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    const float length = glm::length(n);
+    if (length > 0.0f) normals.push_back(n / length);  // a degenerate triangle covers no pixel
+  }
+  chunk.center = (lo + hi) * 0.5f;
+  for (uint32_t i = first; i < first + count; ++i)
+    chunk.radius = std::max(chunk.radius, glm::length(vertices[indices[i]].position - chunk.center));
+  for (const glm::vec3& n : normals) normal_sum += n;
+  const float sum_length = glm::length(normal_sum);
+  if (normals.empty() || sum_length < 1e-6f * float(normals.size())) return chunk;  // no cone: never culled
+  chunk.cone_axis = normal_sum / sum_length;
+  float min_cos = 1.0f;
+  for (const glm::vec3& n : normals) min_cos = std::min(min_cos, glm::dot(n, chunk.cone_axis));
+  chunk.cone_cos = std::clamp(min_cos, -1.0f, 1.0f);
+  chunk.cone_sin = std::sqrt(1.0f - chunk.cone_cos * chunk.cone_cos);
+  return chunk;
+}
+
+}  // namespace
+
+std::vector<TriangleChunk> build_triangle_chunks(const std::vector<MeshVertex>& vertices,
+                                                 const std::vector<uint32_t>& indices, uint32_t triangles) {
+  if (triangles == 0) throw std::invalid_argument("build_triangle_chunks: a chunk needs at least one triangle");
+  auto unit_normal = [&](uint32_t i) {
+    const glm::vec3 a = vertices[indices[i]].position;
+    const glm::vec3 n = glm::cross(vertices[indices[i + 1]].position - a, vertices[indices[i + 2]].position - a);
+    const float length = glm::length(n);
+    return length > 0.0f ? n / length : glm::vec3(0.0f);
+  };
+  std::vector<TriangleChunk> chunks;
+  const auto total = uint32_t(indices.size() / 3 * 3);
+  for (uint32_t first = 0; first < total;) {
+    // A chunk ends where a triangle turns too far from its first (a narrow cone culls more).
+    const glm::vec3 seed = unit_normal(first);
+    uint32_t end = first + 3;
+    while (end < total && end - first < 3 * triangles) {
+      const glm::vec3 n = unit_normal(end);
+      if (n != glm::vec3(0.0f) && glm::dot(n, seed) < kMaxNormalSpreadCos) break;
+      end += 3;
+    }
+    chunks.push_back(make_chunk(vertices, indices, first, end - first));
+    first = end;
+  }
+  return chunks;
+}
+
+bool chunk_faces_away(const TriangleChunk& chunk, const glm::vec3& eye) {
+  // A triangle with unit normal n through a point p faces away when n·(eye − p) < 0. With p in
+  // the sphere (c, r): n·(eye − p) ≤ n·(eye − c) + r, and over the cone the largest n·(eye − c)
+  // is L cos(θ − α), θ the angle from the axis to eye − c, α the half angle, L = |eye − c|.
+  if (chunk.cone_cos <= 0.0f) return false;
+  const glm::vec3 d = eye - chunk.center;
+  const float distance = glm::length(d);
+  if (distance <= chunk.radius) return false;
+  const float cos_theta = glm::dot(d, chunk.cone_axis) / distance;
+  const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
+  const float cos_theta_minus_alpha = cos_theta * chunk.cone_cos + sin_theta * chunk.cone_sin;
+  return cos_theta_minus_alpha < -chunk.radius / distance - kFacingMargin;
+}
+
+std::vector<IndexRange> visible_ranges(const std::vector<TriangleChunk>& chunks, const glm::vec3& eye,
+                                       const std::vector<Sphere>& moved) {
+  std::vector<IndexRange> ranges;
+  for (const TriangleChunk& chunk : chunks) {
+    const bool touches_moved = std::any_of(moved.begin(), moved.end(), [&](const Sphere& s) {
+      return glm::length(glm::dvec3(chunk.center) - s.center) < double(chunk.radius) + s.radius;
+    });
+    if (!touches_moved && chunk_faces_away(chunk, eye)) continue;
+    if (!ranges.empty() && ranges.back().first + ranges.back().count == chunk.first_index)
+      ranges.back().count += chunk.index_count;
+    else
+      ranges.push_back({chunk.first_index, chunk.index_count});
+  }
+  return ranges;
+}
+
+std::vector<IndexRange> visible_ranges(const std::vector<TriangleChunk>& chunks, const glm::mat4& model_to_world,
+                                       const glm::vec3& eye, const std::vector<Sphere>& moved) {
+  if (chunks.empty()) return {};
+  if (glm::determinant(glm::mat3(model_to_world)) <= 0.0f) {
+    const uint32_t first = chunks.front().first_index;
+    return {{first, chunks.back().first_index + chunks.back().index_count - first}};
+  }
+  // Facing is kept by an affine map of positive determinant: test in model space. A sphere maps
+  // into one whose radius grows by at most the inverse's Frobenius norm.
+  const glm::dmat4 world_to_model = glm::inverse(glm::dmat4(model_to_world));
+  const glm::dmat3 linear(world_to_model);
+  const double stretch = std::sqrt(glm::dot(linear[0], linear[0]) + glm::dot(linear[1], linear[1]) +
+                                   glm::dot(linear[2], linear[2]));
+  std::vector<Sphere> moved_model;
+  for (const Sphere& s : moved)
+    moved_model.push_back({glm::dvec3(world_to_model * glm::dvec4(s.center, 1.0)), s.radius * stretch});
+  return visible_ranges(chunks, glm::vec3(world_to_model * glm::dvec4(glm::dvec3(eye), 1.0)), moved_model);
+}
+
+}  // namespace needle::engine

@@ -1,0 +1,106 @@
+#include "engine/ui_pass.hpp"
+
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_vulkan.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "engine/passes/scene_pass.hpp"
+#include "engine/vulkan/vk_check.hpp"
+#include "engine/vulkan/vulkan_context.hpp"
+#include "engine/window.hpp"
+
+namespace needle::engine {
+namespace {
+
+bool g_ui_pass_alive = false;
+
+void check_imgui_vk(VkResult result) { vk_check(result, "ImGui Vulkan backend"); }
+
+// ImGui's style colours are sRGB values; our targets are sRGB formats that encode on write,
+// so the colours are decoded once here to keep the panels as ImGui designs them.
+void linearise_style_colors() {
+  for (ImVec4& c : ImGui::GetStyle().Colors) {
+    for (float* channel : {&c.x, &c.y, &c.z}) {
+      float v = *channel;
+      *channel = v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+    }
+  }
+}
+
+}  // namespace
+
+struct UiPass::Backend {
+  VkDevice device = VK_NULL_HANDLE;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  bool with_window = false;
+};
+
+UiPass::UiPass(const SceneRenderer& renderer, Window* window) : backend_(std::make_unique<Backend>()) {
+  if (g_ui_pass_alive) throw std::logic_error("only one UiPass may exist at a time (ImGui's backend is global)");
+  const ScenePass& pass = renderer.pass();
+  const VulkanContext& context = pass.context();
+  backend_->device = context.device();
+  backend_->with_window = window != nullptr;
+  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
+  VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  pool_info.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;  // the backend frees its font set
+  pool_info.maxSets = 1;
+  pool_info.poolSizeCount = 1;
+  pool_info.pPoolSizes = &size;
+  VK_CHECK(vkCreateDescriptorPool(backend_->device, &pool_info, nullptr, &backend_->pool));
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini written next to wherever the user runs us
+  ImGui::StyleColorsDark();
+  linearise_style_colors();
+  if (window) ImGui_ImplGlfw_InitForVulkan(window->handle(), true);
+
+  ImGui_ImplVulkan_InitInfo info{};
+  info.Instance = context.instance();
+  info.PhysicalDevice = context.physical_device();
+  info.Device = backend_->device;
+  info.QueueFamily = context.queue_family();
+  info.Queue = context.queue();
+  info.DescriptorPool = backend_->pool;
+  info.MinImageCount = 2;
+  info.ImageCount = 3;  // vertex-buffer sets the backend cycles through: more than our frames in flight
+  info.MSAASamples = pass.samples();
+  info.CheckVkResultFn = check_imgui_vk;
+  ImGui_ImplVulkan_Init(&info, pass.render_pass());
+  context.submit_and_wait([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
+  ImGui_ImplVulkan_DestroyFontUploadObjects();
+  g_ui_pass_alive = true;
+}
+
+UiPass::~UiPass() {
+  vkDeviceWaitIdle(backend_->device);
+  ImGui_ImplVulkan_Shutdown();
+  if (backend_->with_window) ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  vkDestroyDescriptorPool(backend_->device, backend_->pool, nullptr);
+  g_ui_pass_alive = false;
+}
+
+void UiPass::begin_frame(Extent extent, float delta_s) {
+  ImGui_ImplVulkan_NewFrame();
+  if (backend_->with_window) {
+    ImGui_ImplGlfw_NewFrame();
+  } else {
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(float(extent.width), float(extent.height));
+    io.DeltaTime = delta_s > 0.0f ? delta_s : 1.0f / 60.0f;
+  }
+  ImGui::NewFrame();
+}
+
+CommandRecorder UiPass::end_frame() {
+  ImGui::Render();
+  return [](const CommandBuffer& cmd) { ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd.handle); };
+}
+
+}  // namespace needle::engine

@@ -1,0 +1,31 @@
+// Offscreen colour image: CI, tests and `render`. Pixels come back through the scene pass's capture.
+#pragma once
+
+#include <vector>
+
+#include "engine/vulkan/gpu_image.hpp"
+#include "engine/vulkan/target_images.hpp"
+
+namespace needle::engine {
+
+class HeadlessImage final : public TargetImages {
+ public:
+  // sRGB RGBA8, so captured bytes are display-ready PNG pixels.
+  HeadlessImage(const VulkanContext& context, VkExtent2D extent);
+
+  VkFormat format() const override { return VK_FORMAT_R8G8B8A8_SRGB; }
+  VkExtent2D extent() const override { return image_.spec().extent; }
+  const std::vector<VkImageView>& image_views() const override { return views_; }
+  VkImage image(uint32_t) const override { return image_.image(); }
+  VkImageLayout final_layout() const override { return VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL; }
+  uint64_t generation() const override { return 1; }
+  bool uses_semaphores() const override { return false; }
+  std::optional<uint32_t> acquire(VkSemaphore) override { return 0; }
+  void present(uint32_t, VkSemaphore) override {}
+
+ private:
+  GpuImage image_;
+  std::vector<VkImageView> views_;
+};
+
+}  // namespace needle::engine

@@ -1,0 +1,75 @@
+// The region a tissue layer occupies, as a signed distance φ (metres, φ < 0 inside, unit
+// gradient): any implicit surface of haptics/constraints (sphere, plane, capsule and their union
+// or intersection), a slab between two parallel planes, or a box. Slab and box are intersections
+// of half-spaces: φ is exact inside and on the surface and a lower bound of the distance outside,
+// which is what contact detection and sphere tracing need. Each shape also carries its bounding
+// box (infinite along the axes where it is unbounded) for the layers' overlap check.
+#pragma once
+
+#include <Eigen/Core>
+#include <limits>
+#include <optional>
+#include <span>
+
+#include "haptics/constraints/implicit_surface.hpp"
+
+namespace needle::haptics {
+
+// Axis-aligned box; ±infinity where unbounded. Empty when lo > hi on some axis.
+struct Aabb {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+
+  bool empty() const { return (lo.array() > hi.array()).any(); }
+  Aabb intersected(const Aabb& o) const { return {lo.cwiseMax(o.lo), hi.cwiseMin(o.hi)}; }
+  Aabb merged(const Aabb& o) const { return {lo.cwiseMin(o.lo), hi.cwiseMax(o.hi)}; }
+};
+
+class LayerShape {
+ public:
+  // The existing surface form: primitives combined by union or intersection (φ < 0 inside).
+  static LayerShape of_surface(std::span<const SurfacePrimitive> primitives, ImplicitSurface::Combine combine);
+  // Between the plane through `outer_point` with unit `outward_normal` and the plane `thickness`
+  // behind it (the side the needle enters from is the outer one).
+  static LayerShape slab(const Eigen::Vector3d& outer_point, const Eigen::Vector3d& outward_normal, double thickness);
+  // Axis-aligned, min < max on every axis.
+  static LayerShape box(const Eigen::Vector3d& min, const Eigen::Vector3d& max);
+
+  SurfaceSample evaluate(const Eigen::Vector3d& x) const { return surface_.evaluate(x); }
+  bool contains(const Eigen::Vector3d& x) const { return surface_.evaluate(x).phi < 0.0; }
+  const Aabb& bounds() const { return bounds_; }
+
+  struct SlabPlanes {  // the slab {x : lo ≤ n·x ≤ hi}
+    Eigen::Vector3d normal;
+    double lo, hi;
+  };
+  const std::optional<SlabPlanes>& slab_planes() const { return slab_; }
+
+ private:
+  LayerShape(ImplicitSurface surface, Aabb bounds, std::optional<SlabPlanes> slab)
+      : surface_(surface), bounds_(bounds), slab_(slab) {}
+
+  ImplicitSurface surface_;
+  Aabb bounds_;
+  std::optional<SlabPlanes> slab_;  // kept for the exact overlap test between slabs
+};
+
+// Layers are listed outside in: a point belongs to the last layer whose shape holds it. Two
+// layers must then either not overlap or the later must lie wholly inside the earlier (nested
+// spheres); anything else is a conflict.
+struct LayerConflict {
+  enum class Kind {
+    PartialOverlap,  // `later` overlaps `earlier` without lying inside it
+    HiddenInside,    // `earlier` lies wholly inside `later`, so no point would ever belong to it
+  };
+  int earlier, later;
+  Kind kind;
+};
+const char* layer_conflict_text(LayerConflict::Kind kind);
+
+// The first conflicting pair in list order, if any. Exact for slabs (by their planes); otherwise
+// decided on a 32³ grid over the two shapes' common bounding box (clipped to ±1 m where
+// unbounded), ignoring points within 1 µm of either surface, so that layers may touch.
+std::optional<LayerConflict> find_layer_conflict(std::span<const LayerShape> shapes);
+
+}  // namespace needle::haptics

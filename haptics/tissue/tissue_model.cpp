@@ -1,0 +1,56 @@
+#include "haptics/tissue/tissue_model.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace needle::haptics {
+
+std::optional<MechanicsProblem> mechanics_problem(const LayerMechanics& m) {
+  for (const MechanicsField& f : kMechanicsFields) {
+    const double value = m.*f.member;
+    if (!(value >= 0.0) || !std::isfinite(value)) return MechanicsProblem{f.key, "must be a finite number >= 0"};
+    if (m.rigid && value != 0.0)
+      return MechanicsProblem{f.key, "a rigid layer takes no other parameter (it is the GPM contact of (3.15))"};
+  }
+  if (m.puncture_force_N > 0.0 && m.stiffness_N_per_m == 0.0 && m.stiffness2_N_per_m2 == 0.0)
+    return MechanicsProblem{
+        "puncture_force_N",
+        "needs stiffness_N_per_m or stiffness2_N_per_m2 > 0 (a surface without stiffness never reaches it)"};
+  if (m.static_friction_N_per_m < m.friction_N_per_m)
+    return MechanicsProblem{"static_friction_N_per_m",
+                            "must be >= friction_N_per_m (the stick limit is at least the slip force)"};
+  return std::nullopt;
+}
+
+TissueModel::TissueModel(std::vector<TissueLayer> layers, StickParams stick)
+    : layers_(std::move(layers)), stick_(stick) {
+  if (!(stick_.stiffness_N_per_m > 0.0) || !(stick_.band_mps > 0.0))
+    throw std::invalid_argument("stick stiffness and band must be > 0");
+  std::vector<LayerShape> shapes;
+  for (int i = 0; i < layer_count(); ++i) {
+    const TissueLayer& l = layers_[size_t(i)];
+    if (i == kMaxLayers) throw TissueLayerError(i, "name", "at most " + std::to_string(kMaxLayers) + " layers");
+    if (l.name.empty()) throw TissueLayerError(i, "name", "a layer needs a name");
+    for (int k = 0; k < i; ++k)
+      if (layers_[size_t(k)].name == l.name)
+        throw TissueLayerError(i, "name", "\"" + l.name + "\" names an earlier layer too");
+    if (const auto p = mechanics_problem(l.mechanics)) throw TissueLayerError(i, p->key, p->what);
+    shapes.push_back(l.shape);
+  }
+  if (const auto c = find_layer_conflict(shapes))
+    throw TissueLayerError(c->later, "shape",
+                           std::string(layer_conflict_text(c->kind)) + " (layer " + std::to_string(c->earlier) +
+                               ", \"" + layers_[size_t(c->earlier)].name + "\")");
+}
+
+TissueModel TissueModel::single_surface(const LayerShape& shape) {
+  return TissueModel({TissueLayer{"tissue", shape, {}}});
+}
+
+int TissueModel::layer_at(const Eigen::Vector3d& x) const {
+  for (int i = layer_count() - 1; i >= 0; --i)
+    if (layers_[size_t(i)].shape.contains(x)) return i;
+  return -1;
+}
+
+}  // namespace needle::haptics

@@ -1,0 +1,98 @@
+// Layered tissue as data (issue 12): an ordered list of layers, each a shape and its mechanical
+// parameters in SI units. Immutable once built; the per-tick state is TissueState
+// (haptics/tissue/tissue_step.hpp). The equations are in docs/TISSUE.md.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "haptics/tissue/layer_shape.hpp"
+
+namespace needle::haptics {
+
+// One layer's mechanics. Every number ≥ 0; zero means "absent".
+struct LayerMechanics {
+  double stiffness_N_per_m = 0.0;        // k₁ of the surface before puncture, F = k₁d + k₂d²
+  double stiffness2_N_per_m2 = 0.0;      // k₂ (Okamura, Simone, O'Leary, IEEE TBME 2004)
+  double puncture_force_N = 0.0;         // the surface gives way when F reaches it
+  double cutting_force_N = 0.0;          // at the tip while it advances into uncut tissue of this layer
+  double friction_N_per_m = 0.0;         // dynamic shaft friction per metre of shaft in the layer
+  double static_friction_N_per_m = 0.0;  // static (stick) limit per metre, ≥ the dynamic one
+  double damping_Ns_per_m = 0.0;         // viscous, while the shaft crosses the layer
+  bool rigid = false;                    // bone: never punctured, every other number zero
+};
+
+// The numeric parameters by their keys in scenario and parameter set files, in file order.
+struct MechanicsField {
+  const char* key;
+  double LayerMechanics::*member;
+};
+inline constexpr MechanicsField kMechanicsFields[] = {
+    {"stiffness_N_per_m", &LayerMechanics::stiffness_N_per_m},
+    {"stiffness2_N_per_m2", &LayerMechanics::stiffness2_N_per_m2},
+    {"puncture_force_N", &LayerMechanics::puncture_force_N},
+    {"cutting_force_N", &LayerMechanics::cutting_force_N},
+    {"friction_N_per_m", &LayerMechanics::friction_N_per_m},
+    {"static_friction_N_per_m", &LayerMechanics::static_friction_N_per_m},
+    {"damping_Ns_per_m", &LayerMechanics::damping_Ns_per_m}};
+
+// What is wrong with a layer's mechanics: the offending parameter's key and the reason.
+struct MechanicsProblem {
+  const char* key;
+  std::string what;
+};
+std::optional<MechanicsProblem> mechanics_problem(const LayerMechanics& m);
+
+struct TissueLayer {
+  std::string name;
+  LayerShape shape;
+  LayerMechanics mechanics;
+};
+
+// The tissue's grip on the shaft while it sticks (Karnopp's band) is elastic: a spring of this
+// stiffness between the shaft and the tissue, which slips at the friction limits. Design values
+// with their reasoning in docs/TISSUE.md.
+struct StickParams {
+  double stiffness_N_per_m = 5000.0;
+  double band_mps = 5e-4;  // |axial speed| below this sticks
+};
+
+// A layer that cannot be part of a model: its index, the key at fault ("name", "shape" or a
+// mechanics key) and why.
+struct TissueLayerError : std::invalid_argument {
+  TissueLayerError(int layer, std::string key, const std::string& what)
+      : std::invalid_argument(what), layer(layer), key(std::move(key)) {}
+  int layer;
+  std::string key;
+};
+
+class TissueModel {
+ public:
+  static constexpr int kMaxLayers = 16;
+
+  TissueModel() = default;  // no tissue
+  // Throws TissueLayerError: a layer past kMaxLayers, an empty or repeated name, invalid
+  // mechanics (mechanics_problem) or a shape in conflict with an earlier one (find_layer_conflict).
+  // Throws std::invalid_argument on stick parameters ≤ 0.
+  TissueModel(std::vector<TissueLayer> layers, StickParams stick = {});
+  // The thesis's penetrable tissue (section 4.4): one layer, "tissue", every parameter zero.
+  static TissueModel single_surface(const LayerShape& shape);
+
+  bool empty() const { return layers_.empty(); }
+  int layer_count() const { return int(layers_.size()); }
+  const TissueLayer& layer(int i) const { return layers_[size_t(i)]; }
+  std::span<const TissueLayer> layers() const { return layers_; }
+  const StickParams& stick() const { return stick_; }
+
+  // x => the last layer whose shape holds x (layers are listed outside in), −1 in none.
+  int layer_at(const Eigen::Vector3d& x) const;
+
+ private:
+  std::vector<TissueLayer> layers_;
+  StickParams stick_;
+};
+
+}  // namespace needle::haptics

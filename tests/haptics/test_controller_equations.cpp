@@ -1,0 +1,224 @@
+// Each equation group of the controller (haptics/control/teleoperation_terms.hpp) and the
+// task-space coupling (task_space_coupling.hpp) on its own, against a case small enough to
+// compute by hand; the arithmetic is in the comments.
+// docs/CONTROLLER.md maps equation -> function -> test.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "haptics/control/task_space_coupling.hpp"
+#include "haptics/control/teleoperation_terms.hpp"
+#include "haptics/model/kinematics.hpp"
+#include "robot_fixtures.hpp"
+
+namespace needle::haptics {
+namespace {
+
+VecN vec(std::initializer_list<double> values) {
+  VecN v(static_cast<Eigen::Index>(values.size()));
+  Eigen::Index i = 0;
+  for (double x : values) v[i++] = x;
+  return v;
+}
+
+// The diagonal gains of one robot, two joints; the tracking gains do not enter these terms.
+RobotGains gains(const VecN& Ka, const VecN& Kp) { return {Ka, Kp, VecN::Zero(2), VecN::Zero(2), VecN::Zero(2), 0.0}; }
+
+TEST(ControllerEquations, ContactBlendRampsInAtEachNewContactAndOutAfterIt) {
+  ContactBlend b;
+  const double rate = 0.25;  // T / switch time, e.g. 2 ms / 8 ms
+  EXPECT_FALSE(advance_contact_blend(ContactMode::Free, rate, b));
+  EXPECT_EQ(b.weight, 0.0);
+  EXPECT_EQ(b.kind, ContactMode::Free);
+  EXPECT_TRUE(advance_contact_blend(ContactMode::Holonomic, rate, b));  // new contact: restart the integrals
+  EXPECT_EQ(b.weight, 0.25);
+  EXPECT_EQ(b.kind, ContactMode::Holonomic);
+  for (double expected : {0.5, 0.75, 1.0, 1.0}) {  // clamped at 1
+    EXPECT_FALSE(advance_contact_blend(ContactMode::Holonomic, rate, b));
+    EXPECT_EQ(b.weight, expected);
+  }
+  for (double expected : {0.75, 0.5, 0.25}) {  // out of contact the terms ramp out, still the rigid ones
+    EXPECT_FALSE(advance_contact_blend(ContactMode::Free, rate, b));
+    EXPECT_EQ(b.weight, expected);
+    EXPECT_EQ(b.kind, ContactMode::Holonomic);
+  }
+  EXPECT_FALSE(advance_contact_blend(ContactMode::Free, rate, b));
+  EXPECT_EQ(b.weight, 0.0);
+  EXPECT_EQ(b.kind, ContactMode::Free);
+  // From one contact straight into the other kind: a new contact, from w = 0.
+  b = {ContactMode::Holonomic, 1.0};
+  EXPECT_TRUE(advance_contact_blend(ContactMode::Nonholonomic, rate, b));
+  EXPECT_EQ(b.weight, 0.25);
+  EXPECT_EQ(b.kind, ContactMode::Nonholonomic);
+}
+
+TEST(ControllerEquations, WrenchFilterIsAFirstOrderLowPass) {
+  // 2π f T = ln 2, so each tick closes 1 − e^{−ln 2} = half of the gap to the input.
+  const double T = 1e-3, f = std::log(2.0) / (2.0 * M_PI * T);
+  Wrench sensed;
+  sensed << 2, 0, 0, 0, 0, -4;
+  Wrench filtered = Wrench::Zero();
+  filter_wrench(sensed, f, T, filtered);
+  EXPECT_NEAR(filtered[0], 1.0, 1e-12);
+  EXPECT_NEAR(filtered[5], -2.0, 1e-12);
+  filter_wrench(sensed, f, T, filtered);
+  EXPECT_NEAR(filtered[0], 1.5, 1e-12);
+  EXPECT_NEAR(filtered[5], -3.0, 1e-12);
+  EXPECT_EQ(filtered[1], 0.0);
+}
+
+TEST(ControllerEquations, MasterFreeMotionTorqueIs313AsPrinted) {
+  VecN tau;
+  master_free_motion_torque(gains(vec({0.1, 0.2}), vec({0.5, 1.0})), vec({1, -2}), vec({4, 3}), tau);
+  // −K_a q̇ − K_p s_a = (−0.1·1 − 0.5·4, −0.2·(−2) − 1·3) = (−2.1, −2.6).
+  EXPECT_NEAR(tau[0], -2.1, 1e-15);
+  EXPECT_NEAR(tau[1], -2.6, 1e-15);
+}
+
+TEST(ControllerEquations, VirtualFreeMotionTorqueIs314WithTheDissipativeSign) {
+  const RobotGains g = gains(vec({0.2, 0.1}), vec({0.3, 0.5}));
+  const VecN dq = vec({1, 2}), s_a = vec({3, -1});
+  VecN tau0, B;
+  virtual_free_motion_torque(g, VirtualFeedback::Dissipative, dq, s_a, tau0, B);
+  // B = K_a + K_p = (0.5, 0.6); τ₀ = −K_p (s_a − q̇) = (−0.3·2, −0.5·(−3)) = (−0.6, 1.5);
+  // τ₀ − B q̇ = (−1.1, 0.3) = −(K_a q̇ + K_p s_a) = −(0.2 + 0.9, 0.2 − 0.5).
+  EXPECT_NEAR(B[0], 0.5, 1e-15);
+  EXPECT_NEAR(B[1], 0.6, 1e-15);
+  EXPECT_NEAR(tau0[0], -0.6, 1e-15);
+  EXPECT_NEAR(tau0[1], 1.5, 1e-15);
+  virtual_free_motion_torque(g, VirtualFeedback::AsPrinted, dq, s_a, tau0, B);  // +(K_a q̇ + K_p s_a)
+  const VecN tau = tau0 - B.cwiseProduct(dq);
+  EXPECT_NEAR(tau[0], 1.1, 1e-15);
+  EXPECT_NEAR(tau[1], -0.3, 1e-15);
+}
+
+TEST(ControllerEquations, MasterDynamicsCancellationIsCoriolisDampingAndGravity) {
+  using namespace test::planar;
+  RobotModel model = arm();
+  model.joints[0].damping = 0.05;
+  model.joints[1].damping = 0.02;
+  RobotData data(model);
+  const double a = 0.3, b = 0.8, da = 0.7, db = -1.3;
+  update_frames(model, data, vec({a, b}), vec({da, db}));
+  VecN tau_m = vec({1, -1});
+  master_dynamics_cancellation(model, data, 0.5, tau_m);
+  // Closed forms of the planar arm: h = −m₂ l₁ l_c2 sin b, C q̇ = (h ḃ² + 2h ȧ ḃ, −h ȧ²),
+  // g = ((m₁ l_c1 + m₂ l₁) g₀ cos a + m₂ l_c2 g₀ cos(a + b), m₂ l_c2 g₀ cos(a + b)), D q̇ = (0.05 ȧ, 0.02 ḃ);
+  // τ_m = (1, −1) + 0.5 (C q̇ + D q̇ + g).
+  const double h = -m2 * l1 * lc2 * std::sin(b), g2 = m2 * lc2 * g0 * std::cos(a + b);
+  const double y1 = h * db * db + 2 * h * da * db + 0.05 * da + (m1 * lc1 + m2 * l1) * g0 * std::cos(a) + g2;
+  const double y2 = -h * da * da + 0.02 * db + g2;
+  EXPECT_NEAR(tau_m[0], 1 + 0.5 * y1, 1e-12);
+  EXPECT_NEAR(tau_m[1], -1 + 0.5 * y2, 1e-12);
+}
+
+TEST(ControllerEquations, RigidForceErrorsIntegrateTheNormalForceDifference) {
+  const Eigen::Vector3d normal(0.6, 0, 0.8), force_v(-1.2, 0, -1.6);  // F_v = −2 n̂: the tool presses
+  Wrench wrench_h;
+  wrench_h << 1, 2, -3, 0.5, 0.5, 0.5;  // the hand's torque does not enter
+  ForceErrorIntegrals e;
+  Eigen::Vector3d force_h_normal;
+  rigid_force_errors(normal, wrench_h, force_v, 0.5, 0.1, force_h_normal, e);
+  // n̂ᵀF_h = 0.6 − 2.4 = −1.8, F_h,n = −1.8 n̂ = (−1.08, 0, −1.44); F_v − F_h,n = (−0.12, 0, −0.16);
+  // T w = 0.05: Δp_v = (−0.006, 0, −0.008), Δp_h its opposite.
+  EXPECT_TRUE(force_h_normal.isApprox(Eigen::Vector3d(-1.08, 0, -1.44), 1e-14));
+  EXPECT_TRUE(e.momentum_v.isApprox(Eigen::Vector3d(-0.006, 0, -0.008), 1e-14));
+  EXPECT_TRUE(e.momentum_h.isApprox(Eigen::Vector3d(0.006, 0, 0.008), 1e-14));
+  rigid_force_errors(normal, wrench_h, force_v, 0.5, 0.1, force_h_normal, e);  // integrals accumulate
+  EXPECT_TRUE(e.momentum_v.isApprox(Eigen::Vector3d(-0.012, 0, -0.016), 1e-14));
+}
+
+TEST(ControllerEquations, RigidForceTorquesAre320And321ForceTerms) {
+  // Two joints; linear rows of J_v: x = q₁, y = q₂, z = q₁ + q₂; of J_m: x = 2 q₁, z = q₂. The
+  // angular rows (7s) must not enter: forces only.
+  Mat6N J_v = Mat6N::Constant(6, 2, 7.0), J_m = Mat6N::Constant(6, 2, 7.0);
+  J_v.topRows<3>() << 1, 0, 0, 1, 1, 1;
+  J_m.topRows<3>() << 2, 0, 0, 0, 0, 1;
+  ForceErrorIntegrals e;
+  e.momentum_v = Eigen::Vector3d(0, 0, 0.5);
+  e.momentum_h = Eigen::Vector3d(0, 0, -1.0);
+  VecN tau_v = vec({1, 1}), tau_m = vec({1, 1});
+  rigid_force_torques(J_v, J_m, Eigen::Vector3d(0, 0, -3), Eigen::Vector3d(0.5, 0, -2), e, 2.0, 4.0, 0.5, tau_v, tau_m);
+  // τ_v += 0.5 J_vᵀ (F_h,n − 2 Δp_v) = 0.5 J_vᵀ (0, 0, −4) = (−2, −2)  → (−1, −1).
+  // τ_m −= 0.5 J_mᵀ (F_v − 4 Δp_h) = 0.5 J_mᵀ (0.5, 0, 2) = (0.5, 1) → (0.5, 0).
+  EXPECT_NEAR(tau_v[0], -1.0, 1e-15);
+  EXPECT_NEAR(tau_v[1], -1.0, 1e-15);
+  EXPECT_NEAR(tau_m[0], 0.5, 1e-15);
+  EXPECT_NEAR(tau_m[1], 0.0, 1e-15);
+}
+
+// Two constraint rows on three joints: A = [1 1 0; 0 1 1], A Aᵀ = [2 1; 1 2], (A Aᵀ)⁻¹ = [2 −1; −1 2] / 3.
+MatKN two_rows() {
+  MatKN A(2, 3);
+  A << 1, 1, 0, 0, 1, 1;
+  return A;
+}
+
+TEST(ControllerEquations, OperatorMultiplierIs324) {
+  Mat6N J_m = Mat6N::Zero(6, 3);
+  J_m.topRows<3>().setIdentity();
+  J_m(5, 2) = 1.0;  // joint 3 also turns about z, so the hand's torque about z reaches it
+  Wrench wrench_h;
+  wrench_h << 1, 2, 2, 0, 0, 1;
+  OperatorMultiplierScratch scratch;
+  VecK lambda_m;
+  operator_multiplier(two_rows(), J_m, wrench_h, scratch, lambda_m);
+  // τ_h = J_mᵀ w_h = (1, 2, 3); A τ_h = (3, 5); λ_m = [2 −1; −1 2] (3, 5) / 3 = (1/3, 7/3).
+  // (τ_h − Aᵀλ_m = (2/3, −2/3, 2/3) is orthogonal to A's rows: λ_m is the least-squares push.)
+  ASSERT_EQ(lambda_m.size(), 2);
+  EXPECT_NEAR(lambda_m[0], 1.0 / 3.0, 1e-15);
+  EXPECT_NEAR(lambda_m[1], 7.0 / 3.0, 1e-15);
+}
+
+TEST(ControllerEquations, TissueForceErrorIs326) {
+  ForceErrorIntegrals e;
+  VecK lambda_m(2), lambda_v(2);
+  lambda_m << 1, -2;
+  lambda_v << -0.5, 1;
+  tissue_force_error(lambda_m, lambda_v, 0.5, 0.1, e);
+  // E += T w (λ_m + λ_v) = 0.05 (0.5, −1) = (0.025, −0.05), twice: (0.05, −0.1).
+  EXPECT_NEAR(e.lambda[0], 0.025, 1e-15);
+  EXPECT_NEAR(e.lambda[1], -0.05, 1e-15);
+  tissue_force_error(lambda_m, lambda_v, 0.5, 0.1, e);
+  EXPECT_NEAR(e.lambda[0], 0.05, 1e-15);
+  EXPECT_NEAR(e.lambda[1], -0.1, 1e-15);
+}
+
+TEST(ControllerEquations, TissueForceTorquesAre327And328ForceTerms) {
+  ForceErrorIntegrals e;
+  e.lambda << 0.5, 0.5;
+  VecK lambda_m(2), lambda_v(2);
+  lambda_m << 1, 0;
+  lambda_v << -1, 0;
+  VecN tau_v = VecN::Zero(3), tau_m = VecN::Zero(3);
+  tissue_force_torques(two_rows(), lambda_m, lambda_v, e, 2.0, 4.0, 0.5, tau_v, tau_m);
+  // τ_v += 0.5 Aᵀ (λ_m + 2E) = 0.5 Aᵀ (2, 1) = 0.5 (2, 3, 1) = (1, 1.5, 0.5).
+  // τ_m += 0.5 Aᵀ (λ_v + 4E) = 0.5 Aᵀ (1, 2) = 0.5 (1, 3, 2) = (0.5, 1.5, 1).
+  EXPECT_TRUE(tau_v.isApprox(vec({1, 1.5, 0.5}), 1e-15));
+  EXPECT_TRUE(tau_m.isApprox(vec({0.5, 1.5, 1}), 1e-15));
+}
+
+TEST(ControllerEquations, TaskSpaceCouplingIsASpringOnTheTipAndOneOnTheDirection) {
+  const RobotModel model = test::planar::arm();
+  RobotData data(model);
+  data.tip = Eigen::Isometry3d::Identity();  // needle axis x₅ = x
+  data.tip.translation() = Eigen::Vector3d(0.1, 0, 0);
+  data.J = Mat6N::Zero(6, 2);
+  data.J.col(0) << 1, 0, 0, 0, 0, 1;  // joint 1 moves the tip along x and turns it about z
+  data.J.col(1) << 0, 2, 0, 0, 0, 1;  // joint 2 moves it along y at 2 m/rad and turns it about z
+  data.g = vec({1, -1});
+  TaskCoupling c;
+  c.stiffness_n_per_m = 300.0;
+  c.orientation_stiffness_nm_per_rad = 0.5;
+  Eigen::Vector3d force;
+  VecN tau;
+  task_space_coupling(c, data, Eigen::Vector3d(0.2, 0.1, 0), Eigen::Vector3d::UnitY(), force, tau);
+  // F = 300 (0.1, 0.1, 0) = (30, 30, 0); the direction spring 0.5 x × y = (0, 0, 0.5);
+  // τ = Jᵀ [F; M] + g = (30 + 0.5 + 1, 2·30 + 0.5 − 1) = (31.5, 59.5).
+  EXPECT_TRUE(force.isApprox(Eigen::Vector3d(30, 30, 0), 1e-14));
+  EXPECT_NEAR(tau[0], 31.5, 1e-12);
+  EXPECT_NEAR(tau[1], 59.5, 1e-12);
+}
+
+}  // namespace
+}  // namespace needle::haptics
