@@ -28,31 +28,6 @@ const fs::path& with_folder(const fs::path& file) {
   return file;
 }
 
-// A task name as part of a file name: letters, digits, '-' and '_' kept, anything else (a '/',
-// a '.', a NUL) made '_', at most 64 characters. Task names are checked when a task loads
-// (docs/TASKS.md); this holds whatever the name.
-std::string file_name_part(const std::string& name) {
-  std::string part;
-  for (char c : name.substr(0, 64)) part += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
-  return part.empty() ? "task" : part;
-}
-
-// Recordings live beside the database, so a session's stays where the review finds it when the
-// run's output folder is reused: <db folder>/recordings/<task>_<UTC start>_<pid>[_<n>].nrec, the
-// number added when a session of the same task started in the same second in this process.
-fs::path new_recording_path(const fs::path& db, const std::string& task_name) {
-  const std::string task = file_name_part(task_name);
-  const std::time_t now = std::time(nullptr);
-  char stamp[32];
-  std::strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", std::gmtime(&now));
-  const fs::path dir = fs::absolute(db).parent_path() / "recordings";
-  fs::create_directories(dir);
-  const std::string stem = task + "_" + stamp + "_" + std::to_string(::getpid());
-  fs::path path = dir / (stem + ".nrec");
-  for (int n = 2; fs::exists(path); ++n) path = dir / (stem + "_" + std::to_string(n) + ".nrec");
-  return path;
-}
-
 // A progress bar on a terminal; on a pipe (CI, logs), a line every quarter.
 class ProgressBar {
  public:
@@ -79,7 +54,29 @@ TaskSessionOptions with_task_settings(TaskSessionOptions options, const engine::
   return options;
 }
 
+// A task name as part of a file name: letters, digits, '-' and '_' kept, anything else (a '/',
+// a '.', a NUL) made '_', at most training::kMaxNameBytes characters. Task names are checked when
+// a task loads (docs/TASKS.md); this holds whatever the name.
+std::string file_name_part(const std::string& name) {
+  std::string part;
+  for (char c : name.substr(0, training::kMaxNameBytes)) part += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
+  return part.empty() ? "task" : part;
+}
+
 }  // namespace
+
+fs::path new_recording_path(const fs::path& db, const std::string& task_name) {
+  const std::string task = file_name_part(task_name);
+  const std::time_t now = std::time(nullptr);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", std::gmtime(&now));
+  const fs::path dir = fs::absolute(db).parent_path() / "recordings";
+  fs::create_directories(dir);
+  const std::string stem = task + "_" + stamp + "_" + std::to_string(::getpid());
+  fs::path path = dir / (stem + ".nrec");
+  for (int n = 2; fs::exists(path); ++n) path = dir / (stem + "_" + std::to_string(n) + ".nrec");
+  return path;
+}
 
 TaskSession::TaskSession(TaskSessionOptions options)
     : options_(std::move(options)),

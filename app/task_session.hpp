@@ -90,6 +90,12 @@ class TaskSession {
   std::optional<training::SessionResult> result_;
 };
 
+// Where a new session of task `task_name` is recorded: <db folder>/recordings/<name>_<UTC start>_
+// <pid>[_<n>].nrec, the name made safe for a file name whatever it holds (no '/', '.', NUL; at most
+// training::kMaxNameBytes characters), the number added when a session of the same task started in
+// the same second in this process. Makes the folder.
+std::filesystem::path new_recording_path(const std::filesystem::path& db, const std::string& task_name);
+
 // Headless: runs the session through, writing OUT/step_<n>_<id>.png as each step ends,
 // OUT/final.png and OUT/score_panel.png. Returns 0.
 int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa);

@@ -1,6 +1,6 @@
 // Strict reading of a JSON document with errors that point at the culprit:
 // "FILE: /json/pointer: what is wrong", thrown as `Error`. Unknown keys are errors, numbers
-// must be finite, strings non-empty. Header-only: scene, scenario, task and tissue files all
+// must be finite, strings non-empty and without NUL. Header-only: scene, scenario, task and tissue files all
 // read through it, from libraries that do not link each other.
 #pragma once
 
@@ -120,10 +120,13 @@ class StrictJsonReader {
     return v;
   }
 
+  // A NUL ("\u0000") is refused: C strings, SQLite text and file names would end there.
   std::string string(const json& value, const std::string& at) const {
     if (!value.is_string() || value.get<std::string>().empty())
       fail(at, "expected a non-empty string, got " + std::string(value.type_name()));
-    return value.get<std::string>();
+    std::string text = value.get<std::string>();
+    if (text.find('\0') != std::string::npos) fail(at, "contains a NUL character");
+    return text;
   }
 
   // A path relative to `folder` that names an existing regular file, made canonical.

@@ -3,8 +3,6 @@
 // controller); haptics/tissue/kinematic_insertion.hpp does the run, this file parses and prints.
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "arg_list.hpp"
@@ -12,6 +10,7 @@
 #include "command.hpp"
 #include "haptics/sim/scenario.hpp"
 #include "haptics/tissue/kinematic_insertion.hpp"
+#include "io/file_write.hpp"
 #include "ui/line_chart.hpp"
 
 namespace needle::cli {
@@ -27,14 +26,6 @@ double parse_positive(const std::string& text, const std::string& flag) {
   const double v = parse_number(text, flag);
   if (!(v > 0.0)) throw UsageError(flag + ": must be > 0, got '" + text + "'");
   return v;
-}
-
-// An output file's folder must exist before the run, not be found missing after it.
-void check_output_folder(const std::optional<std::string>& file, const std::string& flag) {
-  if (!file) return;
-  const std::filesystem::path folder = std::filesystem::absolute(*file).parent_path();
-  if (!std::filesystem::is_directory(folder))
-    throw UsageError(flag + ": folder " + folder.string() + " does not exist");
 }
 
 std::string layer_name(const haptics::TissueModel& model, int layer) {
@@ -89,13 +80,11 @@ int run_bench_insertion(ArgList& args) {
   const double depth = parse_positive(args.required("--depth"), "--depth");
   const double speed = parse_positive(args.required("--speed"), "--speed");
   const double hold = parse_number(args.value("--hold").value_or("0"), "--hold");
-  const auto json_path = args.value("--json");
-  const auto plot_path = args.value("--plot");
+  const auto json_path = output_file(args, "--json");
+  const auto plot_path = output_file(args, "--plot");
   args.finish();
   if (hold < 0.0) throw UsageError("--hold: must be >= 0");
   if (dir.norm() < 1e-12) throw UsageError("--dir: must not be the zero vector");
-  check_output_folder(json_path, "--json");
-  check_output_folder(plot_path, "--plot");
 
   const haptics::Scenario scenario = haptics::load_scenario(scenario_path);
   if (scenario.tissue.empty()) throw UsageError("--scenario: " + scenario_path + " has no tissue");
@@ -119,11 +108,7 @@ int run_bench_insertion(ArgList& args) {
     std::printf("hard stop: %s at depth %.4g m (a rigid layer: the drive stops there)\n",
                 layer_name(scenario.tissue, run.hard_stop->layer).c_str(), run.hard_stop->depth_m);
   std::printf("tissue_work_J %.6g, tick_us_median %.4g\n", run.tissue_work_J, run.tick_us_median);
-  if (json_path) {
-    std::ofstream out(*json_path);
-    out << run_json(scenario.tissue, run, boundaries).dump(1) << "\n";
-    if (!out) throw std::runtime_error("cannot write " + *json_path);
-  }
+  if (json_path) io::write_file(*json_path, run_json(scenario.tissue, run, boundaries).dump(1) + "\n");
   if (plot_path) {
     char title[160];
     std::snprintf(title, sizeof title, "%s: %.3g mm/s in, %.3g s held, out", scenario.name.c_str(), speed * 1e3, hold);

@@ -18,10 +18,9 @@ int run_bench_tick(ArgList& args) {
   const std::string scenario_path =
       args.value("--scenario").value_or((asset_dir() / "scenarios" / "nonholonomic_needle.json").string());
   const auto ticks_text = args.value("--ticks");
-  const auto json = args.value("--json");
+  const auto json = output_file(args, "--json");
   args.finish();
-  const long ticks = ticks_text ? static_cast<long>(parse_number(*ticks_text, "--ticks")) : 1000000;
-  if (ticks < 1) throw UsageError("--ticks must be at least 1");
+  const long ticks = ticks_text ? static_cast<long>(parse_whole(*ticks_text, "--ticks", 1, 100000000)) : 1000000;
 
   BenchTable table({"virtual_substeps", "ticks", "median_us", "p99_us", "max_us", "allocations_per_tick"});
   haptics::Scenario scenario = haptics::load_scenario(scenario_path);

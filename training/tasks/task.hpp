@@ -93,6 +93,11 @@ struct ScoringSpec {
   ScoreReferences references;
 };
 
+// A task's name: 1 to kMaxNameBytes letters, digits, '_' or '-' (it becomes part of file names);
+// its title at most kMaxTitleBytes.
+inline constexpr size_t kMaxNameBytes = 64;
+inline constexpr size_t kMaxTitleBytes = 200;
+
 struct Task {
   std::string text;  // the file's text as it was read (a recording keeps it for the replay)
   std::string name;
