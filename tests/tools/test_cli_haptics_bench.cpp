@@ -18,13 +18,12 @@ nlohmann::json rows_of(const std::string& command, const std::string& json_path)
   return nlohmann::json::parse(in);
 }
 
-TEST(CliHapticsBench, TickReportsMedianP99AndNoAllocations) {
+TEST(CliHapticsBench, TickReportsMedianAndP99) {
   const auto rows = rows_of("bench tick --ticks 2000", test::output_dir().string() + "/bench_tick.json");
   ASSERT_EQ(rows.size(), 3u);
   for (const auto& row : rows) {
     EXPECT_GT(row["median_us"].get<double>(), 0.0);
     EXPECT_GE(row["p99_us"].get<double>(), row["median_us"].get<double>());
-    EXPECT_EQ(row["allocations_per_tick"].get<double>(), 0.0);
   }
 }
 
