@@ -61,7 +61,8 @@ class StrictJsonReader {
   // Checks `value` is an object with no keys but `allowed`.
   void object(const json& value, const std::string& at, std::span<const char* const> allowed) const {
     if (!value.is_object()) fail(at, "expected an object, got " + std::string(value.type_name()));
-    for (const auto& [key, _] : value.items()) {
+    for (const auto& item : value.items()) {
+      const std::string& key = item.key();  // not a structured binding: clang before 16 cannot capture one
       if (std::none_of(allowed.begin(), allowed.end(), [&](const char* k) { return key == k; })) {
         std::string keys;
         for (const char* k : allowed) keys += (keys.empty() ? "" : ", ") + std::string(k);

@@ -54,8 +54,9 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
                                                                                "friction_N_per_m", "static_friction_N_per_m"};
     for (const char* key : required) member(j, "", key);
     const LayerMechanics m = mechanics(j, "", &references);
-    for (const auto& [key, text] : references.items()) {
-      string(text, "/references/" + key);
+    for (const auto& item : references.items()) {
+      const std::string& key = item.key();  // not a structured binding: clang before 16 cannot capture one
+      string(item.value(), "/references/" + key);
       if (std::none_of(sources_.begin(), sources_.end(), [&](const std::string& s) { return s.find(key) != std::string::npos; }))
         fail("/references/" + key, "not cited by any parameter's source");
     }
