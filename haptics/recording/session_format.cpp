@@ -179,8 +179,8 @@ RecordingReader::RecordingReader(std::string path) : path_(std::move(path)) {
     record_bytes_ = get<uint32_t>(buffer_.data() + 20);
     fixed = 24;
   } else {
+    std::vector<uint8_t> head = buffer_;  // the magic and the version, as read
     if (!read_exactly(20)) fail("header", "truncated");  // record_bytes, rate, time
-    std::vector<uint8_t> head(kMagic, kMagic + 12);
     head.insert(head.end(), buffer_.begin(), buffer_.end());
     buffer_ = std::move(head);
     header_.payload_version = 1;
