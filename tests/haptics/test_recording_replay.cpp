@@ -42,7 +42,7 @@ std::vector<TickSample> run_ticks(HapticDevice& device, int ticks, SessionRecord
   tick.set_step(&step);
   std::vector<TickSample> kept;
   for (int k = 0; k < ticks; ++k) {
-    tick.run(TickTiming{static_cast<uint64_t>(k), k * 1000000, 1000000, false}, 1.0 / kRate);
+    tick.run(TickTiming{static_cast<uint64_t>(k), int64_t(k) * 1000000, 1000000, false}, 1.0 / kRate);
     kept.push_back(tick.last_sample());
     if (recorder != nullptr && k % 500 == 499) recorder->drain();  // as the recorder thread would
   }
