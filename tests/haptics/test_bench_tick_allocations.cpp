@@ -19,10 +19,22 @@ long allocations_during(const std::function<void()>& work) {
   return needle::test::allocation_counter::stop();
 }
 
+// Keeps the compiler from proving `p` unused and removing its allocation (clang removes a malloc
+// whose memory nothing reads).
+void keep(const void* p) { asm volatile("" : : "g"(p) : "memory"); }
+
 TEST(BenchTickAllocations, CounterSeesAllocations) {
   // The hook works for operator new and for Eigen's own heap storage.
-  EXPECT_GE(allocations_during([] { std::vector<double> v(100); (void)v; }), 1);
-  EXPECT_GE(allocations_during([] { Eigen::VectorXd v(100); (void)v; }), 1);
+  EXPECT_GE(allocations_during([] {
+              std::vector<double> v(100);
+              keep(v.data());
+            }),
+            1);
+  EXPECT_GE(allocations_during([] {
+              Eigen::VectorXd v(100);
+              keep(v.data());
+            }),
+            1);
 }
 
 // The ticks `needle-sim bench tick` times, in each of its rows (1, 2 and 4 virtual sub-steps).
