@@ -3,8 +3,6 @@
 // report and review read a database they cannot write.
 #include <gtest/gtest.h>
 
-#include <sys/mount.h>
-
 #include <chrono>
 #include <fstream>
 #include <iterator>
@@ -99,23 +97,10 @@ TEST(CliWrites, ADamagedDatabaseIsRefusedBeforeTheRunAndByTheReport) {
 TEST(CliWrites, ReportReadsADatabaseInAFolderItCannotWrite) {
   const fs::path dir = process_folder(test_output_dir("cli_writes") / "read_only");
   ASSERT_EQ(run_needle_sim(run_args(dir / "run", dir / "sessions.db")).exit_code, 0);
-  // A read-only mount when this process may mount (root, as in CI), else the folder's permissions.
-  const fs::path folder = dir / "ro";
-  fs::create_directories(folder);
-  struct ReadOnlyFolder {
-    fs::path dir;
-    bool mounted = false;
-    ~ReadOnlyFolder() {
-      if (mounted) ::umount2(dir.c_str(), MNT_DETACH);
-      fs::permissions(dir, fs::perms::owner_all);
-    }
-  } guard{folder, ::mount("tmpfs", folder.c_str(), "tmpfs", 0, "size=8m") == 0};
-  fs::copy_file(dir / "sessions.db", folder / "sessions.db");
-  if (guard.mounted)
-    ASSERT_EQ(::mount(nullptr, folder.c_str(), nullptr, MS_REMOUNT | MS_RDONLY, nullptr), 0);
-  else
-    fs::permissions(folder, fs::perms::owner_read | fs::perms::owner_exec);
-  const ProcessResult r = run_needle_sim("report --session 1 --db " + quoted(folder / "sessions.db") + " --out " + quoted(dir / "report"));
+  const ReadOnlyFolder folder(dir / "ro");
+  fs::copy_file(dir / "sessions.db", folder.dir() / "sessions.db");
+  ASSERT_EQ(folder.make_read_only(), "");
+  const ProcessResult r = run_needle_sim("report --session 1 --db " + quoted(folder.dir() / "sessions.db") + " --out " + quoted(dir / "report"));
   EXPECT_EQ(r.exit_code, 0) << r.output;  // the recording is found by its absolute path
   EXPECT_TRUE(fs::is_regular_file(dir / "report" / "session_1.json")) << r.output;
   EXPECT_TRUE(fs::is_regular_file(dir / "report" / "plot_force.png")) << r.output;

@@ -2,7 +2,6 @@
 // writer.
 #include <gtest/gtest.h>
 #include <sqlite3.h>
-#include <sys/mount.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -16,6 +15,7 @@
 
 #include "training/scoring/metric_fields.hpp"
 #include "training/sessions/session_store.hpp"
+#include "tests/support/full_disk.hpp"
 #include "tests/support/test_paths.hpp"
 
 namespace needle::training {
@@ -385,26 +385,10 @@ TEST(SessionStore, ReadOnlyCreatesNothingAndNeedsNoWriteAccess) {
   EXPECT_NE(open_error(file, true), "");
   EXPECT_FALSE(fs::exists(file));
   fill(file, 2);
-  // A read-only folder: a read-only mount when this process may mount (root, as in CI), else the
-  // folder's permissions (which root would ignore). Undone however the test ends.
-  const fs::path dir = file.parent_path() / "read_only";
-  ::umount2(dir.c_str(), MNT_DETACH);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  struct ReadOnlyFolder {
-    fs::path dir;
-    bool mounted = false;
-    ~ReadOnlyFolder() {
-      if (mounted) ::umount2(dir.c_str(), MNT_DETACH);
-      fs::permissions(dir, fs::perms::owner_all);
-    }
-  } folder{dir, ::mount("tmpfs", dir.c_str(), "tmpfs", 0, "size=4m") == 0};
+  const test::ReadOnlyFolder folder(file.parent_path() / "read_only");
+  const fs::path dir = folder.dir();
   fs::copy_file(file, dir / "sessions.db");
-  if (folder.mounted) {
-    ASSERT_EQ(::mount(nullptr, dir.c_str(), nullptr, MS_REMOUNT | MS_RDONLY, nullptr), 0) << std::strerror(errno);
-  } else {
-    fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec);
-  }
+  ASSERT_EQ(folder.make_read_only(), "");
   EXPECT_NE(open_error(dir / "sessions.db", false), "") << "the folder is not read-only: the test shows nothing";
   SessionStore store(dir / "sessions.db", kReadOnly);
   ASSERT_EQ(store.sessions().size(), 2u);
