@@ -1,30 +1,21 @@
 #include "app/session_window.hpp"
 
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include <chrono>
 #include <cstdio>
+#include <memory>
 
-#include "app/window_frames.hpp"
+#include "app/desk_input.hpp"
 #include "engine/gpu_device.hpp"
-#include "engine/gpu_scene.hpp"
 #include "engine/render_target.hpp"
 #include "engine/scripted_needle.hpp"
-#include "engine/ui_pass.hpp"
-#include "ui/status_panel.hpp"
 
 namespace needle::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-// What the window shows each frame: where the needle is, and a panel beside the status panel;
-// `input` takes the frame's cursor and scroll when the tool follows them.
-struct Show {
-  std::function<std::optional<engine::NeedleLoad>(double t_s)> needle;
-  std::function<void()> panel;
-  std::function<void(engine::Window&)> input;
-};
 
 // The scripted needle's target: the first deformable tissue's bounding sphere, if any.
 std::optional<engine::ScriptedSphere> script_target(const engine::GpuScene& scene) {
@@ -45,45 +36,108 @@ Show scripted_needle_show(const engine::GpuScene& scene) {
             if (!script) return std::nullopt;
             return engine::scripted_needle(*script, t);
           },
+          {},
           {}};
 }
 
 // The moment of the script a headless scene run shows: the needle pivoted in the tissue.
 constexpr double kHeadlessMoment_s = 7.0;
 
-int run_window(const engine::Scene& scene, const WindowOptions& options, const std::function<Show(engine::GpuScene&)>& make_show) {
-  GpuWindow vw("needle-sim", options.size);
-  engine::SceneRenderer renderer(vw.device, vw.target, {options.msaa.value_or(vw.default_msaa_samples())});
-  engine::GpuScene gpu_scene(renderer, scene);
-  const Show show = make_show(gpu_scene);
-  std::optional<engine::UiPass> ui_pass;
-  if (options.hud) ui_pass.emplace(renderer, &vw.window);
-  ui::FrameClock clock;
-  WindowFrames frames(options.frames, options.screenshot);
-  const auto start = std::chrono::steady_clock::now();
-
-  while (!vw.window.should_close()) {
-    vw.window.poll_events();
-    if (show.input) show.input(vw.window);
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const std::optional<engine::NeedleLoad> needle = show.needle(t);
-    engine::FrameParams params = gpu_scene.frame_params(needle ? &*needle : nullptr);
-    const float dt = clock.tick();
-    if (ui_pass) {
-      ui_pass->begin_frame(vw.target.extent(), dt);
-      ui::draw_status_panel({vw.device.device_description(), scene.assets.empty() ? "" : scene.assets[0].name,
-                             renderer.msaa_samples(), clock.mean_frame_ms()});
-      if (show.panel) show.panel();
-      params.overlay = ui_pass->end_frame();
-    }
-    frames.draw(vw.window, renderer, vw.target, params);
-  }
-  renderer.wait_idle();
-  std::printf("presented %ld frames\n", frames.drawn());
-  return 0;
-}
+bool pointer_on_panel() { return ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse; }
 
 }  // namespace
+
+SessionWindow::SessionWindow(const WindowOptions& options)
+    : options_(options),
+      vw_("needle-sim", options.size),
+      renderer_(vw_.device, vw_.target, {options.msaa.value_or(vw_.default_msaa_samples())}),
+      frames_(options.frames, options.screenshot) {
+  if (options.hud) ui_pass_.emplace(renderer_, &vw_.window);
+}
+
+SessionWindow::~SessionWindow() { renderer_.wait_idle(); }
+
+void SessionWindow::run(engine::GpuScene& scene, const Show& show, const std::function<bool()>& done) {
+  try {
+    frames(scene, show, done);
+  } catch (...) {
+    renderer_.wait_idle();  // the caller's scene may go with the exception: the GPU is done with it first
+    throw;
+  }
+}
+
+void SessionWindow::frames(engine::GpuScene& scene, const Show& show, const std::function<bool()>& done) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto& assets = scene.scene().assets;
+  while (!vw_.window.should_close()) {
+    vw_.window.poll_events();
+    if (show.input) show.input(vw_.window);
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::optional<engine::NeedleLoad> needle = show.needle ? show.needle(t) : std::nullopt;
+    engine::FrameParams params = scene.frame_params(needle ? &*needle : nullptr);
+    const float dt = clock_.tick();
+    if (ui_pass_) {
+      ui_pass_->begin_frame(vw_.target.extent(), dt);
+      ui::draw_status_panel({vw_.device.device_description(), assets.empty() ? "" : assets[0].name, renderer_.msaa_samples(),
+                             clock_.mean_frame_ms()});
+      if (show.panel) show.panel();
+      params.overlay = ui_pass_->end_frame();
+    }
+    frames_.draw(vw_.window, renderer_, vw_.target, params);
+    if (done && done()) break;
+  }
+  renderer_.wait_idle();
+}
+
+TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices) {
+  std::optional<DeskInput> desk;
+  if (haptics::DeskDevice* device = session.desk()) desk.emplace(*device);
+  if (const std::optional<Eigen::Vector3d> start = session.tool_start(); desk && start)
+    desk->place_cursor(window.window(), session.scene().camera, glm::vec3(start->x(), start->y(), start->z()));
+  engine::GpuScene scene(window.renderer(), session.scene());
+  bool started = false;
+  std::optional<TaskEnd> end;
+  const char* controls = desk ? DeskInput::help(session.desk()->capabilities().name) : nullptr;
+  std::vector<ui::Choice> choices;
+  if (offer_choices) {
+    choices = {{"Retry (R)", [&end] { end = TaskEnd::kRetry; }},
+               {"Next task (N)", [&end] { end = TaskEnd::kNextTask; }},
+               {"Back (Esc)", [&end] { end = TaskEnd::kBack; }}};
+  }
+  const std::vector<ui::Choice> stop = {{"Stop (Esc)", [&end] { end = TaskEnd::kBack; }}};
+  window.run(
+      scene,
+      Show{[&](double) -> std::optional<engine::NeedleLoad> {
+             // The loop starts at the first frame, after its input: a desk device's first reading
+             // is where the trainee's input put it, not the device's centre.
+             if (!started) {
+               std::printf("%s\n", session.start_realtime().c_str());
+               std::fflush(stdout);
+             }
+             started = true;
+             if (session.over()) session.finish();
+             return session.needle();
+           },
+           [&] { session.draw_panel(std::nullopt, controls, session.finished() ? choices : offer_choices ? stop : std::vector<ui::Choice>{}); },
+           [&](engine::Window& w) {
+             const std::vector<engine::Window::KeyPress> keys = w.take_key_presses();
+             const bool typing = ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput;
+             for (const engine::Window::KeyPress& press : keys) {
+               if (!offer_choices || typing) break;
+               if (press.key == GLFW_KEY_ESCAPE) end = TaskEnd::kBack;
+               if (session.finished() && press.key == GLFW_KEY_R) end = TaskEnd::kRetry;
+               if (session.finished() && press.key == GLFW_KEY_N) end = TaskEnd::kNextTask;
+             }
+             if (!desk || session.finished()) {
+               w.take_scroll();
+               return;
+             }
+             desk->frame(w, keys, pointer_on_panel());
+             if (desk->take_fault_reset()) session.reset_fault();
+           }},
+      [&end] { return end.has_value(); });
+  return end.value_or(TaskEnd::kWindowClosed);
+}
 
 int run_scene_headless(const engine::Scene& scene, const WindowOptions& options, const fs::path& out_dir) {
   engine::GpuDevice device;
@@ -100,31 +154,20 @@ int run_scene_headless(const engine::Scene& scene, const WindowOptions& options,
 }
 
 int run_task_window(const TaskSessionOptions& task, const WindowOptions& options) {
+  if (task.rig.device.rfind("gamepad", 0) == 0) gamepad_id(task.rig.device);  // before a session is opened without it
   TaskSession session(task);
-  bool started = false;
-  return run_window(session.scene(), options, [&](engine::GpuScene&) {
-    return Show{[&session, &started](double) -> std::optional<engine::NeedleLoad> {
-                  // The loop starts at the first frame, after its input: the mouse's first
-                  // reading is the cursor, not the device's centre.
-                  if (!started) std::printf("%s\n", session.start_realtime().c_str());
-                  started = true;
-                  if (session.over()) session.finish();
-                  return session.needle();
-                },
-                [&session] { session.draw_panel(); },
-                [&session](engine::Window& window) {
-                  haptics::MouseDevice* mouse = session.mouse();
-                  if (mouse == nullptr || (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse)) return;
-                  double x = 0.0, y = 0.0;
-                  window.cursor_normalized(x, y);
-                  mouse->set_pointer(x, y);
-                  mouse->add_depth_steps(window.take_scroll());
-                }};
-  });
+  SessionWindow window(options);
+  run_task(window, session, false);
+  std::printf("presented %ld frames\n", window.frames_drawn());
+  return 0;
 }
 
 int run_scene_window(const engine::Scene& scene, const WindowOptions& options) {
-  return run_window(scene, options, scripted_needle_show);
+  SessionWindow window(options);
+  engine::GpuScene gpu_scene(window.renderer(), scene);
+  window.run(gpu_scene, scripted_needle_show(gpu_scene));
+  std::printf("presented %ld frames\n", window.frames_drawn());
+  return 0;
 }
 
 }  // namespace needle::app

@@ -185,13 +185,18 @@ const training::SessionResult* TaskSession::finish() {
   std::printf("score %.0f / 100: %s\n", result_->score.total, result_->score.passed ? "passed" : "not passed");
   for (const std::string& why : result_->score.reasons_failed) std::printf("  %s\n", why.c_str());
   std::printf("wrote %s\n", score_file.c_str());
+  std::fflush(stdout);  // a window's run goes on: whoever reads the output sees the score now
   if (!store_error.empty())
     throw std::runtime_error("the session could not be stored: " + store_error + "; its score is in " +
                              score_file.string() + " and its recording is " + recording_path_.string());
   return &*result_;
 }
 
-void TaskSession::draw_panel(std::optional<size_t> step) const {
+void TaskSession::reset_fault() {
+  if (loop_->running()) loop_->submit(haptics::LoopCommand::reset_fault());
+}
+
+void TaskSession::draw_panel(std::optional<size_t> step, const char* controls, const std::vector<ui::Choice>& choices) {
   feed_.read([&](const training::SessionScorer& scorer, const haptics::ToolSnapshot& last) {
     const size_t shown = std::min(step.value_or(scorer.progress().current_step()), task_.steps.size() - 1);
     ui::TraineeView view{&task_, &scorer.progress()};
@@ -203,7 +208,9 @@ void TaskSession::draw_panel(std::optional<size_t> step) const {
     const haptics::LoopStatsSummary stats = loop_->stats();
     view.loop_rate_hz = loop_->running() ? stats.rate_hz : rig_->rate_hz();
     if (last.fault != 0) view.fault = haptics::fault_cause_name(static_cast<haptics::FaultCause>(last.fault));
-    if (loop_->running()) view.reset_fault = [this] { loop_->submit(haptics::LoopCommand::reset_fault()); };
+    if (loop_->running()) view.reset_fault = [this] { reset_fault(); };
+    view.controls = controls;
+    view.choices = choices;
     if (result_) view.result = &*result_;
     ui::draw_trainee_panel(view);
     if (!result_) ui::draw_guidance({&task_, shown, training::vec3(last.needle_tip_m), scene_.camera});

@@ -3,6 +3,7 @@
 // controller); haptics/tissue/kinematic_insertion.hpp does the run, this file parses and prints.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "arg_list.hpp"

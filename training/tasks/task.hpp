@@ -102,6 +102,7 @@ struct Task {
   std::string text;  // the file's text as it was read (a recording keeps it for the replay)
   std::string name;
   std::string title;
+  std::string description;         // one line for the start screen; may be empty
   std::string source;              // the file it came from
   std::filesystem::path scene;     // scene file (docs/SCENE_FORMAT.md), resolved
   std::filesystem::path scenario;  // haptics scenario (assets/scenarios), resolved; may be empty
