@@ -60,6 +60,12 @@ void record(const std::string& path, uint64_t ticks, bool ran_to_end = true) {
   ASSERT_EQ(recorder.error(), "");
 }
 
+// A recording of `ticks` ticks as record() makes it, and its bytes.
+std::vector<uint8_t> recorded(const std::string& path, uint64_t ticks) {
+  record(path, ticks);
+  return file_bytes(path);
+}
+
 // Byte offset of block `k` in a recording made by record().
 uint64_t block_offset(int k) {
   return encode_header(kHeader).size() + uint64_t(k) * (kBlockHeaderBytes + 256 * session_record_bytes());
@@ -98,8 +104,7 @@ TEST(RecordingIntegrity, AClosedRecordingReadsWholeWithItsEndMark) {
 
 TEST(RecordingIntegrity, DamageToABlockIsAnErrorNamingTheFileAndTheByteOffset) {
   const std::string path = temp_path("damaged.nrec");
-  record(path, 1000);
-  const std::vector<uint8_t> good = file_bytes(path);
+  const std::vector<uint8_t> good = recorded(path, 1000);
   const uint64_t block = block_offset(1);
   const uint64_t record_300 = block + kBlockHeaderBytes + 44 * session_record_bytes();  // tick 300 is block 1's 45th
   const std::string expected = path + ": block at byte " + std::to_string(block) + ": records checksum mismatch (damaged)";
@@ -158,8 +163,7 @@ TEST(RecordingIntegrity, DamageToABlockIsAnErrorNamingTheFileAndTheByteOffset) {
 
 TEST(RecordingIntegrity, ABlockMissingOrRepeatedIsAnError) {
   const std::string path = temp_path("missing_block.nrec");
-  record(path, 1000);
-  const std::vector<uint8_t> good = file_bytes(path);
+  const std::vector<uint8_t> good = recorded(path, 1000);
   std::vector<uint8_t> bad = good;
   bad.erase(bad.begin() + long(block_offset(1)), bad.begin() + long(block_offset(2)));
   write_bytes(path, bad);
@@ -175,8 +179,7 @@ TEST(RecordingIntegrity, ABlockMissingOrRepeatedIsAnError) {
 
 TEST(RecordingIntegrity, EditingTheHeaderIsAnError) {
   const std::string path = temp_path("header.nrec");
-  record(path, 10);
-  const std::vector<uint8_t> good = file_bytes(path);
+  const std::vector<uint8_t> good = recorded(path, 10);
   std::vector<uint8_t> bad = good;
   const double rate = 500.0;  // the rate, edited as a user would to replay at another speed
   std::memcpy(&bad[24], &rate, 8);
@@ -191,8 +194,7 @@ TEST(RecordingIntegrity, EditingTheHeaderIsAnError) {
 
 TEST(RecordingIntegrity, ACutFileReadsUpToItsLastWholeBlockAndSaysWhere) {
   const std::string path = temp_path("cut.nrec");
-  record(path, 1000);
-  const std::vector<uint8_t> good = file_bytes(path);
+  const std::vector<uint8_t> good = recorded(path, 1000);
   const uint64_t cut_at = block_offset(2) + kBlockHeaderBytes + 100;  // in block 2's first record
   write_bytes(path, {good.begin(), good.begin() + long(cut_at)});
   Session s = read_session(path);
