@@ -18,7 +18,7 @@ suites+='|SimHolonomic|SimNonholonomic|TissueInsertion|RealtimeNoAlloc'
 suites+='|SessionLimits|SessionReviewTest|SessionStoreFailure|ShippedTasks/ScriptedSessions|ReviewPanels'
 suites+='|CliBench[A-Za-z]*|CliHapticsBench|CliHapticsSimulate|CliRecordings|CliReport|CliRunDevices|CliRunTask|CliWrites|Tasks/RunReplay'
 tests='BenchTickAllocations\.NonholonomicContactTickAllocatesNothing|RecordingReplay\.ControllerReplayIsBitForBit'
-tests+='|SimComponents\.DeviceEnergyBalancesTheWorkDoneOnIt'
+tests+='|SimComponents\.DeviceEnergyBalancesTheWorkDoneOnIt|CliStartScreen\.(ATraineeStarts|TheKeyboards|TheScorePanels)[A-Za-z]*'
 skip=${SANITIZE_SKIP-"^((ShaderBuild|Layout|$suites)\\.|($tests)\$)"}
 
 phase_start=$SECONDS
