@@ -16,7 +16,7 @@ std::filesystem::path default_db() {
 std::unique_ptr<training::SessionStore> open_existing_db(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file))
     throw std::runtime_error(file.string() + ": no session database (needle-sim run makes one; --db names another)");
-  return std::make_unique<training::SessionStore>(file);
+  return std::make_unique<training::SessionStore>(file, training::kReadOnly);
 }
 
 }  // namespace needle::app

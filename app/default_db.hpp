@@ -11,8 +11,8 @@ namespace needle::app {
 // $XDG_DATA_HOME/needle-sim/sessions.db, else ~/.local/share/needle-sim/sessions.db.
 std::filesystem::path default_db();
 
-// Opens a database that must already exist (review and report never create one); a runtime
-// error naming the file when it does not.
+// Opens a database that must already exist, read-only (review and report never create, migrate or
+// write one); a runtime error naming the file when it does not exist or is damaged.
 std::unique_ptr<training::SessionStore> open_existing_db(const std::filesystem::path& file);
 
 }  // namespace needle::app

@@ -57,6 +57,7 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
     std::fprintf(stderr, "needle-sim report: %s\n", review.recording_problem.c_str());
     return 1;
   }
+  for (const std::string& note : review.recording_notes) std::printf("note: %s\n", note.c_str());
   const char* const names[] = {"plot_force.png", "plot_lateral_load.png", "plot_depth.png", "plot_tracking_error.png"};
   const std::vector<const training::Plot*> plots = review.plots.all();
   for (size_t k = 0; k < plots.size(); ++k) {

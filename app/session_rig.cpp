@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "haptics/control/gains.hpp"
@@ -20,7 +21,9 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 constexpr const char* kReplayPrefix = "replay:";
-constexpr int kContextVersion = 1;
+// 1: task (its file), device, scenario, coupling, safety_limits; 2: and task_text, the task file's
+// text as the session ran it.
+constexpr int kContextVersion = 2;
 
 bool is_replay(const std::string& device) { return device.rfind(kReplayPrefix, 0) == 0; }
 
@@ -94,11 +97,17 @@ haptics::SafetyLimits limits_from(const json& j) {
   return limits;
 }
 
+std::string replay_path(const std::string& device) { return device.substr(std::string(kReplayPrefix).size()); }
+
 // The recording's context, checked: a recording from another program, an older build or a
 // damaged file is an error naming the file, never a replay of something else.
 json read_context(const std::string& path, const haptics::SessionHeader& header) {
   auto fail = [&path](const std::string& what) { return haptics::RecordingError(path + ": header: context: " + what); };
-  if (header.context.empty()) throw fail("none (recorded before version 2 or by another program): cannot rebuild its task");
+  if (header.version < 3)
+    throw haptics::RecordingError(path + ": header: format version " + std::to_string(header.version) +
+                                  " has no checksums and does not keep its task: it can be reviewed (needle-sim report, "
+                                  "review) but not replayed");
+  if (header.context.empty()) throw fail("none (recorded by another program): cannot rebuild its task");
   json context;
   try {
     context = json::parse(header.context);
@@ -107,18 +116,37 @@ json read_context(const std::string& path, const haptics::SessionHeader& header)
   }
   if (!context.is_object() || context.value("version", 0) != kContextVersion)
     throw fail("expected version " + std::to_string(kContextVersion));
-  for (const char* key : {"task", "scenario", "safety_limits"})
+  for (const char* key : {"task", "task_text", "scenario", "safety_limits"})
     if (!context.contains(key)) throw fail(std::string("missing \"") + key + "\"");
+  if (!context["task"].is_string() || !context["task_text"].is_string()) throw fail("task and task_text are not text");
   return context;
+}
+
+// What a replay should say about its recording, and whether its session may be stored complete:
+// only when the recording was closed by a run that ran to its end.
+std::vector<std::string> replay_notes(const std::string& path, const haptics::ReplayDevice& replay, const json& context,
+                                      bool& complete) {
+  std::vector<std::string> notes = haptics::recording_notes(path, replay.end(), replay.length());
+  complete = replay.end().closed && replay.end().ran_to_end;
+  if (replay.end().closed && !replay.end().ran_to_end)
+    notes.push_back(path + ": its session was stopped before its end (a window closed early)");
+  if (!complete) notes.push_back("the replay's session is stored incomplete, with no score, as a run cut short is");
+  const fs::path task_file = context["task"].get<std::string>();
+  std::ifstream in(task_file, std::ios::binary);
+  const std::string now((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.is_open() || now != context["task_text"].get<std::string>())
+    notes.push_back(task_file.string() + (in.is_open() ? " has changed" : " is gone") +
+                    " since the recording: the replay runs the task as it was recorded");
+  return notes;
 }
 
 }  // namespace
 
-std::optional<fs::path> recorded_task(const std::string& device) {
-  if (!is_replay(device)) return std::nullopt;
-  const std::string path = device.substr(std::string(kReplayPrefix).size());
-  const haptics::Session session = haptics::read_session(path);
-  return fs::path(read_context(path, session.header).at("task").get<std::string>());
+training::Task session_task(const fs::path& task_file, const std::string& device) {
+  if (!is_replay(device)) return training::load_task(task_file);
+  const std::string path = replay_path(device);
+  const json context = read_context(path, haptics::read_header(path));
+  return training::parse_task(context["task_text"].get<std::string>(), context["task"].get<std::string>());
 }
 
 SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
@@ -139,10 +167,13 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
     description_ = "sim (" + script.stem().string() + ")";
     scenario_json = json::parse(std::ifstream(scenario_file));
   } else if (is_replay(spec)) {
-    const std::string path = spec.substr(std::string(kReplayPrefix).size());
+    const std::string path = replay_path(spec);
     auto replay = std::make_unique<haptics::ReplayDevice>(path);
     replay->open();
     const json context = read_context(path, replay->header());
+    if (replay->length() == 0)
+      throw haptics::RecordingError(path + ": no ticks recorded (its run stopped before its first tick): nothing to replay");
+    notes_ = replay_notes(path, *replay, context, complete_);
     try {
       scenario_json = context.at("scenario");
       // Recorded before issue 13's tool law existed: replayed with the law it was recorded with.
@@ -196,6 +227,7 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
   const std::string recorded_device = is_replay(spec) ? description_ : spec;
   context_ = json{{"version", kContextVersion},
                   {"task", fs::absolute(task.source).string()},
+                  {"task_text", task.text},
                   {"device", recorded_device},
                   {"scenario", scenario_json},
                   {"coupling", coupling},

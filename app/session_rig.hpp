@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/scene.hpp"
 #include "haptics/devices/desk_device.hpp"
@@ -31,9 +32,10 @@ struct RigOptions {
   engine::Camera camera;                // the view the trainee sees: task-space devices move in its axes
 };
 
-// The task a recording was made of, from its context; nullopt when `device` is not replay:FILE.
-// Throws haptics::RecordingError naming the file when the recording has no usable context.
-std::optional<std::filesystem::path> recorded_task(const std::string& device);
+// The task a session on `device` runs: for replay:FILE the task as its recording keeps it (the
+// file's text then, not the file as it is now), else `task_file`. Throws haptics::RecordingError
+// naming the recording when it has no usable context, training::TaskError for the task.
+training::Task session_task(const std::filesystem::path& task_file, const std::string& device);
 
 class SessionRig {
  public:
@@ -60,6 +62,12 @@ class SessionRig {
   const std::string& description() const { return description_; }
   // JSON for the recording header (haptics::SessionHeader::context).
   const std::string& context() const { return context_; }
+  // What the user should be told about the device before the run (a replayed recording cut
+  // short, a task file changed since it was recorded), one line each.
+  const std::vector<std::string>& notes() const { return notes_; }
+  // False when the session must stay incomplete whatever happens: a replay of a recording whose
+  // run did not run to its end.
+  bool can_complete() const { return complete_; }
 
  private:
   std::unique_ptr<haptics::SimSession> sim_;     // sim: scenario, device and step in one
@@ -75,6 +83,8 @@ class SessionRig {
   std::optional<uint64_t> ticks_;
   std::string description_;
   std::string context_;
+  std::vector<std::string> notes_;
+  bool complete_ = true;
 };
 
 }  // namespace needle::app

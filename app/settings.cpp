@@ -7,7 +7,7 @@
 
 #include "haptics/devices/desk_device.hpp"
 #include "io/strict_json.hpp"
-#include "io/write_file.hpp"
+#include "io/file_write.hpp"
 
 namespace needle::app {
 namespace fs = std::filesystem;

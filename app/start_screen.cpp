@@ -101,7 +101,7 @@ class StartScreen {
   }
 
  private:
-  void scan_devices(const std::string& chosen) {
+  void scan_devices(std::string chosen) {  // a copy: it may be a device of the list replaced here
     state_.devices = present_devices();
     state_.device = 0;
     for (size_t i = 0; i < state_.devices.size(); ++i)

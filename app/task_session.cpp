@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <cctype>
 
 #include "app/ultrasound_window.hpp"
 #include "engine/gpu_device.hpp"
@@ -13,7 +14,7 @@
 #include "engine/render_target.hpp"
 #include "engine/ui_pass.hpp"
 #include "haptics/safety/fault_cause.hpp"
-#include "io/write_file.hpp"
+#include "io/file_write.hpp"
 #include "ui/guidance_overlay.hpp"
 #include "training/sessions/session_export.hpp"
 
@@ -26,21 +27,6 @@ namespace {
 const fs::path& with_folder(const fs::path& file) {
   if (file.has_parent_path()) fs::create_directories(file.parent_path());
   return file;
-}
-
-// Recordings live beside the database, so a session's stays where the review finds it when the
-// run's output folder is reused: <db folder>/recordings/<task>_<UTC start>_<pid>[_<n>].nrec, the
-// number added when a session of the same task started in the same second in this process.
-fs::path new_recording_path(const fs::path& db, const std::string& task) {
-  const std::time_t now = std::time(nullptr);
-  char stamp[32];
-  std::strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", std::gmtime(&now));
-  const fs::path dir = fs::absolute(db).parent_path() / "recordings";
-  fs::create_directories(dir);
-  const std::string stem = task + "_" + stamp + "_" + std::to_string(::getpid());
-  fs::path path = dir / (stem + ".nrec");
-  for (int n = 2; fs::exists(path); ++n) path = dir / (stem + "_" + std::to_string(n) + ".nrec");
-  return path;
 }
 
 // A progress bar on a terminal; on a pipe (CI, logs), a line every quarter.
@@ -69,11 +55,33 @@ TaskSessionOptions with_task_settings(TaskSessionOptions options, const engine::
   return options;
 }
 
+// A task name as part of a file name: letters, digits, '-' and '_' kept, anything else (a '/',
+// a '.', a NUL) made '_', at most training::kMaxNameBytes characters. Task names are checked when
+// a task loads (docs/TASKS.md); this holds whatever the name.
+std::string file_name_part(const std::string& name) {
+  std::string part;
+  for (char c : name.substr(0, training::kMaxNameBytes)) part += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
+  return part.empty() ? "task" : part;
+}
+
 }  // namespace
+
+fs::path new_recording_path(const fs::path& db, const std::string& task_name) {
+  const std::string task = file_name_part(task_name);
+  const std::time_t now = std::time(nullptr);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", std::gmtime(&now));
+  const fs::path dir = fs::absolute(db).parent_path() / "recordings";
+  fs::create_directories(dir);
+  const std::string stem = task + "_" + stamp + "_" + std::to_string(::getpid());
+  fs::path path = dir / (stem + ".nrec");
+  for (int n = 2; fs::exists(path); ++n) path = dir / (stem + "_" + std::to_string(n) + ".nrec");
+  return path;
+}
 
 TaskSession::TaskSession(TaskSessionOptions options)
     : options_(std::move(options)),
-      task_(training::load_task(options_.task)),
+      task_(session_task(options_.task, options_.rig.device)),
       scene_(engine::load_scene(task_.scene)),
       rig_(std::make_unique<SessionRig>(task_, with_task_settings(options_, scene_).rig)),
       store_(with_folder(options_.db)),
@@ -83,6 +91,9 @@ TaskSession::TaskSession(TaskSessionOptions options)
   config.rate_hz = rig_->rate_hz();
   config.sample_capacity = 1 << 15;  // 33 s at 1 kHz: room for the recorder's worst stall
   loop_ = std::make_unique<haptics::HapticLoop>(rig_->device(), rig_->safety_limits(), config);
+  const bool replay = options_.rig.device.rfind("replay:", 0) == 0;
+  const uint64_t bound = static_cast<uint64_t>(std::llround(training::session_time_bound_s(task_) * rig_->rate_hz()));
+  tick_budget_ = rig_->ticks() ? (replay ? *rig_->ticks() : std::min(*rig_->ticks(), bound)) : bound;
   recorder_ = std::make_unique<haptics::SessionRecorder>(
       recording_path_.string(),
       haptics::SessionHeader{haptics::kSessionFormatVersion, rig_->rate_hz(), static_cast<int64_t>(std::time(nullptr)),
@@ -90,13 +101,20 @@ TaskSession::TaskSession(TaskSessionOptions options)
       loop_->samples(), [this](const haptics::TickSample& s) { feed_.consume(s); });
   session_ = store_.begin_session(options_.trainee, task_, rig_->description(), recording_path_.string());
   loop_->submit(haptics::LoopCommand::set_step(&rig_->step()));
+  std::error_code ignored;
+  fs::remove(options_.out_dir / "score.json", ignored);  // never an earlier run's score beside this run's pictures
   std::printf("task %s on %s, trainee %s: session %lld in %s\nrecording %s\n", task_.name.c_str(),
               rig_->description().c_str(), options_.trainee.c_str(), static_cast<long long>(session_),
               options_.db.c_str(), recording_path_.c_str());
+  for (const std::string& note : rig_->notes()) std::printf("note: %s\n", note.c_str());
+  if (rig_->ticks() && tick_budget_ < *rig_->ticks())
+    std::printf("note: the operator script runs %.1f s, past the latest end of the task (%.1f s: its steps' time limits "
+                "plus %.0f s): the run stops there\n",
+                *duration_s(), double(tick_budget_) / rig_->rate_hz(), training::kTaskEndMargin_s);
   std::fflush(stdout);  // before the progress bar on stderr
 }
 
-TaskSession::~TaskSession() { stop_threads(); }
+TaskSession::~TaskSession() { stop_threads(false); }
 
 std::optional<double> TaskSession::duration_s() const {
   if (!rig_->ticks()) return std::nullopt;
@@ -105,9 +123,9 @@ std::optional<double> TaskSession::duration_s() const {
 
 void TaskSession::run_offline(const std::function<void(size_t)>& on_step_end) {
   if (!rig_->ticks()) throw std::logic_error("a session on " + options_.rig.device + " runs only in real time, in a window");
-  const uint64_t ticks = *rig_->ticks();
+  const uint64_t ticks = tick_budget_;
   loop_->submit(haptics::LoopCommand::start(ticks));
-  ProgressBar progress(*duration_s());
+  ProgressBar progress(double(ticks) / rig_->rate_hz());
   // One tick and one recorder pass at a time, so a step's picture shows the tick that ended it.
   for (uint64_t k = 0; k < ticks; ++k) {
     loop_->run_unpaced(1);
@@ -120,37 +138,59 @@ void TaskSession::run_offline(const std::function<void(size_t)>& on_step_end) {
 std::string TaskSession::start_realtime() {
   const std::string line = loop_->launch();
   recorder_->start();
-  loop_->apply(haptics::LoopCommand::start(rig_->ticks().value_or(0)));
+  loop_->apply(haptics::LoopCommand::start(tick_budget_));
   return line;
 }
 
 bool TaskSession::over() const {
-  return rig_->ticks() ? feed_.samples() >= *rig_->ticks() : feed_.task_finished();
+  return feed_.samples() >= tick_budget_ || (!rig_->ticks() && feed_.task_finished());
 }
 
-void TaskSession::stop_threads() {
+void TaskSession::stop_threads(bool ran_to_end) {
   if (loop_) loop_->shutdown();
-  if (recorder_) recorder_->stop();  // the last pass: every sample the loop made is scored
+  if (recorder_) recorder_->stop(ran_to_end);  // the last pass: every sample the loop made is scored
 }
 
-const training::SessionResult& TaskSession::finish() {
-  if (result_) return *result_;
-  stop_threads();
+const training::SessionResult* TaskSession::finish() {
+  if (finished_) return result_ ? &*result_ : nullptr;
+  finished_ = true;
+  stop_threads(rig_->can_complete());  // a replay that stays incomplete records that it did
   if (!recorder_->error().empty()) throw std::runtime_error("recording stopped: " + recorder_->error());
   if (recorder_->dropped() > 0)
     std::printf("warning: the recorder fell behind and %llu ticks were dropped from the recording and the score\n",
                 static_cast<unsigned long long>(recorder_->dropped()));
+  if (!rig_->can_complete()) {
+    std::printf("session %lld stays incomplete: no score is stored and no score.json written\n",
+                static_cast<long long>(session_));
+    return nullptr;
+  }
   result_ = feed_.result();
-  store_.finish_session(session_, *result_);
+  // The score is written even when the store fails: the session's record must not be lost.
+  std::string store_error;
+  try {
+    store_.finish_session(session_, *result_);
+  } catch (const std::exception& e) {
+    store_error = e.what();
+  }
   const fs::path score_file = options_.out_dir / "score.json";
   nlohmann::json score = training::result_json(*result_);
   score["recording"] = recording_path_.string();
-  io::write_file(score_file, score.dump(2) + "\n");
+  score["stored"] = store_error.empty();
+  try {
+    io::write_file(score_file, score.dump(2) + "\n");
+  } catch (const io::WriteError& e) {
+    if (store_error.empty()) throw;
+    throw std::runtime_error(std::string(e.what()) + "; and the session could not be stored: " + store_error +
+                             " (its recording is " + recording_path_.string() + ")");
+  }
   std::printf("score %.0f / 100: %s\n", result_->score.total, result_->score.passed ? "passed" : "not passed");
   for (const std::string& why : result_->score.reasons_failed) std::printf("  %s\n", why.c_str());
   std::printf("wrote %s\n", score_file.c_str());
   std::fflush(stdout);  // a window's run goes on: whoever reads the output sees the score now
-  return *result_;
+  if (!store_error.empty())
+    throw std::runtime_error("the session could not be stored: " + store_error + "; its score is in " +
+                             score_file.string() + " and its recording is " + recording_path_.string());
+  return &*result_;
 }
 
 void TaskSession::reset_fault() {
@@ -214,8 +254,7 @@ int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa,
   });
   shoot("final");
   sonogram("ultrasound_final");
-  run.finish();
-  shoot("score_panel");
+  if (run.finish()) shoot("score_panel");
   std::printf("wrote the pictures of the run in %s\n", out_dir.c_str());
   return 0;
 }

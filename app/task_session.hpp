@@ -25,7 +25,7 @@
 namespace needle::app {
 
 struct TaskSessionOptions {
-  std::filesystem::path task;  // for replay:FILE, the recording's own task
+  std::filesystem::path task;  // unused for replay:FILE, which runs the task its recording keeps
   RigOptions rig;              // its out_dir and camera are set from here and the task's scene
   std::string trainee;
   std::filesystem::path db;
@@ -35,7 +35,8 @@ struct TaskSessionOptions {
 class TaskSession {
  public:
   // Loads the task and its scene, builds the rig, opens the session (incomplete until finish())
-  // and the recording. Writes OUT/scenario.json, the scenario that runs.
+  // and the recording. Writes OUT/scenario.json, the scenario that runs, and removes an
+  // OUT/score.json of an earlier run. The session database is checked before anything runs.
   explicit TaskSession(TaskSessionOptions options);
   ~TaskSession();
   TaskSession(const TaskSession&) = delete;
@@ -47,6 +48,9 @@ class TaskSession {
   std::optional<Eigen::Vector3d> tool_start() const { return rig_->tool_start(); }
   // Seconds the session lasts when its device has an end (script, recording), else nullopt.
   std::optional<double> duration_s() const;
+  // The most ticks it runs: its device's end, bounded (but for a replay) by how long the task can
+  // last (training::session_time_bound_s), for a device without an end that bound.
+  uint64_t tick_budget() const { return tick_budget_; }
 
   // Headless: every tick of the device back to back on this thread; on_step_end(k) runs right
   // after the tick that ended step k. Throws std::logic_error for a device without an end.
@@ -56,9 +60,11 @@ class TaskSession {
   // The device has given all it has, or every step has ended.
   bool over() const;
 
-  // Stops the threads, scores, stores the session as complete, writes OUT/score.json. Once.
-  const training::SessionResult& finish();
-  bool finished() const { return result_.has_value(); }
+  // Stops the threads, scores, stores the session as complete and writes OUT/score.json (also
+  // when the store fails: then it throws after, saying so). Once. Returns nullptr, storing and
+  // writing nothing, when the session must stay incomplete (a replay of a recording cut short).
+  const training::SessionResult* finish();
+  bool finished() const { return finished_; }
   // Clears a latched safety fault (the panel's button, a gamepad's Start), while the loop runs.
   void reset_fault();
 
@@ -73,7 +79,7 @@ class TaskSession {
   uint64_t samples() const { return feed_.samples(); }
 
  private:
-  void stop_threads();
+  void stop_threads(bool ran_to_end);
 
   TaskSessionOptions options_;
   training::Task task_;
@@ -82,12 +88,20 @@ class TaskSession {
   training::SessionStore store_;
   std::filesystem::path recording_path_;
   int64_t session_ = 0;
+  uint64_t tick_budget_ = 0;
+  bool finished_ = false;
   std::unique_ptr<haptics::HapticLoop> loop_;
   std::unique_ptr<haptics::SessionRecorder> recorder_;
 
   SessionFeed feed_;  // the recorder's thread scores and tracks every sample into it
   std::optional<training::SessionResult> result_;
 };
+
+// Where a new session of task `task_name` is recorded: <db folder>/recordings/<name>_<UTC start>_
+// <pid>[_<n>].nrec, the name made safe for a file name whatever it holds (no '/', '.', NUL; at most
+// training::kMaxNameBytes characters), the number added when a session of the same task started in
+// the same second in this process. Makes the folder.
+std::filesystem::path new_recording_path(const std::filesystem::path& db, const std::string& task_name);
 
 // Headless: runs the session through, writing OUT/step_<n>_<id>.png as each step ends,
 // OUT/final.png and OUT/score_panel.png; in a task with an ultrasound probe also the probe's

@@ -15,7 +15,8 @@ struct RgbaImage {
   const uint8_t* at(uint32_t x, uint32_t y) const { return &pixels[(size_t(y) * width + x) * 4]; }
 };
 
-// Throws std::runtime_error naming the file on failure.
+// Makes the file's folder, encodes and writes the file whole (io::write_file); throws
+// std::runtime_error (io::WriteError for the write) naming the file on failure.
 void write_png(const std::filesystem::path& file, const RgbaImage& image);
 RgbaImage read_png(const std::filesystem::path& file);
 

@@ -1,6 +1,6 @@
 // Strict reading of a JSON document with errors that point at the culprit:
 // "FILE: /json/pointer: what is wrong", thrown as `Error`. Unknown keys are errors, numbers
-// must be finite, strings non-empty. Header-only: scene, scenario, task and tissue files all
+// must be finite, strings non-empty and without NUL. Header-only: scene, scenario, task and tissue files all
 // read through it, from libraries that do not link each other.
 #pragma once
 
@@ -10,27 +10,42 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <span>
 #include <string>
 
 namespace needle::io {
 
-// The document in `file`; Error("FILE: /: what") when it is not a readable regular file or not JSON.
+// The text of `file`; Error("FILE: /: what") when it is not a readable regular file.
 template <typename Error>
-nlohmann::json read_json_file(const std::filesystem::path& file) {
+std::string read_text_file(const std::filesystem::path& file) {
   std::error_code ec;
   const auto status = std::filesystem::status(file, ec);
   if (!std::filesystem::exists(status)) throw Error(file.string() + ": /: file not found");
   if (std::filesystem::is_directory(status)) throw Error(file.string() + ": /: is a folder, not a file");
   if (!std::filesystem::is_regular_file(status)) throw Error(file.string() + ": /: not a regular file");
-  std::ifstream in(file);
+  std::ifstream in(file, std::ios::binary);
   if (!in) throw Error(file.string() + ": /: cannot open the file for reading");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw Error(file.string() + ": /: cannot be read");
+  return text;
+}
+
+// The document in `text`, read from `label` (a file name); Error("LABEL: /: not valid JSON: ...").
+template <typename Error>
+nlohmann::json parse_json(const std::string& text, const std::string& label) {
   try {
-    return nlohmann::json::parse(in);
+    return nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {
-    throw Error(file.string() + ": /: not valid JSON: " + e.what());
+    throw Error(label + ": /: not valid JSON: " + e.what());
   }
+}
+
+// The document in `file`; Error("FILE: /: what") when it is not a readable regular file or not JSON.
+template <typename Error>
+nlohmann::json read_json_file(const std::filesystem::path& file) {
+  return parse_json<Error>(read_text_file<Error>(file), file.string());
 }
 
 template <typename Error>
@@ -46,7 +61,8 @@ class StrictJsonReader {
   // Checks `value` is an object with no keys but `allowed`.
   void object(const json& value, const std::string& at, std::span<const char* const> allowed) const {
     if (!value.is_object()) fail(at, "expected an object, got " + std::string(value.type_name()));
-    for (const auto& [key, _] : value.items()) {
+    for (const auto& item : value.items()) {
+      const std::string& key = item.key();  // not a structured binding: clang before 16 cannot capture one
       if (std::none_of(allowed.begin(), allowed.end(), [&](const char* k) { return key == k; })) {
         std::string keys;
         for (const char* k : allowed) keys += (keys.empty() ? "" : ", ") + std::string(k);
@@ -105,10 +121,13 @@ class StrictJsonReader {
     return v;
   }
 
+  // A NUL ("\u0000") is refused: C strings, SQLite text and file names would end there.
   std::string string(const json& value, const std::string& at) const {
     if (!value.is_string() || value.get<std::string>().empty())
       fail(at, "expected a non-empty string, got " + std::string(value.type_name()));
-    return value.get<std::string>();
+    std::string text = value.get<std::string>();
+    if (text.find('\0') != std::string::npos) fail(at, "contains a NUL character");
+    return text;
   }
 
   // A path relative to `folder` that names an existing regular file, made canonical.

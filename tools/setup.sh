@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs every Debian package that the build, the tests and the main job need, then
+# Installs every Debian package that the build, the tests, the main job and CI's sanitizer and
+# fuzzing job (clang, its ASan/UBSan/libFuzzer runtimes, llvm-symbolizer) need, then
 # configures and builds: the targets given as arguments (the main job builds needle-sim alone),
 # everything when none are. Non-interactive and idempotent: when everything is installed it
 # touches no package list and only runs the (incremental, ccache-backed) build.
@@ -12,6 +13,7 @@ packages=(
   libglfw3-dev libglm-dev libeigen3-dev libtinygltf-dev libimgui-dev libstb-dev
   libusb-1.0-0-dev libgtest-dev nlohmann-json3-dev liburdfdom-dev libsqlite3-dev sqlite3
   xvfb xauth xdotool
+  clang libclang-rt-14-dev llvm-14
 )
 
 missing=()

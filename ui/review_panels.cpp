@@ -137,8 +137,10 @@ void recording_line(const training::SessionReview& r) {
     ImGui::TextWrapped("%s", r.recording_problem.c_str());
     return;
   }
+  const haptics::RecordingEnd& end = r.recording_end;
+  const char* note = !end.checksummed ? " (older format, no checksums)" : !end.closed ? " (cut short: read up to its last whole block)" : "";
   ImGui::TextColored(kDim, "recording %s: %zu samples, %.2f to %.2f s%s", r.recording_file.filename().c_str(),
-                     r.states.size(), r.start_s(), r.end_s(), r.recording_trailing_bytes ? " (last record cut short)" : "");
+                     r.states.size(), r.start_s(), r.end_s(), note);
 }
 
 const char* step_at(const training::SessionReview& r, double t) {

@@ -15,15 +15,17 @@
 
 namespace needle::engine {
 
+// Declared before DeformationField, whose defaulted == uses them (clang finds only those declared
+// before it).
+bool operator==(const ElasticMaterial& a, const ElasticMaterial& b);
+bool operator==(const Kelvinlet& a, const Kelvinlet& b);
+
 struct DeformationField {
   ElasticMaterial material;
   std::vector<Kelvinlet> loads;
   bool empty() const { return loads.empty(); }
   bool operator==(const DeformationField&) const = default;
 };
-
-bool operator==(const ElasticMaterial& a, const ElasticMaterial& b);
-bool operator==(const Kelvinlet& a, const Kelvinlet& b);
 
 DeformationField build_field(const NeedleLoad& load, const TissueParams& tissue);
 

@@ -4,6 +4,9 @@
 #include <stb_image_write.h>
 
 #include <stdexcept>
+#include <string>
+
+#include "io/file_write.hpp"
 
 namespace needle::engine {
 
@@ -12,9 +15,13 @@ void write_png(const std::filesystem::path& file, const RgbaImage& image) {
     throw std::runtime_error(file.string() + ": image data does not match its size");
   }
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-  if (!stbi_write_png(file.c_str(), int(image.width), int(image.height), 4, image.pixels.data(), int(image.width * 4))) {
-    throw std::runtime_error(file.string() + ": cannot write PNG");
+  // Encoded in memory, then written whole and checked (a full disk is an error, not an empty PNG).
+  std::string png;
+  const auto append = [](void* to, void* data, int size) { static_cast<std::string*>(to)->append(static_cast<char*>(data), size_t(size)); };
+  if (!stbi_write_png_to_func(append, &png, int(image.width), int(image.height), 4, image.pixels.data(), int(image.width * 4))) {
+    throw std::runtime_error(file.string() + ": cannot encode the PNG");
   }
+  io::write_file(file, png);
 }
 
 RgbaImage read_png(const std::filesystem::path& file) {

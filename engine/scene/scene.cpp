@@ -6,6 +6,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
+#include <cstdio>
 #include <set>
 #include <stdexcept>
 
@@ -41,23 +42,44 @@ class SceneReader : io::StrictJsonReader<AssetError> {
   }
 
  private:
+  // What a scene's numbers may be (docs/SCENE_FORMAT.md, "Ranges"): the renderer works in floats,
+  // and a number past these gives a blank or broken picture, not an error, unless refused here.
+  static constexpr double kMaxLength_m = 1e4;     // positions, translations, near, far
+  static constexpr double kMaxComponent = 1e6;    // rotation and direction components, scale factors
+  static constexpr double kMinScale = 1e-6;
+  static constexpr double kMaxDepthRatio = 1e7;   // far / near: beyond it the depth buffer resolves nothing
+  static constexpr double kMaxLight = 1e3;        // colour components, intensities
+
+  static std::string shown(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", x);
+    return text;
+  }
+
+  // A number within [-limit, limit] (a float holds it).
+  float bounded(const json& value, const std::string& at, double limit) const {
+    const double x = number(value, at);
+    if (!(std::abs(x) <= limit)) fail(at, "must be within ±" + shown(limit) + ", got " + shown(x));
+    return static_cast<float>(x);
+  }
+
   template <int N>
-  glm::vec<N, float> vector(const json& value, const std::string& at) const {
+  glm::vec<N, float> vector(const json& value, const std::string& at, double limit) const {
     if (!value.is_array() || value.size() != N)
       fail(at, "expected an array of " + std::to_string(N) + " numbers");
     glm::vec<N, float> v;
-    for (int k = 0; k < N; ++k) v[k] = static_cast<float>(number(value[static_cast<size_t>(k)], at + "/" + std::to_string(k)));
+    for (int k = 0; k < N; ++k) v[k] = bounded(value[static_cast<size_t>(k)], at + "/" + std::to_string(k), limit);
     return v;
   }
 
   glm::vec3 direction(const json& value, const std::string& at) const {
-    const glm::vec3 v = vector<3>(value, at);
+    const glm::vec3 v = vector<3>(value, at, kMaxComponent);
     if (glm::length(v) < 1e-6f) fail(at, "must not be the zero vector");
     return glm::normalize(v);
   }
 
   glm::vec3 color(const json& value, const std::string& at) const {
-    const glm::vec3 c = vector<3>(value, at);
+    const glm::vec3 c = vector<3>(value, at, kMaxLight);
     if (glm::any(glm::lessThan(c, glm::vec3(0.0f)))) fail(at, "colour components must be >= 0 (linear RGB)");
     return c;
   }
@@ -73,15 +95,16 @@ class SceneReader : io::StrictJsonReader<AssetError> {
     else if (role == "bone") a.role = AssetRole::Bone;
     else if (role == "marker") a.role = AssetRole::Marker;
     else fail(at + "/role", "\"" + role + "\", expected tissue, tool, bone or marker");
-    if (value.contains("translation")) a.translation = vector<3>(value["translation"], at + "/translation");
+    if (value.contains("translation")) a.translation = vector<3>(value["translation"], at + "/translation", kMaxLength_m);
     if (value.contains("rotation")) {
-      const glm::vec4 q = vector<4>(value["rotation"], at + "/rotation");  // x, y, z, w as in glTF
+      const glm::vec4 q = vector<4>(value["rotation"], at + "/rotation", kMaxComponent);  // x, y, z, w as in glTF
       if (glm::length(q) < 1e-6f) fail(at + "/rotation", "the zero quaternion is not a rotation");
       a.rotation = glm::normalize(glm::quat(q.w, q.x, q.y, q.z));
     }
     if (value.contains("scale")) {
-      a.scale = vector<3>(value["scale"], at + "/scale");
-      if (glm::any(glm::equal(a.scale, glm::vec3(0.0f)))) fail(at + "/scale", "a zero scale flattens the asset");
+      a.scale = vector<3>(value["scale"], at + "/scale", kMaxComponent);
+      if (glm::any(glm::lessThan(glm::abs(a.scale), glm::vec3(float(kMinScale)))))
+        fail(at + "/scale", "a scale under " + shown(kMinScale) + " flattens the asset");
     }
     if (value.contains("deformation")) {
       if (a.role != AssetRole::Tissue) fail(at + "/deformation", "only tissue deforms");
@@ -117,18 +140,20 @@ class SceneReader : io::StrictJsonReader<AssetError> {
   Camera camera(const json& value, const std::string& at) const {
     object(value, at, {"position", "target", "up", "fov_y_deg", "near", "far"});
     Camera c;
-    c.position = vector<3>(member(value, at, "position"), at + "/position");
-    c.target = vector<3>(member(value, at, "target"), at + "/target");
+    c.position = vector<3>(member(value, at, "position"), at + "/position", kMaxLength_m);
+    c.target = vector<3>(member(value, at, "target"), at + "/target", kMaxLength_m);
     if (glm::length(c.target - c.position) < 1e-6f) fail(at + "/target", "equals the position");
     if (value.contains("up")) c.up = direction(value["up"], at + "/up");
     if (glm::length(glm::cross(c.up, glm::normalize(c.target - c.position))) < 1e-3f)
       fail(at + "/up", "is parallel to the viewing direction");
-    if (value.contains("fov_y_deg")) c.fov_y_deg = static_cast<float>(number(value["fov_y_deg"], at + "/fov_y_deg"));
+    if (value.contains("fov_y_deg")) c.fov_y_deg = bounded(value["fov_y_deg"], at + "/fov_y_deg", 180.0);
     if (c.fov_y_deg <= 0.0f || c.fov_y_deg >= 180.0f) fail(at + "/fov_y_deg", "must be in (0, 180) degrees");
-    if (value.contains("near")) c.near_m = static_cast<float>(number(value["near"], at + "/near"));
-    if (value.contains("far")) c.far_m = static_cast<float>(number(value["far"], at + "/far"));
+    if (value.contains("near")) c.near_m = bounded(value["near"], at + "/near", kMaxLength_m);
+    if (value.contains("far")) c.far_m = bounded(value["far"], at + "/far", kMaxLength_m);
     if (c.near_m <= 0.0f) fail(at + "/near", "must be > 0");
     if (c.far_m <= c.near_m) fail(at + "/far", "must be greater than near");
+    if (double(c.far_m) > kMaxDepthRatio * double(c.near_m))
+      fail(at + "/far", "must be at most " + shown(kMaxDepthRatio) + " times near (" + shown(c.near_m) + ")");
     return c;
   }
 
@@ -145,7 +170,7 @@ class SceneReader : io::StrictJsonReader<AssetError> {
         DirectionalLight light;
         light.direction = direction(member(list[i], where, "direction"), where + "/direction");
         if (list[i].contains("color")) light.color = color(list[i]["color"], where + "/color");
-        if (list[i].contains("intensity")) light.intensity = static_cast<float>(number(list[i]["intensity"], where + "/intensity"));
+        if (list[i].contains("intensity")) light.intensity = bounded(list[i]["intensity"], where + "/intensity", kMaxLight);
         if (light.intensity < 0.0f) fail(where + "/intensity", "must be >= 0");
         lights.directional.push_back(light);
       }

@@ -1,6 +1,7 @@
 #include "engine/vulkan/gpu_buffer.hpp"
 
 #include <cstring>
+#include <string>
 #include <utility>
 
 #include "engine/vulkan/vk_check.hpp"
@@ -15,15 +16,16 @@ GpuBuffer::GpuBuffer(const VulkanContext& context, VkDeviceSize size, VkBufferUs
   info.size = size;
   info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  VK_CHECK(vkCreateBuffer(device_, &info, nullptr, &buffer_));
+  const std::string what = "a " + std::to_string(size >> 20) + " MiB buffer", device = context.device_description();
+  vk_check_size(vkCreateBuffer(device_, &info, nullptr, &buffer_), "vkCreateBuffer", what, device);
   VkMemoryRequirements req;
   vkGetBufferMemoryRequirements(device_, buffer_, &req);
   VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   alloc.allocationSize = req.size;
   alloc.memoryTypeIndex = context.memory_type(req.memoryTypeBits, memory);
   try {
-    VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
-    VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_, 0));
+    vk_check_size(vkAllocateMemory(device_, &alloc, nullptr, &memory_), "vkAllocateMemory", what, device);
+    vk_check_size(vkBindBufferMemory(device_, buffer_, memory_, 0), "vkBindBufferMemory", what, device);
     if (memory & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT) VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
   } catch (...) {
     reset();

@@ -1,6 +1,7 @@
 #include "engine/vulkan/gpu_image.hpp"
 
 #include <cstring>
+#include <string>
 #include <utility>
 
 #include "engine/vulkan/gpu_buffer.hpp"
@@ -11,6 +12,11 @@
 namespace needle::engine {
 
 GpuImage::GpuImage(const VulkanContext& context, const ImageSpec& spec) : device_(context.device()), spec_(spec) {
+  const uint32_t largest = context.properties().limits.maxImageDimension2D;
+  const std::string size = std::to_string(spec.extent.width) + "x" + std::to_string(spec.extent.height);
+  if (spec.extent.width > largest || spec.extent.height > largest)
+    throw VulkanError("a " + size + " image is too large for this device (" + context.device_description() +
+                      "): at most " + std::to_string(largest) + " pixels a side");
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = spec.format;
@@ -22,15 +28,19 @@ GpuImage::GpuImage(const VulkanContext& context, const ImageSpec& spec) : device
   info.usage = spec.usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  VK_CHECK(vkCreateImage(device_, &info, nullptr, &image_));
+  std::string what = "a " + size + " image";
+  const std::string device = context.device_description();
+  vk_check_size(vkCreateImage(device_, &info, nullptr, &image_), "vkCreateImage", what, device);
   try {
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(device_, image_, &req);
+    what += ", " + std::to_string(int(spec.samples)) + (spec.samples == 1 ? " sample" : " samples") + " per pixel (" +
+            std::to_string(req.size >> 20) + " MiB)";
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = req.size;
     alloc.memoryTypeIndex = context.memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
-    VK_CHECK(vkBindImageMemory(device_, image_, memory_, 0));
+    vk_check_size(vkAllocateMemory(device_, &alloc, nullptr, &memory_), "vkAllocateMemory", what, device);
+    vk_check_size(vkBindImageMemory(device_, image_, memory_, 0), "vkBindImageMemory", what, device);
     VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     view.image = image_;
     view.viewType = VK_IMAGE_VIEW_TYPE_2D;

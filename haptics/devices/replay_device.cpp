@@ -5,14 +5,21 @@ namespace needle::haptics {
 ReplayDevice::ReplayDevice(std::string path) : path_(std::move(path)) { caps_.name = "replay:" + path_; }
 
 void ReplayDevice::open() {
-  session_ = read_session(path_);
+  RecordingReader reader(path_);
+  header_ = reader.header();
+  readings_.clear();
   next_ = 0;
-  // Commands are discarded, but the loop builds them in the recorded space so the safety
-  // monitor and the step see the session as it was.
-  if (!session_.records.empty()) {
-    caps_.command_space = session_.records.front().command.space;
-    caps_.joint_count = session_.records.front().command.joint_count;
+  std::vector<TickSample> block;
+  while (reader.next(block)) {
+    // Commands are discarded, but the loop builds them in the recorded space so the safety
+    // monitor and the step see the session as it was.
+    if (readings_.empty()) {
+      caps_.command_space = block.front().command.space;
+      caps_.joint_count = block.front().command.joint_count;
+    }
+    for (const TickSample& s : block) readings_.push_back(s.reading);
   }
+  end_ = reader.end();
 }
 
 void ReplayDevice::read(DeviceReading& out) noexcept {
@@ -20,7 +27,7 @@ void ReplayDevice::read(DeviceReading& out) noexcept {
     out.connected = 0;
     return;
   }
-  out = session_.records[next_++].reading;
+  out = readings_[next_++];
 }
 
 }  // namespace needle::haptics

@@ -1,7 +1,8 @@
 // `replay:FILE`: plays a recorded session's device stream back tick by tick. Fed to the
 // same step on the same build, it reproduces the recorded simulation state bit for bit.
 // After the last record the device reads as disconnected, so the safety monitor ramps any
-// force to zero.
+// force to zero. open() reads the recording through its checks, a block at a time, and keeps
+// only the readings, so a damaged recording is refused before the first tick.
 #pragma once
 
 #include <string>
@@ -16,7 +17,7 @@ class ReplayDevice : public HapticDevice {
  public:
   explicit ReplayDevice(std::string path);
 
-  // Loads the whole recording (throws RecordingError naming the file and element).
+  // Reads the recording's readings (throws RecordingError naming the file and the element).
   void open() override;
   void close() noexcept override {}
   void home() override {}
@@ -24,14 +25,18 @@ class ReplayDevice : public HapticDevice {
   void read(DeviceReading& out) noexcept override;
   void write(const DeviceCommand&) noexcept override {}
 
-  const SessionHeader& header() const noexcept { return session_.header; }
-  std::size_t length() const noexcept { return session_.records.size(); }
-  bool finished() const noexcept { return next_ >= session_.records.size(); }
+  const SessionHeader& header() const noexcept { return header_; }
+  // Whether the file was closed, cut short or has no checksums (valid after open()).
+  const RecordingEnd& end() const noexcept { return end_; }
+  std::size_t length() const noexcept { return readings_.size(); }
+  bool finished() const noexcept { return next_ >= readings_.size(); }
 
  private:
   std::string path_;
   DeviceCapabilities caps_;
-  Session session_;
+  SessionHeader header_;
+  RecordingEnd end_;
+  std::vector<DeviceReading> readings_;
   std::size_t next_ = 0;
 };
 

@@ -1,6 +1,7 @@
 #include "haptics/model/model_report.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 #include "haptics/model/dynamics.hpp"
 #include "haptics/model/kinematics.hpp"
@@ -37,10 +38,19 @@ nlohmann::json model_report(const RobotModel& model, const VecN& q, const VecN& 
   update_dynamics(model, data);
   VecN tau(n);
   inverse_dynamics(model, data, parameter_vector(model), ddq, tau);
+  const VecN cdq = data.C * dq;
+  // A state so large that a result overflows double precision is an error, not a JSON null.
+  const std::pair<const char*, bool> finite[] = {{"pose", data.tip.matrix().allFinite()}, {"J", data.J.allFinite()},
+                                                 {"H", data.H.allFinite()},           {"Cdq", cdq.allFinite()},
+                                                 {"g", data.g.allFinite()},           {"tau_id", tau.allFinite()}};
+  for (const auto& [name, ok] : finite)
+    if (!ok)
+      throw std::range_error("robot '" + model.name + "': " + name +
+                             " is not finite at this state (q, dq or ddq too large for double precision)");
   return {{"pose", {{"p", vec(data.tip.translation())}, {"R", rows(data.tip.linear())}}},
           {"J", rows(data.J)},
           {"H", rows(data.H)},
-          {"Cdq", vec(VecN(data.C * dq))},
+          {"Cdq", vec(cdq)},
           {"g", vec(data.g)},
           {"gravity", vec(model.gravity)},
           {"tau_id", vec(tau)}};

@@ -8,7 +8,8 @@
 
 namespace needle::haptics {
 
-// q, dq, ddq must have model.dof() entries (std::invalid_argument otherwise).
+// q, dq, ddq must have model.dof() entries (std::invalid_argument otherwise); std::range_error
+// naming the first result that is not finite (NaN or infinite) at that state.
 nlohmann::json model_report(const RobotModel& model, const VecN& q, const VecN& dq, const VecN& ddq);
 
 }  // namespace needle::haptics

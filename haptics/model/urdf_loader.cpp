@@ -1,12 +1,44 @@
 #include "haptics/model/urdf_loader.hpp"
 
-#include <Eigen/Eigenvalues>
-#include <fstream>
-#include <sstream>
+#include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
 
 namespace needle::haptics {
 namespace {
+
+// urdfdom reports what it rejects through console_bridge, several lines on stderr per problem,
+// and may still return a model (a link whose <inertial> it could not read keeps a zero mass).
+// While it parses, its errors are kept instead, for one error line naming the file; its
+// warnings and notes are not shown.
+class UrdfdomErrors : public console_bridge::OutputHandler {
+ public:
+  UrdfdomErrors() { console_bridge::useOutputHandler(this); }
+  ~UrdfdomErrors() override { console_bridge::restorePreviousOutputHandler(); }
+  UrdfdomErrors(const UrdfdomErrors&) = delete;
+  UrdfdomErrors& operator=(const UrdfdomErrors&) = delete;
+
+  void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
+    if (level < console_bridge::CONSOLE_BRIDGE_LOG_ERROR) return;
+    std::string line = text;
+    for (char& c : line)
+      if (c == '\n' || c == '\r') c = ' ';
+    joined += (joined.empty() ? "" : "; ") + line;
+  }
+
+  std::string joined;
+};
+
+bool finite(std::initializer_list<double> values) {
+  for (double v : values)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
 
 Eigen::Isometry3d to_isometry(const urdf::Pose& p) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
@@ -17,12 +49,20 @@ Eigen::Isometry3d to_isometry(const urdf::Pose& p) {
 
 [[noreturn]] void fail(const std::string& source, const std::string& what) { throw UrdfError(source + ": " + what); }
 
+void check_pose(const urdf::Pose& p, const std::string& source, const std::string& where) {
+  if (!finite({p.position.x, p.position.y, p.position.z, p.rotation.x, p.rotation.y, p.rotation.z, p.rotation.w}))
+    fail(source, where + ": xyz and rpy must be finite numbers");
+}
+
 // A link's own mass properties expressed in `frame_of_link` (the frame the link's origin is at).
 BodyInertia link_inertia(const urdf::Link& link, const Eigen::Isometry3d& frame_of_link, const std::string& source) {
   BodyInertia b;
   if (!link.inertial) return b;
   const urdf::Inertial& in = *link.inertial;
   const std::string where = "link '" + link.name + "' <inertial>: ";
+  if (!finite({in.mass, in.ixx, in.ixy, in.ixz, in.iyy, in.iyz, in.izz}))
+    fail(source, where + "mass and inertia must be finite numbers");
+  check_pose(in.origin, source, where + "<origin>");
   if (!(in.mass > 0.0)) fail(source, where + "mass must be positive, got " + std::to_string(in.mass));
   Eigen::Matrix3d i;
   i << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
@@ -57,8 +97,15 @@ BodyInertia combine(const BodyInertia& a, const BodyInertia& b) {
 }  // namespace
 
 RobotModel parse_robot_urdf(const std::string& xml, const std::string& source, std::optional<int> expected_dof) {
-  urdf::ModelInterfaceSharedPtr urdf = urdf::parseURDF(xml);
-  if (!urdf) fail(source, "not a valid URDF document (urdfdom rejected it)");
+  urdf::ModelInterfaceSharedPtr urdf;
+  std::string rejected;
+  {
+    UrdfdomErrors errors;
+    urdf = urdf::parseURDF(xml);
+    rejected = errors.joined;
+  }
+  if (!urdf || !rejected.empty())
+    fail(source, "not a valid URDF document: " + (rejected.empty() ? std::string("urdfdom rejected it") : rejected));
   urdf::LinkConstSharedPtr link = urdf->getRoot();
   if (!link) fail(source, "no root link");
 
@@ -70,6 +117,7 @@ RobotModel parse_robot_urdf(const std::string& xml, const std::string& source, s
     if (link->child_joints.size() > 1) fail(source, "link '" + link->name + "' has " + std::to_string(link->child_joints.size()) + " child joints; only a serial chain is supported");
     const urdf::Joint& joint = *link->child_joints.front();
     link = urdf->getLink(joint.child_link_name);
+    check_pose(joint.parent_to_joint_origin_transform, source, "joint '" + joint.name + "' <origin>");
     const Eigen::Isometry3d to_joint = pending * to_isometry(joint.parent_to_joint_origin_transform);
     switch (joint.type) {
       case urdf::Joint::FIXED:
@@ -82,10 +130,12 @@ RobotModel parse_robot_urdf(const std::string& xml, const std::string& source, s
         j.name = joint.name;
         j.origin = to_joint;
         const Eigen::Vector3d axis(joint.axis.x, joint.axis.y, joint.axis.z);
-        if (!(axis.norm() > 1e-9)) fail(source, "joint '" + joint.name + "': <axis> must be a nonzero vector");
+        if (!axis.allFinite() || !(axis.norm() > 1e-9))
+          fail(source, "joint '" + joint.name + "': <axis> must be a nonzero vector of finite numbers");
         j.axis = axis.normalized();
         if (joint.dynamics) {
-          if (joint.dynamics->damping < 0.0) fail(source, "joint '" + joint.name + "' <dynamics>: damping must be non-negative");
+          if (!(joint.dynamics->damping >= 0.0) || !std::isfinite(joint.dynamics->damping))
+            fail(source, "joint '" + joint.name + "' <dynamics>: damping must be a finite non-negative number");
           j.damping = joint.dynamics->damping;
         }
         j.body = link_inertia(*link, Eigen::Isometry3d::Identity(), source);

@@ -1,9 +1,14 @@
 #include "haptics/recording/session_format.hpp"
 
+#include <sys/stat.h>
+
 #include <bit>
+#include <cerrno>
+#include <cmath>
 #include <cstring>
-#include <fstream>
-#include <iterator>
+
+#include "haptics/recording/crc32.hpp"
+#include "io/input_limits.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -11,11 +16,20 @@ namespace {
 static_assert(std::endian::native == std::endian::little, "the recording format is little-endian");
 
 constexpr char kMagic[8] = {'N', 'E', 'E', 'D', 'L', 'R', 'E', 'C'};
+constexpr char kBlockMagic[4] = {'N', 'B', 'L', 'K'};
+constexpr char kEndMagic[4] = {'N', 'E', 'N', 'D'};
+// Bounds a header is checked against before anything it announces is read or allocated.
+constexpr uint32_t kMaxDeviceBytes = 4096;
+constexpr uint32_t kMaxContextBytes = 16u << 20;
+// Version 3's fixed part: magic, version, header_bytes, payload_version, record_bytes, rate, time.
+constexpr std::size_t kFixedHeaderBytes = 8 + 4 + 4 + 4 + 4 + 8 + 8;
 
-// One field list serves encoding, decoding and sizing: the visitor is called with every
-// field of the record in file order.
+// One field list serves encoding, decoding and sizing: the visitor is called with every field of
+// a record of payload version `version` in file order. Fields added later go at the end, behind
+// `if (version >= N)`.
 template <typename Visitor>
-void visit_record(Visitor& v, TickSample& s) {
+void visit_record(Visitor& v, TickSample& s, uint32_t version) {
+  (void)version;  // every field below is in payload version 1
   v(s.tick), v(s.time_ns), v(s.period_ns), v(s.compute_ns);
   DeviceReading& r = s.reading;
   v(r.sequence), v(r.connected), v(r.joint_count), v(r.buttons), v(r.has_sensed_force), v(r.has_joint_velocity);
@@ -58,28 +72,39 @@ void put(std::vector<uint8_t>& out, const T& value) {
 }
 
 template <typename T>
-bool take(const std::vector<uint8_t>& data, std::size_t& at, T& value) {
-  if (data.size() - at < sizeof(T)) return false;
-  std::memcpy(&value, data.data() + at, sizeof(T));
-  at += sizeof(T);
-  return true;
+T get(const uint8_t* at) {
+  T value;
+  std::memcpy(&value, at, sizeof(T));
+  return value;
+}
+
+template <typename T>
+void put_at(uint8_t* at, const T& value) {
+  std::memcpy(at, &value, sizeof(T));
+}
+
+std::string at_byte(uint64_t offset) { return "at byte " + std::to_string(offset); }
+
+std::string hz(double rate) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g Hz", rate);
+  return text;
 }
 
 }  // namespace
 
-std::size_t session_record_bytes() {
-  static const std::size_t bytes = [] {
-    Sizer sizer;
-    TickSample s;
-    visit_record(sizer, s);
-    return sizer.bytes;
-  }();
-  return bytes;
+std::size_t session_record_bytes(uint32_t payload_version) {
+  Sizer sizer;
+  TickSample s;
+  visit_record(sizer, s, payload_version);
+  return sizer.bytes;
 }
 
 std::vector<uint8_t> encode_header(const SessionHeader& header) {
   std::vector<uint8_t> out(kMagic, kMagic + sizeof kMagic);
-  put(out, header.version);
+  put(out, kSessionFormatVersion);
+  put(out, uint32_t{0});  // header_bytes, filled in below
+  put(out, kPayloadVersion);
   put(out, static_cast<uint32_t>(session_record_bytes()));
   put(out, header.rate_hz);
   put(out, header.unix_time_s);
@@ -87,56 +112,249 @@ std::vector<uint8_t> encode_header(const SessionHeader& header) {
   out.insert(out.end(), header.device.begin(), header.device.end());
   put(out, static_cast<uint32_t>(header.context.size()));
   out.insert(out.end(), header.context.begin(), header.context.end());
+  put_at(out.data() + 12, static_cast<uint32_t>(out.size() + 4));
+  put(out, crc32(out.data(), out.size()));
   return out;
 }
 
 void encode_record(const TickSample& sample, std::vector<uint8_t>& out) {
   Writer writer{out};
-  visit_record(writer, const_cast<TickSample&>(sample));
+  visit_record(writer, const_cast<TickSample&>(sample), kPayloadVersion);
 }
 
-Session read_session(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw RecordingError(path + ": cannot be opened");
-  const std::vector<uint8_t> data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  auto fail = [&path](const std::string& element, const std::string& what) {
-    return RecordingError(path + ": " + element + ": " + what);
-  };
-  if (data.size() < sizeof kMagic || std::memcmp(data.data(), kMagic, sizeof kMagic) != 0)
-    throw fail("header", "not a needle-sim session recording (expected magic NEEDLREC)");
-  std::size_t at = sizeof kMagic;
-  Session session;
-  uint32_t record_bytes = 0, name_length = 0;
-  if (!take(data, at, session.header.version)) throw fail("header", "truncated before the version");
-  if (session.header.version < 1 || session.header.version > kSessionFormatVersion)
-    throw fail("header", "format version " + std::to_string(session.header.version) + ", this build reads versions 1 to " +
-                             std::to_string(kSessionFormatVersion));
-  if (!take(data, at, record_bytes) || !take(data, at, session.header.rate_hz) ||
-      !take(data, at, session.header.unix_time_s) || !take(data, at, name_length) || data.size() - at < name_length)
-    throw fail("header", "truncated");
-  if (record_bytes != session_record_bytes())
-    throw fail("header", "record size " + std::to_string(record_bytes) + " bytes, expected " +
-                             std::to_string(session_record_bytes()));
-  session.header.device.assign(reinterpret_cast<const char*>(data.data() + at), name_length);
-  at += name_length;
-  if (session.header.version >= 2) {
-    uint32_t context_length = 0;
-    if (!take(data, at, context_length) || data.size() - at < context_length) throw fail("header", "truncated context");
-    session.header.context.assign(reinterpret_cast<const char*>(data.data() + at), context_length);
-    at += context_length;
-  }
+void encode_block_header(uint8_t* at, uint64_t first_record, uint32_t count) {
+  const std::size_t records = std::size_t(count) * session_record_bytes();
+  std::memcpy(at, kBlockMagic, 4);
+  put_at(at + 4, first_record);
+  put_at(at + 12, count);
+  put_at(at + 16, crc32(at + kBlockHeaderBytes, records));
+  put_at(at + 20, crc32(at, 20));
+}
 
-  const std::size_t body = data.size() - at;
-  // A kill can cut the last record short: everything before it is still good, so the
-  // partial record is dropped rather than failing the whole file.
-  session.records.resize(body / record_bytes);
-  session.trailing_bytes = body % record_bytes;
-  for (TickSample& s : session.records) {
-    Reader reader{data.data() + at};
-    visit_record(reader, s);
-    at += record_bytes;
+std::vector<uint8_t> encode_end(uint64_t record_total, bool ran_to_end) {
+  std::vector<uint8_t> out(kEndMagic, kEndMagic + 4);
+  put(out, record_total);
+  put(out, uint32_t{ran_to_end ? 1u : 0u});
+  put(out, crc32(out.data(), out.size()));
+  return out;
+}
+
+RecordingReader::RecordingReader(std::string path) : path_(std::move(path)) {
+  struct stat st {};
+  if (::stat(path_.c_str(), &st) != 0) fail("", std::string("cannot be opened: ") + std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) fail("", "is a folder, not a recording");
+  if (!S_ISREG(st.st_mode)) fail("", "not a regular file (a device or a pipe), not a recording");
+  file_ = std::fopen(path_.c_str(), "rb");
+  if (file_ == nullptr) fail("", std::string("cannot be opened: ") + std::strerror(errno));
+  size_ = uint64_t(st.st_size);
+
+  auto read_exactly = [this](std::size_t bytes) {
+    buffer_.resize(bytes);
+    return std::fread(buffer_.data(), 1, bytes, file_) == bytes;
+  };
+  // Magic and version first: 12 bytes decide whether anything more is read.
+  if (!read_exactly(12) || std::memcmp(buffer_.data(), kMagic, sizeof kMagic) != 0)
+    fail("header", "not a needle-sim session recording (expected magic NEEDLREC)");
+  header_.version = get<uint32_t>(buffer_.data() + 8);
+  if (header_.version < 1 || header_.version > kSessionFormatVersion)
+    fail("header", "format version " + std::to_string(header_.version) + ", this build reads versions 1 to " +
+                       std::to_string(kSessionFormatVersion));
+
+  std::size_t fixed = 0, header_bytes = 0;
+  if (header_.version >= 3) {
+    if (!read_exactly(4)) fail("header", "truncated");
+    header_bytes = get<uint32_t>(buffer_.data());
+    constexpr std::size_t kMaxHeaderBytes = kFixedHeaderBytes + 4 + kMaxDeviceBytes + 4 + kMaxContextBytes + 4;
+    if (header_bytes < kFixedHeaderBytes + 12 || header_bytes > kMaxHeaderBytes)
+      fail("header", "length " + std::to_string(header_bytes) + " bytes is not a header's");
+    if (header_bytes > size_) fail("header", "truncated (the file has " + std::to_string(size_) + " bytes)");
+    // The whole header is checked before any of its fields is believed.
+    std::vector<uint8_t> head(header_bytes);
+    std::fseek(file_, 0, SEEK_SET);
+    if (std::fread(head.data(), 1, header_bytes, file_) != header_bytes) fail("header", "truncated");
+    if (crc32(head.data(), header_bytes - 4) != get<uint32_t>(head.data() + header_bytes - 4))
+      fail("header", "checksum mismatch: the header was changed or damaged");
+    buffer_ = std::move(head);
+    header_.payload_version = get<uint32_t>(buffer_.data() + 16);
+    record_bytes_ = get<uint32_t>(buffer_.data() + 20);
+    fixed = 24;
+  } else {
+    std::vector<uint8_t> head = buffer_;  // the magic and the version, as read
+    if (!read_exactly(20)) fail("header", "truncated");  // record_bytes, rate, time
+    head.insert(head.end(), buffer_.begin(), buffer_.end());
+    buffer_ = std::move(head);
+    header_.payload_version = 1;
+    record_bytes_ = get<uint32_t>(buffer_.data() + 12);
+    fixed = 16;
   }
+  if (header_.payload_version < 1 || header_.payload_version > kPayloadVersion)
+    fail("header", "payload version " + std::to_string(header_.payload_version) + ", this build reads versions 1 to " +
+                       std::to_string(kPayloadVersion));
+  if (record_bytes_ != session_record_bytes(header_.payload_version))
+    fail("header", "record size " + std::to_string(record_bytes_) + " bytes, expected " +
+                       std::to_string(session_record_bytes(header_.payload_version)) + " for payload version " +
+                       std::to_string(header_.payload_version));
+  header_.rate_hz = get<double>(buffer_.data() + fixed);
+  header_.unix_time_s = get<int64_t>(buffer_.data() + fixed + 8);
+  if (!(header_.rate_hz >= 1.0 && header_.rate_hz <= 1e5))
+    fail("header", "loop rate " + hz(header_.rate_hz) + " is not one a session runs at");
+
+  // The two strings, their lengths bounded before anything is allocated for them.
+  std::size_t at = fixed + 16;
+  auto string_field = [&](std::string& out, uint32_t max, const char* what) {
+    if (header_.version < 3) {
+      if (!read_exactly(4)) fail("header", std::string("truncated before the ") + what);
+    } else if (at + 4 > header_bytes - 4) {
+      fail("header", std::string("truncated before the ") + what);
+    }
+    const uint8_t* p = header_.version < 3 ? buffer_.data() : buffer_.data() + at;
+    const uint32_t length = get<uint32_t>(p);
+    at += 4;
+    if (length > max) fail("header", std::string(what) + " of " + std::to_string(length) + " bytes (at most " + std::to_string(max) + ")");
+    if (header_.version < 3) {
+      std::vector<uint8_t> bytes(length);
+      if (length > size_ || std::fread(bytes.data(), 1, length, file_) != length) fail("header", std::string("truncated ") + what);
+      out.assign(bytes.begin(), bytes.end());
+    } else {
+      if (at + length > header_bytes - 4) fail("header", std::string("truncated ") + what);
+      out.assign(reinterpret_cast<const char*>(buffer_.data() + at), length);
+    }
+    at += length;
+  };
+  string_field(header_.device, kMaxDeviceBytes, "device name");
+  if (header_.version >= 2) string_field(header_.context, kMaxContextBytes, "context");
+  if (header_.version >= 3 && at != header_bytes - 4) fail("header", "length does not match its fields");
+  offset_ = header_.version >= 3 ? header_bytes : uint64_t(std::ftell(file_));
+  end_.checksummed = header_.version >= 3;
+  end_.whole_bytes = offset_;
+
+  // Sizes before records: a file longer than the longest session at this rate is refused now,
+  // not after reading it.
+  max_records_ = uint64_t(io::kMaxSessionSeconds * header_.rate_hz) + 1;
+  const uint64_t most_bytes = max_records_ * (record_bytes_ + kBlockHeaderBytes) + kEndBytes;
+  if (size_ - offset_ > most_bytes)
+    fail("", std::to_string(size_) + " bytes: more than a session of at most " +
+                 std::to_string(int(io::kMaxSessionSeconds / 60)) + " minutes at " + hz(header_.rate_hz) + " can hold");
+}
+
+RecordingReader::~RecordingReader() {
+  if (file_ != nullptr) std::fclose(file_);
+}
+
+void RecordingReader::fail(const std::string& element, const std::string& what) const {
+  throw RecordingError(path_ + ": " + (element.empty() ? "" : element + ": ") + what);
+}
+
+bool RecordingReader::next(std::vector<TickSample>& records) {
+  records.clear();
+  if (done_) return false;
+  const bool more = header_.version >= 3 ? next_block(records) : next_bare(records);
+  if (!more) done_ = true;
+  records_read_ += records.size();
+  if (records_read_ > max_records_)
+    fail("", "more than " + std::to_string(max_records_) + " ticks: longer than a session of at most " +
+                 std::to_string(int(io::kMaxSessionSeconds / 60)) + " minutes");
+  return more;
+}
+
+bool RecordingReader::next_bare(std::vector<TickSample>& records) {
+  const uint64_t left = size_ - offset_;
+  const std::size_t count = std::size_t(std::min<uint64_t>(left / record_bytes_, 256));
+  if (count == 0) {
+    end_.trailing_bytes = std::size_t(left);
+    return false;
+  }
+  buffer_.resize(count * record_bytes_);
+  if (std::fread(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size()) fail(at_byte(offset_), "cannot be read");
+  records.resize(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    Reader reader{buffer_.data() + k * record_bytes_};
+    visit_record(reader, records[k], header_.payload_version);
+  }
+  offset_ += buffer_.size();
+  end_.whole_bytes = offset_;
+  return true;
+}
+
+bool RecordingReader::next_block(std::vector<TickSample>& records) {
+  const uint64_t left = size_ - offset_;
+  const std::string where = "block " + at_byte(offset_);
+  // A file that ends here, or inside a block's header or records, was cut: what came before is whole.
+  auto cut = [&] {
+    end_.trailing_bytes = std::size_t(left);
+    return false;
+  };
+  if (left < 4) return cut();
+  buffer_.resize(4);
+  if (std::fread(buffer_.data(), 1, 4, file_) != 4) fail(where, "cannot be read");
+  if (std::memcmp(buffer_.data(), kEndMagic, 4) == 0) {
+    const std::string end_where = "end " + at_byte(offset_);
+    if (left < kEndBytes) return cut();
+    buffer_.resize(kEndBytes);
+    if (std::fread(buffer_.data() + 4, 1, kEndBytes - 4, file_) != kEndBytes - 4) fail(end_where, "cannot be read");
+    if (crc32(buffer_.data(), 16) != get<uint32_t>(buffer_.data() + 16)) fail(end_where, "checksum mismatch (damaged)");
+    const uint64_t total = get<uint64_t>(buffer_.data() + 4);
+    if (total != records_read_)
+      fail(end_where, "says " + std::to_string(total) + " ticks, the blocks hold " + std::to_string(records_read_));
+    if (left > kEndBytes) fail(end_where, std::to_string(left - kEndBytes) + " bytes after the end of the recording");
+    end_.closed = true;
+    end_.ran_to_end = (get<uint32_t>(buffer_.data() + 12) & 1u) != 0;
+    offset_ += kEndBytes;
+    end_.whole_bytes = offset_;
+    return false;
+  }
+  if (std::memcmp(buffer_.data(), kBlockMagic, 4) != 0) fail(where, "not a block of records (damaged)");
+  if (left < kBlockHeaderBytes) return cut();
+  buffer_.resize(kBlockHeaderBytes);
+  if (std::fread(buffer_.data() + 4, 1, kBlockHeaderBytes - 4, file_) != kBlockHeaderBytes - 4) fail(where, "cannot be read");
+  if (crc32(buffer_.data(), 20) != get<uint32_t>(buffer_.data() + 20)) fail(where, "header checksum mismatch (damaged)");
+  const uint64_t first = get<uint64_t>(buffer_.data() + 4);
+  const uint32_t count = get<uint32_t>(buffer_.data() + 12);
+  const uint32_t records_crc = get<uint32_t>(buffer_.data() + 16);
+  if (first != records_read_)
+    fail(where, "starts at tick " + std::to_string(first) + ", expected " + std::to_string(records_read_) +
+                    " (a block is missing or repeated)");
+  if (count == 0 || count > kMaxBlockRecords)
+    fail(where, std::to_string(count) + " records (expected 1 to " + std::to_string(kMaxBlockRecords) + ")");
+  const std::size_t bytes = std::size_t(count) * record_bytes_;
+  if (left - kBlockHeaderBytes < bytes) return cut();
+  buffer_.resize(bytes);
+  if (std::fread(buffer_.data(), 1, bytes, file_) != bytes) fail(where, "cannot be read");
+  if (crc32(buffer_.data(), bytes) != records_crc) fail(where, "records checksum mismatch (damaged)");
+  records.resize(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    Reader reader{buffer_.data() + k * record_bytes_};
+    visit_record(reader, records[k], header_.payload_version);
+  }
+  offset_ += kBlockHeaderBytes + bytes;
+  end_.whole_bytes = offset_;
+  return true;
+}
+
+SessionHeader read_header(const std::string& path) { return RecordingReader(path).header(); }
+
+Session read_session(const std::string& path) {
+  RecordingReader reader(path);
+  Session session;
+  session.header = reader.header();
+  std::vector<TickSample> block;
+  while (reader.next(block)) session.records.insert(session.records.end(), block.begin(), block.end());
+  session.end = reader.end();
   return session;
+}
+
+std::vector<std::string> recording_notes(const std::string& path, const RecordingEnd& end, uint64_t records) {
+  std::vector<std::string> notes;
+  if (!end.checksummed)
+    notes.push_back(path + ": an older format without checksums: damage to its records cannot be detected");
+  if (end.checksummed && !end.closed)
+    notes.push_back(path + ": cut at byte " + std::to_string(end.whole_bytes) + " after " + std::to_string(records) +
+                    " ticks (its run stopped without closing it" +
+                    (end.trailing_bytes ? ", " + std::to_string(end.trailing_bytes) + " bytes of a last block lost" : "") +
+                    "): read up to there");
+  if (!end.checksummed && end.trailing_bytes)
+    notes.push_back(path + ": " + std::to_string(end.trailing_bytes) + " bytes of a last record cut short, dropped");
+  return notes;
 }
 
 }  // namespace needle::haptics

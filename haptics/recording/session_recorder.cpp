@@ -1,5 +1,7 @@
 #include "haptics/recording/session_recorder.hpp"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
 
@@ -12,38 +14,41 @@ SessionRecorder::SessionRecorder(const std::string& path, const SessionHeader& h
   if (file_ == nullptr) throw RecordingError(path + ": cannot be created: " + std::strerror(errno));
   const std::vector<uint8_t> head = encode_header(header);
   if (std::fwrite(head.data(), 1, head.size(), file_) != head.size() || std::fflush(file_) != 0) {
+    const int error = errno;
     std::fclose(file_);
-    throw RecordingError(path + ": header: cannot be written: " + std::strerror(errno));
+    file_ = nullptr;
+    throw RecordingError(path + ": header: cannot be written: " + std::strerror(error));
   }
-  buffer_.reserve(256 * session_record_bytes());
+  buffer_.reserve(kBlockHeaderBytes + kBlockRecords * session_record_bytes());
+  static_assert(kBlockRecords <= kMaxBlockRecords);
 }
 
-SessionRecorder::~SessionRecorder() {
-  try {
-    stop();
-  } catch (...) {
-    // Destructors must not throw; error() keeps the cause for whoever asks.
-  }
-  if (file_ != nullptr) std::fclose(file_);
+SessionRecorder::~SessionRecorder() { stop(); }
+
+void SessionRecorder::write_block() {
+  if (block_records_ == 0) return;
+  encode_block_header(buffer_.data(), written_.load(std::memory_order_relaxed), block_records_);
+  if (std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size())
+    throw RecordingError(path_ + ": records: cannot be written: " + std::strerror(errno));
+  written_.fetch_add(block_records_, std::memory_order_relaxed);
+  buffer_.clear();
+  block_records_ = 0;
 }
 
 std::size_t SessionRecorder::drain() {
-  auto write_buffer = [this] {
-    if (!buffer_.empty() && std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size())
-      throw RecordingError(path_ + ": records: cannot be written: " + std::strerror(errno));
-    buffer_.clear();
-  };
+  if (file_ == nullptr) throw RecordingError(path_ + ": records: the recording is closed");
   std::size_t count = 0;
   TickSample sample;
   while (samples_.pop(sample)) {
+    if (block_records_ == 0) buffer_.resize(kBlockHeaderBytes);  // within the reserved capacity
     encode_record(sample, buffer_);
+    ++block_records_;
     ++count;
     if (sink_) sink_(sample);
-    if (buffer_.size() + session_record_bytes() > buffer_.capacity()) write_buffer();
+    if (block_records_ == kBlockRecords) write_block();
   }
-  write_buffer();
+  write_block();
   if (std::fflush(file_) != 0) throw RecordingError(path_ + ": records: cannot be flushed: " + std::strerror(errno));
-  written_.fetch_add(count, std::memory_order_relaxed);
   return count;
 }
 
@@ -63,12 +68,39 @@ void SessionRecorder::start() {
   });
 }
 
-void SessionRecorder::stop() {
+void SessionRecorder::close(bool ran_to_end) {
+  const std::vector<uint8_t> end = encode_end(written_.load(), ran_to_end);
+  int error = 0;
+  if (std::fwrite(end.data(), 1, end.size(), file_) != end.size() || std::fflush(file_) != 0) error = errno;
+  if (error == 0 && ::fsync(::fileno(file_)) != 0) error = errno;
+  if (std::fclose(file_) != 0 && error == 0) error = errno;
+  file_ = nullptr;
+  if (error != 0) throw RecordingError(path_ + ": end: cannot be written: " + std::strerror(error));
+}
+
+void SessionRecorder::stop(bool ran_to_end) {
   if (thread_.joinable()) {
     stop_ = true;
     thread_.join();
   }
-  if (!failed_ && file_ != nullptr) drain();
+  if (file_ == nullptr) return;
+  try {
+    if (!failed_) drain();
+  } catch (const std::exception& e) {
+    error_ = e.what();
+    failed_ = true;
+  }
+  try {
+    if (failed_) {
+      std::fclose(file_);  // no end mark: the file reads as cut after its last whole block
+      file_ = nullptr;
+    } else {
+      close(ran_to_end);
+    }
+  } catch (const std::exception& e) {
+    error_ = e.what();
+    failed_ = true;
+  }
 }
 
 std::string SessionRecorder::error() const { return failed_.load() ? error_ : std::string(); }

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "haptics/model/urdf_loader.hpp"
+#include "io/input_limits.hpp"
 #include "io/strict_json.hpp"
 
 namespace needle::haptics {
@@ -75,8 +76,9 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
                                                                                "friction_N_per_m", "static_friction_N_per_m"};
     for (const char* key : required) member(j, "", key);
     const LayerParameters p{mechanics(j, "", &references), acoustics(j, "", &references)};
-    for (const auto& [key, text] : references.items()) {
-      string(text, "/references/" + key);
+    for (const auto& item : references.items()) {
+      const std::string& key = item.key();  // not a structured binding: clang before 16 cannot capture one
+      string(item.value(), "/references/" + key);
       if (std::none_of(sources_.begin(), sources_.end(), [&](const std::string& s) { return s.find(key) != std::string::npos; }))
         fail("/references/" + key, "not cited by any parameter's source");
     }
@@ -129,7 +131,8 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     const int n = s.master.dof();
     s.base_in_world = vec3(member(j, "", "robot_base_in_world_m"), "/robot_base_in_world_m");
     s.period_s = positive(member(j, "", "period_s"), "/period_s");
-    s.duration_s = positive(member(j, "", "duration_s"), "/duration_s");
+    s.duration_s = in_range(member(j, "", "duration_s"), "/duration_s", 1e-9, io::kMaxSessionSeconds,
+                            "(0, " + std::to_string(int(io::kMaxSessionSeconds)) + "] s");
     s.master_substeps = int(whole(member(j, "", "master_substeps"), "/master_substeps", 1, 1000000));
     s.virtual_substeps = int(whole(member(j, "", "virtual_substeps"), "/virtual_substeps", 1, 1000000));
     s.q0 = vector(member(j, "", "q0_rad"), "/q0_rad", n);
@@ -326,26 +329,9 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
   }
 
   void hand(const json& h, const std::string& at, Scenario& s) const {
-    object(h, at, {"mass_kg", "damping_Ns_per_m", "stiffness_N_per_m", "grip_length_m", "waypoints"});
-    if (h.contains("mass_kg")) s.hand.mass_kg = positive(h["mass_kg"], at + "/mass_kg");
-    if (h.contains("damping_Ns_per_m")) s.hand.damping_Ns_per_m = non_negative(h["damping_Ns_per_m"], at + "/damping_Ns_per_m");
-    if (h.contains("stiffness_N_per_m")) s.hand.stiffness_N_per_m = non_negative(h["stiffness_N_per_m"], at + "/stiffness_N_per_m");
-    if (h.contains("grip_length_m")) s.hand.grip_length_m = positive(h["grip_length_m"], at + "/grip_length_m");
-    const json& wps = member(h, at, "waypoints");
-    if (!wps.is_array() || wps.empty()) fail(at + "/waypoints", "expected a non-empty array of waypoints");
-    std::vector<HandWaypoint> waypoints;
-    for (size_t i = 0; i < wps.size(); ++i) {
-      const std::string where = at + "/waypoints/" + std::to_string(i);
-      object(wps[i], where, {"t", "p", "dir"});
-      waypoints.push_back({number(member(wps[i], where, "t"), where + "/t"),
-                           vec3(member(wps[i], where, "p"), where + "/p") - s.base_in_world,
-                           vec3(member(wps[i], where, "dir"), where + "/dir")});
-    }
-    try {
-      s.trajectory = HandTrajectory(std::move(waypoints));
-    } catch (const std::invalid_argument& e) {
-      fail(at + "/waypoints", std::string("expected valid waypoints: ") + e.what());
-    }
+    OperatorHand read = read_hand(h, file_, at, s.base_in_world);
+    s.hand = read.impedance;
+    s.trajectory = std::move(read.trajectory);
   }
 
   void sensor(const json& j, const std::string& at, ForceSensorParams& out) const {
@@ -360,6 +346,41 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
 };
 
 }  // namespace
+
+OperatorHand read_hand(const json& h, const std::string& file, const std::string& at, const Eigen::Vector3d& base_in_world) {
+  const io::StrictJsonReader<ScenarioError> r(file);
+  auto vec3 = [&r](const json& v, const std::string& where) {
+    const auto a = r.numbers<3>(v, where);
+    return Eigen::Vector3d(a[0], a[1], a[2]);
+  };
+  r.object(h, at, {"mass_kg", "damping_Ns_per_m", "stiffness_N_per_m", "grip_length_m", "waypoints"});
+  OperatorHand out;
+  HandImpedance& i = out.impedance;
+  if (h.contains("mass_kg")) i.mass_kg = r.positive(h["mass_kg"], at + "/mass_kg");
+  if (h.contains("damping_Ns_per_m")) i.damping_Ns_per_m = r.non_negative(h["damping_Ns_per_m"], at + "/damping_Ns_per_m");
+  if (h.contains("stiffness_N_per_m")) i.stiffness_N_per_m = r.non_negative(h["stiffness_N_per_m"], at + "/stiffness_N_per_m");
+  if (h.contains("grip_length_m")) i.grip_length_m = r.positive(h["grip_length_m"], at + "/grip_length_m");
+  const json& wps = r.member(h, at, "waypoints");
+  if (!wps.is_array() || wps.empty()) r.fail(at + "/waypoints", "expected a non-empty array of waypoints");
+  std::vector<HandWaypoint> waypoints;
+  for (size_t k = 0; k < wps.size(); ++k) {
+    const std::string where = at + "/waypoints/" + std::to_string(k);
+    r.object(wps[k], where, {"t", "p", "dir"});
+    // A time past the longest session would make a run that never ends (docs/TASKS.md, "Limits").
+    const double t = r.in_range(r.member(wps[k], where, "t"), where + "/t", 0.0, io::kMaxSessionSeconds,
+                                "[0, " + std::to_string(int(io::kMaxSessionSeconds)) + "] s");
+    if (!waypoints.empty() && !(t > waypoints.back().t))
+      r.fail(where + "/t", "must be after the waypoint before it (" + std::to_string(waypoints.back().t) + " s)");
+    waypoints.push_back({t, vec3(r.member(wps[k], where, "p"), where + "/p") - base_in_world,
+                         vec3(r.member(wps[k], where, "dir"), where + "/dir")});
+  }
+  try {
+    out.trajectory = HandTrajectory(std::move(waypoints));
+  } catch (const std::invalid_argument& e) {
+    r.fail(at + "/waypoints", std::string("expected valid waypoints: ") + e.what());
+  }
+  return out;
+}
 
 Scenario load_scenario(const std::string& path) {
   return ScenarioReader(path, std::filesystem::path(path).parent_path())

@@ -2,6 +2,7 @@
 // sensor, device and run length. Loading converts world coordinates to the robots' base frame.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 
@@ -44,5 +45,18 @@ struct Scenario {
 };
 
 Scenario load_scenario(const std::string& path);
+
+// An operator's hand: its impedance and its trajectory, in the robots' base frame.
+struct OperatorHand {
+  HandImpedance impedance;
+  HandTrajectory trajectory;
+};
+
+// The `hand` block of a scenario or of an operator script (docs/TASKS.md) at JSON pointer `at` of
+// `file`, read strictly: an unknown key, a mass <= 0, a waypoint time outside [0,
+// io::kMaxSessionSeconds] or not after the one before is ScenarioError "FILE: /hand/...: what".
+// Waypoint positions are given in the world frame and shifted by -base_in_world.
+OperatorHand read_hand(const nlohmann::json& hand, const std::string& file, const std::string& at,
+                       const Eigen::Vector3d& base_in_world);
 
 }  // namespace needle::haptics

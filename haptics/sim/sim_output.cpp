@@ -1,10 +1,10 @@
 #include "haptics/sim/sim_output.hpp"
 
+#include <cstdarg>
+#include <algorithm>
 #include <cstdio>
-#include <memory>
-#include <stdexcept>
 
-#include "io/write_file.hpp"
+#include "io/file_write.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -17,29 +17,38 @@ std::string csv_field(const std::string& text) {
   return out + "\"";
 }
 
+// printf onto the end of `out`.
+[[gnu::format(printf, 2, 3)]] void append(std::string& out, const char* format, ...) {
+  char buffer[64];
+  va_list args;
+  va_start(args, format);
+  const int n = std::vsnprintf(buffer, sizeof buffer, format, args);
+  va_end(args);
+  out.append(buffer, size_t(std::min<int>(n, int(sizeof buffer) - 1)));
+}
+
 }  // namespace
 
 void write_ticks_csv(const std::string& path, const std::vector<TickRecord>& ticks, int dof, const TissueModel& tissue) {
-  std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), "w"), &std::fclose);
-  if (!f) throw std::runtime_error(path + ": cannot write");
-  std::string header = "t";
+  std::string csv = "t";
   for (const char* robot : {"q_m", "q_v"})
-    for (int i = 1; i <= dof; ++i) header += "," + std::string(robot) + std::to_string(i);
+    for (int i = 1; i <= dof; ++i) csv += "," + std::string(robot) + std::to_string(i);
   for (const char* v : {"x_m", "x_v", "F_h", "F_v"})
-    for (const char* axis : {"_x", "_y", "_z"}) header += "," + std::string(v) + axis;
-  header += ",lambda_v1,lambda_v2,lambda_m1,lambda_m2,phi,psi1,psi2,energy,mode,axial_force_N,layer\n";
-  std::fputs(header.c_str(), f.get());
+    for (const char* axis : {"_x", "_y", "_z"}) csv += "," + std::string(v) + axis;
+  csv += ",lambda_v1,lambda_v2,lambda_m1,lambda_m2,phi,psi1,psi2,energy,mode,axial_force_N,layer\n";
   for (const TickRecord& r : ticks) {
-    std::fprintf(f.get(), "%.6f", r.t);
+    append(csv, "%.6f", r.t);
     for (const VecN* q : {&r.q_m, &r.q_v})
-      for (int i = 0; i < dof; ++i) std::fprintf(f.get(), ",%.9g", (*q)[i]);
+      for (int i = 0; i < dof; ++i) append(csv, ",%.9g", (*q)[i]);
     for (const Eigen::Vector3d* v : {&r.x_m, &r.x_v, &r.force_h, &r.force_v})
-      for (int i = 0; i < 3; ++i) std::fprintf(f.get(), ",%.9g", (*v)[i]);
-    std::fprintf(f.get(), ",%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%s,%.9g,%s\n", r.lambda_v[0], r.lambda_v[1], r.lambda_m[0],
-                 r.lambda_m[1], r.phi, r.psi[0], r.psi[1], r.energy, contact_mode_name(r.mode), r.axial_force_N,
-                 r.layer < 0 ? "" : csv_field(tissue.layer(r.layer).name).c_str());
+      for (int i = 0; i < 3; ++i) append(csv, ",%.9g", (*v)[i]);
+    for (double x : {r.lambda_v[0], r.lambda_v[1], r.lambda_m[0], r.lambda_m[1], r.phi, r.psi[0], r.psi[1], r.energy})
+      append(csv, ",%.9g", x);
+    csv += std::string(",") + contact_mode_name(r.mode);
+    append(csv, ",%.9g,", r.axial_force_N);
+    csv += (r.layer < 0 ? std::string() : csv_field(tissue.layer(r.layer).name)) + "\n";
   }
-  if (std::ferror(f.get())) throw std::runtime_error(path + ": write failed");
+  io::write_file(path, csv);
 }
 
 void write_summary_json(const std::string& path, const SimSummary& summary) {

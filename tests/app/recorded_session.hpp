@@ -40,7 +40,7 @@ inline RecordedSession record_session(const std::filesystem::path& db, const Rec
   RecordedSession out;
   out.id = session.session_id();
   out.recording = session.recording_path();
-  if (spec.finish) out.result = session.finish();
+  if (spec.finish) out.result = *session.finish();
   out.samples = session.samples();
   return out;
 }

@@ -183,6 +183,33 @@ TEST_F(SceneFaults, WrongTypesAndValues) {
   expect_error(scene, {"/assets", "non-empty array"});
 }
 
+// Numbers a float cannot hold or a picture cannot use: far = 1e39 rendered blank, a rotation of
+// 1e308 components made the asset vanish. Each is refused with its pointer and the range.
+TEST_F(SceneFaults, NumbersOutOfRangeAreRefused) {
+  nlohmann::json scene = base;
+  scene["camera"]["far"] = 1e39;
+  expect_error(scene, {"/camera/far", "must be within ±10000, got 1e+39"});
+  scene = base;
+  scene["camera"]["near"] = 1e-9;
+  scene["camera"]["far"] = 10;
+  expect_error(scene, {"/camera/far", "must be at most 1e+07 times near"});
+  scene = base;
+  scene["assets"][0]["rotation"] = {1e308, 1e308, 1e308, 1e308};
+  expect_error(scene, {"/assets/0/rotation/0", "must be within ±1e+06, got 1e+308"});
+  scene = base;
+  scene["assets"][0]["translation"] = {0, -3e38, 0};
+  expect_error(scene, {"/assets/0/translation/1", "must be within ±10000"});
+  scene = base;
+  scene["assets"][0]["scale"] = {1, 1e-30, 1};
+  expect_error(scene, {"/assets/0/scale", "a scale under 1e-06 flattens the asset"});
+  scene = base;
+  scene["camera"]["position"] = {0, -1e300, 0};
+  expect_error(scene, {"/camera/position/1", "must be within ±10000"});
+  scene = base;
+  scene["lights"] = {{"directional", {{{"direction", {0, 0, -1}}, {"intensity", 1e30}}}}};
+  expect_error(scene, {"/lights/directional/0/intensity", "must be within ±1000"});
+}
+
 TEST_F(SceneFaults, MissingGltfAndDuplicateNames) {
   nlohmann::json scene = base;
   scene["assets"][0]["gltf"] = "absent.gltf";

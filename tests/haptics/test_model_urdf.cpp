@@ -61,6 +61,29 @@ TEST(ModelUrdf, RejectsBranchingTree) {
 
 TEST(ModelUrdf, RejectsMalformedXml) { expect_error("<robot name='r'><link name='a'>", "not a valid URDF document"); }
 
+// urdfdom logs what it cannot read over several lines and may still return a model (a mass of
+// "nan" became 0, reported as "must be positive, got 0.000000"): its errors become one line.
+TEST(ModelUrdf, WhatUrdfdomRejectsIsOneLineWithItsReason) {
+  expect_error(one_joint("revolute", inertial("nan", "1", "1", "1")),
+               "robot.urdf: not a valid URDF document: Inertial: mass [nan] is not a float; Could not parse inertial "
+               "element for Link [arm]");
+  expect_error(one_joint("bogus", inertial("1", "1", "1", "1")),
+               "not a valid URDF document: Joint [j1] has no known type [bogus]");
+  try {
+    parse_robot_urdf(one_joint("revolute", inertial("1", "x", "1", "1")), "robot.urdf");
+    FAIL();
+  } catch (const UrdfError& e) {
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+  }
+}
+
+TEST(ModelUrdf, RejectsNumbersThatAreNotFinite) {
+  std::string xml = one_joint("revolute", inertial("1", "1", "1", "1"));
+  xml.replace(xml.find("<axis"), 0, R"(<origin xyz="0 0 1e999" rpy="0 0 0"/>)");
+  expect_error(xml, "not a valid URDF document");  // urdfdom refuses 1e999 itself
+  expect_error(one_joint("revolute", inertial("1e999", "1", "1", "1")), "not a valid URDF document");
+}
+
 TEST(ModelUrdf, MissingFileIsNamed) {
   try {
     load_robot_urdf("/nonexistent/robot.urdf");

@@ -42,7 +42,7 @@ std::vector<TickSample> run_ticks(HapticDevice& device, int ticks, SessionRecord
   tick.set_step(&step);
   std::vector<TickSample> kept;
   for (int k = 0; k < ticks; ++k) {
-    tick.run(TickTiming{static_cast<uint64_t>(k), k * 1000000, 1000000, false}, 1.0 / kRate);
+    tick.run(TickTiming{static_cast<uint64_t>(k), int64_t(k) * 1000000, 1000000, false}, 1.0 / kRate);
     kept.push_back(tick.last_sample());
     if (recorder != nullptr && k % 500 == 499) recorder->drain();  // as the recorder thread would
   }
@@ -67,7 +67,9 @@ TEST(RecordingReplay, ReplayReproducesTheSimulationStateBitForBit) {
   EXPECT_EQ(session.header.device, "scripted");
   EXPECT_EQ(session.header.rate_hz, kRate);
   ASSERT_EQ(session.records.size(), live.size());
-  EXPECT_EQ(session.trailing_bytes, 0u);
+  EXPECT_TRUE(session.end.checksummed);
+  EXPECT_TRUE(session.end.closed);
+  EXPECT_EQ(session.end.trailing_bytes, 0u);
 
   ReplayDevice replay(path);
   replay.open();
@@ -129,6 +131,7 @@ TEST(RecordingReplay, EveryDrainIsOnDiskBeforeTheRecorderCloses) {
   // Read through another handle while the recorder is still open, as after a kill.
   const Session seen = read_session(path);
   ASSERT_EQ(seen.records.size(), 10u);
+  EXPECT_FALSE(seen.end.closed);  // no end mark yet: read as a file cut after its last whole block
   EXPECT_EQ(seen.records[9].tick, 9u);
   std::filesystem::remove(path);
 }
@@ -184,38 +187,6 @@ TEST(RecordingReplay, ControllerReplayIsBitForBit) {
   std::filesystem::remove(path);
 }
 
-void write_bytes(const std::string& path, const std::vector<uint8_t>& bytes) {
-  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-}
-
-TEST(RecordingReplay, DamagedFilesAreRejectedNamingFileAndElement) {
-  const std::string path = temp_path("bad.nsrec");
-  write_bytes(path, {'N', 'O', 'T', 'A', 'R', 'E', 'C', '!'});
-  try {
-    read_session(path);
-    FAIL();
-  } catch (const RecordingError& e) {
-    EXPECT_NE(std::string(e.what()).find(path + ": header: not a needle-sim session recording"), std::string::npos) << e.what();
-  }
-  SessionHeader future;
-  future.version = kSessionFormatVersion + 1;
-  write_bytes(path, encode_header(future));
-  EXPECT_THROW(read_session(path), RecordingError);
-
-  // A kill mid-record: the complete records survive, the partial one is reported.
-  std::vector<uint8_t> bytes = encode_header({kSessionFormatVersion, kRate, 0, "x", ""});
-  TickSample s;
-  encode_record(s, bytes);
-  encode_record(s, bytes);
-  bytes.resize(bytes.size() - 7);
-  write_bytes(path, bytes);
-  const Session cut = read_session(path);
-  EXPECT_EQ(cut.records.size(), 1u);
-  EXPECT_EQ(cut.trailing_bytes, session_record_bytes() - 7);
-  std::filesystem::remove(path);
-  EXPECT_THROW(ReplayDevice(path).open(), RecordingError);
-}
-
 TEST(RecordingReplay, TheSinkSeesEverySampleInTickOrder) {
   const std::string path = temp_path("sink.nsrec");
   SpscRing<TickSample> ring(1024);
@@ -242,41 +213,6 @@ TEST(RecordingReplay, ASinkThatThrowsStopsTheThreadWithItsMessage) {
   while (recorder.error().empty()) std::this_thread::sleep_for(SessionRecorder::kPassInterval);
   recorder.stop();
   EXPECT_EQ(recorder.error(), "scorer refused");
-  std::filesystem::remove(path);
-}
-
-TEST(RecordingReplay, TheContextRoundTripsAndVersionOneFilesStillRead) {
-  const std::string path = temp_path("context.nsrec");
-  const std::string context = R"({"task": "t.json", "bytes": "\u00e9\n"})";
-  write_bytes(path, encode_header({kSessionFormatVersion, kRate, 42, "sim", context}));
-  const Session now = read_session(path);
-  EXPECT_EQ(now.header.version, 2u);
-  EXPECT_EQ(now.header.context, context);
-  EXPECT_EQ(now.header.device, "sim");
-
-  // Version 1, written byte by byte as the old build did: no context after the device name.
-  std::vector<uint8_t> old = {'N', 'E', 'E', 'D', 'L', 'R', 'E', 'C'};
-  auto put = [&old](const auto& value) {
-    const auto* p = reinterpret_cast<const uint8_t*>(&value);
-    old.insert(old.end(), p, p + sizeof value);
-  };
-  put(uint32_t{1}), put(static_cast<uint32_t>(session_record_bytes())), put(kRate), put(int64_t{7}), put(uint32_t{3});
-  old.insert(old.end(), {'s', 'i', 'm'});
-  TickSample s;
-  s.tick = 9;
-  encode_record(s, old);
-  write_bytes(path, old);
-  const Session v1 = read_session(path);
-  EXPECT_EQ(v1.header.version, 1u);
-  EXPECT_EQ(v1.header.device, "sim");
-  EXPECT_EQ(v1.header.context, "");
-  ASSERT_EQ(v1.records.size(), 1u);
-  EXPECT_EQ(v1.records[0].tick, 9u);
-
-  std::vector<uint8_t> cut = encode_header({kSessionFormatVersion, kRate, 0, "sim", context});
-  cut.resize(cut.size() - 3);
-  write_bytes(path, cut);
-  EXPECT_THROW(read_session(path), RecordingError);
   std::filesystem::remove(path);
 }
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "haptics/sim/allocation_count.hpp"
+#include "tests/support/allocation_count.hpp"
 #include "haptics/tissue/kinematic_insertion.hpp"
 #include "haptics/tissue/tissue_step.hpp"
 
@@ -272,9 +272,9 @@ TEST(TissueInsertion, ATickAllocatesNothing) {
   std::vector<Vector3d> tips;
   for (double d : ramp(0.0, 0.06, 0.005)) tips.push_back(Vector3d(0, 0, kStart) + d * kDown);
   for (double d : ramp(0.06, 0.0, 0.005)) tips.push_back(Vector3d(0, 0, kStart) + d * kDown);
-  allocation_counter::start();
+  needle::test::allocation_counter::start();
   for (const Vector3d& tip : tips) step_tissue(model, state, tip, kDown, 0.001);
-  EXPECT_EQ(allocation_counter::stop(), 0);
+  EXPECT_EQ(needle::test::allocation_counter::stop(), 0);
   EXPECT_GT(state.tissue_work_J, 0.0);  // the ticks did cross the layers
 }
 

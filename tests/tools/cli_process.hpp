@@ -1,11 +1,16 @@
 // Runs needle-sim (or any command line) in a shell and captures its exit code and output.
+// (One header for every command-line test: two helpers of one name in two headers broke the
+// one-definition rule, and the program.)
 #pragma once
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 #include "tests/support/test_paths.hpp"
 
 namespace needle::test {
@@ -28,6 +33,24 @@ inline ProcessResult run_command(const std::string& command) {
 
 inline ProcessResult run_needle_sim(const std::string& arguments) {
   return run_command(std::string("NEEDLE_VALIDATION=1 ") + test::needle_sim_exe().string() + " " + arguments);
+}
+
+struct SplitResult {
+  int exit_code = -1;
+  std::string out;  // stdout alone (JSON a command prints)
+  std::string err;  // stderr alone
+};
+
+// needle-sim with its stdout and stderr kept apart.
+inline SplitResult run_needle_sim_split(const std::string& arguments) {
+  const std::filesystem::path err_file = test::output_dir() / ("stderr_" + std::to_string(::getpid()) + ".txt");
+  std::filesystem::create_directories(err_file.parent_path());
+  const ProcessResult stdout_only = run_command("(" + test::needle_sim_exe().string() + " " + arguments + " 2>'" + err_file.string() + "')");
+  SplitResult r{stdout_only.exit_code, stdout_only.output, ""};
+  std::ifstream in(err_file);
+  r.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  std::filesystem::remove(err_file);
+  return r;
 }
 
 // A shell script on a virtual X display (xvfb-run), Vulkan validation on. Escape `$` as `\$` in

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "cli_haptics_run.hpp"
+#include "cli_process.hpp"
 #include "tests/support/test_paths.hpp"
 
 namespace needle::test {
@@ -14,7 +14,7 @@ namespace {
 TEST(CliHapticsSimulate, WritesTicksCsvAndSummaryWithTheIssueKeys) {
   const std::string out = test::output_dir().string() + "/simulate_holonomic";
   std::filesystem::remove_all(out);
-  const auto r = test::run_needle_sim("simulate --scenario " + test::source_dir().string() +
+  const auto r = test::run_needle_sim_split("simulate --scenario " + test::source_dir().string() +
                                       "/assets/scenarios/holonomic_sphere.json --out " + out);
   ASSERT_EQ(r.exit_code, 0);
   std::ifstream summary_file(out + "/summary.json");
@@ -41,8 +41,8 @@ TEST(CliHapticsSimulate, WritesTicksCsvAndSummaryWithTheIssueKeys) {
 }
 
 TEST(CliHapticsSimulate, MissingScenarioIsAnError) {
-  EXPECT_EQ(test::run_needle_sim("simulate --scenario /nonexistent.json --out /tmp/x").exit_code, 1);
-  EXPECT_EQ(test::run_needle_sim("simulate --out /tmp/x").exit_code, 2);
+  EXPECT_EQ(test::run_needle_sim_split("simulate --scenario /nonexistent.json --out /tmp/x").exit_code, 1);
+  EXPECT_EQ(test::run_needle_sim_split("simulate --out /tmp/x").exit_code, 2);
 }
 
 }  // namespace

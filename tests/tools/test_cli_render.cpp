@@ -36,6 +36,16 @@ TEST(CliRender, MissingFileExitsOneNamingIt) {
   EXPECT_NE(r.output.find("/nonexistent/model.gltf"), std::string::npos) << r.output;
 }
 
+// The largest size the option allows needs more memory than the CPU device gives: said as too
+// large for this device, not as a raw Vulkan result.
+TEST(CliRender, ASizeTooLargeForTheDeviceIsSaidSo) {
+  const ProcessResult r = run_needle_sim("render --gltf " + quoted(source_dir() / "assets/needle.gltf") +
+                                         " --size 16384x16384 --out " + quoted(test_output_dir("cli_render") / "huge.png"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("needle-sim render: error: a 16384x16384 image"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("is too large for this device (llvmpipe"), std::string::npos) << r.output;
+}
+
 TEST(CliRender, SceneRendersToAPngOfTheRequestedSize) {
   auto out = test_output_dir("cli_render") / "thesis_sphere.png";
   std::filesystem::remove(out);

@@ -131,6 +131,22 @@ TEST(CliRunTask, UnknownOperatorAndDeviceAreClearErrors) {
   EXPECT_NE(missing.output.find("/nonexistent/script.json"), std::string::npos) << missing.output;
   EXPECT_EQ(run_needle_sim("run --headless --device mouse").exit_code, 2);
   EXPECT_EQ(run_needle_sim("run --headless --section sideways").exit_code, 2);
+  // A device nobody knows is said to be unknown, with the list, not that it "needs the window".
+  const ProcessResult nonsense = run_needle_sim("run --headless --device nonsense");
+  EXPECT_EQ(nonsense.exit_code, 2) << nonsense.output;
+  EXPECT_NE(nonsense.output.find("--device nonsense: unknown device (expected sim, mouse, falcon, falcon:N or replay:FILE"),
+            std::string::npos)
+      << nonsense.output;
+  // A script with a hand mass of 0: the error names the script and the pointer in it.
+  const fs::path dir = test_output_dir("cli_run_task") / "massless";
+  fs::create_directories(dir);
+  std::ofstream(dir / "massless.json") << R"({"hand": {"mass_kg": 0, "waypoints": [{"t": 0, "p": [0.3, 0, 0.2], "dir": [1, 0, 0]}]}})";
+  const ProcessResult massless = run_needle_sim("run --headless --task " + quoted(source_dir() / "assets/tasks/rigid_sphere.json") +
+                                                " --operator " + quoted(dir / "massless.json") + " --out " + quoted(dir / "out") +
+                                                " --db " + quoted(dir / "s.db"));
+  EXPECT_EQ(massless.exit_code, 1) << massless.output;
+  EXPECT_NE(massless.output.find((dir / "massless.json").string() + ": /hand/mass_kg: must be > 0"), std::string::npos)
+      << massless.output;
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <numbers>
 
-#include "haptics/sim/allocation_counter.hpp"
+#include "tests/support/allocation_counter.hpp"
 #include "tool_states.hpp"
 #include "training/scoring/session_scorer.hpp"
 #include "tests/support/test_paths.hpp"
@@ -42,14 +42,14 @@ haptics::ToolSnapshot ideal_penetrable(double t) {
 TEST(Allocations, FeedingTheScorerAllocatesNothing) {
   const Task task = load_task(needle::test::source_dir().string() + "/assets/tasks/penetrable_sphere.json");
   SessionScorer scorer(task);
-  haptics::allocation_counter::start();
+  needle::test::allocation_counter::start();
   for (int k = 0; k <= 23000; ++k) {
     haptics::ToolSnapshot s = ideal_penetrable(k * 0.001);
     s.multiplier_count = 2;
     s.multipliers[0] = 0.1;
     scorer.feed(test::sample(s));
   }
-  const long allocations = haptics::allocation_counter::stop();
+  const long allocations = needle::test::allocation_counter::stop();
   EXPECT_EQ(allocations, 0);
   const SessionResult r = scorer.result();
   ASSERT_TRUE(r.finished);

@@ -42,6 +42,50 @@ TEST(OperatorScriptFiles, AScriptWithoutWaypointsIsAnErrorNamingIt) {
   }
 }
 
+// The script is read strictly before it is merged into the task's scenario: its errors name the
+// script file and the pointer in it, not the merged OUT/scenario.json.
+std::string script_error(const std::string& name, const std::string& text) {
+  const Task task = load_task(kTasks / "rigid_sphere.json");
+  fs::create_directories(kOutput);
+  const fs::path script = kOutput / (name + ".json");
+  std::ofstream(script) << text;
+  try {
+    scenario_with_operator(task, script, kOutput / (name + "_merged.json"));
+  } catch (const std::exception& e) {
+    EXPECT_FALSE(fs::exists(kOutput / (name + "_merged.json"))) << "checked before anything is written";
+    return e.what();
+  }
+  return "";
+}
+
+TEST(OperatorScriptFiles, ABadHandIsAnErrorNamingTheScriptAndThePointer) {
+  const std::string waypoints = R"("waypoints": [{"t": 0, "p": [0.3, 0, 0.2], "dir": [1, 0, 0]}, {"t": 2, "p": [0.3, 0, 0.1], "dir": [1, 0, 0]}])";
+  const std::string path = (kOutput / "").string();
+  EXPECT_EQ(script_error("mass_negative", R"({"hand": {"mass_kg": -1, )" + waypoints + "}}"),
+            path + "mass_negative.json: /hand/mass_kg: must be > 0, got -1.000000");
+  EXPECT_EQ(script_error("mass_zero", R"({"hand": {"mass_kg": 0, )" + waypoints + "}}"),
+            path + "mass_zero.json: /hand/mass_kg: must be > 0, got 0.000000");
+  EXPECT_EQ(script_error("unknown_key", R"({"hand": {"speed": 3, )" + waypoints + "}}").rfind(
+                path + "unknown_key.json: /hand/speed: unknown key (allowed: mass_kg, ", 0),
+            0u);
+  EXPECT_EQ(script_error("unknown_top", R"({"hands": {}, "hand": {)" + waypoints + "}}").rfind(
+                path + "unknown_top.json: /hands: unknown key (allowed: description, hand)", 0),
+            0u);
+}
+
+TEST(OperatorScriptFiles, WaypointTimesMustBeFiniteOrderedAndWithinTheLongestSession) {
+  const std::string path = (kOutput / "").string();
+  const std::string p = R"("p": [0.3, 0, 0.2], "dir": [1, 0, 0])";
+  EXPECT_EQ(script_error("forever", R"({"hand": {"waypoints": [{"t": 0, )" + p + R"(}, {"t": 1e308, )" + p + "}]}}"),
+            path + "forever.json: /hand/waypoints/1/t: must be in [0, 1800] s, got " + std::to_string(1e308));
+  EXPECT_EQ(script_error("backwards", R"({"hand": {"waypoints": [{"t": 5, )" + p + R"(}, {"t": 2, )" + p + "}]}}"),
+            path + "backwards.json: /hand/waypoints/1/t: must be after the waypoint before it (5.000000 s)");
+  EXPECT_EQ(script_error("not_json", R"({"hand": )"), path + "not_json.json: /: not valid JSON: " +
+                                                          std::string("[json.exception.parse_error.101] parse error at line 1, "
+                                                                      "column 10: syntax error while parsing value - unexpected "
+                                                                      "end of input; expected '[', '{', or a literal"));
+}
+
 }  // namespace
 }  // namespace needle::training
 

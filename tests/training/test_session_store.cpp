@@ -7,11 +7,15 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <thread>
 
 #include "training/scoring/metric_fields.hpp"
 #include "training/sessions/session_store.hpp"
+#include "tests/support/full_disk.hpp"
 #include "tests/support/test_paths.hpp"
 
 namespace needle::training {
@@ -324,6 +328,73 @@ TEST(SessionStore, ConcurrentReaderSeesWholeSessionsOnly) {
   EXPECT_EQ(reader_error, "");
   SessionStore check(file);
   EXPECT_EQ(check.sessions().size(), size_t(kSessions));
+}
+
+}  // namespace
+}  // namespace needle::training
+
+namespace needle::training {
+namespace {
+
+std::vector<char> bytes_of(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A closed store of `sessions` finished sessions: everything in the main file, no WAL left.
+void fill(const fs::path& file, int sessions) {
+  SessionStore store(file);
+  for (int k = 0; k < sessions; ++k) store.finish_session(store.begin_session("ana", small_task(), "sim", ""), a_result());
+}
+
+std::string open_error(const fs::path& file, bool read_only) {
+  try {
+    if (read_only)
+      SessionStore(file, kReadOnly);
+    else
+      SessionStore{file};
+  } catch (const SessionStoreError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SessionStore, ADamagedOrCutDatabaseIsRefusedWhenOpenedAndLeftAsItIs) {
+  const fs::path file = fresh_db();
+  fill(file, 40);
+  const std::vector<char> good = bytes_of(file);
+  ASSERT_GT(good.size(), 4 * 4096u);
+  const std::string damaged = file.string() + ": the session database is damaged (PRAGMA quick_check: ";
+
+  std::vector<char> bad = good;  // the last page zeroed
+  std::fill(bad.end() - 4096, bad.end(), 0);
+  std::ofstream(file, std::ios::binary).write(bad.data(), std::streamsize(bad.size()));
+  for (bool read_only : {false, true}) EXPECT_EQ(open_error(file, read_only).rfind(damaged, 0), 0u) << open_error(file, read_only);
+  EXPECT_EQ(bytes_of(file), bad) << "a refused file is not touched";
+
+  // Cut to half, as a copy that stopped short.
+  std::ofstream(file, std::ios::binary).write(good.data(), std::streamsize(good.size() / 2));
+  for (bool read_only : {false, true}) EXPECT_EQ(open_error(file, read_only).rfind(damaged, 0), 0u) << open_error(file, read_only);
+
+  std::ofstream(file, std::ios::binary) << "not a database at all, but long enough to have a header........................";
+  EXPECT_EQ(open_error(file, true).rfind(damaged, 0), 0u) << open_error(file, true);
+}
+
+TEST(SessionStore, ReadOnlyCreatesNothingAndNeedsNoWriteAccess) {
+  const fs::path file = fresh_db();
+  EXPECT_NE(open_error(file, true), "");
+  EXPECT_FALSE(fs::exists(file));
+  fill(file, 2);
+  const test::ReadOnlyFolder folder(file.parent_path() / "read_only");
+  const fs::path dir = folder.dir();
+  fs::copy_file(file, dir / "sessions.db");
+  ASSERT_EQ(folder.make_read_only(), "");
+  EXPECT_NE(open_error(dir / "sessions.db", false), "") << "the folder is not read-only: the test shows nothing";
+  SessionStore store(dir / "sessions.db", kReadOnly);
+  ASSERT_EQ(store.sessions().size(), 2u);
+  EXPECT_DOUBLE_EQ(store.load(1).info.score, a_result().score.total);
+  EXPECT_THROW(store.begin_session("ana", small_task(), "sim", ""), SessionStoreError);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1) << "no -wal or -shm made";
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <numbers>
 
@@ -202,6 +203,44 @@ TEST(TaskFiles, ErrorsNameTheFileAndThePointer) {
   j = valid_task();
   j["steps"][0]["condition"]["contact"] = "bone";
   expect_error(j, "bad_contact", "/steps/0/condition/contact", "expected any, free, rigid or tissue");
+}
+
+// Names become file names and keys: a path, a NUL or 300 characters are refused; so are weights
+// whose sum overflows (all 1e308: a stored score of 0) and time limits past the longest session.
+TEST(TaskFiles, NamesWeightsAndLimitsThatWouldRunAwayAreErrors) {
+  json j = valid_task();
+  j["name"] = "../../../escaped_rec";
+  expect_error(j, "path_name", "/name", "\"../../../escaped_rec\": a task name is 1 to 64 letters, digits, '_' or '-'");
+  j["name"] = std::string(300, 'n');
+  expect_error(j, "long_name", "/name", "a task name is 1 to 64");
+  j["name"] = std::string("a\0b", 3);
+  expect_error(j, "nul_name", "/name", "contains a NUL character");
+  j = valid_task();
+  j["title"] = std::string("Pivot\0 drill", 12);
+  expect_error(j, "nul_title", "/title", "contains a NUL character");
+  j["title"] = std::string(201, 't');
+  expect_error(j, "long_title", "/title", "longer than 200 bytes");
+
+  j = valid_task();
+  json w = weights(1e308, 1e308, 1e308);
+  j["scoring"] = {{"weights", w}};
+  expect_error(j, "huge_weights", "/scoring/weights", "add up to more than a number can hold");
+  w["completion"] = std::numeric_limits<double>::infinity();  // written by nlohmann as null: not a number
+  j["scoring"] = {{"weights", w}};
+  expect_error(j, "infinite_weight", "/scoring/weights/completion", "expected a number");
+
+  j = valid_task();
+  j["steps"][0]["time_limit_s"] = 1e9;
+  expect_error(j, "endless_limit", "/steps/0/time_limit_s", "must be in (0, 1800] s");
+}
+
+TEST(TaskFiles, ASessionLastsAtMostItsStepsLimitsPlusAMarginOrThirtyMinutes) {
+  Task t = load_task(kTasks / "penetrable_sphere.json");
+  EXPECT_DOUBLE_EQ(session_time_bound_s(t), 15.0 + 20.0 + 30.0 + 20.0 + 20.0 + kTaskEndMargin_s);
+  t.steps[2].time_limit_s = 0.0;  // one step without a limit: only the longest session bounds it
+  EXPECT_DOUBLE_EQ(session_time_bound_s(t), 1800.0);
+  for (Step& s : t.steps) s.time_limit_s = 1000.0;
+  EXPECT_DOUBLE_EQ(session_time_bound_s(t), 1800.0);
 }
 
 TEST(TaskFiles, WeightsAreNormalizedToOneHundred) {

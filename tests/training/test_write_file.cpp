@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/write_file.hpp"
+#include "io/file_write.hpp"
 #include "tests/support/process_folder.hpp"
 #include "tests/support/test_paths.hpp"
 

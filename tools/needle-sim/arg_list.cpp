@@ -74,6 +74,22 @@ double parse_number(const std::string& text, const std::string& flag) {
   return v;
 }
 
+long long parse_whole(const std::string& text, const std::string& flag, long long lo, long long hi) {
+  const double v = parse_number(text, flag);
+  if (!(v >= double(lo) && v <= double(hi)) || v != std::floor(v))
+    throw UsageError(flag + ": expected a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got '" +
+                     text + "'");
+  return static_cast<long long>(v);
+}
+
+std::optional<std::string> output_file(ArgList& args, const std::string& flag) {
+  std::optional<std::string> file = args.value(flag);
+  if (!file) return file;
+  const std::filesystem::path folder = std::filesystem::absolute(*file).parent_path();
+  if (!std::filesystem::is_directory(folder)) throw UsageError(flag + ": folder " + folder.string() + " does not exist");
+  return file;
+}
+
 int parse_msaa(const std::string& text, const std::string& flag) {
   double v = parse_number(text, flag);
   if (v != 1 && v != 2 && v != 4 && v != 8) throw UsageError(flag + ": expected 1, 2, 4 or 8, got '" + text + "'");

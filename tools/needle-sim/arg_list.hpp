@@ -35,6 +35,12 @@ engine::Extent parse_size(const std::string& text, const std::string& flag);
 
 // Parses a decimal number with nothing after it; UsageError naming the flag otherwise.
 double parse_number(const std::string& text, const std::string& flag);
+// A whole number in [lo, hi]; UsageError "FLAG: expected a whole number from LO to HI, got 'TEXT'"
+// otherwise (checked before any conversion, so 9223372036854775807 is refused, not wrapped).
+long long parse_whole(const std::string& text, const std::string& flag, long long lo, long long hi);
+// "--flag FILE" for a file the command writes when its work is done: the file's folder must exist
+// now, not be found missing after the work (UsageError naming the flag and the folder).
+std::optional<std::string> output_file(ArgList& args, const std::string& flag);
 // MSAA sample count: 1, 2, 4 or 8 (the renderer caps it at what the device has).
 int parse_msaa(const std::string& text, const std::string& flag);
 // Comma-separated numbers, "0.1,0.2,-1".

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "io/write_file.hpp"
+#include "io/file_write.hpp"
 
 namespace needle::cli {
 namespace {

@@ -18,7 +18,7 @@ class BenchTable {
   void add_row(std::vector<nlohmann::json> values);
 
   void print(const std::string& title) const;
-  // Throws std::runtime_error naming the file when it cannot be written.
+  // Writes the file whole (io::write_file); io::WriteError naming the file when it cannot.
   void write_json(const std::string& path) const;
   // print, then write_json when a path is given.
   void emit(const std::string& title, const std::optional<std::string>& json_path) const;

@@ -27,11 +27,10 @@ engine::NeedleLoad needle_at_frame(int f, int frames) {
 }
 
 int run_bench_deform(ArgList& args) {
-  auto json = args.value("--json");
+  auto json = output_file(args, "--json");
   std::vector<double> resolutions = parse_number_list(args.value("--spheres").value_or("100,316,400,1000"), "--spheres");
-  double frames = parse_number(args.value("--frames").value_or("60"), "--frames");
+  const long frames = static_cast<long>(parse_whole(args.value("--frames").value_or("60"), "--frames", 2, 100000));
   args.finish();
-  if (frames < 2 || frames != double(long(frames))) throw UsageError("--frames: expected a whole number ≥ 2");
   for (double r : resolutions) {
     if (r < 3 || r > 2000 || r != double(long(r))) throw UsageError("--spheres: each resolution a whole number in 3..2000");
   }

@@ -11,7 +11,7 @@
 #include "command.hpp"
 #include "haptics/sim/scenario.hpp"
 #include "haptics/tissue/kinematic_insertion.hpp"
-#include "io/write_file.hpp"
+#include "io/file_write.hpp"
 #include "ui/line_chart.hpp"
 
 namespace needle::cli {
@@ -81,13 +81,11 @@ int run_bench_insertion(ArgList& args) {
   const double depth = parse_positive(args.required("--depth"), "--depth");
   const double speed = parse_positive(args.required("--speed"), "--speed");
   const double hold = parse_number(args.value("--hold").value_or("0"), "--hold");
-  const auto json_path = args.value("--json");
-  const auto plot_path = args.value("--plot");
+  const auto json_path = output_file(args, "--json");
+  const auto plot_path = output_file(args, "--plot");
   args.finish();
   if (hold < 0.0) throw UsageError("--hold: must be >= 0");
   if (dir.norm() < 1e-12) throw UsageError("--dir: must not be the zero vector");
-  check_output_folder(json_path, "--json");
-  check_output_folder(plot_path, "--plot");
 
   const haptics::Scenario scenario = haptics::load_scenario(scenario_path);
   if (scenario.scene.tissue.empty()) throw UsageError("--scenario: " + scenario_path + " has no tissue");
@@ -111,9 +109,7 @@ int run_bench_insertion(ArgList& args) {
     std::printf("hard stop: %s at depth %.4g m (a rigid layer: the drive stops there)\n",
                 layer_name(scenario.scene.tissue, run.hard_stop->layer).c_str(), run.hard_stop->depth_m);
   std::printf("tissue_work_J %.6g, tick_us_median %.4g\n", run.tissue_work_J, run.tick_us_median);
-  if (json_path) {
-    io::write_file(*json_path, run_json(scenario.scene.tissue, run, boundaries).dump(1) + "\n");
-  }
+  if (json_path) io::write_file(*json_path, run_json(scenario.scene.tissue, run, boundaries).dump(1) + "\n");
   if (plot_path) {
     char title[160];
     std::snprintf(title, sizeof title, "%s: %.3g mm/s in, %.3g s held, out", scenario.name.c_str(), speed * 1e3, hold);

@@ -110,7 +110,7 @@ LoopStatsSummary time_bare_loop(double rate_hz, double seconds, const haptics::R
 double us(double ns) { return ns / 1000.0; }
 
 int run_bench_loop(ArgList& args) {
-  const auto json = args.value("--json");
+  const auto json = output_file(args, "--json");
   const std::vector<double> rates = parse_number_list(args.value("--rates").value_or("1000,2000,4000"), "--rates");
   const double seconds = parse_number(args.value("--seconds").value_or("30"), "--seconds");
   const bool with_load = args.flag("--render-load");

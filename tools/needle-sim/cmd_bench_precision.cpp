@@ -17,7 +17,7 @@ int run_bench_precision(ArgList& args) {
   const std::string robot =
       args.value("--robot").value_or((asset_dir() / "robots" / "virtual_needle_robot.urdf").string());
   const auto horizon_text = args.value("--horizon");
-  const auto json = args.value("--json");
+  const auto json = output_file(args, "--json");
   args.finish();
   const haptics::RobotModel model = haptics::load_robot_urdf(robot, 5);
   haptics::PrecisionProblem p;

@@ -33,17 +33,16 @@ std::vector<std::string> parse_draw_modes(const std::string& list) {
 }
 
 int run_bench_render(ArgList& args) {
-  auto json = args.value("--json");
+  auto json = output_file(args, "--json");
   engine::Extent size = parse_size(args.value("--size").value_or("1280x720"), "--size");
   std::vector<double> resolutions = parse_number_list(args.value("--spheres").value_or("100,200,400,800"), "--spheres");
-  double frames = parse_number(args.value("--frames").value_or("200"), "--frames");
+  const long frames = static_cast<long>(parse_whole(args.value("--frames").value_or("200"), "--frames", 1, 100000));
   std::vector<int> msaa_counts;
   for (double m : parse_number_list(args.value("--msaa").value_or("1,4"), "--msaa")) {
     msaa_counts.push_back(parse_msaa(std::to_string(int(m)), "--msaa"));
   }
   std::vector<std::string> draw_modes = parse_draw_modes(args.value("--draws").value_or("whole,culled,lod,lod+culled"));
   args.finish();
-  if (frames < 1 || frames != double(long(frames))) throw UsageError("--frames: expected a whole number ≥ 1");
   for (double r : resolutions) {
     if (r < 3 || r > 4000 || r != double(long(r)))
       throw UsageError("--spheres: each resolution a whole number in 3..4000");

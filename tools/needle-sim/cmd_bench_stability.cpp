@@ -16,7 +16,7 @@ namespace {
 
 int run_bench_stability(ArgList& args) {
   const auto sustained_text = args.value("--sustained");
-  const auto json = args.value("--json");
+  const auto json = output_file(args, "--json");
   args.finish();
   const double sustained = sustained_text ? parse_number(*sustained_text, "--sustained") : 3600.0;
   if (!(sustained >= 10.0)) throw UsageError("--sustained must be at least 10 s");

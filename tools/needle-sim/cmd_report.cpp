@@ -11,14 +11,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int64_t parse_session_id(const std::string& text) {
-  const double id = parse_number(text, "--session");
-  if (id < 1 || id != std::floor(id) || id > 9e15) throw UsageError("--session: expected a session id (a whole number >= 1), got '" + text + "'");
-  return int64_t(id);
-}
-
 int run_report(ArgList& args) {
-  const int64_t id = parse_session_id(args.required("--session"));
+  const int64_t id = parse_whole(args.required("--session"), "--session", 1, 9000000000000000);
   const fs::path db = args.value("--db").value_or(app::default_db().string());
   const fs::path out = args.required("--out");
   std::optional<double> at;

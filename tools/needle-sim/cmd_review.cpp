@@ -13,12 +13,8 @@ int run_review(ArgList& args) {
   app::ReviewOptions options;
   options.db = args.value("--db").value_or(app::default_db().string());
   options.size = parse_size(args.value("--size").value_or("1600x900"), "--size");
-  if (auto id = args.value("--session")) options.session = int64_t(parse_number(*id, "--session"));
-  if (auto frames = args.value("--frames")) {
-    const double n = parse_number(*frames, "--frames");
-    if (n < 1 || n != double(long(n))) throw UsageError("--frames: expected a whole number >= 1, got '" + *frames + "'");
-    options.frames = long(n);
-  }
+  if (auto id = args.value("--session")) options.session = parse_whole(*id, "--session", 1, 9000000000000000);
+  if (auto frames = args.value("--frames")) options.frames = long(parse_whole(*frames, "--frames", 1, 1000000000));
   options.screenshot = args.value("--screenshot");
   args.finish();
   if (options.screenshot && options.frames == 0) throw UsageError("--screenshot needs --frames N (the frame to capture)");

@@ -49,11 +49,7 @@ int run_run(ArgList& args) {
   options.task.rig.operator_spec = operator_spec.value_or("good");
   options.window.size = parse_size(args.value("--size").value_or("1280x720"), "--size");
   if (auto msaa = args.value("--msaa")) options.window.msaa = parse_msaa(*msaa, "--msaa");
-  if (auto frames = args.value("--frames")) {
-    double n = parse_number(*frames, "--frames");
-    if (n < 1 || n != double(long(n))) throw UsageError("--frames: expected a whole number ≥ 1, got '" + *frames + "'");
-    options.window.frames = long(n);
-  }
+  if (auto frames = args.value("--frames")) options.window.frames = long(parse_whole(*frames, "--frames", 1, 1000000000));
   options.window.screenshot = args.value("--screenshot");
   if (auto section = args.value("--section")) {
     if (*section == "cut") options.window.section = engine::Section::Mode::Cut;
@@ -68,6 +64,10 @@ int run_run(ArgList& args) {
     throw UsageError("--scene plays a scripted needle: --device, --operator, --rate and --firmware are for tasks");
   const bool replay = device.rfind("replay:", 0) == 0;
   const bool scripted = device == "sim" || replay;
+  if (!scripted && device != "mouse" && device != "falcon" && device.rfind("falcon:", 0) != 0)
+    throw UsageError("--device " + device +
+                     ": unknown device (expected sim, mouse, falcon, falcon:N or replay:FILE; needle-sim devices lists "
+                     "what is connected)");
   if (operator_spec && device != "sim") throw UsageError("--operator: only the simulated device (--device sim) has a scripted operator");
   if (replay && (task || options.task.rig.rate_hz))
     throw UsageError("--device " + device + ": a replay runs the recording's own task at its rate; drop --task and --rate");
@@ -78,8 +78,7 @@ int run_run(ArgList& args) {
       throw UsageError(std::string("--rate: ") + e.what());
     }
   }
-  const std::optional<fs::path> recorded = options.scene ? std::nullopt : app::recorded_task(device);
-  options.task.task = recorded ? *recorded : fs::path(task.value_or((asset_dir() / "tasks" / "penetrable_sphere.json").string()));
+  options.task.task = task.value_or((asset_dir() / "tasks" / "penetrable_sphere.json").string());  // a replay's is its own
 
   const bool window = !headless && engine::Window::display_available();
   if (!headless && !window) std::printf("no display: running headless\n");

@@ -52,6 +52,28 @@ const Command* find_command(const std::vector<std::string>& argv, size_t& words_
   return best;
 }
 
+// The commands whose first word is `word` ("bench": bench deform, bench tick, ...) with more words.
+std::vector<const Command*> group_of(const std::string& word) {
+  std::vector<const Command*> group;
+  for (const auto& c : registered_commands()) {
+    const auto words = split_words(c.name);
+    if (words.size() > 1 && words[0] == word) group.push_back(&c);
+  }
+  return group;
+}
+
+// `needle-sim bench`, `bench --help`, `bench frobnicate`: what the group has. Exit 0 for help.
+int print_group(const std::vector<std::string>& args, const std::vector<const Command*>& group) {
+  const bool help = args.size() == 2 && (args[1] == "--help" || args[1] == "-h");
+  if (args.size() > 1 && !help && args[1].rfind("-", 0) != 0)
+    std::fprintf(stderr, "needle-sim: unknown command '%s %s'\n", args[0].c_str(), args[1].c_str());
+  std::FILE* to = help ? stdout : stderr;
+  std::fprintf(to, "needle-sim %s: one of\n", args[0].c_str());
+  for (const Command* c : group) std::fprintf(to, "  %s\n", c->usage.substr(0, c->usage.find('\n')).c_str());
+  std::fprintf(to, "(needle-sim %s NAME --help shows its options)\n", args[0].c_str());
+  return help ? 0 : 2;
+}
+
 }  // namespace
 
 CommandRegistrar::CommandRegistrar(Command command) { registry().push_back(std::move(command)); }
@@ -90,6 +112,8 @@ int main(int argc, char** argv) {
   size_t used = 0;
   const Command* command = find_command(args, used);
   if (!command) {
+    const std::vector<const Command*> group = group_of(args[0]);
+    if (!group.empty()) return print_group(args, group);
     std::fprintf(stderr, "needle-sim: unknown command '%s' (needle-sim --help lists them)\n", args[0].c_str());
     return 2;
   }

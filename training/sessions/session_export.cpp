@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "io/write_file.hpp"
+#include "io/file_write.hpp"
 #include "training/scoring/metric_fields.hpp"
 
 namespace needle::training {

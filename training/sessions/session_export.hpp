@@ -19,7 +19,8 @@ nlohmann::json session_json(const StoredSession& session);
 std::string session_csv(const StoredSession& session);
 
 // Writes session_<id>.json and session_<id>.csv into `dir` (created if needed); returns the
-// JSON's path. Throws std::runtime_error naming the file it could not write.
+// JSON's path, each file written whole (io::write_file). Throws std::runtime_error naming the
+// folder, or io::WriteError naming the file, when it cannot write.
 std::filesystem::path export_session(const StoredSession& session, const std::filesystem::path& dir);
 
 }  // namespace needle::training

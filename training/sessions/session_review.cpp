@@ -34,7 +34,8 @@ SessionReview load_session_review(const SessionStore& store, const fs::path& db_
     try {
       haptics::Session session = haptics::read_session(r.recording_file.string());
       samples = std::move(session.records);
-      r.recording_trailing_bytes = session.trailing_bytes;
+      r.recording_end = session.end;
+      r.recording_notes = haptics::recording_notes(r.recording_file.string(), session.end, samples.size());
       if (samples.empty()) r.recording_problem = r.recording_file.string() + ": the recording has no samples";
     } catch (const std::exception& e) {
       r.recording_problem = e.what();

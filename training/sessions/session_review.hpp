@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "haptics/recording/session_format.hpp"
 #include "training/sessions/session_series.hpp"
 #include "training/sessions/session_store.hpp"
 
@@ -21,7 +22,8 @@ struct SessionReview {
   std::filesystem::path recording_file;        // resolved; empty when the session names none
   std::vector<haptics::ToolSnapshot> states;   // the recorded states, for the replay
   std::string recording_problem;               // why `states` is empty ("no recording", unreadable...)
-  size_t recording_trailing_bytes = 0;         // a last record cut short (the run was killed)
+  haptics::RecordingEnd recording_end;         // closed, or cut short (the run was killed), or unchecked
+  std::vector<std::string> recording_notes;    // what to tell the reader about it (haptics::recording_notes)
   SessionPlots plots;
 
   bool has_recording() const { return recording_problem.empty(); }

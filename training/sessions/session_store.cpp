@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 
 #include "training/scoring/metric_fields.hpp"
@@ -163,6 +164,21 @@ class Transaction {
   bool open_ = true;
 };
 
+// `file` as an SQLite URI with `query`, the characters a URI gives a meaning to escaped.
+std::string file_uri(const std::string& file, const char* query) {
+  std::string uri = "file:";
+  for (const char c : std::filesystem::absolute(file).string()) {
+    if (c == '?' || c == '#' || c == '%') {
+      char escaped[4];
+      std::snprintf(escaped, sizeof escaped, "%%%02X", static_cast<unsigned char>(c));
+      uri += escaped;
+    } else {
+      uri += c;
+    }
+  }
+  return uri + "?" + query;
+}
+
 }  // namespace
 
 void SessionStore::exec(const char* sql, const std::string& what) const {
@@ -175,17 +191,65 @@ void SessionStore::exec(const char* sql, const std::string& what) const {
   }
 }
 
-SessionStore::SessionStore(const std::filesystem::path& file, int schema_version) : file_(file.string()) {
-  if (schema_version < 1 || schema_version > kSessionSchemaVersion)
-    throw SessionStoreError(file_ + ": cannot make schema version " + std::to_string(schema_version));
-  if (sqlite3_open_v2(file_.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK) {
+void SessionStore::open(int flags, const std::string& name) {
+  if (sqlite3_open_v2(name.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
     const std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";
     sqlite3_close(db_);
     db_ = nullptr;
     throw SessionStoreError(file_ + ": opening the session database: " + message);
   }
+  sqlite3_busy_timeout(db_, 10000);  // a writer holds the lock for one short transaction
+}
+
+// A damaged file (a zeroed page, a cut) is refused before anything reads or writes it: a run must
+// not simulate a whole task and then lose it, a report must not show a session with parts missing.
+void SessionStore::check_integrity() const {
+  std::string problem;  // quick_check's first line that is not "ok", or why SQLite could not run it
+  auto first_problem = [](void* out, int, char** values, char**) {
+    auto& text = *static_cast<std::string*>(out);
+    if (text.empty() && values[0] != nullptr && std::string(values[0]) != "ok") text = values[0];
+    return 0;
+  };
+  char* message = nullptr;
+  if (sqlite3_exec(db_, "PRAGMA quick_check", first_problem, &problem, &message) != SQLITE_OK) {
+    problem = message ? message : sqlite3_errmsg(db_);  // the file itself refused: "file is not a database", ...
+    sqlite3_free(message);
+  }
+  if (!problem.empty())
+    throw SessionStoreError(file_ + ": the session database is damaged (PRAGMA quick_check: " + problem +
+                            "); it was left as it is: restore a copy, or move it away to start a new one");
+}
+
+SessionStore::SessionStore(const std::filesystem::path& file, ReadOnly) : file_(file.string()) {
+  open(SQLITE_OPEN_READONLY, file_);
   try {
-    sqlite3_busy_timeout(db_, 10000);  // a writer holds the lock for one short transaction
+    // A reader of a WAL database needs its -shm file. In a folder it cannot write, where none
+    // exists (so no run is writing the file: a writer makes one), SQLite cannot open it for
+    // reading; it then reads it as immutable, which needs no -shm.
+    const bool no_shm = !std::filesystem::exists(file_ + "-shm");
+    if (no_shm && sqlite3_exec(db_, "SELECT 1 FROM sqlite_master LIMIT 1", nullptr, nullptr, nullptr) == SQLITE_CANTOPEN) {
+      sqlite3_close(db_);
+      db_ = nullptr;
+      open(SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, file_uri(file_, "immutable=1"));
+    }
+    check_integrity();
+    const int found = schema_version();
+    if (found < 1) throw SessionStoreError(file_ + ": not a session database (it has no schema version)");
+    if (found > kSessionSchemaVersion)
+      throw SessionStoreError(file_ + ": schema version " + std::to_string(found) + " is newer than this program's " +
+                              std::to_string(kSessionSchemaVersion));
+  } catch (...) {
+    sqlite3_close(db_);
+    throw;
+  }
+}
+
+SessionStore::SessionStore(const std::filesystem::path& file, int schema_version) : file_(file.string()) {
+  if (schema_version < 1 || schema_version > kSessionSchemaVersion)
+    throw SessionStoreError(file_ + ": cannot make schema version " + std::to_string(schema_version));
+  open(SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, file_);
+  try {
+    check_integrity();
     exec("PRAGMA foreign_keys = ON");
     if (journal_mode() != "wal") {
       exec("PRAGMA journal_mode = WAL");

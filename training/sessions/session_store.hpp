@@ -49,11 +49,18 @@ struct StoredSession {
   std::vector<ScoreComponent> components;  // empty for sessions from schema 1
 };
 
+// Opens an existing store for reading only (review, report): nothing is created, migrated or
+// written, so a database in a read-only folder or on a read-only disk can be reviewed.
+struct ReadOnly {};
+inline constexpr ReadOnly kReadOnly{};
+
 class SessionStore {
  public:
   // Opens or creates `file` and migrates it to `schema_version` (tests pass an older one to
-  // make an old file). Throws SessionStoreError naming the file.
+  // make an old file). Both constructors check the file first (PRAGMA quick_check) and refuse a
+  // damaged one, untouched. Throws SessionStoreError naming the file.
   explicit SessionStore(const std::filesystem::path& file, int schema_version = kSessionSchemaVersion);
+  SessionStore(const std::filesystem::path& file, ReadOnly);
   ~SessionStore();
   SessionStore(const SessionStore&) = delete;
   SessionStore& operator=(const SessionStore&) = delete;
@@ -72,6 +79,8 @@ class SessionStore {
 
  private:
   void exec(const char* sql, const std::string& what = "") const;  // what failed, for the error
+  void open(int flags, const std::string& name);  // name: the file, or an SQLite URI for it
+  void check_integrity() const;
 
   std::string file_;
   sqlite3* db_ = nullptr;

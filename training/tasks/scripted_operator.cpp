@@ -1,27 +1,15 @@
 #include "training/tasks/scripted_operator.hpp"
 
-#include <fstream>
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
-#include "io/write_file.hpp"
+#include "io/file_write.hpp"
+#include "io/input_limits.hpp"
+#include "io/strict_json.hpp"
 
 namespace needle::training {
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-namespace {
-
-json read_json(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw TaskError(file.string() + ": /: cannot read");
-  try {
-    return json::parse(in);
-  } catch (const json::exception& e) {
-    throw TaskError(file.string() + ": /: not valid JSON (" + e.what() + ")");
-  }
-}
-
-}  // namespace
 
 fs::path operator_script_path(const Task& task, const std::string& spec) {
   fs::path path = (spec == "good" || spec == "sloppy") ? fs::path(task.source).parent_path() / (task.name + "_" + spec + ".json")
@@ -32,7 +20,7 @@ fs::path operator_script_path(const Task& task, const std::string& spec) {
 
 json task_scenario_json(const Task& task) {
   if (task.scenario.empty()) throw TaskError(task.source + ": /scenario: the task names no haptics scenario to run");
-  json scenario = read_json(task.scenario);
+  json scenario = io::read_json_file<TaskError>(task.scenario);
   for (const char* key : {"master_urdf", "virtual_urdf"}) {  // relative to the task's scenario, not a copy
     if (!scenario.contains(key) || !scenario[key].is_string())
       throw TaskError(task.scenario.string() + ": /" + key + ": expected the robot's URDF file");
@@ -57,18 +45,20 @@ haptics::Scenario write_scenario(const json& scenario, const fs::path& file) {
 
 haptics::Scenario scenario_with_operator(const Task& task, const fs::path& script, const fs::path& merged_file) {
   json scenario = task_scenario_json(task);
-  const json operator_script = read_json(script);
-  if (!operator_script.contains("hand") || !operator_script["hand"].contains("waypoints") ||
-      !operator_script["hand"]["waypoints"].is_array() || operator_script["hand"]["waypoints"].empty()) {
-    throw TaskError(script.string() + ": /hand/waypoints: expected a non-empty array of waypoints");
+  // The script is read strictly here, so its errors name it and not the merged scenario.
+  const json operator_script = io::read_json_file<TaskError>(script);
+  const io::StrictJsonReader<TaskError> reader(script.string());
+  reader.object(operator_script, "", {"description", "hand"});
+  if (operator_script.contains("description")) reader.string(operator_script["description"], "/description");
+  const json& hand = reader.member(operator_script, "", "hand");
+  double end_s = 0.0;
+  try {
+    end_s = haptics::read_hand(hand, script.string(), "/hand", Eigen::Vector3d::Zero()).trajectory.end_time();
+  } catch (const haptics::ScenarioError& e) {
+    throw TaskError(e.what());  // already "SCRIPT: /hand/...: what"
   }
-  scenario["hand"] = operator_script["hand"];
-  const json& last = operator_script["hand"]["waypoints"].back();
-  if (!last.contains("t") || !last["t"].is_number()) {
-    throw TaskError(script.string() + ": /hand/waypoints/" + std::to_string(operator_script["hand"]["waypoints"].size() - 1) +
-                    "/t: expected a time in seconds");
-  }
-  scenario["duration_s"] = last["t"].get<double>() + 4.0;
+  scenario["hand"] = hand;
+  scenario["duration_s"] = std::min(end_s + kScriptEnd_s, io::kMaxSessionSeconds);
   return write_scenario(scenario, merged_file);
 }
 

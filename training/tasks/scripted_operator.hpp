@@ -24,8 +24,10 @@ nlohmann::json task_scenario_json(const Task& task);
 // it from there.
 haptics::Scenario write_scenario(const nlohmann::json& scenario, const std::filesystem::path& file);
 
-// The task's scenario with the script's hand, running until 4 s after its last waypoint, written
-// to `merged_file` by write_scenario.
+// The task's scenario with the script's hand, running until kScriptEnd_s after its last waypoint
+// (at most io::kMaxSessionSeconds), written to `merged_file` by write_scenario. The script is read
+// strictly first (TaskError naming the script and the JSON pointer).
+inline constexpr double kScriptEnd_s = 4.0;
 haptics::Scenario scenario_with_operator(const Task& task, const std::filesystem::path& script,
                                          const std::filesystem::path& merged_file);
 

@@ -1,7 +1,20 @@
 // Marker geometry shared by the progress tracker, the scoring and the guidance drawing.
 #include "training/tasks/task.hpp"
 
+#include <algorithm>
+
+#include "io/input_limits.hpp"
+
 namespace needle::training {
+
+double session_time_bound_s(const Task& task) {
+  double total = kTaskEndMargin_s;
+  for (const Step& step : task.steps) {
+    if (step.time_limit_s <= 0.0) return io::kMaxSessionSeconds;
+    total += step.time_limit_s;
+  }
+  return std::min(total, io::kMaxSessionSeconds);
+}
 
 int Task::marker_index(const std::string& marker_name) const {
   for (size_t i = 0; i < markers.size(); ++i)

@@ -101,7 +101,13 @@ struct ScoringSpec {
   ScoreReferences references;
 };
 
+// A task's name: 1 to kMaxNameBytes letters, digits, '_' or '-' (it becomes part of file names);
+// its title at most kMaxTitleBytes.
+inline constexpr size_t kMaxNameBytes = 64;
+inline constexpr size_t kMaxTitleBytes = 200;
+
 struct Task {
+  std::string text;  // the file's text as it was read (a recording keeps it for the replay)
   std::string name;
   std::string title;
   std::string description;         // one line for the start screen; may be empty
@@ -118,6 +124,15 @@ struct Task {
 };
 
 Task load_task(const std::filesystem::path& file);
+// A task from the text of its file as it was at `source` (a recording keeps it): paths in it are
+// relative to `source`'s folder, errors read "SOURCE (as recorded): /json/pointer: what is wrong".
+Task parse_task(const std::string& text, const std::filesystem::path& source);
+
+// How long a session of `task` may last (docs/TASKS.md, "Limits"): when every step has a time
+// limit, their sum (by then every step has ended) plus kTaskEndMargin_s; never more than
+// io::kMaxSessionSeconds, the bound for a task with a step that has no limit.
+inline constexpr double kTaskEndMargin_s = 4.0;
+double session_time_bound_s(const Task& task);
 
 // The thesis's three normal markers (section 4.3): points along the outward normal of the
 // surface-normal marker's sphere, at the surface point nearest the tip, 1, 2 and 3 spacings out.

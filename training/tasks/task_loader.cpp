@@ -1,11 +1,13 @@
 // Task files (docs/TASKS.md): strict JSON reading (io/strict_json.hpp, shared with scene,
 // scenario and tissue files); every error names the file and the JSON pointer of the culprit.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <set>
 
+#include "io/input_limits.hpp"
 #include "io/strict_json.hpp"
 #include "training/tasks/task.hpp"
 
@@ -23,9 +25,9 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     object(root, "", {"name", "title", "description", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps", "scoring",
                       "ultrasound"});
     Task t;
-    t.source = file_;
-    t.name = string(member(root, "", "name"), "/name");
+    t.name = name(member(root, "", "name"), "/name");
     t.title = root.contains("title") ? string(root["title"], "/title") : t.name;
+    if (t.title.size() > kMaxTitleBytes) fail("/title", "longer than " + std::to_string(kMaxTitleBytes) + " bytes");
     if (root.contains("description")) {
       t.description = string(root["description"], "/description");
       if (t.description.find('\n') != std::string::npos) fail("/description", "must be one line");
@@ -57,6 +59,18 @@ class TaskReader : io::StrictJsonReader<TaskError> {
   }
 
  private:
+  // A task's name is its key in the session store and part of its recordings' file names.
+  std::string name(const json& value, const std::string& at) const {
+    const std::string n = string(value, at);
+    const bool safe = std::all_of(n.begin(), n.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+    });
+    if (!safe || n.size() > kMaxNameBytes)
+      fail(at, "\"" + (n.size() > 80 ? n.substr(0, 80) + "..." : n) + "\": a task name is 1 to " +
+                   std::to_string(kMaxNameBytes) + " letters, digits, '_' or '-'");
+    return n;
+  }
+
   Vec3 vector(const json& value, const std::string& at) const {
     if (!value.is_array() || value.size() != 3) fail(at, "expected an array of 3 numbers");
     Vec3 v;
@@ -221,7 +235,9 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     s.id = string(member(value, at, "id"), at + "/id");
     s.instruction = string(member(value, at, "instruction"), at + "/instruction");
     s.condition = condition(t, member(value, at, "condition"), at + "/condition");
-    if (value.contains("time_limit_s")) s.time_limit_s = positive(value["time_limit_s"], at + "/time_limit_s");
+    if (value.contains("time_limit_s"))
+      s.time_limit_s = in_range(value["time_limit_s"], at + "/time_limit_s", 1e-9, io::kMaxSessionSeconds,
+                                "(0, " + std::to_string(int(io::kMaxSessionSeconds)) + "] s");
     if (value.contains("tip_fixed_within_m"))
       s.tip_fixed_within_m = positive(value["tip_fixed_within_m"], at + "/tip_fixed_within_m");
     if (value.contains("tip_out_of_plane_max_s")) {
@@ -270,6 +286,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       total += *field;
     }
     if (total <= 0.0) fail(at, "the weights add up to 0");
+    if (!std::isfinite(total)) fail(at, "the weights add up to more than a number can hold (give them as points, e.g. 30)");
     for (const auto& [key, field] : fields) *field *= 100.0 / total;
     return w;
   }
@@ -294,8 +311,23 @@ class TaskReader : io::StrictJsonReader<TaskError> {
 
 }  // namespace
 
+namespace {
+
+Task task_from_text(const std::string& text, const std::string& label, const fs::path& source) {
+  Task task = TaskReader(label, source.parent_path()).task(io::parse_json<TaskError>(text, label));
+  task.source = source.string();
+  task.text = text;
+  return task;
+}
+
+}  // namespace
+
 Task load_task(const fs::path& file) {
-  return TaskReader(file.string(), file.parent_path()).task(io::read_json_file<TaskError>(file));
+  return task_from_text(io::read_text_file<TaskError>(file), file.string(), file);
+}
+
+Task parse_task(const std::string& text, const fs::path& source) {
+  return task_from_text(text, source.string() + " (as recorded)", source);
 }
 
 }  // namespace needle::training

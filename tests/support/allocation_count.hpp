@@ -1,11 +1,12 @@
 // The allocation counter's state: start() arms it, stop() returns the calls into the C allocator
-// counted since. Any translation unit may include this; the counting itself (the allocator's
-// entry points) is haptics/sim/allocation_counter.hpp, in exactly one translation unit.
+// counted since. Any translation unit of a test program may include this; the counting itself is
+// tests/support/allocation_counter.hpp, in exactly one translation unit of that program. Nothing
+// the product ships counts its allocations: needle-sim keeps the C library's allocator.
 #pragma once
 
 #include <atomic>
 
-namespace needle::haptics::allocation_counter {
+namespace needle::test::allocation_counter {
 
 inline std::atomic<long> calls{0};
 inline std::atomic<bool> armed{false};
@@ -22,4 +23,4 @@ inline void note() {
   if (armed.load(std::memory_order_relaxed)) calls.fetch_add(1, std::memory_order_relaxed);
 }
 
-}  // namespace needle::haptics::allocation_counter
+}  // namespace needle::test::allocation_counter

@@ -1,0 +1,11 @@
+// Robot descriptions (haptics::parse_robot_urdf, through urdfdom): any input is a model or a
+// haptics::UrdfError, nothing else; urdfdom's own messages are captured, never printed.
+#include "haptics/model/urdf_loader.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  try {
+    needle::haptics::parse_robot_urdf(std::string(reinterpret_cast<const char*>(data), size), "fuzz_input.urdf");
+  } catch (const needle::haptics::UrdfError&) {
+  }
+  return 0;
+}

@@ -1,0 +1,360 @@
+// The recording's integrity (haptics/recording/session_format.hpp): damage anywhere is an error
+// naming the file and the byte offset, never other data; a cut file reads up to its last whole
+// block and says where; what is not a recording is refused before anything is read; older
+// versions still read and say what they lack. Offsets are computed from the format's own layout.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
+
+#include "haptics/devices/replay_device.hpp"
+#include "haptics/recording/crc32.hpp"
+#include "haptics/recording/session_recorder.hpp"
+
+namespace needle::haptics {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string temp_path(const std::string& name) {
+  return (fs::temp_directory_path() / ("needle_integrity_" + std::to_string(::getpid()) + "_" + name)).string();
+}
+
+std::vector<uint8_t> file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_bytes(const std::string& path, const std::vector<uint8_t>& bytes) {
+  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+const SessionHeader kHeader{kSessionFormatVersion, 1000.0, 1700000000, "sim", R"({"task": "t.json"})"};
+
+TickSample sample(uint64_t k) {
+  TickSample s;
+  s.tick = k;
+  s.time_ns = int64_t(k) * 1000000;
+  s.reading.sequence = k;
+  s.reading.position_m[0] = 1e-6 * double(k);
+  s.state.time_s = 0.001 * double(k);
+  return s;
+}
+
+// A recording of `ticks` samples drained in one pass, so its blocks hold 256 records but the last.
+void record(const std::string& path, uint64_t ticks, bool ran_to_end = true) {
+  SpscRing<TickSample> ring(4096);
+  SessionRecorder recorder(path, kHeader, ring);
+  for (uint64_t k = 0; k < ticks; ++k) ring.push(sample(k));
+  recorder.drain();
+  recorder.stop(ran_to_end);
+  ASSERT_EQ(recorder.error(), "");
+}
+
+// A recording of `ticks` ticks as record() makes it, and its bytes.
+std::vector<uint8_t> recorded(const std::string& path, uint64_t ticks) {
+  record(path, ticks);
+  return file_bytes(path);
+}
+
+// Byte offset of block `k` in a recording made by record().
+uint64_t block_offset(int k) {
+  return encode_header(kHeader).size() + uint64_t(k) * (kBlockHeaderBytes + 256 * session_record_bytes());
+}
+
+std::string error_of(const std::string& path) {
+  try {
+    read_session(path);
+  } catch (const RecordingError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(RecordingIntegrity, AClosedRecordingReadsWholeWithItsEndMark) {
+  const std::string path = temp_path("closed.nrec");
+  record(path, 1000);
+  EXPECT_EQ(fs::file_size(path), block_offset(3) + kBlockHeaderBytes + 232 * session_record_bytes() + kEndBytes);
+  const Session s = read_session(path);
+  ASSERT_EQ(s.records.size(), 1000u);
+  for (uint64_t k = 0; k < 1000; ++k) ASSERT_EQ(s.records[k].reading.position_m[0], 1e-6 * double(k));
+  EXPECT_TRUE(s.end.checksummed);
+  EXPECT_TRUE(s.end.closed);
+  EXPECT_TRUE(s.end.ran_to_end);
+  EXPECT_EQ(s.end.whole_bytes, fs::file_size(path));
+  EXPECT_TRUE(recording_notes(path, s.end, s.records.size()).empty());
+  EXPECT_EQ(s.header.device, kHeader.device);
+  EXPECT_EQ(s.header.context, kHeader.context);
+  EXPECT_EQ(s.header.rate_hz, kHeader.rate_hz);
+
+  record(path, 10, /*ran_to_end=*/false);  // a window closed before the task ended
+  EXPECT_TRUE(read_session(path).end.closed);
+  EXPECT_FALSE(read_session(path).end.ran_to_end);
+  fs::remove(path);
+}
+
+TEST(RecordingIntegrity, DamageToABlockIsAnErrorNamingTheFileAndTheByteOffset) {
+  const std::string path = temp_path("damaged.nrec");
+  const std::vector<uint8_t> good = recorded(path, 1000);
+  const uint64_t block = block_offset(1);
+  const uint64_t record_300 = block + kBlockHeaderBytes + 44 * session_record_bytes();  // tick 300 is block 1's 45th
+  const std::string expected = path + ": block at byte " + std::to_string(block) + ": records checksum mismatch (damaged)";
+
+  std::vector<uint8_t> bad = good;  // a run of 0xFF bytes over the block's records
+  std::fill(bad.begin() + long(record_300), bad.begin() + long(record_300 + 4096), 0xFF);
+  write_bytes(path, bad);
+  EXPECT_EQ(error_of(path), expected);
+
+  bad = good;  // random bytes
+  std::mt19937 random(11);
+  for (uint64_t i = record_300; i < record_300 + 700; ++i) bad[i] = uint8_t(random());
+  write_bytes(path, bad);
+  EXPECT_EQ(error_of(path), expected);
+
+  bad = good;  // a NaN in place of a recorded position: a well-formed number, a wrong record
+  const double nan = std::nan("");
+  TickSample s = sample(300);
+  std::vector<uint8_t> one;
+  encode_record(s, one);
+  const uint64_t position_at = std::search(one.begin(), one.end(), reinterpret_cast<const uint8_t*>(&s.reading.position_m[0]),
+                                           reinterpret_cast<const uint8_t*>(&s.reading.position_m[0]) + 8) - one.begin();
+  ASSERT_LT(position_at, one.size());
+  std::memcpy(&bad[record_300 + position_at], &nan, 8);
+  write_bytes(path, bad);
+  EXPECT_EQ(error_of(path), expected);
+
+  bad = good;  // one bit of a record
+  bad[record_300 + 100] ^= 0x10;
+  write_bytes(path, bad);
+  EXPECT_EQ(error_of(path), expected);
+
+  bad = good;  // the block's record count
+  bad[block + 12] = 3;
+  write_bytes(path, bad);
+  EXPECT_EQ(error_of(path), path + ": block at byte " + std::to_string(block) + ": header checksum mismatch (damaged)");
+
+  bad = good;  // the end mark's count
+  bad[bad.size() - kEndBytes + 4] ^= 1;
+  write_bytes(path, bad);
+  EXPECT_EQ(error_of(path), path + ": end at byte " + std::to_string(good.size() - kEndBytes) + ": checksum mismatch (damaged)");
+
+  // The replay device refuses it before its first tick.
+  bad = good;
+  bad[record_300 + 100] ^= 0x10;
+  write_bytes(path, bad);
+  ReplayDevice replay(path);
+  try {
+    replay.open();
+    ADD_FAILURE() << "a damaged recording opened for replay";
+  } catch (const RecordingError& e) {
+    EXPECT_EQ(std::string(e.what()), expected);
+  }
+  fs::remove(path);
+}
+
+TEST(RecordingIntegrity, ABlockMissingOrRepeatedIsAnError) {
+  const std::string path = temp_path("missing_block.nrec");
+  const std::vector<uint8_t> good = recorded(path, 1000);
+  std::vector<uint8_t> bad = good;
+  bad.erase(bad.begin() + long(block_offset(1)), bad.begin() + long(block_offset(2)));
+  write_bytes(path, bad);
+  EXPECT_EQ(error_of(path), path + ": block at byte " + std::to_string(block_offset(1)) +
+                                ": starts at tick 512, expected 256 (a block is missing or repeated)");
+  bad = good;
+  bad.insert(bad.begin() + long(block_offset(2)), good.begin() + long(block_offset(1)), good.begin() + long(block_offset(2)));
+  write_bytes(path, bad);
+  EXPECT_EQ(error_of(path), path + ": block at byte " + std::to_string(block_offset(2)) +
+                                ": starts at tick 256, expected 512 (a block is missing or repeated)");
+  fs::remove(path);
+}
+
+TEST(RecordingIntegrity, EditingTheHeaderIsAnError) {
+  const std::string path = temp_path("header.nrec");
+  const std::vector<uint8_t> good = recorded(path, 10);
+  std::vector<uint8_t> bad = good;
+  const double rate = 500.0;  // the rate, edited as a user would to replay at another speed
+  std::memcpy(&bad[24], &rate, 8);
+  write_bytes(path, bad);
+  EXPECT_EQ(error_of(path), path + ": header: checksum mismatch: the header was changed or damaged");
+  bad = good;
+  bad[44] = 'S';  // the device name
+  write_bytes(path, bad);
+  EXPECT_EQ(error_of(path), path + ": header: checksum mismatch: the header was changed or damaged");
+  fs::remove(path);
+}
+
+TEST(RecordingIntegrity, ACutFileReadsUpToItsLastWholeBlockAndSaysWhere) {
+  const std::string path = temp_path("cut.nrec");
+  const std::vector<uint8_t> good = recorded(path, 1000);
+  const uint64_t cut_at = block_offset(2) + kBlockHeaderBytes + 100;  // in block 2's first record
+  write_bytes(path, {good.begin(), good.begin() + long(cut_at)});
+  Session s = read_session(path);
+  ASSERT_EQ(s.records.size(), 512u);
+  EXPECT_EQ(s.records.back().tick, 511u);
+  EXPECT_FALSE(s.end.closed);
+  EXPECT_EQ(s.end.whole_bytes, block_offset(2));
+  EXPECT_EQ(s.end.trailing_bytes, kBlockHeaderBytes + 100);
+  EXPECT_EQ(recording_notes(path, s.end, s.records.size()),
+            std::vector<std::string>{path + ": cut at byte " + std::to_string(block_offset(2)) + " after 512 ticks (its run " +
+                                     "stopped without closing it, 124 bytes of a last block lost): read up to there"});
+
+  for (uint64_t cut : {uint64_t(good.size() - kEndBytes), uint64_t(good.size() - 5), block_offset(1) + 2}) {
+    write_bytes(path, {good.begin(), good.begin() + long(cut)});
+    s = read_session(path);
+    EXPECT_FALSE(s.end.closed) << cut;
+    EXPECT_EQ(s.records.size(), cut >= good.size() - kEndBytes ? 1000u : 256u) << cut;
+  }
+
+  write_bytes(path, {good.begin(), good.begin() + 30});  // inside the header
+  EXPECT_EQ(error_of(path), path + ": header: truncated (the file has 30 bytes)");
+
+  std::vector<uint8_t> longer = good;  // bytes after the end mark are not a cut: something wrote there
+  longer.push_back(0);
+  write_bytes(path, longer);
+  EXPECT_EQ(error_of(path), path + ": end at byte " + std::to_string(good.size() - kEndBytes) +
+                                ": 1 bytes after the end of the recording");
+  fs::remove(path);
+}
+
+// Milliseconds `read_session(path)` takes to refuse `path`, its message in `error`.
+double refusal_ms(const std::string& path, std::string& error) {
+  const auto t0 = std::chrono::steady_clock::now();
+  error = error_of(path);
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+TEST(RecordingIntegrity, WhatIsNotARecordingIsRefusedBeforeAnythingIsRead) {
+  std::string error;
+  EXPECT_LT(refusal_ms("/dev/zero", error), 100.0);
+  EXPECT_EQ(error, "/dev/zero: not a regular file (a device or a pipe), not a recording");
+  const std::string folder = temp_path("folder.nrec");
+  fs::create_directories(folder);
+  EXPECT_EQ(error_of(folder), folder + ": is a folder, not a recording");
+  fs::remove(folder);
+  EXPECT_EQ(error_of(folder), folder + ": cannot be opened: No such file or directory");
+
+  // 2 GiB of zeros (a sparse file: no disk is used), then the same behind a valid header.
+  const std::string big = temp_path("big.nrec");
+  const uint64_t two_gib = uint64_t(1) << 31;
+  {
+    const int fd = ::open(big.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ASSERT_GE(fd, 0);
+    ASSERT_EQ(::ftruncate(fd, off_t(two_gib)), 0);
+    ::close(fd);
+  }
+  EXPECT_LT(refusal_ms(big, error), 100.0);
+  EXPECT_EQ(error, big + ": header: not a needle-sim session recording (expected magic NEEDLREC)");
+  auto put_header = [&big](const SessionHeader& header) {
+    const std::vector<uint8_t> head = encode_header(header);
+    std::fstream f(big, std::ios::binary | std::ios::in | std::ios::out);
+    f.write(reinterpret_cast<const char*>(head.data()), std::streamsize(head.size()));
+    return head.size();
+  };
+  // At 1 kHz the longest session (30 min) holds fewer bytes than this: refused by its size alone.
+  put_header(kHeader);
+  ASSERT_GT(two_gib, 1800001 * (session_record_bytes() + kBlockHeaderBytes) + kEndBytes);
+  EXPECT_LT(refusal_ms(big, error), 100.0);
+  EXPECT_EQ(error, big + ": 2147483648 bytes: more than a session of at most 30 minutes at 1000 Hz can hold");
+  // At 10 kHz it could be a session: refused at its first block, without reading further.
+  SessionHeader fast = kHeader;
+  fast.rate_hz = 10000.0;
+  const size_t header_bytes = put_header(fast);
+  EXPECT_LT(refusal_ms(big, error), 100.0);
+  EXPECT_EQ(error, big + ": block at byte " + std::to_string(header_bytes) + ": not a block of records (damaged)");
+  fs::remove(big);
+}
+
+// `bytes` as a header of version 1 or 2, written field by field as those builds did.
+std::vector<uint8_t> old_header(uint32_t version, const std::string& device, const std::string* context) {
+  std::vector<uint8_t> out = {'N', 'E', 'E', 'D', 'L', 'R', 'E', 'C'};
+  auto put = [&out](const auto& value) {
+    const auto* p = reinterpret_cast<const uint8_t*>(&value);
+    out.insert(out.end(), p, p + sizeof value);
+  };
+  put(version), put(static_cast<uint32_t>(session_record_bytes())), put(500.0), put(int64_t{7});
+  put(static_cast<uint32_t>(device.size()));
+  out.insert(out.end(), device.begin(), device.end());
+  if (context) {
+    put(static_cast<uint32_t>(context->size()));
+    out.insert(out.end(), context->begin(), context->end());
+  }
+  return out;
+}
+
+TEST(RecordingIntegrity, OlderVersionsStillReadAndSayTheyHaveNoChecksums) {
+  const std::string path = temp_path("old.nrec");
+  std::vector<uint8_t> v1 = old_header(1, "sim", nullptr);
+  encode_record(sample(9), v1);
+  write_bytes(path, v1);
+  Session s = read_session(path);
+  EXPECT_EQ(s.header.version, 1u);
+  EXPECT_EQ(s.header.device, "sim");
+  EXPECT_EQ(s.header.context, "");
+  ASSERT_EQ(s.records.size(), 1u);
+  EXPECT_EQ(s.records[0].tick, 9u);
+  EXPECT_FALSE(s.end.checksummed);
+  EXPECT_EQ(recording_notes(path, s.end, 1),
+            std::vector<std::string>{path + ": an older format without checksums: damage to its records cannot be detected"});
+
+  const std::string context = R"({"task": "t.json", "bytes": "\u00e9\n"})";
+  std::vector<uint8_t> v2 = old_header(2, "sim", &context);
+  for (uint64_t k = 0; k < 300; ++k) encode_record(sample(k), v2);
+  v2.resize(v2.size() - 7);  // a kill mid-record: the whole records read, the partial one is said
+  write_bytes(path, v2);
+  s = read_session(path);
+  EXPECT_EQ(s.header.version, 2u);
+  EXPECT_EQ(s.header.context, context);
+  ASSERT_EQ(s.records.size(), 299u);
+  EXPECT_EQ(s.records[298].reading.position_m[0], sample(298).reading.position_m[0]);
+  EXPECT_EQ(s.end.trailing_bytes, session_record_bytes() - 7);
+  EXPECT_EQ(recording_notes(path, s.end, 299).back(),
+            path + ": " + std::to_string(session_record_bytes() - 7) + " bytes of a last record cut short, dropped");
+
+  std::vector<uint8_t> huge = old_header(2, "sim", &context);  // a length that would allocate 4 GB
+  const uint32_t length = 0xFFFFFFF0u;
+  std::memcpy(&huge[huge.size() - context.size() - 4], &length, 4);
+  write_bytes(path, huge);
+  EXPECT_EQ(error_of(path), path + ": header: context of 4294967280 bytes (at most 16777216)");
+
+  SessionHeader future = kHeader;
+  std::vector<uint8_t> next = encode_header(future);
+  next[8] = kSessionFormatVersion + 1;
+  write_bytes(path, next);
+  EXPECT_EQ(error_of(path), path + ": header: format version " + std::to_string(kSessionFormatVersion + 1) +
+                                ", this build reads versions 1 to " + std::to_string(kSessionFormatVersion));
+  fs::remove(path);
+}
+
+// A header with the 32-bit field at `offset` set to `value` and its checksum made right again:
+// what a newer build, not damage, would write.
+std::vector<uint8_t> header_with(uint32_t offset, uint32_t value) {
+  std::vector<uint8_t> h = encode_header(kHeader);
+  std::memcpy(&h[offset], &value, 4);
+  const uint32_t crc = crc32(h.data(), h.size() - 4);
+  std::memcpy(&h[h.size() - 4], &crc, 4);
+  return h;
+}
+
+TEST(RecordingIntegrity, TheRecordSizeIsTheHeadersNotTheFramings) {
+  const std::string path = temp_path("payload.nrec");
+  write_bytes(path, header_with(16, kPayloadVersion + 1));
+  EXPECT_EQ(error_of(path), path + ": header: payload version " + std::to_string(kPayloadVersion + 1) +
+                                ", this build reads versions 1 to " + std::to_string(kPayloadVersion));
+  const uint32_t bigger = uint32_t(session_record_bytes() + 8);
+  write_bytes(path, header_with(20, bigger));
+  EXPECT_EQ(error_of(path), path + ": header: record size " + std::to_string(bigger) + " bytes, expected " +
+                                std::to_string(session_record_bytes()) + " for payload version 1");
+  fs::remove(path);
+}
+
+}  // namespace
+}  // namespace needle::haptics

@@ -1,0 +1,226 @@
+// Recordings an instructor can trust, through needle-sim as a user runs it: a damaged recording is
+// refused by replay and report naming the file and the byte offset, an edited header too; a cut
+// one replays up to its cut and is stored incomplete, saying so; an empty one is an error; a
+// replay scores the task as it was recorded, not as its file is now; what is not a recording is
+// refused at once. Offsets come from the format's layout (haptics/recording/session_format.hpp).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+
+#include "cli_process.hpp"
+#include "haptics/recording/session_format.hpp"
+#include "tests/support/process_folder.hpp"
+#include "training/sessions/session_store.hpp"
+
+namespace needle::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<uint8_t> file_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_bytes(const fs::path& path, const std::vector<uint8_t>& bytes) {
+  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+struct RunOutput {
+  ProcessResult process;
+  fs::path out;
+  std::optional<nlohmann::json> score;  // OUT/score.json when there is one
+};
+
+RunOutput run(const std::string& arguments, const fs::path& out, const fs::path& db) {
+  RunOutput r{run_needle_sim("run --headless --size 160x120 --trainee ana " + arguments + " --out " + quoted(out) + " --db " + quoted(db)),
+        out, std::nullopt};
+  if (fs::exists(out / "score.json")) r.score = nlohmann::json::parse(std::ifstream(out / "score.json"));
+  return r;
+}
+
+RunOutput replay(const fs::path& recording, const fs::path& out, const fs::path& db) {
+  return run("--device " + quoted(fs::path("replay:" + recording.string())), out, db);
+}
+
+// A headless run of `task` (a shipped one's name, or a file) by `op`; its recording.
+fs::path live_run(const fs::path& dir, const std::string& task, const std::string& op) {
+  const fs::path file = task.find('/') == std::string::npos ? source_dir() / "assets/tasks" / (task + ".json") : fs::path(task);
+  const RunOutput live = run("--task " + quoted(file) + " --operator " + op, dir / "live", dir / "sessions.db");
+  EXPECT_EQ(live.process.exit_code, 0) << live.process.output;
+  return live.score ? fs::path((*live.score)["recording"].get<std::string>()) : fs::path();
+}
+
+// Where block `k` starts in a headless run's recording: the run drains the ring every tick, so
+// each block holds one record.
+uint64_t block_offset(const std::vector<uint8_t>& recording, uint64_t k) {
+  uint32_t header_bytes = 0;
+  std::memcpy(&header_bytes, &recording[12], 4);
+  return header_bytes + k * (haptics::kBlockHeaderBytes + haptics::session_record_bytes());
+}
+
+bool says(const ProcessResult& r, const std::string& text) { return r.output.find(text) != std::string::npos; }
+
+TEST(CliRecordings, DamageIsRefusedByReplayAndReportNamingTheFileAndTheOffset) {
+  const fs::path dir = process_folder(test_output_dir("cli_recordings") / "damage");
+  const fs::path recording = live_run(dir, "rigid_sphere", "sloppy");
+  ASSERT_FALSE(recording.empty());
+  const std::vector<uint8_t> good = file_bytes(recording);
+  const uint64_t block = block_offset(good, 3000);
+  const fs::path copy = dir / "copy.nrec";
+  const std::string damaged = copy.string() + ": block at byte " + std::to_string(block) + ": records checksum mismatch (damaged)";
+
+  std::vector<uint8_t> bad = good;  // 0xFF over a record
+  std::fill(bad.begin() + long(block) + 30, bad.begin() + long(block) + 300, 0xFF);
+  write_bytes(copy, bad);
+  RunOutput r = replay(copy, dir / "ff", dir / "sessions.db");
+  EXPECT_EQ(r.process.exit_code, 1) << r.process.output;
+  EXPECT_TRUE(says(r.process, damaged)) << r.process.output;
+  EXPECT_FALSE(r.score);
+
+  bad = good;  // a NaN over a recorded double
+  const double nan = std::nan("");
+  // reading.position_m[0]: after tick, three times, sequence (8 bytes each) and five u32 flags
+  std::memcpy(&bad[block + haptics::kBlockHeaderBytes + 60], &nan, 8);
+  write_bytes(copy, bad);
+  r = replay(copy, dir / "nan", dir / "sessions.db");
+  EXPECT_EQ(r.process.exit_code, 1) << r.process.output;
+  EXPECT_TRUE(says(r.process, damaged)) << r.process.output;
+
+  bad = good;  // the rate, 500 Hz made 1000 Hz
+  const double rate = 1000.0;
+  std::memcpy(&bad[24], &rate, 8);
+  write_bytes(copy, bad);
+  r = replay(copy, dir / "rate", dir / "sessions.db");
+  EXPECT_EQ(r.process.exit_code, 1) << r.process.output;
+  EXPECT_TRUE(says(r.process, copy.string() + ": header: checksum mismatch: the header was changed or damaged")) << r.process.output;
+
+  // Nothing refused was stored: the database holds the live session alone.
+  training::SessionStore store(dir / "sessions.db");
+  EXPECT_EQ(store.sessions().size(), 1u);
+
+  // The report of the live session whose recording was damaged since: the metrics, then exit 1.
+  bad = good;
+  bad[block + haptics::kBlockHeaderBytes + 100] ^= 0x01;
+  write_bytes(recording, bad);
+  const ProcessResult report =
+      run_needle_sim("report --session 1 --db " + quoted(dir / "sessions.db") + " --out " + quoted(dir / "report"));
+  EXPECT_EQ(report.exit_code, 1) << report.output;
+  EXPECT_TRUE(says(report, recording.string() + ": block at byte " + std::to_string(block) +
+                               ": records checksum mismatch (damaged)"))
+      << report.output;
+  EXPECT_TRUE(fs::is_regular_file(dir / "report" / "session_1.json"));
+  EXPECT_FALSE(fs::exists(dir / "report" / "plot_force.png"));
+}
+
+TEST(CliRecordings, ACutRecordingReplaysIncompleteAndAnEmptyOneIsAnError) {
+  const fs::path dir = process_folder(test_output_dir("cli_recordings") / "cut");
+  const fs::path recording = live_run(dir, "rigid_sphere", "good");
+  ASSERT_FALSE(recording.empty());
+  const std::vector<uint8_t> good = file_bytes(recording);
+  const uint64_t cut = block_offset(good, 2000) + 100;  // in tick 2000's block
+  const fs::path cut_file = dir / "cut.nrec";
+  write_bytes(cut_file, {good.begin(), good.begin() + long(cut)});
+  RunOutput r = replay(cut_file, dir / "cut", dir / "sessions.db");
+  EXPECT_EQ(r.process.exit_code, 0) << r.process.output;
+  EXPECT_TRUE(says(r.process, "note: " + cut_file.string() + ": cut at byte " + std::to_string(block_offset(good, 2000)) +
+                                  " after 2000 ticks"))
+      << r.process.output;
+  EXPECT_TRUE(says(r.process, "stays incomplete")) << r.process.output;
+  EXPECT_FALSE(r.score) << "a cut replay has no score";
+  {
+    training::SessionStore store(dir / "sessions.db");
+    const std::vector<training::SessionInfo> sessions = store.sessions();  // newest first
+    ASSERT_EQ(sessions.size(), 2u);
+    EXPECT_TRUE(sessions[1].complete);
+    EXPECT_FALSE(sessions[0].complete);
+    // The replay's own recording holds the 2000 ticks it ran, closed as a session that did not end.
+    const haptics::Session again = haptics::read_session(sessions[0].recording_path);
+    EXPECT_EQ(again.records.size(), 2000u);
+    EXPECT_TRUE(again.end.closed);
+    EXPECT_FALSE(again.end.ran_to_end);
+  }
+
+  // The report of the live session once its recording is cut: the plots up to the cut, said.
+  write_bytes(recording, {good.begin(), good.begin() + long(cut)});
+  const ProcessResult report =
+      run_needle_sim("report --session 1 --db " + quoted(dir / "sessions.db") + " --out " + quoted(dir / "report"));
+  EXPECT_EQ(report.exit_code, 0) << report.output;
+  EXPECT_TRUE(says(report, "note: " + recording.string() + ": cut at byte")) << report.output;
+  EXPECT_TRUE(fs::is_regular_file(dir / "report" / "plot_force.png"));
+
+  // A header and no tick, as a run killed in its first tick leaves: nothing to replay.
+  write_bytes(cut_file, {good.begin(), good.begin() + long(block_offset(good, 0))});
+  r = replay(cut_file, dir / "empty", dir / "sessions.db");
+  EXPECT_EQ(r.process.exit_code, 1) << r.process.output;
+  EXPECT_TRUE(says(r.process, cut_file.string() + ": no ticks recorded (its run stopped before its first tick)")) << r.process.output;
+  EXPECT_FALSE(r.score);
+}
+
+TEST(CliRecordings, AReplayScoresTheTaskAsRecordedNotAsItsFileIsNow) {
+  const fs::path dir = process_folder(test_output_dir("cli_recordings") / "task");
+  // The shipped rigid task, its scene and scenario made absolute so the copy can live here.
+  nlohmann::json task = nlohmann::json::parse(std::ifstream(source_dir() / "assets/tasks/rigid_sphere.json"));
+  for (const char* key : {"scene", "scenario"})
+    task[key] = (source_dir() / "assets/tasks" / task[key].get<std::string>()).lexically_normal().string();
+  const fs::path task_file = dir / "rigid_copy.json";
+  std::ofstream(task_file) << task.dump(2);
+  fs::copy_file(source_dir() / "assets/tasks/rigid_sphere_good.json", dir / "good.json");
+  const fs::path recording = live_run(dir, task_file.string(), (dir / "good.json").string());
+  ASSERT_FALSE(recording.empty());
+  const nlohmann::json live = nlohmann::json::parse(std::ifstream(dir / "live" / "score.json"));
+  ASSERT_TRUE(live["passed"].get<bool>());
+
+  task["scoring"]["pass_score"] = 100.0;  // would fail every session
+  std::ofstream(task_file) << task.dump(2);
+  const RunOutput r = replay(recording, dir / "replay", dir / "sessions.db");
+  ASSERT_EQ(r.process.exit_code, 0) << r.process.output;
+  EXPECT_TRUE(says(r.process, "note: " + task_file.string() + " has changed since the recording: the replay runs the task "
+                                  "as it was recorded"))
+      << r.process.output;
+  ASSERT_TRUE(r.score);
+  nlohmann::json a = live, b = *r.score;
+  a.erase("recording"), b.erase("recording");
+  EXPECT_EQ(a, b);
+}
+
+TEST(CliRecordings, WhatIsNotARecordingIsRefusedAtOnce) {
+  const fs::path dir = process_folder(test_output_dir("cli_recordings") / "not");
+  const auto t0 = std::chrono::steady_clock::now();
+  RunOutput r = replay("/dev/zero", dir / "zero", dir / "sessions.db");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
+  EXPECT_EQ(r.process.exit_code, 1) << r.process.output;
+  EXPECT_TRUE(says(r.process, "/dev/zero: not a regular file (a device or a pipe), not a recording")) << r.process.output;
+
+  r = replay(dir, dir / "folder", dir / "sessions.db");
+  EXPECT_EQ(r.process.exit_code, 1) << r.process.output;
+  EXPECT_TRUE(says(r.process, dir.string() + ": is a folder, not a recording")) << r.process.output;
+
+  // Format version 2 (no checksums, no task text): reviewable, not replayable.
+  std::vector<uint8_t> v2 = {'N', 'E', 'E', 'D', 'L', 'R', 'E', 'C'};
+  auto put = [&v2](const auto& value) {
+    const auto* p = reinterpret_cast<const uint8_t*>(&value);
+    v2.insert(v2.end(), p, p + sizeof value);
+  };
+  const std::string context = R"({"version": 1, "task": "t.json", "scenario": {}, "safety_limits": {}})";
+  put(uint32_t{2}), put(uint32_t(haptics::session_record_bytes())), put(500.0), put(int64_t{0}), put(uint32_t{3});
+  v2.insert(v2.end(), {'s', 'i', 'm'});
+  put(uint32_t(context.size()));
+  v2.insert(v2.end(), context.begin(), context.end());
+  haptics::encode_record(haptics::TickSample{}, v2);
+  const fs::path old = dir / "old.nrec";
+  write_bytes(old, v2);
+  r = replay(old, dir / "old", dir / "sessions.db");
+  EXPECT_EQ(r.process.exit_code, 1) << r.process.output;
+  EXPECT_TRUE(says(r.process, old.string() + ": header: format version 2 has no checksums and does not keep its task: it "
+                                             "can be reviewed (needle-sim report, review) but not replayed"))
+      << r.process.output;
+}
+
+}  // namespace
+}  // namespace needle::test
