@@ -152,7 +152,7 @@ int run_review_window(const ReviewOptions& options) {
     ui::frame_beside_panels(params.camera, w / h, kPanelsFraction);
     params.overlay = ui_pass.end_frame();
 
-    frames.draw(window, renderer, target, params);
+    frames.draw(window, [&](engine::RgbaImage* shot) { return renderer.draw(target, params, shot); });
   }
   renderer.wait_idle();
   std::printf("presented %ld frames\n", frames.drawn());
