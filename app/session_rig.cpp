@@ -34,13 +34,20 @@ Eigen::Matrix3d screen_axes(const engine::Camera& camera, double depth_sign) {
   return axes;
 }
 
-// The mouse's depth grows with scrolling forward, into the screen; the Falcon's z points at the
-// user, out of it. The Falcon's 8 cm cube is scaled up to the mouse's 20 cm reach.
+// A desk device's depth grows into the screen; the Falcon's z points at the user, out of it. The
+// Falcon's 8 cm cube is scaled up to the desk devices' 20 cm reach. A desk device's virtual wrist
+// turns the needle about its tip, held to the wrist by a stiffer direction spring than the
+// Falcon's start direction: at 0.5 N m/rad the tip spring wins a few degrees off the target in
+// free space, at 5 N m/rad the needle settles on it (tests/haptics/test_realtime_task_space.cpp).
 haptics::TaskCoupling coupling_for(const std::string& device, const engine::Camera& camera) {
   haptics::TaskCoupling coupling;
-  const bool mouse = device == "mouse";
-  coupling.device_to_scene = screen_axes(camera, mouse ? 1.0 : -1.0);
-  coupling.workspace_scale = mouse ? 1.0 : 2.5;
+  const bool desk = haptics::is_desk_spec(device);
+  coupling.device_to_scene = screen_axes(camera, desk ? 1.0 : -1.0);
+  coupling.workspace_scale = desk ? 1.0 : 2.5;
+  if (desk) {
+    coupling.wrist = true;
+    coupling.orientation_stiffness_nm_per_rad = 5.0;
+  }
   return coupling;
 }
 
@@ -53,7 +60,8 @@ json coupling_json(const haptics::TaskCoupling& c) {
           {"stiffness_n_per_m", c.stiffness_n_per_m},
           {"orientation_stiffness_nm_per_rad", c.orientation_stiffness_nm_per_rad},
           {"joint_damping_nms_per_rad", c.joint_damping_nms_per_rad},
-          {"force_scale", c.force_scale}};
+          {"force_scale", c.force_scale},
+          {"wrist", c.wrist}};
 }
 
 haptics::TaskCoupling coupling_from(const json& j) {
@@ -67,6 +75,7 @@ haptics::TaskCoupling coupling_from(const json& j) {
   c.orientation_stiffness_nm_per_rad = j.at("orientation_stiffness_nm_per_rad").get<double>();
   c.joint_damping_nms_per_rad = j.at("joint_damping_nms_per_rad").get<double>();
   c.force_scale = j.at("force_scale").get<double>();
+  c.wrist = j.value("wrist", false);  // recorded before the desk devices had a wrist: none
   return c;
 }
 
@@ -153,10 +162,10 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
   } else {
     haptics::DeviceOptions device_options;
     device_options.firmware_path = options.firmware;
-    if (spec == "mouse") {
-      auto mouse = std::make_unique<haptics::MouseDevice>();
-      mouse_ = mouse.get();
-      owned_device_ = std::move(mouse);
+    if (haptics::is_desk_spec(spec)) {
+      auto desk = std::make_unique<haptics::DeskDevice>(spec);
+      desk_ = desk.get();
+      owned_device_ = std::move(desk);
     } else {
       owned_device_ = haptics::make_device(spec, device_options);  // DeviceError for an unknown spec
     }
@@ -167,7 +176,9 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
     rate_hz_ = options.rate_hz.value_or(1000.0);
     const haptics::TaskCoupling task_coupling = coupling_for(spec, options.camera);
     coupling = coupling_json(task_coupling);
-    owned_step_ = std::make_unique<haptics::TaskSpaceStep>(*scenario_, task_coupling);
+    auto task_space = std::make_unique<haptics::TaskSpaceStep>(*scenario_, task_coupling);
+    task_space_ = task_space.get();
+    owned_step_ = std::move(task_space);
     description_ = spec;
   }
   if (owned_device_) device_ = owned_device_.get();
@@ -183,6 +194,11 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
                   {"coupling", coupling},
                   {"safety_limits", limits_json(limits_)}}
                  .dump();
+}
+
+std::optional<Eigen::Vector3d> SessionRig::tool_start() const {
+  if (!task_space_) return std::nullopt;
+  return task_space_->start_tip() + scenario_->base_in_world;
 }
 
 SessionRig::~SessionRig() {

@@ -1,5 +1,6 @@
 // What a task session runs on: the device a --device spec names, the servo step that couples it
-// to the virtual robot (joint to joint for `sim`, in task space for `mouse` and `falcon`), the
+// to the virtual robot (joint to joint for `sim`, in task space for `falcon` and the desk devices
+// `mouse`, `keyboard`, `gamepad[:N]`), the
 // scenario both use, and the recording context that lets `replay:FILE` rebuild exactly this
 // (docs/TASKS.md, "Devices").
 #pragma once
@@ -11,8 +12,9 @@
 #include <string>
 
 #include "engine/scene.hpp"
-#include "haptics/devices/mouse_device.hpp"
+#include "haptics/devices/desk_device.hpp"
 #include "haptics/realtime/servo_step.hpp"
+#include "haptics/realtime/task_space_step.hpp"
 #include "haptics/realtime/sim_session.hpp"
 #include "haptics/safety/safety_monitor.hpp"
 #include "haptics/sim/scenario.hpp"
@@ -21,7 +23,7 @@
 namespace needle::app {
 
 struct RigOptions {
-  std::string device = "sim";           // sim | mouse | falcon[:N] | replay:FILE
+  std::string device = "sim";           // sim | mouse | keyboard | gamepad[:N] | falcon[:N] | replay:FILE
   std::string operator_spec = "good";   // sim: good | sloppy | a script file
   std::string firmware;                 // falcon: Novint's firmware image
   std::optional<double> rate_hz;        // default: the scenario's for sim, 1 kHz live, as recorded for replay
@@ -49,7 +51,11 @@ class SessionRig {
   // Ticks until the device has nothing more to give (the script's end, the recording's last
   // record); nullopt for a trainee's device, which runs until the task ends or the window closes.
   std::optional<uint64_t> ticks() const { return ticks_; }
-  haptics::MouseDevice* mouse() { return mouse_; }
+  // The desk device (mouse, keyboard, gamepad) whose pose the app sets; nullptr for the others.
+  haptics::DeskDevice* desk() { return desk_; }
+  // Where a task-space device's tool starts, world frame (its first reading lands there);
+  // nullopt for the joint-space and replayed devices.
+  std::optional<Eigen::Vector3d> tool_start() const;
   // For the session store and the recording header: "sim (good)", "mouse", "replay of ...".
   const std::string& description() const { return description_; }
   // JSON for the recording header (haptics::SessionHeader::context).
@@ -62,7 +68,8 @@ class SessionRig {
   std::unique_ptr<haptics::ServoStep> owned_step_;
   haptics::HapticDevice* device_ = nullptr;
   haptics::ServoStep* step_ = nullptr;
-  haptics::MouseDevice* mouse_ = nullptr;
+  haptics::DeskDevice* desk_ = nullptr;
+  const haptics::TaskSpaceStep* task_space_ = nullptr;  // the live device's step, when in task space
   haptics::SafetyLimits limits_;
   double rate_hz_ = 1000.0;
   std::optional<uint64_t> ticks_;

@@ -1,10 +1,15 @@
 #include "app/session_window.hpp"
 
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
 #include <chrono>
 #include <cstdio>
+#include <memory>
 
-#include "app/trainee_frame.hpp"
-#include "app/window_frames.hpp"
+#include "app/desk_input.hpp"
+#include "engine/gpu_device.hpp"
+#include "engine/render_target.hpp"
 
 namespace needle::app {
 namespace {
@@ -14,27 +19,78 @@ namespace fs = std::filesystem;
 // The moment of the script a headless scene run shows: the needle pivoted in the tissue.
 constexpr double kHeadlessMoment_s = 7.0;
 
-int run_window(const engine::Scene& scene, const WindowOptions& options,
-               const std::function<FrameContent(const engine::GpuScene&)>& make_content) {
-  GpuWindow vw("needle-sim", options.size);
-  TraineeFrame frame(vw.device, vw.target, [&](const engine::SceneRenderer& r) { return engine::GpuScene(r, scene); },
-                     {options.msaa.value_or(vw.default_msaa_samples()), options.hud}, &vw.window);
-  const FrameContent content = make_content(frame.scene());
-  WindowFrames frames(options.frames, options.screenshot);
-  const auto start = std::chrono::steady_clock::now();
-
-  while (!vw.window.should_close()) {
-    vw.window.poll_events();
-    if (content.input) content.input(vw.window);
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    frames.draw(vw.window, [&](engine::RgbaImage* shot) { return frame.draw(vw.target, content, t, shot); });
-  }
-  frame.renderer().wait_idle();
-  std::printf("presented %ld frames\n", frames.drawn());
-  return 0;
-}
+bool pointer_on_panel() { return ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse; }
 
 }  // namespace
+
+SessionWindow::SessionWindow(const WindowOptions& options)
+    : options_(options),
+      vw_("needle-sim", options.size),
+      frame_(vw_.device, vw_.target, {options.msaa.value_or(vw_.default_msaa_samples()), options.hud}, &vw_.window),
+      frames_(options.frames, options.screenshot) {}
+
+SessionWindow::~SessionWindow() { renderer().wait_idle(); }
+
+void SessionWindow::run(engine::GpuScene& scene, const Show& show, const std::function<bool()>& done) {
+  try {
+    frames(scene, show, done);
+  } catch (...) {
+    renderer().wait_idle();  // the caller's scene may go with the exception: the GPU is done with it first
+    throw;
+  }
+}
+
+void SessionWindow::frames(engine::GpuScene& scene, const Show& show, const std::function<bool()>& done) {
+  const auto start = std::chrono::steady_clock::now();
+  while (!vw_.window.should_close()) {
+    vw_.window.poll_events();
+    if (show.input) show.input(vw_.window);
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    frames_.draw(vw_.window, [&](engine::RgbaImage* shot) { return frame_.draw(vw_.target, scene, show, t, shot); });
+    if (done && done()) break;
+  }
+  renderer().wait_idle();
+}
+
+TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices) {
+  std::optional<DeskInput> desk;
+  if (haptics::DeskDevice* device = session.desk()) desk.emplace(*device);
+  if (const std::optional<Eigen::Vector3d> start = session.tool_start(); desk && start)
+    desk->place_cursor(window.window(), session.scene().camera, glm::vec3(start->x(), start->y(), start->z()));
+  engine::GpuScene scene(window.renderer(), session.scene());
+  std::optional<TaskEnd> end;
+  const char* controls = desk ? DeskInput::help(session.desk()->capabilities().name) : nullptr;
+  std::vector<ui::Choice> choices;
+  if (offer_choices) {
+    choices = {{"Retry (R)", [&end] { end = TaskEnd::kRetry; }},
+               {"Next task (N)", [&end] { end = TaskEnd::kNextTask; }},
+               {"Back (Esc)", [&end] { end = TaskEnd::kBack; }}};
+  }
+  const std::vector<ui::Choice> stop = {{"Stop (Esc)", [&end] { end = TaskEnd::kBack; }}};
+  window.run(
+      scene,
+      task_content(
+          session,
+          [&] { session.draw_panel(std::nullopt, controls, session.finished() ? choices : offer_choices ? stop : std::vector<ui::Choice>{}); },
+          [&](engine::Window& w) {
+            const std::vector<engine::Window::KeyPress> keys = w.take_key_presses();
+            const bool typing = ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput;
+            for (const engine::Window::KeyPress& press : keys) {
+              if (!offer_choices || typing) break;
+              if (press.key == GLFW_KEY_ESCAPE) end = TaskEnd::kBack;
+              if (session.finished() && press.key == GLFW_KEY_R) end = TaskEnd::kRetry;
+              if (session.finished() && press.key == GLFW_KEY_N) end = TaskEnd::kNextTask;
+            }
+            if (!desk || session.finished()) {
+              w.take_scroll();
+              return;
+            }
+            desk->frame(w, keys, pointer_on_panel());
+            if (desk->take_fault_reset()) session.reset_fault();
+          }),
+      [&end] { return end.has_value(); });
+  return end.value_or(TaskEnd::kWindowClosed);
+}
 
 int run_scene_headless(const engine::Scene& scene, const WindowOptions& options, const fs::path& out_dir) {
   engine::GpuDevice device;
@@ -51,12 +107,20 @@ int run_scene_headless(const engine::Scene& scene, const WindowOptions& options,
 }
 
 int run_task_window(const TaskSessionOptions& task, const WindowOptions& options) {
+  if (task.rig.device.rfind("gamepad", 0) == 0) gamepad_id(task.rig.device);  // before a session is opened without it
   TaskSession session(task);
-  return run_window(session.scene(), options, [&](const engine::GpuScene&) { return task_content(session); });
+  SessionWindow window(options);
+  run_task(window, session, false);
+  std::printf("presented %ld frames\n", window.frames_drawn());
+  return 0;
 }
 
 int run_scene_window(const engine::Scene& scene, const WindowOptions& options) {
-  return run_window(scene, options, scripted_content);
+  SessionWindow window(options);
+  engine::GpuScene gpu_scene(window.renderer(), scene);
+  window.run(gpu_scene, scripted_content(gpu_scene));
+  std::printf("presented %ld frames\n", window.frames_drawn());
+  return 0;
 }
 
 }  // namespace needle::app

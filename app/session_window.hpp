@@ -1,14 +1,19 @@
 // What `run` shows: a guided task in real time in the window (the haptic loop on its own thread,
 // the trainee panel and guidance over the 3D view), or a scene with a scripted needle inserting
-// into its first deformable tissue, in the window or as one headless picture.
+// into its first deformable tissue, in the window or as one headless picture. The start screen
+// (app/start_screen.hpp) runs its tasks in the same window through the same code.
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 
 #include "app/task_session.hpp"
+#include "app/trainee_frame.hpp"
+#include "app/window_frames.hpp"
 #include "engine/extent.hpp"
+#include "engine/gpu_scene.hpp"
 #include "engine/scene.hpp"
 
 namespace needle::app {
@@ -21,9 +26,46 @@ struct WindowOptions {
   bool hud = true;                        // the panels
 };
 
-// The task in real time; the results are written when it ends, and the score stays on screen
-// until the window closes. Closed before the end, the session stays incomplete (its recording is
-// kept). Returns 0.
+// What the window shows each frame: where the needle is, and a panel beside the status panel;
+// `input` takes the frame's input (the desk devices' cursor, keys and gamepad).
+using Show = FrameContent;
+
+// The window, kept open across what it shows (a task, the start screen and the tasks it
+// starts): its GPU device and swapchain, the trainee's frame (the renderer and the UI pass, as
+// `bench frame` measures it) and the frame count.
+class SessionWindow {
+ public:
+  explicit SessionWindow(const WindowOptions& options);
+  ~SessionWindow();
+  SessionWindow(const SessionWindow&) = delete;
+  SessionWindow& operator=(const SessionWindow&) = delete;
+
+  engine::Window& window() { return vw_.window; }
+  engine::SceneRenderer& renderer() { return frame_.renderer(); }
+  bool closed() const { return vw_.window.should_close(); }
+  // Draws `scene` with `show` until the window closes or, checked after each frame, `done()`.
+  void run(engine::GpuScene& scene, const Show& show, const std::function<bool()>& done = {});
+  long frames_drawn() const { return frames_.drawn(); }
+
+ private:
+  void frames(engine::GpuScene& scene, const Show& show, const std::function<bool()>& done);
+
+  WindowOptions options_;
+  GpuWindow vw_;
+  TraineeFrame frame_;
+  WindowFrames frames_;
+};
+
+// How a task run from the start screen ended: the score panel's choice, or the window closed.
+enum class TaskEnd { kWindowClosed, kRetry, kNextTask, kBack };
+
+// The task in real time in `window` until it ends and, with `offer_choices`, the trainee picks
+// Retry, Next task or Back on the score panel (keys R, N, Esc); without, until the window closes.
+// The score is stored when the task ends; closed before, the session stays incomplete (its
+// recording is kept).
+TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices);
+
+// `run` in a window: the task until the window closes, the score on screen once it ends. Returns 0.
 int run_task_window(const TaskSessionOptions& task, const WindowOptions& options);
 // The scene with the scripted needle, in the window until it closes. Returns 0.
 int run_scene_window(const engine::Scene& scene, const WindowOptions& options);

@@ -6,13 +6,13 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
-#include <fstream>
 
 #include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/render_target.hpp"
 #include "engine/ui_pass.hpp"
 #include "haptics/safety/fault_cause.hpp"
+#include "io/write_file.hpp"
 #include "ui/guidance_overlay.hpp"
 #include "training/sessions/session_export.hpp"
 
@@ -144,14 +144,19 @@ const training::SessionResult& TaskSession::finish() {
   const fs::path score_file = options_.out_dir / "score.json";
   nlohmann::json score = training::result_json(*result_);
   score["recording"] = recording_path_.string();
-  std::ofstream(score_file) << score.dump(2) << "\n";
+  io::write_file(score_file, score.dump(2) + "\n");
   std::printf("score %.0f / 100: %s\n", result_->score.total, result_->score.passed ? "passed" : "not passed");
   for (const std::string& why : result_->score.reasons_failed) std::printf("  %s\n", why.c_str());
   std::printf("wrote %s\n", score_file.c_str());
+  std::fflush(stdout);  // a window's run goes on: whoever reads the output sees the score now
   return *result_;
 }
 
-void TaskSession::draw_panel(std::optional<size_t> step) const {
+void TaskSession::reset_fault() {
+  if (loop_->running()) loop_->submit(haptics::LoopCommand::reset_fault());
+}
+
+void TaskSession::draw_panel(std::optional<size_t> step, const char* controls, const std::vector<ui::Choice>& choices) {
   feed_.read([&](const training::SessionScorer& scorer, const haptics::ToolSnapshot& last) {
     const size_t shown = std::min(step.value_or(scorer.progress().current_step()), task_.steps.size() - 1);
     ui::TraineeView view{&task_, &scorer.progress()};
@@ -163,7 +168,9 @@ void TaskSession::draw_panel(std::optional<size_t> step) const {
     const haptics::LoopStatsSummary stats = loop_->stats();
     view.loop_rate_hz = loop_->running() ? stats.rate_hz : rig_->rate_hz();
     if (last.fault != 0) view.fault = haptics::fault_cause_name(static_cast<haptics::FaultCause>(last.fault));
-    if (loop_->running()) view.reset_fault = [this] { loop_->submit(haptics::LoopCommand::reset_fault()); };
+    if (loop_->running()) view.reset_fault = [this] { reset_fault(); };
+    view.controls = controls;
+    view.choices = choices;
     if (result_) view.result = &*result_;
     ui::draw_trainee_panel(view);
     if (!result_) ui::draw_guidance({&task_, shown, training::vec3(last.needle_tip_m), scene_.camera});

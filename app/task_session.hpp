@@ -42,7 +42,8 @@ class TaskSession {
 
   const training::Task& task() const { return task_; }
   const engine::Scene& scene() const { return scene_; }
-  haptics::MouseDevice* mouse() { return rig_->mouse(); }
+  haptics::DeskDevice* desk() { return rig_->desk(); }
+  std::optional<Eigen::Vector3d> tool_start() const { return rig_->tool_start(); }
   // Seconds the session lasts when its device has an end (script, recording), else nullopt.
   std::optional<double> duration_s() const;
 
@@ -56,10 +57,15 @@ class TaskSession {
 
   // Stops the threads, scores, stores the session as complete, writes OUT/score.json. Once.
   const training::SessionResult& finish();
+  bool finished() const { return result_.has_value(); }
+  // Clears a latched safety fault (the panel's button, a gamepad's Start), while the loop runs.
+  void reset_fault();
 
   engine::NeedleLoad needle() const { return feed_.needle(); }
-  // The trainee panel of now (with the result once finished), describing `step` when given.
-  void draw_panel(std::optional<size_t> step = std::nullopt) const;
+  // The trainee panel of now (with the result once finished), describing `step` when given, with
+  // how the device moves the needle (`controls`, one line) and buttons for `choices`.
+  void draw_panel(std::optional<size_t> step = std::nullopt, const char* controls = nullptr,
+                  const std::vector<ui::Choice>& choices = {});
   const std::filesystem::path& recording_path() const { return recording_path_; }
   int64_t session_id() const { return session_; }
   // Samples scored so far (every tick the recorder has handed on).

@@ -4,6 +4,8 @@
 
 #include <chrono>
 #include <cstdio>
+#include <memory>
+#include <utility>
 
 #include "app/task_session.hpp"
 #include "engine/scripted_needle.hpp"
@@ -33,23 +35,19 @@ std::optional<engine::ScriptedSphere> script_target(const engine::GpuScene& scen
 
 }  // namespace
 
-FrameContent task_content(TaskSession& session) {
+FrameContent task_content(TaskSession& session, std::function<void()> panel, std::function<void(engine::Window&)> input) {
   auto started = std::make_shared<bool>(false);
+  if (!panel) panel = [&session] { session.draw_panel(); };
   return {[&session, started](double) -> std::optional<engine::NeedleLoad> {
-            if (!*started) std::printf("%s\n", session.start_realtime().c_str());
+            if (!*started) {
+              std::printf("%s\n", session.start_realtime().c_str());
+              std::fflush(stdout);
+            }
             *started = true;
             if (session.over()) session.finish();
             return session.needle();
           },
-          [&session] { session.draw_panel(); },
-          [&session](engine::Window& window) {
-            haptics::MouseDevice* mouse = session.mouse();
-            if (mouse == nullptr || (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse)) return;
-            double x = 0.0, y = 0.0;
-            window.cursor_normalized(x, y);
-            mouse->set_pointer(x, y);
-            mouse->add_depth_steps(window.take_scroll());
-          }};
+          std::move(panel), std::move(input)};
 }
 
 FrameContent scripted_content(const engine::GpuScene& scene) {
@@ -62,24 +60,22 @@ FrameContent scripted_content(const engine::GpuScene& scene) {
 }
 
 TraineeFrame::TraineeFrame(const engine::GpuDevice& device, const engine::RenderTarget& target,
-                           const SceneMaker& make_scene, const TraineeFrameSettings& settings, engine::Window* window)
-    : device_(device),
-      renderer_(device, target, {settings.msaa}),
-      scene_(make_scene(renderer_)) {
+                           const TraineeFrameSettings& settings, engine::Window* window)
+    : device_(device), renderer_(device, target, {settings.msaa}) {
   if (settings.hud) ui_.emplace(renderer_, window);
 }
 
-bool TraineeFrame::draw(engine::RenderTarget& target, const FrameContent& content, double t_s,
-                        engine::RgbaImage* capture) {
+bool TraineeFrame::draw(engine::RenderTarget& target, engine::GpuScene& scene, const FrameContent& content,
+                        double t_s, engine::RgbaImage* capture) {
   const Clock::time_point start = Clock::now();
   const std::optional<engine::NeedleLoad> needle = content.needle ? content.needle(t_s) : std::nullopt;
   const Clock::time_point needled = Clock::now();
-  engine::FrameParams params = scene_.frame_params(needle ? &*needle : nullptr);
+  engine::FrameParams params = scene.frame_params(needle ? &*needle : nullptr);
   const Clock::time_point posed = Clock::now();
   const float dt = clock_.tick();
   if (ui_) {
     ui_->begin_frame(target.extent(), dt);
-    const auto& assets = scene_.scene().assets;
+    const auto& assets = scene.scene().assets;
     ui::draw_status_panel({device_.device_description(), assets.empty() ? "" : assets[0].name,
                            renderer_.msaa_samples(), clock_.mean_frame_ms()});
     if (content.panel) content.panel();

@@ -30,9 +30,11 @@ struct FrameContent {
 };
 
 // A guided task through its haptic loop: the loop starts at the first frame (after its input, so
-// the mouse's first reading is the cursor), the session is finished (scored, stored) on the first
-// frame after it is over, and the trainee panel and the guidance come with every frame.
-FrameContent task_content(TaskSession& session);
+// a desk device's first reading is where the trainee's input put it), the session is finished
+// (scored, stored) on the first frame after it is over. `panel` draws the trainee panel with the
+// guidance (default: the panel without controls or choices); `input` takes the frame's input.
+FrameContent task_content(TaskSession& session, std::function<void()> panel = {},
+                          std::function<void(engine::Window&)> input = {});
 // The scripted needle (the thesis's insertion) on the scene's first deformable tissue; no panel.
 FrameContent scripted_content(const engine::GpuScene& scene);
 
@@ -48,20 +50,19 @@ struct ContentCost {
   double ui_ms = 0.0;      // the panels built (ImGui's frame, from begin to end)
 };
 
+// The renderer and the panels' UI pass of a target, kept across the scenes it shows (the start
+// screen's tasks in one window).
 class TraineeFrame {
  public:
-  // The scene to draw, uploaded by the frame's renderer.
-  using SceneMaker = std::function<engine::GpuScene(const engine::SceneRenderer&)>;
-
   // With a window, ImGui reads its input; without, the panels are drawn headless.
-  TraineeFrame(const engine::GpuDevice& device, const engine::RenderTarget& target, const SceneMaker& make_scene,
+  TraineeFrame(const engine::GpuDevice& device, const engine::RenderTarget& target,
                const TraineeFrameSettings& settings, engine::Window* window = nullptr);
 
-  // Draws what `content` shows at `t_s` into the target. False when the target took no frame
-  // (a minimised window). With `capture`, the frame is also read back.
-  bool draw(engine::RenderTarget& target, const FrameContent& content, double t_s, engine::RgbaImage* capture = nullptr);
+  // Draws `scene` as `content` shows it at `t_s` into the target. False when the target took no
+  // frame (a minimised window). With `capture`, the frame is also read back.
+  bool draw(engine::RenderTarget& target, engine::GpuScene& scene, const FrameContent& content, double t_s,
+            engine::RgbaImage* capture = nullptr);
 
-  engine::GpuScene& scene() { return scene_; }
   engine::SceneRenderer& renderer() { return renderer_; }
   // What the last frame's parts cost before the renderer (the renderer's own: renderer().frame_cost()).
   const ContentCost& content_cost() const { return cost_; }
@@ -69,7 +70,6 @@ class TraineeFrame {
  private:
   const engine::GpuDevice& device_;
   engine::SceneRenderer renderer_;
-  engine::GpuScene scene_;
   std::optional<engine::UiPass> ui_;
   ui::FrameClock clock_;
   ContentCost cost_;

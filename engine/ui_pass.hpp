@@ -23,6 +23,10 @@ class UiPass {
   UiPass& operator=(const UiPass&) = delete;
 
   // Starts an ImGui frame for a target of this size; seconds since the last frame drive animations.
+  // The text follows the target's size: ImGui's 13 px font up to 900 px high, 20 px up to 1300 px
+  // (1920x1080), 26 px above (for a target narrower than 16:9, the height a 16:9 one of its width
+  // would have), with the style's sizes scaled alike; panels that size themselves take
+  // ImGui::GetFontSize() as their unit.
   void begin_frame(Extent extent, float delta_s);
   // Ends the ImGui frame and returns the recorder to pass as FrameParams::overlay.
   CommandRecorder end_frame();

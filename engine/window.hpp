@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "engine/extent.hpp"
 
@@ -37,11 +38,21 @@ class Window {
   // Scroll-wheel notches since the last call, forward positive; the Up and Down arrow keys
   // count as one notch each, for trackpads and keyboards.
   double take_scroll();
+  // A key going down, or repeating while held (the system's key repeat): GLFW's key code.
+  struct KeyPress {
+    int key = 0;
+    bool shift = false;
+  };
+  // The key presses since the last call, in order (none is lost between two frames, however
+  // short). At most kMaxKeyPresses wait; later ones are dropped until they are taken.
+  std::vector<KeyPress> take_key_presses();
+  static constexpr size_t kMaxKeyPresses = 256;
 
  private:
   GLFWwindow* window_ = nullptr;
   bool resized_ = false;
   double scroll_ = 0.0;
+  std::vector<KeyPress> key_presses_;
 };
 
 }  // namespace needle::engine

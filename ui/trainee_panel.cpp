@@ -16,7 +16,7 @@ const ImVec4 kGood(0.35f, 0.8f, 0.4f, 1.0f), kBad(0.9f, 0.3f, 0.25f, 1.0f), kDim
 void force_gauge(double force, double safe, double band_min, double band_max) {
   const double full = std::max({safe * 1.5, band_max * 1.2, force * 1.05, 1e-6});
   const ImVec2 origin = ImGui::GetCursorScreenPos();
-  const float width = ImGui::GetContentRegionAvail().x, height = 18.0f;
+  const float width = ImGui::GetContentRegionAvail().x, height = 18.0f * ImGui::GetFontSize() / 13.0f;
   auto x_of = [&](double v) { return origin.x + float(std::clamp(v / full, 0.0, 1.0)) * width; };
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height), IM_COL32(40, 40, 46, 255));
@@ -127,7 +127,7 @@ std::vector<std::string> what_to_improve(const training::Score& score) {
 void draw_trainee_panel(const TraineeView& v) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x - 10.0f, 10.0f), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
-  ImGui::SetNextWindowSize(ImVec2(340.0f, 0.0f), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(340.0f * ImGui::GetFontSize() / 13.0f, 0.0f), ImGuiCond_Always);  // 340 px at 13 px text
   ImGui::SetNextWindowBgAlpha(0.85f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
                                  ImGuiWindowFlags_NoSavedSettings;
@@ -148,6 +148,17 @@ void draw_trainee_panel(const TraineeView& v) {
       }
     } else {
       ImGui::TextColored(kDim, "haptic loop %.0f Hz   no fault", v.loop_rate_hz);
+    }
+    if (v.controls && !v.result) {
+      ImGui::Separator();
+      ImGui::TextWrapped("%s", v.controls);
+    }
+    if (!v.choices.empty()) {
+      ImGui::Separator();
+      for (size_t i = 0; i < v.choices.size(); ++i) {
+        if (i > 0) ImGui::SameLine();
+        if (ImGui::Button(v.choices[i].label.c_str())) v.choices[i].chosen();
+      }
     }
   }
   ImGui::End();

@@ -5,10 +5,18 @@
 
 #include <functional>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "training/scoring/session_scorer.hpp"
 
 namespace needle::ui {
+
+// A button on a panel: its label (with its key, "Retry (R)") and what it does.
+struct Choice {
+  std::string label;
+  std::function<void()> chosen;
+};
 
 struct TraineeView {
   const training::Task* task = nullptr;
@@ -24,6 +32,8 @@ struct TraineeView {
   const training::SessionResult* result = nullptr;  // set once the task is over
   // The step to describe (a picture taken as a step ends shows that step); default: the current one.
   std::optional<size_t> step;
+  const char* controls = nullptr;  // how the trainee's device moves the needle, one line
+  std::vector<Choice> choices;     // buttons under the panel: Stop while running, Retry, Next task, Back at the end
 };
 
 void draw_trainee_panel(const TraineeView& view);

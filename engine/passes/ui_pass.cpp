@@ -4,6 +4,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -16,6 +17,21 @@ namespace needle::engine {
 namespace {
 
 bool g_ui_pass_alive = false;
+
+// The text size for a target: ImGui's own font (ProggyClean) at the 13 px it is drawn for up to
+// 900 px, then at sizes that keep it about as tall against the window: 20 px to 1300 px
+// (1920x1080), 26 px above; the size measured is the height, or for a target narrower than 16:9
+// the height a 16:9 one of its width would have (a tall narrow picture keeps 13 px). Everything
+// ImGui sizes from the style scales with it.
+constexpr float kFontSizes_px[] = {13.0f, 20.0f, 26.0f};
+constexpr uint32_t kFontUpTo_px[] = {900, 1300};
+
+size_t font_for(Extent extent) {
+  const uint32_t size = std::min(extent.height, extent.width * 9 / 16);
+  size_t i = 0;
+  while (i < std::size(kFontUpTo_px) && size > kFontUpTo_px[i]) ++i;
+  return i;
+}
 
 void check_imgui_vk(VkResult result) { vk_check(result, "ImGui Vulkan backend"); }
 
@@ -36,6 +52,9 @@ struct UiPass::Backend {
   VkDevice device = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;
   bool with_window = false;
+  ImFont* fonts[std::size(kFontSizes_px)] = {};
+  ImGuiStyle base_style;  // at 13 px
+  size_t font = 0;        // the one in use
 };
 
 UiPass::UiPass(const SceneRenderer& renderer, Window* window) : backend_(std::make_unique<Backend>()) {
@@ -58,6 +77,14 @@ UiPass::UiPass(const SceneRenderer& renderer, Window* window) : backend_(std::ma
   io.IniFilename = nullptr;  // no imgui.ini written next to wherever the user runs us
   ImGui::StyleColorsDark();
   linearise_style_colors();
+  backend_->base_style = ImGui::GetStyle();
+  for (size_t i = 0; i < std::size(kFontSizes_px); ++i) {
+    ImFontConfig font;  // as AddFontDefault() sets up its pixel font
+    font.OversampleH = font.OversampleV = 1;
+    font.PixelSnapH = true;
+    font.SizePixels = kFontSizes_px[i];
+    backend_->fonts[i] = io.Fonts->AddFontDefault(&font);
+  }
   if (window) ImGui_ImplGlfw_InitForVulkan(window->handle(), true);
 
   ImGui_ImplVulkan_InitInfo info{};
@@ -87,6 +114,14 @@ UiPass::~UiPass() {
 }
 
 void UiPass::begin_frame(Extent extent, float delta_s) {
+  const size_t font = font_for(extent);
+  if (font != backend_->font) {
+    backend_->font = font;
+    ImGuiStyle& style = ImGui::GetStyle();
+    style = backend_->base_style;
+    style.ScaleAllSizes(kFontSizes_px[font] / kFontSizes_px[0]);
+  }
+  ImGui::GetIO().FontDefault = backend_->fonts[font];
   ImGui_ImplVulkan_NewFrame();
   if (backend_->with_window) {
     ImGui_ImplGlfw_NewFrame();

@@ -56,9 +56,11 @@ Window::Window(const std::string& title, int width, int height) {
   glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) {
     static_cast<Window*>(glfwGetWindowUserPointer(w))->scroll_ += dy;
   });
-  glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
-    if (action == GLFW_RELEASE || (key != GLFW_KEY_UP && key != GLFW_KEY_DOWN)) return;
-    static_cast<Window*>(glfwGetWindowUserPointer(w))->scroll_ += key == GLFW_KEY_UP ? 1.0 : -1.0;
+  glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int mods) {
+    if (action == GLFW_RELEASE) return;
+    auto* self = static_cast<Window*>(glfwGetWindowUserPointer(w));
+    if (key == GLFW_KEY_UP || key == GLFW_KEY_DOWN) self->scroll_ += key == GLFW_KEY_UP ? 1.0 : -1.0;
+    if (self->key_presses_.size() < kMaxKeyPresses) self->key_presses_.push_back({key, (mods & GLFW_MOD_SHIFT) != 0});
   });
 }
 
@@ -96,6 +98,12 @@ double Window::take_scroll() {
   const double steps = scroll_;
   scroll_ = 0.0;
   return steps;
+}
+
+std::vector<Window::KeyPress> Window::take_key_presses() {
+  std::vector<KeyPress> presses;
+  presses.swap(key_presses_);
+  return presses;
 }
 
 bool Window::take_resized() {

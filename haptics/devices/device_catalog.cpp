@@ -1,13 +1,13 @@
 #include "haptics/devices/device_catalog.hpp"
 
 #include "haptics/devices/falcon/falcon_device.hpp"
-#include "haptics/devices/mouse_device.hpp"
+#include "haptics/devices/desk_device.hpp"
 #include "haptics/devices/replay_device.hpp"
 
 namespace needle::haptics {
 namespace {
 
-constexpr const char* kKnown = "expected falcon, falcon:N, mouse or replay:FILE";
+constexpr const char* kKnown = "expected falcon, falcon:N, mouse, keyboard, gamepad, gamepad:N or replay:FILE";
 
 bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 
@@ -20,7 +20,7 @@ int parse_index(const std::string& spec, const std::string& digits) {
 }  // namespace
 
 std::unique_ptr<HapticDevice> make_device(const std::string& spec, const DeviceOptions& options) {
-  if (spec == "mouse") return std::make_unique<MouseDevice>();
+  if (is_desk_spec(spec)) return std::make_unique<DeskDevice>(spec);
   if (spec == "falcon" || starts_with(spec, "falcon:")) {
     falcon::FalconOptions falcon_options;
     falcon_options.firmware_path = options.firmware_path;
@@ -52,7 +52,14 @@ std::vector<BackendStatus> list_backends() {
        "Novint Falcon on USB 0403:cb48, read/write access (tools/udev/99-novint-falcon.rules), "
        "and after each power-up --firmware FILE: Novint's firmware image (not shipped, its licence forbids it)"},
       {"mouse", "available",
-       "a window (needle-sim run --device mouse): cursor moves the tool, scroll or Up/Down set depth; forces shown, not felt"},
+       "a window: the cursor moves the tool, the wheel or Up/Down push it in, the right button held turns it about its tip; "
+       "forces shown, not felt"},
+      {"keyboard", "available",
+       "a window: arrows move the tool, W/S push it in and out, A/D and R/F turn it about its tip (Shift: fine steps); "
+       "forces shown, not felt"},
+      {"gamepad[:N]", "listed by the window (GLFW reports gamepads once it has a display)",
+       "a window and a gamepad with a standard mapping: left stick moves the tool, triggers push it in and out, right "
+       "stick turns it about its tip, Start resets a fault; forces shown, not felt"},
       {"replay:FILE", "available", "a session recording written by an earlier run"},
       {"sim:SCENARIO", "available",
        "a scenario file (assets/scenarios/*.json): the master model and a simulated operator step with the loop; "

@@ -1,5 +1,6 @@
-// Device specs as the user types them ("falcon", "falcon:1", "mouse", "replay:FILE") and
-// what each backend needs, for `needle-sim devices` and the app's --device option.
+// Device specs as the user types them ("falcon", "falcon:1", "mouse", "keyboard", "gamepad:0",
+// "replay:FILE") and what each backend needs, for `needle-sim devices` and the app's --device
+// option.
 #pragma once
 
 #include <memory>
@@ -25,7 +26,8 @@ struct BackendStatus {
   std::string needs;   // what it requires from the user or the machine
 };
 
-// Every backend, probing the USB bus for Falcons (no device is opened).
+// Every backend, probing the USB bus for Falcons (no device is opened). Gamepads are found
+// through the window system, by the app (app/desk_input.hpp, present_gamepads).
 std::vector<BackendStatus> list_backends();
 
 }  // namespace needle::haptics

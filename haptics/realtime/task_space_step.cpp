@@ -20,6 +20,7 @@ TaskSpaceStep::TaskSpaceStep(const Scenario& scenario, const TaskCoupling& coupl
   tip_start_ = data_.tip.translation();
   direction_start_ = data_.tip.linear().col(0);
   target_ = tip_start_;
+  target_direction_ = direction_start_;
   tau_ = VecN::Zero(n);
   damping_ = VecN::Constant(n, coupling.joint_damping_nms_per_rad);
 }
@@ -29,16 +30,20 @@ void TaskSpaceStep::step(const DeviceReading& reading, double dt_s, DeviceComman
   const Eigen::Vector3d handle(reading.position_m[0], reading.position_m[1], reading.position_m[2]);
   if (!started_) {
     device_start_ = handle;
+    for (int i = 0; i < 2; ++i) wrist_start_[i] = reading.joint_rad[i];
     started_ = true;
   }
   target_ = tip_start_ + coupling_.workspace_scale * (coupling_.device_to_scene * (handle - device_start_));
+  if (coupling_.wrist && reading.joint_count >= 2)
+    target_direction_ = wrist_direction(coupling_.device_to_scene, direction_start_, reading.joint_rad[0] - wrist_start_[0],
+                                        reading.joint_rad[1] - wrist_start_[1]);
 
   // Kinematics and gravity evaluated here rather than read from the world, whose data may
   // hold only what its own integration needed.
   update_kinematics(scenario_.virt, data_, world_.q(), world_.dq());
   update_dynamics(scenario_.virt, data_);
   Eigen::Vector3d force;
-  task_space_coupling(coupling_, data_, target_, direction_start_, force, tau_);
+  task_space_coupling(coupling_, data_, target_, target_direction_, force, tau_);
   world_.advance(tau_, damping_, dt_s, substeps_);
 
   // The handle feels the spring's reaction, in device axes.

@@ -1,9 +1,10 @@
 #include "haptics/sim/sim_output.hpp"
 
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <stdexcept>
+
+#include "io/write_file.hpp"
 
 namespace needle::haptics {
 
@@ -30,10 +31,7 @@ void write_ticks_csv(const std::string& path, const std::vector<TickRecord>& tic
 }
 
 void write_summary_json(const std::string& path, const SimSummary& summary) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot write");
-  out << summary.to_json().dump(2) << "\n";
-  if (!out) throw std::runtime_error(path + ": write failed");
+  io::write_file(path, summary.to_json().dump(2) + "\n");
 }
 
 }  // namespace needle::haptics

@@ -125,3 +125,142 @@ TEST(RealtimeTaskSpace, DeviceAxesAreTurnedIntoTheSceneAndTheForceBack) {
 
 }  // namespace
 }  // namespace needle::haptics
+
+namespace needle::haptics {
+namespace {
+
+// The view of assets/scenes/penetrable_sphere.json, squared up: right along x, up along z,
+// looking along +y.
+Eigen::Matrix3d side_view() {
+  Eigen::Matrix3d m;
+  m << 1, 0, 0, 0, 0, 1, 0, 1, 0;
+  return m;
+}
+
+TEST(RealtimeTaskSpace, AWristSwingsTheDirectionClockwiseAsSeenAndTiltsItTowardsTheViewer) {
+  const Eigen::Vector3d down_right(std::sqrt(0.5), 0.0, -std::sqrt(0.5));
+  EXPECT_LT((wrist_direction(side_view(), down_right, M_PI / 4, 0.0) - Eigen::Vector3d(0, 0, -1)).norm(), 1e-12);
+  EXPECT_LT((wrist_direction(side_view(), down_right, -M_PI / 4, 0.0) - Eigen::Vector3d(1, 0, 0)).norm(), 1e-12);
+  const Eigen::Vector3d down(0, 0, -1);
+  EXPECT_LT((wrist_direction(side_view(), down, 0.0, M_PI / 6) - Eigen::Vector3d(0, -0.5, -std::sqrt(0.75))).norm(), 1e-12)
+      << "a positive tilt brings the tip towards the viewer (-y)";
+  // Along the view there is no plane to tilt in: it tilts about the view's right axis.
+  EXPECT_LT((wrist_direction(side_view(), Eigen::Vector3d::UnitY(), 0.0, M_PI / 2) - Eigen::Vector3d::UnitZ()).norm(), 1e-12);
+}
+
+// A handle with a virtual wrist (as a desk device has) put where the test wants.
+class WristHandle : public HeldHandle {
+ public:
+  WristHandle() { position = Eigen::Vector3d::Zero(); }
+  void read(DeviceReading& out) noexcept override {
+    HeldHandle::read(out);
+    out.joint_count = 2;
+    out.joint_rad[0] = swing;
+    out.joint_rad[1] = tilt;
+  }
+
+  double swing = 0.0, tilt = 0.0;
+};
+
+// The thesis's penetrable sphere (section 4.4) with a wrist: aligned with the insertion axis in
+// free space, inserted 3 cm along it, then swung 45° to vertical: the needle pivots about its
+// tip, in the tissue throughout.
+struct WristRig {
+  explicit WristRig(bool wrist)
+      : scenario(load_scenario(test::source_dir().string() + "/assets/scenarios/nonholonomic_needle.json")),
+        coupling(make_coupling(wrist)),
+        step(scenario, coupling),
+        rig(handle, step, limits()) {
+    rig.run(tick++, 1, kDt);  // the first reading fixes the mapping
+    tip_start_world = step.start_tip() + scenario.base_in_world;
+  }
+  static TaskCoupling make_coupling(bool wrist) {
+    TaskCoupling c;
+    c.device_to_scene = side_view();
+    c.orientation_stiffness_nm_per_rad = 5.0;  // as the app couples the desk devices
+    c.wrist = wrist;
+    return c;
+  }
+  static SafetyLimits limits() {
+    SafetyLimits l;
+    l.frozen_min_force_n = 1e9;  // a perfectly still handle, by construction
+    return l;
+  }
+  // Moves the handle in a straight line to put the tip target at `tip` (world) and the wrist at
+  // (swing, tilt), over `seconds`; `each` sees every tick's state.
+  template <typename Each>
+  void go(const Eigen::Vector3d& tip, double swing, double tilt, double seconds, Each each) {
+    const Eigen::Vector3d from = handle.position, to = coupling.device_to_scene.transpose() * (tip - tip_start_world);
+    const double swing0 = handle.swing, tilt0 = handle.tilt;
+    const int n = static_cast<int>(seconds / kDt);
+    for (int i = 1; i <= n; ++i) {
+      const double u = double(i) / n;
+      handle.position = from + u * (to - from);
+      handle.swing = swing0 + u * (swing - swing0);
+      handle.tilt = tilt0 + u * (tilt - tilt0);
+      rig.run(tick++, 1, kDt);
+      each(rig.tick.last_sample().state);
+    }
+  }
+  void go(const Eigen::Vector3d& tip, double swing, double tilt, double seconds) {
+    go(tip, swing, tilt, seconds, [](const ToolSnapshot&) {});
+  }
+  const ToolSnapshot& state() const { return rig.tick.last_sample().state; }
+
+  static constexpr double kDt = 0.001;
+  Scenario scenario;
+  TaskCoupling coupling;
+  WristHandle handle;
+  TaskSpaceStep step;
+  testing::TickRig rig;
+  uint64_t tick = 0;
+  Eigen::Vector3d tip_start_world;
+};
+
+Eigen::Vector3d tip_of(const ToolSnapshot& s) { return {s.needle_tip_m[0], s.needle_tip_m[1], s.needle_tip_m[2]}; }
+Eigen::Vector3d axis_of(const ToolSnapshot& s) { return Eigen::Vector3d(needle_axis(s).data()); }
+
+TEST(RealtimeTaskSpace, AWristPivotsTheNeedleAboutItsTipInTissue) {
+  WristRig w(true);
+  const Eigen::Vector3d axis(std::sqrt(0.5), 0.0, -std::sqrt(0.5)), entry(0.32929, 0.0, 0.07071);
+  // The wrist angles that turn the start direction onto the insertion axis (a coarse search).
+  double swing = 0.0, tilt = 0.0, best = 1e9;
+  for (double s = -M_PI; s < M_PI; s += 0.002)
+    for (double t = -1.3; t < 1.3; t += 0.002) {
+      const double e = (wrist_direction(w.coupling.device_to_scene, w.step.start_direction(), s, t) - axis).norm();
+      if (e < best) best = e, swing = s, tilt = t;
+    }
+  ASSERT_LT(best, 0.003);
+  w.go(entry - 0.02 * axis, swing, tilt, 3.0);
+  w.go(entry - 0.02 * axis, swing, tilt, 2.0);
+  EXPECT_EQ(w.state().contact, ContactState::kFree);
+  EXPECT_GT(axis_of(w.state()).dot(axis), std::cos(1.0 * M_PI / 180)) << "aligned in free space";
+  w.go(entry + 0.03 * axis, swing, tilt, 4.0);
+  w.go(entry + 0.03 * axis, swing, tilt, 1.0);
+  ASSERT_EQ(w.state().contact, ContactState::kTissue);
+  const Eigen::Vector3d pivot = tip_of(w.state());
+  EXPECT_LT((pivot - (entry + 0.03 * axis)).norm(), 0.002);
+
+  double drift = 0.0;
+  bool left_tissue = false;
+  auto watch = [&](const ToolSnapshot& s) {
+    drift = std::max(drift, (tip_of(s) - pivot).norm());
+    left_tissue |= s.contact != ContactState::kTissue;
+  };
+  w.go(entry + 0.03 * axis, swing + M_PI / 4, tilt, 3.0, watch);  // a 45° swing, clockwise as seen
+  w.go(entry + 0.03 * axis, swing + M_PI / 4, tilt, 1.0, watch);
+  EXPECT_GT(axis_of(w.state()).dot(Eigen::Vector3d(0, 0, -1)), std::cos(1.0 * M_PI / 180)) << "vertical";
+  EXPECT_LT(drift, 0.002) << "the tip stays where it pivots (the task allows 5 mm)";
+  EXPECT_FALSE(left_tissue);
+  EXPECT_EQ(w.rig.safety.fault(), FaultCause::kNone);
+}
+
+TEST(RealtimeTaskSpace, WithoutAWristTheNeedleKeepsItsStartDirection) {
+  WristRig w(false);
+  w.go(w.tip_start_world + Eigen::Vector3d(-0.01, 0.0, 0.01), 0.8, 0.4, 2.0);
+  EXPECT_GT(axis_of(w.state()).dot(w.step.start_direction()), std::cos(1.0 * M_PI / 180));
+  EXPECT_EQ(w.step.target_direction(), w.step.start_direction());
+}
+
+}  // namespace
+}  // namespace needle::haptics

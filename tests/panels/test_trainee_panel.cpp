@@ -1,5 +1,7 @@
 // The trainee panel drawn headless over an empty view: mid-task (step, instruction, force
-// gauge, live metrics, loop rate) and at the end (score, breakdown, advice), against goldens.
+// gauge, live metrics, loop rate) and at the end (score, breakdown, advice; at 1920x1080 with the
+// start screen's Retry, Next task and Back), against goldens (tests/README.md: a pixel differs
+// past 8 counts in a channel, at most 0.2% may).
 #include <gtest/gtest.h>
 #include <imgui.h>
 
@@ -16,10 +18,20 @@ namespace {
 
 const std::filesystem::path kTask = test::source_dir() / "assets/tasks/penetrable_sphere.json";
 
+// A result with the score's six components at these fractions of their weight.
+training::SessionResult result_of(double total, bool passed, const double (&fractions)[6]) {
+  training::SessionResult result;
+  result.score.total = total;
+  result.score.passed = passed;
+  const char* names[6] = {"completion", "tip_error", "axis_deviation", "lateral_load", "peak_force", "time"};
+  const double weights[6] = {30, 15, 10, 10, 10, 25};
+  for (int i = 0; i < 6; ++i) result.score.components.push_back({names[i], fractions[i], weights[i]});
+  return result;
+}
+
 class TraineePanel : public VulkanTest {
  protected:
-  engine::RgbaImage draw(const ui::TraineeView& view) {
-    const engine::Extent extent{480, 420};
+  engine::RgbaImage draw(const ui::TraineeView& view, engine::Extent extent = {480, 420}) {
     engine::HeadlessTarget target(device(), extent);
     engine::SceneRenderer renderer(device(), target, {1});
     engine::GpuScene scene(renderer, engine::Model{}, engine::Scene{});
@@ -55,17 +67,27 @@ TEST_F(TraineePanel, MidTaskMatchesGolden) {
 TEST_F(TraineePanel, ResultMatchesGolden) {
   training::Task task = training::load_task(kTask);
   training::TaskProgress progress(task);
-  training::SessionResult result;
-  result.score.total = 62.0;
-  result.score.passed = false;
-  result.score.components = {{"completion", 1.0, 30}, {"tip_error", 0.4, 15}, {"axis_deviation", 0.2, 10},
-                             {"lateral_load", 0.9, 10}, {"peak_force", 1.0, 10}, {"time", 0.8, 25}};
+  training::SessionResult result = result_of(62.0, false, {1.0, 0.4, 0.2, 0.9, 1.0, 0.8});
   result.score.reasons_failed = {"score 62 is below the pass mark 70"};
   ui::TraineeView view{&task, &progress};
   view.result = &result;
   view.loop_rate_hz = 999.8;
   view.fault = "energy growth";
   EXPECT_TRUE(matches_golden(draw(view), "panel_trainee_result"));
+}
+
+// From the start screen, at 1920x1080: the text at 20 px, the panel as much wider, and the
+// choices at the end under it.
+TEST_F(TraineePanel, ResultWithTheStartScreensChoicesAt1920x1080MatchesGolden) {
+  training::Task task = training::load_task(kTask);
+  training::TaskProgress progress(task);
+  const training::SessionResult result = result_of(86.0, true, {1.0, 0.8, 0.7, 0.9, 1.0, 0.6});
+  ui::TraineeView view{&task, &progress};
+  view.result = &result;
+  view.loop_rate_hz = 1000.0;
+  view.controls = "cursor: move   wheel or Up/Down: in and out   right button held: turn about the tip";
+  view.choices = {{"Retry (R)", [] {}}, {"Next task (N)", [] {}}, {"Back (Esc)", [] {}}};
+  EXPECT_TRUE(matches_golden(draw(view, {1920, 1080}), "panel_trainee_result_choices_1920x1080"));
 }
 
 TEST(WhatToImprove, TheTwoCostliestComponentsFirst) {

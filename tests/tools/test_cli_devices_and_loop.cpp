@@ -20,6 +20,13 @@ TEST(CliDevices, ListsEveryBackendAndWhatItNeeds) {
   EXPECT_NE(r.output.find("needs:"), std::string::npos) << r.output;
 }
 
+// With a display, the gamepads GLFW reports (the virtual display has none).
+TEST(CliDevices, WithADisplayListsTheGamepadsPresent) {
+  ProcessResult r = run_on_virtual_display(needle_sim_exe().string() + " devices");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("gamepad[:N]  none connected"), std::string::npos) << r.output;
+}
+
 TEST(CliBenchLoop, JsonRowsCarryTheContractKeys) {
   auto json_path = test_output_dir("cli_bench_loop") / "loop.json";
   ProcessResult r = run_needle_sim("bench loop --rates 500 --seconds 0.3 --device mouse --render-load --json " +

@@ -196,6 +196,10 @@ TEST(TaskFiles, ErrorsNameTheFileAndThePointer) {
   expect_error(j, "pass_over_100", "/scoring/pass_score", "[0, 100]");
 
   j = valid_task();
+  j["description"] = "two\nlines";
+  expect_error(j, "two_line_description", "/description", "one line");
+
+  j = valid_task();
   j["steps"][0]["condition"]["contact"] = "bone";
   expect_error(j, "bad_contact", "/steps/0/condition/contact", "expected any, free, rigid or tissue");
 }

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <stdexcept>
+
+#include "io/write_file.hpp"
 
 namespace needle::cli {
 namespace {
@@ -49,10 +50,7 @@ void BenchTable::print(const std::string& title) const {
 }
 
 void BenchTable::write_json(const std::string& path) const {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path);
-  out << rows_.dump(2) << "\n";
-  if (!out) throw std::runtime_error("failed writing " + path);
+  io::write_file(path, rows_.dump(2) + "\n");
 }
 
 void BenchTable::emit(const std::string& title, const std::optional<std::string>& json_path) const {

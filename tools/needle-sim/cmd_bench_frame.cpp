@@ -106,8 +106,8 @@ struct RowOptions {
 
 // Draws the content's frames into the target and measures them. The first frame of each block
 // carries the switch from the other kind and is left out.
-std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget& target, const app::FrameContent& content,
-                                 engine::Window* window, const RowOptions& options) {
+std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget& target, engine::GpuScene& scene,
+                                 const app::FrameContent& content, engine::Window* window, const RowOptions& options) {
   std::vector<FrameSample> samples;
   const Clock::time_point start = Clock::now();
   Clock::time_point previous;
@@ -125,7 +125,7 @@ std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget&
       if (content.input) content.input(*window);
     }
     const double t = std::chrono::duration<double>(now - start).count();
-    if (!frame.draw(target, content, t)) throw std::runtime_error("the window took no frame (minimised?)");
+    if (!frame.draw(target, scene, content, t)) throw std::runtime_error("the window took no frame (minimised?)");
     counting = measured >= 0 && measured % options.block != 0;
     if (counting) samples.push_back({timed, 0.0, pass_times(frame.content_cost(), frame.renderer().frame_cost())});
   }
@@ -194,10 +194,10 @@ int run_bench_frame(ArgList& args) {
                          : engine::GpuScene(renderer, tissue, engine::framing_view(tissue, size), engine::TissueParams{});
         };
         auto run_row = [&](const engine::GpuDevice& device, engine::RenderTarget& target, engine::Window* window) {
-          app::TraineeFrame frame(device, target, make_scene,
-                                  {msaa.value_or(device.is_cpu_device() ? 1 : 4), true}, window);
-          const app::FrameContent shown = session ? app::task_content(*session) : app::scripted_content(frame.scene());
-          const std::vector<FrameSample> samples = measure(frame, target, shown, window, options);
+          app::TraineeFrame frame(device, target, {msaa.value_or(device.is_cpu_device() ? 1 : 4), true}, window);
+          engine::GpuScene scene = make_scene(frame.renderer());
+          const app::FrameContent shown = session ? app::task_content(*session) : app::scripted_content(scene);
+          const std::vector<FrameSample> samples = measure(frame, target, scene, shown, window, options);
           std::vector<double> untimed, timed;
           std::map<std::string, std::vector<double>> parts;
           for (const FrameSample& s : samples) {

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "arg_list.hpp"
@@ -12,6 +11,7 @@
 #include "command.hpp"
 #include "haptics/sim/scenario.hpp"
 #include "haptics/tissue/kinematic_insertion.hpp"
+#include "io/write_file.hpp"
 #include "ui/line_chart.hpp"
 
 namespace needle::cli {
@@ -120,9 +120,7 @@ int run_bench_insertion(ArgList& args) {
                 layer_name(scenario.tissue, run.hard_stop->layer).c_str(), run.hard_stop->depth_m);
   std::printf("tissue_work_J %.6g, tick_us_median %.4g\n", run.tissue_work_J, run.tick_us_median);
   if (json_path) {
-    std::ofstream out(*json_path);
-    out << run_json(scenario.tissue, run, boundaries).dump(1) << "\n";
-    if (!out) throw std::runtime_error("cannot write " + *json_path);
+    io::write_file(*json_path, run_json(scenario.tissue, run, boundaries).dump(1) + "\n");
   }
   if (plot_path) {
     char title[160];

@@ -13,7 +13,7 @@
 #include "bench_table.hpp"
 #include "command.hpp"
 #include "asset_path.hpp"
-#include "haptics/devices/mouse_device.hpp"
+#include "haptics/devices/desk_device.hpp"
 #include "haptics/realtime/haptic_loop.hpp"
 #include "haptics/realtime/periodic_timer.hpp"
 #include "haptics/realtime/sim_session.hpp"
@@ -49,7 +49,7 @@ struct HapticRun {
 // and sample ring, and the recorder thread writing the session to a temporary file.
 HapticRun time_haptic_loop(const std::string& device_spec, double rate_hz, double seconds) {
   std::unique_ptr<haptics::SimSession> sim;
-  haptics::MouseDevice mouse;
+  haptics::DeskDevice mouse("mouse");
   haptics::HapticDevice* device = &mouse;
   haptics::ServoStep* step = nullptr;
   if (device_spec.rfind("sim:", 0) == 0) {

@@ -1,16 +1,29 @@
 // needle-sim devices: what is connected and what each device backend needs.
 #include <cstdio>
 
+#include "app/desk_input.hpp"
 #include "arg_list.hpp"
 #include "command.hpp"
+#include "engine/window.hpp"
 #include "haptics/devices/device_catalog.hpp"
 
 namespace needle::cli {
 namespace {
 
+// With a display, the gamepads GLFW reports now (as the start screen lists them).
+std::string gamepads_present(const std::string& without_display) {
+  if (!engine::Window::display_available()) return without_display;
+  const std::vector<app::GamepadInfo> pads = app::present_gamepads();
+  if (pads.empty()) return "none connected (GLFW reports no gamepad with a standard mapping)";
+  std::string line = std::to_string(pads.size()) + " connected:";
+  for (const app::GamepadInfo& pad : pads) line += " gamepad:" + std::to_string(pad.id) + " (" + pad.name + ")";
+  return line;
+}
+
 int run_devices(ArgList& args) {
   args.finish();
-  for (const auto& b : haptics::list_backends()) {
+  for (auto b : haptics::list_backends()) {
+    if (b.spec == "gamepad[:N]") b.status = gamepads_present(b.status);
     std::printf("%-12s %s\n", b.spec.c_str(), b.status.c_str());
     std::printf("%-12s needs: %s\n", "", b.needs.c_str());
   }
@@ -19,8 +32,9 @@ int run_devices(ArgList& args) {
 
 const CommandRegistrar reg{{"devices",
                             "needle-sim devices\n"
-                            "  Lists the haptic device backends (falcon, mouse, replay, sim), what is connected\n"
-                            "  now and what each needs (udev rule, firmware file, window).",
+                            "  Lists the device backends (falcon, mouse, keyboard, gamepad, replay, sim), what is\n"
+                            "  connected now (gamepads when there is a display) and what each needs (udev rule,\n"
+                            "  firmware file, window).",
                             run_devices}};
 
 }  // namespace

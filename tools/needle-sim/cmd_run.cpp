@@ -2,7 +2,7 @@
 // opens the simulator window and runs the loop in real time; without one (or with --headless) it
 // runs the loop offscreen as fast as it goes and writes its results. The device is the simulated
 // master with a scripted operator (the good or sloppy script of the task, or a file), the
-// trainee's mouse or Falcon (window only), or a recording played back. With --scene instead of a
+// trainee's mouse, keyboard, gamepad or Falcon (window only), or a recording played back. With --scene instead of a
 // task, a scripted needle performs the thesis's insertion on the scene's first deformable tissue.
 #include <cstdio>
 #include <cstdlib>
@@ -92,14 +92,14 @@ int run_run(ArgList& args) {
 
 const CommandRegistrar reg{
     {"run",
-     "needle-sim run [--task FILE | --scene FILE] [--device sim|mouse|falcon[:N]|replay:FILE] [--trainee NAME] [--db FILE]\n"
-     "               [--out DIR] [--headless] [--operator good|sloppy|FILE] [--rate HZ] [--firmware FILE]\n"
+     "needle-sim run [--task FILE | --scene FILE] [--device sim|mouse|keyboard|gamepad[:N]|falcon[:N]|replay:FILE]\n"
+     "               [--trainee NAME] [--db FILE] [--out DIR] [--headless] [--operator good|sloppy|FILE] [--rate HZ] [--firmware FILE]\n"
      "               [--size WxH] [--msaa N] [--frames N] [--screenshot FILE] [--no-hud]\n"
      "  --task FILE        guided task (default: assets/tasks/penetrable_sphere.json)\n"
      "  --scene FILE       show a scene instead, a scripted needle inserting into its first deformable tissue\n"
-     "  --device SPEC      sim: the simulated master and a scripted operator (default); mouse or falcon[:N]:\n"
-     "                     the trainee's own device, in the window; replay:FILE: a recorded session played\n"
-     "                     back with its own task (needle-sim devices lists what is connected)\n"
+     "  --device SPEC      sim: the simulated master and a scripted operator (default); mouse, keyboard,\n"
+     "                     gamepad[:N] or falcon[:N]: the trainee's own device, in the window; replay:FILE: a\n"
+     "                     recorded session played back with its own task (needle-sim devices lists them)\n"
      "  --trainee NAME     whose session it is (default: $USER)\n"
      "  --db FILE          session database (default: $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)\n"
      "  --out DIR          where score.json, the scenario that ran and the pictures go (default out/run)\n"

@@ -4,8 +4,13 @@
 #include <exception>
 #include <sstream>
 
+#include "app/default_db.hpp"
+#include "app/settings.hpp"
+#include "app/start_screen.hpp"
 #include "arg_list.hpp"
+#include "asset_path.hpp"
 #include "command.hpp"
+#include "engine/window.hpp"
 
 namespace needle::cli {
 namespace {
@@ -23,7 +28,9 @@ std::vector<std::string> split_words(const std::string& s) {
 }
 
 void print_overview() {
-  std::printf("needle-sim: needle-procedure training simulator with force feedback\n\nusage: needle-sim COMMAND [options]   (needle-sim COMMAND --help for its options)\n\ncommands:\n");
+  std::printf("needle-sim: needle-procedure training simulator with force feedback\n\n"
+              "usage: needle-sim                     the start screen (a window): choose a task and a device, and go\n"
+              "       needle-sim COMMAND [options]   (needle-sim COMMAND --help for its options)\n\ncommands:\n");
   for (const auto& c : registered_commands()) {
     std::string first_line = c.usage.substr(0, c.usage.find('\n'));
     std::printf("  %s\n", first_line.c_str());
@@ -60,9 +67,25 @@ const std::vector<Command>& registered_commands() {
 int main(int argc, char** argv) {
   using namespace needle::cli;
   std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+  if (args.empty() && needle::engine::Window::display_available()) {
+    try {
+      return needle::app::run_start_screen(
+          {asset_dir() / "tasks", needle::app::default_db(), needle::app::default_settings_file()});
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "needle-sim: error: %s\n", e.what());
+      return 1;
+    }
+  }
+  if (args.empty()) {
+    std::fprintf(stderr,
+                 "needle-sim: no display, so no start screen; needle-sim run runs the guided task headless "
+                 "(tools/run-main.sh builds and runs it)\n\n");
     print_overview();
-    return args.empty() ? 2 : 0;
+    return 2;
+  }
+  if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    print_overview();
+    return 0;
   }
   size_t used = 0;
   const Command* command = find_command(args, used);

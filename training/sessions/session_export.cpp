@@ -1,9 +1,9 @@
 #include "training/sessions/session_export.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
+#include "io/write_file.hpp"
 #include "training/scoring/metric_fields.hpp"
 
 namespace needle::training {
@@ -57,12 +57,6 @@ std::string csv_number(double x) {
   out.precision(17);
   out << x;
   return out.str();
-}
-
-void write_file(const fs::path& file, const std::string& text) {
-  std::ofstream out(file, std::ios::binary);
-  out << text;
-  if (!out.flush()) throw std::runtime_error(file.string() + ": cannot write the file");
 }
 
 }  // namespace
@@ -119,8 +113,8 @@ fs::path export_session(const StoredSession& session, const fs::path& dir) {
   if (ec) throw std::runtime_error(dir.string() + ": cannot create the folder: " + ec.message());
   const std::string stem = "session_" + std::to_string(session.info.id);
   const fs::path json_file = dir / (stem + ".json");
-  write_file(json_file, session_json(session).dump(2) + "\n");
-  write_file(dir / (stem + ".csv"), session_csv(session));
+  io::write_file(json_file, session_json(session).dump(2) + "\n");
+  io::write_file(dir / (stem + ".csv"), session_csv(session));
   return json_file;
 }
 

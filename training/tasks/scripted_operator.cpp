@@ -3,6 +3,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "io/write_file.hpp"
+
 namespace needle::training {
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -41,7 +43,7 @@ json task_scenario_json(const Task& task) {
 
 haptics::Scenario write_scenario(const json& scenario, const fs::path& file) {
   if (file.has_parent_path()) fs::create_directories(file.parent_path());
-  std::ofstream(file) << scenario.dump(2) << "\n";
+  io::write_file(file, scenario.dump(2) + "\n");
   return haptics::load_scenario(file.string());
 }
 

@@ -96,6 +96,7 @@ struct ScoringSpec {
 struct Task {
   std::string name;
   std::string title;
+  std::string description;         // one line for the start screen; may be empty
   std::string source;              // the file it came from
   std::filesystem::path scene;     // scene file (docs/SCENE_FORMAT.md), resolved
   std::filesystem::path scenario;  // haptics scenario (assets/scenarios), resolved; may be empty

@@ -20,11 +20,15 @@ class TaskReader : io::StrictJsonReader<TaskError> {
   TaskReader(std::string file, fs::path folder) : StrictJsonReader(std::move(file)), folder_(std::move(folder)) {}
 
   Task task(const json& root) {
-    object(root, "", {"name", "title", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps", "scoring"});
+    object(root, "", {"name", "title", "description", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps", "scoring"});
     Task t;
     t.source = file_;
     t.name = string(member(root, "", "name"), "/name");
     t.title = root.contains("title") ? string(root["title"], "/title") : t.name;
+    if (root.contains("description")) {
+      t.description = string(root["description"], "/description");
+      if (t.description.find('\n') != std::string::npos) fail("/description", "must be one line");
+    }
     t.scene = existing_file(member(root, "", "scene"), "/scene", folder_);
     if (root.contains("scenario")) t.scenario = existing_file(root["scenario"], "/scenario", folder_);
     if (root.contains("normal_marker_spacing_m"))

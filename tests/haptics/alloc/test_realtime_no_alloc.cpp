@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "haptics/realtime/haptic_loop.hpp"
-#include "haptics/devices/mouse_device.hpp"
+#include "haptics/devices/desk_device.hpp"
 #include "haptics/realtime/sim_session.hpp"
 #include "haptics/realtime/task_space_step.hpp"
 #include "test_realtime_fakes.hpp"
@@ -75,12 +75,17 @@ TEST(RealtimeNoAlloc, SimDeviceWithTheControllerAllocatesNothing) {
 
 TEST(RealtimeNoAlloc, TaskSpaceCouplingAllocatesNothing) {
   const Scenario scenario = load_scenario(test::source_dir().string() + "/assets/scenarios/holonomic_sphere.json");
-  MouseDevice mouse;
-  TaskSpaceStep step(scenario, TaskCoupling{});
+  DeskDevice mouse("mouse");
+  TaskCoupling coupling;
+  coupling.wrist = true;
+  TaskSpaceStep step(scenario, coupling);
   TickRig rig(mouse, step, safety_limits_for(mouse.capabilities()));
   const uint64_t before = g_allocations.load();
+  DeskPose pose;
   for (int k = 0; k < 2000; ++k) {
-    mouse.set_pointer(-0.001 * k / 2000.0, 0.0);  // the app's setter, as from the UI thread
+    pose.position_m[0] = -0.001 * k / 2000.0;
+    pose.wrist_rad[0] = 0.2 * k / 2000.0;  // the wrist turns the direction spring's target
+    mouse.set_pose(pose);                  // the app's setter, as from the UI thread
     rig.run(static_cast<uint64_t>(k), 1, 0.001);
   }
   EXPECT_EQ(g_allocations.load(), before);

@@ -1,0 +1,111 @@
+#include "app/settings.hpp"
+
+#include <cstdlib>
+#include <ctime>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "haptics/devices/desk_device.hpp"
+#include "io/strict_json.hpp"
+#include "io/write_file.hpp"
+
+namespace needle::app {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+struct SettingsError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+bool known_device(const std::string& spec) {
+  if (haptics::is_desk_spec(spec) || spec == "falcon") return true;
+  return spec.rfind("falcon:", 0) == 0 && spec.size() > 7 && spec.size() <= 10 &&
+         spec.find_first_not_of("0123456789", 7) == std::string::npos;
+}
+
+class SettingsReader : io::StrictJsonReader<SettingsError> {
+ public:
+  using StrictJsonReader::StrictJsonReader;
+
+  Settings settings(const json& root) const {
+    object(root, "", {"version", "trainee", "device", "window", "views"});
+    Settings s;
+    if (root.contains("trainee")) s.trainee = string(root["trainee"], "/trainee");
+    if (root.contains("device")) {
+      s.device = string(root["device"], "/device");
+      if (!known_device(s.device)) fail("/device", "unknown device \"" + s.device + "\" (expected mouse, keyboard, gamepad[:N] or falcon[:N])");
+    }
+    if (root.contains("window")) {
+      const json& w = root["window"];
+      object(w, "/window", {"width", "height"});
+      s.window.width = uint32_t(whole(member(w, "/window", "width"), "/window/width", 320, 16384));
+      s.window.height = uint32_t(whole(member(w, "/window", "height"), "/window/height", 240, 16384));
+    }
+    if (root.contains("views")) object(root["views"], "/views", std::initializer_list<const char*>{});
+    return s;
+  }
+
+  int version(const json& root) const {
+    if (!root.is_object()) fail("", "expected an object, got " + std::string(root.type_name()));
+    return int(whole(member(root, "", "version"), "/version", 1, 1000000));
+  }
+};
+
+std::string utc_stamp() {
+  const std::time_t now = std::time(nullptr);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", std::gmtime(&now));
+  return stamp;
+}
+
+}  // namespace
+
+fs::path default_settings_file() {
+  const char* config = std::getenv("XDG_CONFIG_HOME");
+  const char* home = std::getenv("HOME");
+  const fs::path base = config && *config ? fs::path(config) : home && *home ? fs::path(home) / ".config" : fs::path(".");
+  return base / "needle-sim" / "settings.json";
+}
+
+LoadedSettings load_settings(const fs::path& file) {
+  LoadedSettings loaded;
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(file, ec))) return loaded;
+  try {
+    const SettingsReader reader(file.string());
+    const json root = io::read_json_file<SettingsError>(file);
+    const int version = reader.version(root);
+    if (version > kSettingsVersion) {
+      loaded.writable = false;
+      loaded.notice = file.string() + " was written by a newer needle-sim (settings version " + std::to_string(version) +
+                      "): left as it is; this run starts from the defaults and does not save them";
+      return loaded;
+    }
+    loaded.settings = reader.settings(root);
+  } catch (const SettingsError& e) {
+    const std::string stem = file.string() + ".damaged-" + utc_stamp();
+    fs::path aside = stem;
+    for (int n = 2; fs::exists(fs::symlink_status(aside, ec)); ++n) aside = stem + "_" + std::to_string(n);
+    fs::rename(file, aside, ec);
+    loaded.settings = Settings{};
+    loaded.notice = ec ? std::string(e.what()) + "; it could not be set aside (" + ec.message() + "): the defaults are used"
+                       : std::string(e.what()) + "; the file was set aside as " + aside.string() + " and the defaults are used";
+  }
+  return loaded;
+}
+
+void save_settings(const fs::path& file, const Settings& settings) {
+  std::error_code ec;
+  fs::create_directories(file.parent_path(), ec);
+  if (ec) throw std::runtime_error(file.string() + ": cannot write: making its folder: " + ec.message());
+  json j = {{"version", kSettingsVersion},
+            {"device", settings.device},
+            {"window", {{"width", settings.window.width}, {"height", settings.window.height}}},
+            {"views", json::object()}};
+  if (!settings.trainee.empty()) j["trainee"] = settings.trainee;
+  io::write_file(file, j.dump(2) + "\n");
+}
+
+}  // namespace needle::app

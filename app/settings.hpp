@@ -1,0 +1,45 @@
+// The user's settings, kept between runs in a small file in the user's config folder
+// (README.md, "Settings"): the last trainee and device, the window's size. Read strictly: a
+// damaged file is set aside with a message naming it, never half used; written whole through a
+// checked write, so a crash leaves the old file or the new one.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "engine/extent.hpp"
+
+namespace needle::app {
+
+inline constexpr int kSettingsVersion = 1;
+
+struct Settings {
+  std::string trainee;           // the last trainee; empty before the first
+  std::string device = "mouse";  // the last device spec (mouse, keyboard, gamepad[:N], falcon[:N])
+  engine::Extent window{1280, 720};
+  // Issue 15's views (the section view, the ultrasound) will be kept under "views".
+};
+
+// $XDG_CONFIG_HOME/needle-sim/settings.json, else ~/.config/needle-sim/settings.json.
+std::filesystem::path default_settings_file();
+
+struct LoadedSettings {
+  Settings settings;
+  // What the user should be told, empty when nothing: the file was damaged and set aside, or
+  // written by a newer needle-sim.
+  std::string notice;
+  // False when the file must be left as it is (a newer needle-sim's).
+  bool writable = true;
+};
+
+// No file: the defaults. A damaged one (not JSON, an unknown key, a bad value): renamed to
+// FILE.damaged-<UTC time> and the defaults used, the notice naming both. One of a later version:
+// left untouched, the defaults used and `writable` false.
+LoadedSettings load_settings(const std::filesystem::path& file);
+
+// Writes the file (and its folder when missing) through a checked write: a temporary file in the
+// same folder, written, flushed to the disk, renamed over the old one. Throws std::runtime_error
+// "FILE: cannot write: reason".
+void save_settings(const std::filesystem::path& file, const Settings& settings);
+
+}  // namespace needle::app

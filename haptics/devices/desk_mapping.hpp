@@ -1,0 +1,111 @@
+// What the desk devices' input does to their pose (haptics/devices/desk_device.hpp), below any
+// window system: the app reads the mouse, the keys and the gamepad (app/desk_input.cpp) and hands
+// them here as plain values, so every mapping is tested without a display. The limits and the
+// reasons for them are in docs/DEVICES.md, "Desk devices". All of this runs on the app's input
+// thread, never in the haptic tick.
+#pragma once
+
+#include <cstdint>
+
+#include "haptics/devices/desk_device.hpp"
+
+namespace needle::haptics {
+
+// The mouse: the cursor moves the handle in the view's plane, the same distance for the same
+// motion across and up (a tenth of a metre for half the window's height: about what the view
+// shows at the task's depth, so the tip keeps near the cursor), the wheel pushes it into the view.
+// With the turning button held (the right one), cursor motion turns the wrist instead, as if the
+// mouse held the needle's hub: right swings it clockwise as seen, up (forward on the desk) tilts
+// the hub away; the handle stays where it is and, once the button is released, moves on from
+// there (the app puts the cursor back where the turn began, so cursor and tip stay together).
+class MouseMapping {
+ public:
+  static constexpr double kMetresPerHalfHeight = 0.1;
+  static constexpr double kRadPerHalfHeight = 3.141592653589793;  // 180° for half the window's height
+  static constexpr double kDepthPerNotch_m = 0.002;
+
+  explicit MouseMapping(const DeskWorkspace& workspace = {});
+
+  // The cursor from the window's centre in half window heights: x to the right (± the aspect
+  // ratio at the edges), y up (±1 at the edges).
+  void pointer(double x, double y, bool turning) noexcept;
+  // Wheel notches, forward (into the view) positive.
+  void scroll(double notches) noexcept;
+  const DeskPose& pose() const noexcept { return pose_; }
+
+ private:
+  DeskWorkspace workspace_;
+  DeskPose pose_;
+  double offset_m_[2] = {0.0, 0.0};  // handle minus the cursor's point, changed only by a turn
+  double last_[2] = {0.0, 0.0};
+  bool have_last_ = false;
+  bool turning_ = false;
+};
+
+// The keyboard, one step a press (the system's key repeat gives steps while a key is held).
+enum class DeskKey {
+  kLeft, kRight, kDown, kUp,      // the handle in the view's plane (arrow keys)
+  kOut, kIn,                      // depth: out of the view, into it (S, W)
+  kSwingLeft, kSwingRight,        // the hub left or right about the tip (A, D)
+  kTiltToward, kTiltAway,         // the hub towards the viewer or away (F, R)
+};
+
+class KeyboardMapping {
+ public:
+  static constexpr double kStep_m = 0.001;
+  static constexpr double kStep_rad = 0.017453292519943295;  // 1°
+  static constexpr double kFine = 0.2;                       // with Shift: a fifth of a step
+
+  explicit KeyboardMapping(const DeskWorkspace& workspace = {});
+  void press(DeskKey key, bool fine) noexcept;
+  const DeskPose& pose() const noexcept { return pose_; }
+
+ private:
+  DeskWorkspace workspace_;
+  DeskPose pose_;
+};
+
+// A gamepad in GLFW's standard layout (GLFWgamepadstate) as plain values.
+struct GamepadState {
+  enum Axis { kLeftX, kLeftY, kRightX, kRightY, kLeftTrigger, kRightTrigger, kAxes };
+  enum Button { kA, kB, kX, kY, kLeftBumper, kRightBumper, kBack, kStart, kGuide, kLeftThumb, kRightThumb,
+                kDpadUp, kDpadRight, kDpadDown, kDpadLeft, kButtons };
+  // Sticks in [-1, 1] with y down; triggers from -1 (released) to 1 (pulled).
+  float axes[kAxes] = {0.0f, 0.0f, 0.0f, 0.0f, -1.0f, -1.0f};
+  uint8_t buttons[kButtons] = {};
+};
+
+// Rate control: the left stick moves the handle in the view's plane, the right trigger pushes it
+// into the view and the left one draws it back, the right stick turns the wrist (right swings the
+// hub clockwise, up tilts it away), each at a speed proportional to the deflection past a dead
+// zone. Start resets a latched fault.
+class GamepadMapping {
+ public:
+  static constexpr double kSpeed_m_per_s = 0.02;       // stick or trigger fully deflected
+  static constexpr double kTurnRate_rad_per_s = 0.5235987755982988;  // 30°/s
+  static constexpr double kStickDeadZone = 0.15;       // of the stick's radius
+  static constexpr double kTriggerDeadZone = 0.05;     // of the trigger's travel
+  static constexpr double kMaxStep_s = 0.1;            // a longer frame moves as much as this one
+  static constexpr GamepadState::Button kResetFault = GamepadState::kStart;
+
+  explicit GamepadMapping(const DeskWorkspace& workspace = {});
+
+  // One frame of `dt_s` seconds with the state read at its start.
+  void update(const GamepadState& state, double dt_s) noexcept;
+  const DeskPose& pose() const noexcept { return pose_; }
+  // True once for each press of the reset button.
+  bool take_fault_reset() noexcept;
+
+ private:
+  DeskWorkspace workspace_;
+  DeskPose pose_;
+  bool reset_held_ = false;
+  bool reset_pressed_ = false;
+};
+
+// The deflection past a dead zone, rescaled so that the dead zone's edge is 0 and full deflection
+// is 1: for a stick the radial deflection (x, y) in place, for a trigger from -1 (released).
+void stick_past_dead_zone(double& x, double& y, double dead_zone) noexcept;
+double trigger_past_dead_zone(double axis, double dead_zone) noexcept;
+
+}  // namespace needle::haptics

@@ -1,0 +1,216 @@
+// A trainee's plan for the penetrable-sphere task (assets/tasks/penetrable_sphere.json) on a desk
+// device, in the device's own terms: where its handle and wrist go and how fast. The app's tests
+// play it through the keyboard and mouse mappings; the command-line tests through xdotool.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "app/session_rig.hpp"
+#include "engine/scene.hpp"
+#include "engine/screen_projection.hpp"
+#include "haptics/devices/desk_mapping.hpp"
+#include "haptics/realtime/task_space_step.hpp"
+#include "training/tasks/task.hpp"
+
+namespace needle::test {
+
+// The handle at `device_m` (device frame) and the wrist at (swing, tilt), reached in a straight
+// line over `seconds` from the waypoint before.
+struct DeskWaypoint {
+  Eigen::Vector3d device_m;
+  double swing_rad = 0.0, tilt_rad = 0.0;
+  double seconds = 0.0;
+};
+
+// The wrist angles that turn `start` onto `wanted` (the inverse of haptics::wrist_direction, away
+// from its poles): the tilt changes the angle to the view's axis, the swing turns about it.
+inline void wrist_for(const Eigen::Matrix3d& device_to_scene, const Eigen::Vector3d& start, const Eigen::Vector3d& wanted,
+                      double& swing, double& tilt) {
+  const Eigen::Vector3d away = device_to_scene.col(1).cross(device_to_scene.col(0)).normalized();
+  tilt = std::acos(wanted.normalized().dot(away)) - std::acos(start.normalized().dot(away));
+  const Eigen::Vector3d p0 = start - start.dot(away) * away, p = wanted - wanted.dot(away) * away;
+  swing = std::atan2(p0.cross(p).dot(away), p0.dot(p));
+}
+
+// Where the tool starts (world frame) and the view's axes, from a rig built for planning.
+struct DeskStart {
+  Eigen::Vector3d tip, direction;
+  Eigen::Matrix3d device_to_scene;
+};
+
+inline DeskStart desk_start(app::SessionRig& rig) {
+  auto& step = dynamic_cast<haptics::TaskSpaceStep&>(rig.step());
+  haptics::DeviceReading reading;
+  rig.device().read(reading);
+  haptics::DeviceCommand command;
+  haptics::ToolSnapshot state;
+  step.step(reading, 0.001, command, state);
+  DeskStart start;
+  start.tip = Eigen::Vector3d(state.needle_tip_m[0], state.needle_tip_m[1], state.needle_tip_m[2]);
+  start.direction = Eigen::Vector3d(haptics::needle_axis(state).data());
+  start.device_to_scene = step.coupling().device_to_scene;
+  return start;
+}
+
+// The start of the rig `needle-sim run --device DEVICE` builds for `task_file` (its files in `dir`).
+inline DeskStart desk_start(const std::filesystem::path& task_file, const std::string& device, const std::filesystem::path& dir) {
+  const training::Task task = training::load_task(task_file);
+  app::RigOptions options;
+  options.device = device;
+  options.camera = engine::load_scene(task.scene).camera;
+  options.out_dir = dir;
+  app::SessionRig rig(task, options);
+  return desk_start(rig);
+}
+
+// Come to 15 mm above the entry and turn onto the insertion axis; insert 3 cm along the axis;
+// pivot 45° to vertical about the tip; advance 2 cm to the target; withdraw 8.5 cm straight up.
+// The handle starts at `device_start`, the wrist at zero.
+inline std::vector<DeskWaypoint> penetrable_plan(const training::Task& task, const DeskStart& start,
+                                                 const Eigen::Vector3d& device_start) {
+  auto marker = [&task](const char* name) -> const training::Marker& {
+    for (const training::Marker& m : task.markers)
+      if (m.name == name) return m;
+    throw std::logic_error(std::string("no marker ") + name);
+  };
+  const training::Marker& insertion = marker("insertion_axis");
+  const training::Marker& pivot = marker("pivot_axis");
+  const Eigen::Vector3d entry(insertion.position[0], insertion.position[1], insertion.position[2]);
+  const Eigen::Vector3d axis(insertion.direction[0], insertion.direction[1], insertion.direction[2]);
+  const Eigen::Vector3d down(pivot.direction[0], pivot.direction[1], pivot.direction[2]);
+  const training::Marker& target_marker = marker("target");
+  const Eigen::Vector3d target(target_marker.position[0], target_marker.position[1], target_marker.position[2]);
+  auto device = [&](const Eigen::Vector3d& tip) -> Eigen::Vector3d {
+    return device_start + start.device_to_scene.transpose() * (tip - start.tip);
+  };
+  double swing_in = 0, tilt_in = 0, swing_down = 0, tilt_down = 0;
+  wrist_for(start.device_to_scene, start.direction, axis, swing_in, tilt_in);
+  wrist_for(start.device_to_scene, start.direction, down, swing_down, tilt_down);
+  const Eigen::Vector3d inserted = entry + 0.03 * axis;
+  return {
+      {device(entry - 0.015 * axis), 0.0, 0.0, 3.0},              // above the entry
+      {device(entry - 0.015 * axis), swing_in, tilt_in, 2.0},     // turned onto the axis
+      {device(inserted), swing_in, tilt_in, 6.0},                 // insert 3 cm (4.5 cm of travel)
+      {device(inserted), swing_in, tilt_in, 1.5},                 // hold the depth
+      {device(inserted), swing_down, tilt_down, 4.0},             // pivot about the tip
+      {device(inserted), swing_down, tilt_down, 1.5},             // hold it vertical
+      {device(target), swing_down, tilt_down, 3.0},               // advance to the target
+      {device(target), swing_down, tilt_down, 1.5},               // hold there
+      {device(target - 0.085 * down), swing_down, tilt_down, 4.0},  // withdraw
+      {device(target - 0.085 * down), swing_down, tilt_down, 1.0},
+  };
+}
+
+// The plan's pose at `t` seconds (the last one after its end).
+inline DeskWaypoint plan_at(const std::vector<DeskWaypoint>& plan, const Eigen::Vector3d& device_start, double t) {
+  DeskWaypoint from{device_start, 0.0, 0.0, 0.0};
+  for (const DeskWaypoint& to : plan) {
+    if (t <= to.seconds) {
+      const double u = to.seconds > 0 ? t / to.seconds : 1.0;
+      return {from.device_m + u * (to.device_m - from.device_m), from.swing_rad + u * (to.swing_rad - from.swing_rad),
+              from.tilt_rad + u * (to.tilt_rad - from.tilt_rad), 0.0};
+    }
+    t -= to.seconds;
+    from = to;
+  }
+  return from;
+}
+
+inline double plan_seconds(const std::vector<DeskWaypoint>& plan) {
+  double total = 0.0;
+  for (const DeskWaypoint& w : plan) total += w.seconds;
+  return total;
+}
+
+// Where the app puts the mouse's cursor when a session of `task` starts in a window of `extent`
+// (on the tool's start), in half window heights from the centre, x right, y up.
+inline Eigen::Vector2d mouse_cursor_start(const training::Task& task, const DeskStart& start, engine::Extent extent) {
+  const std::optional<glm::vec2> px = engine::project_to_screen(engine::load_scene(task.scene).camera, extent,
+                                                                 glm::vec3(start.tip.x(), start.tip.y(), start.tip.z()));
+  if (!px) throw std::logic_error("the tool's start is not in the view");
+  const double half = 0.5 * extent.height;
+  return {(px->x - 0.5 * extent.width) / half, (half - px->y) / half};
+}
+
+// One input of a mouse playing a plan: where the cursor goes (half window heights), whether the
+// right button goes down before the move or up instead of it, and the wheel's notches after it
+// (into the view positive).
+struct MouseInput {
+  Eigen::Vector2d cursor;
+  bool press = false, release = false;
+  double notches = 0.0;
+};
+
+// A trainee's mouse playing a plan as the app reads it (app/desk_input.cpp): the right button held
+// turns the wrist (and once it is released the cursor is back where it went down), else the cursor
+// moves the handle and the wheel pushes it in a notch at a time. It keeps its own MouseMapping, fed
+// as the app feeds it, to know what is left to do. `pixel`: the cursor's resolution in half
+// heights (0: exact); a turn or move under half of it is not made.
+class MousePlayer {
+ public:
+  MousePlayer(std::vector<DeskWaypoint> plan, const Eigen::Vector3d& device_start, const Eigen::Vector2d& cursor, double pixel = 0.0)
+      : plan_(std::move(plan)), device_start_(device_start), cursor_(cursor), pixel_(pixel), lowest_(cursor), highest_(cursor) {
+    mouse_.pointer(cursor_.x(), cursor_.y(), false);
+  }
+
+  // The input for `t` seconds into the plan.
+  MouseInput step(double t) {
+    const DeskWaypoint want = plan_at(plan_, device_start_, t);
+    const haptics::DeskPose& pose = mouse_.pose();
+    const Eigen::Vector2d turn(want.swing_rad - pose.wrist_rad[0], want.tilt_rad - pose.wrist_rad[1]);
+    const double least_turn = std::max(1e-4, 0.5 * pixel_ * haptics::MouseMapping::kRadPerHalfHeight);
+    const bool turning = std::abs(turn.x()) > least_turn || std::abs(turn.y()) > least_turn;
+    MouseInput input;
+    if (!turning && turning_) {  // the button goes up; the app puts the cursor back where it went down
+      turning_ = false;
+      cursor_ = pressed_;
+      mouse_.pointer(cursor_.x(), cursor_.y(), false);
+      input.cursor = cursor_;
+      input.release = true;
+      return input;
+    }
+    if (turning && !turning_) {  // the button goes down where the cursor is
+      input.press = true;
+      turning_ = true;
+      pressed_ = cursor_;
+      mouse_.pointer(cursor_.x(), cursor_.y(), true);
+    }
+    const Eigen::Vector2d move =
+        turning ? Eigen::Vector2d(turn / haptics::MouseMapping::kRadPerHalfHeight)
+                : Eigen::Vector2d((want.device_m.x() - pose.position_m[0]) / haptics::MouseMapping::kMetresPerHalfHeight,
+                                  (want.device_m.y() - pose.position_m[1]) / haptics::MouseMapping::kMetresPerHalfHeight);
+    cursor_ += move;
+    if (pixel_ > 0) cursor_ = (cursor_ / pixel_).array().round().matrix() * pixel_;
+    lowest_ = lowest_.cwiseMin(cursor_);
+    highest_ = highest_.cwiseMax(cursor_);
+    mouse_.pointer(cursor_.x(), cursor_.y(), turning);
+    if (!turning) {
+      input.notches = std::round((want.device_m.z() - mouse_.pose().position_m[2]) / haptics::MouseMapping::kDepthPerNotch_m);
+      mouse_.scroll(input.notches);
+    }
+    input.cursor = cursor_;
+    return input;
+  }
+
+  const haptics::DeskPose& pose() const { return mouse_.pose(); }
+  // How far the cursor went, in half heights.
+  const Eigen::Vector2d& lowest() const { return lowest_; }
+  const Eigen::Vector2d& highest() const { return highest_; }
+
+ private:
+  std::vector<DeskWaypoint> plan_;
+  Eigen::Vector3d device_start_;
+  Eigen::Vector2d cursor_, pressed_ = Eigen::Vector2d::Zero();
+  double pixel_;
+  haptics::MouseMapping mouse_;
+  bool turning_ = false;
+  Eigen::Vector2d lowest_, highest_;
+};
+
+}  // namespace needle::test

@@ -1,0 +1,69 @@
+// What the start screen lists: the tasks of a folder (operator scripts left out, a broken file
+// listed with its error) and a trainee's past per task, from sessions written by hand.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "tests/support/process_folder.hpp"
+#include "tests/support/test_paths.hpp"
+#include "training/sessions/trainee_history.hpp"
+#include "training/tasks/task_catalog.hpp"
+
+namespace needle::training {
+namespace {
+
+namespace fs = std::filesystem;
+
+SessionInfo info(std::string trainee, std::string task, bool complete, double score) {
+  SessionInfo s;
+  s.trainee = std::move(trainee);
+  s.task = std::move(task);
+  s.complete = complete;
+  s.score = score;
+  return s;
+}
+
+TEST(TraineeHistory, TraineesMostRecentFirstAndTheLastAndBestScorePerTask) {
+  const std::vector<SessionInfo> sessions = {  // newest first, as the store lists them
+      info("bo", "rigid_sphere", false, 0.0),          info("ana", "penetrable_sphere", true, 71.0),
+      info("ana", "penetrable_sphere", false, 0.0),    info("ana", "penetrable_sphere", true, 85.0),
+      info("Carla", "penetrable_sphere", true, 90.0), info("ana", "rigid_sphere", true, 60.0),
+  };
+  EXPECT_EQ(known_trainees(sessions), (std::vector<std::string>{"bo", "ana", "Carla"}));
+  const std::map<std::string, TaskHistory> ana = task_history(sessions, "ana");
+  ASSERT_EQ(ana.size(), 2u);
+  EXPECT_EQ(ana.at("penetrable_sphere").last.score, 71.0) << "the newest complete one, not the best";
+  EXPECT_EQ(ana.at("penetrable_sphere").best, 85.0);
+  EXPECT_EQ(ana.at("penetrable_sphere").completed, 2) << "an incomplete session has no score";
+  EXPECT_EQ(ana.at("rigid_sphere").completed, 1);
+  EXPECT_TRUE(task_history(sessions, "bo").empty()) << "bo never finished a task";
+  EXPECT_TRUE(task_history(sessions, "nobody").empty());
+}
+
+TEST(TaskCatalog, TheShippedTasksWithTheirTitlesAndDescriptionsAndNoScripts) {
+  const std::vector<TaskEntry> tasks = find_tasks(test::source_dir() / "assets/tasks");
+  ASSERT_EQ(tasks.size(), 2u);
+  EXPECT_EQ(tasks[0].name, "penetrable_sphere");
+  EXPECT_EQ(tasks[1].name, "rigid_sphere");
+  for (const TaskEntry& t : tasks) {
+    EXPECT_TRUE(t.error.empty()) << t.error;
+    EXPECT_FALSE(t.title.empty());
+    EXPECT_FALSE(t.description.empty()) << t.name << ": the start screen shows a line about each shipped task";
+  }
+}
+
+TEST(TaskCatalog, ABrokenTaskIsListedWithItsErrorAndAMissingFolderIsAnError) {
+  const fs::path dir = test::process_folder(test::output_dir() / "task_catalog");
+  std::ofstream(dir / "a_broken.json") << "{\"name\": \"x\", \"colour\": 1}";
+  std::ofstream(dir / "b_not_json.json") << "{";
+  std::ofstream(dir / "c_script.json") << "{\"description\": \"an operator\", \"hand\": {}}";
+  std::ofstream(dir / "notes.txt") << "not a task";
+  const std::vector<TaskEntry> tasks = find_tasks(dir);
+  ASSERT_EQ(tasks.size(), 2u);
+  EXPECT_NE(tasks[0].error.find((dir / "a_broken.json").string() + ": /colour: unknown key"), std::string::npos) << tasks[0].error;
+  EXPECT_NE(tasks[1].error.find("not valid JSON"), std::string::npos) << tasks[1].error;
+  EXPECT_THROW(find_tasks(dir / "missing"), TaskError);
+}
+
+}  // namespace
+}  // namespace needle::training
