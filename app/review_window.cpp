@@ -6,6 +6,7 @@
 
 #include "app/default_db.hpp"
 #include "app/replay_cursor.hpp"
+#include "app/ultrasound_window.hpp"
 #include "app/window_frames.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/ui_pass.hpp"
@@ -64,6 +65,8 @@ int run_review_window(const ReviewOptions& options) {
   auto scene = std::make_unique<engine::GpuScene>(renderer, engine::Model{}, engine::Scene{});
   fs::path scene_file;
   std::string scene_error;
+  // The recorded task's ultrasound image at the scrubbed time, in a task with a probe.
+  std::unique_ptr<UltrasoundWindow> ultrasound;
   engine::UiPass ui_pass(renderer, &window);
   ui::FrameClock clock;
 
@@ -91,6 +94,15 @@ int run_review_window(const ReviewOptions& options) {
       playing = false;
       detail.export_message.clear();
       t = a.review ? a.review->end_s() : 0.0;
+      renderer.wait_idle();  // the old ultrasound view's image may still be drawn in flight
+      ultrasound.reset();
+      if (a.review && a.review->task && a.review->task->ultrasound_probe) {
+        try {
+          ultrasound = std::make_unique<UltrasoundWindow>(vw.device, *a.review->task);
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "no ultrasound replay: %s\n", e.what());
+        }
+      }
       const fs::path wanted = a.review && a.review->task ? a.review->task->scene : fs::path();
       if (wanted != scene_file) {
         renderer.wait_idle();  // the old scene's buffers may still be in flight
@@ -148,9 +160,15 @@ int run_review_window(const ReviewOptions& options) {
       ImGui::End();
     }
     const bool replaying = a.review && a.review->has_recording() && scene_error.empty() && !b.review;
-    engine::FrameParams params = scene->frame_params(replaying ? &cursor.at(a.review->states, t) : nullptr);
+    const engine::NeedleLoad* needle = replaying ? &cursor.at(a.review->states, t) : nullptr;
+    if (needle && ultrasound) {
+      ultrasound->place(w - 10.0f, 10.0f, 1.0f, 0.0f);  // the 3D view's top right corner
+      ultrasound->draw_panel(*needle);
+    }
+    engine::FrameParams params = scene->frame_params(needle);
     ui::frame_beside_panels(params.camera, w / h, kPanelsFraction);
     params.overlay = ui_pass.end_frame();
+    if (needle && ultrasound) ultrasound->add_to_frame(params, renderer, extent, *needle);
 
     frames.draw(window, [&](engine::RgbaImage* shot) { return renderer.draw(target, params, shot); });
   }

@@ -27,7 +27,8 @@ SessionWindow::SessionWindow(const WindowOptions& options)
     : options_(options),
       vw_("needle-sim", options.size),
       frame_(vw_.device, vw_.target, {options.msaa.value_or(vw_.default_msaa_samples()), options.hud}, &vw_.window),
-      frames_(options.frames, options.screenshot) {}
+      frames_(options.frames, options.screenshot),
+      view_{options.section} {}
 
 SessionWindow::~SessionWindow() { renderer().wait_idle(); }
 
@@ -42,11 +43,27 @@ void SessionWindow::run(engine::GpuScene& scene, const Show& show, const std::fu
 
 void SessionWindow::frames(engine::GpuScene& scene, const Show& show, const std::function<bool()>& done) {
   const auto start = std::chrono::steady_clock::now();
+  view_.has_ultrasound = show.ultrasound != nullptr;
+  view_.ultrasound = view_.ultrasound || show.ultrasound_open;
+  // The views ride on the frame: the view panel beside the others, the ultrasound passes (only
+  // while its window is open) and the section added to the frame's parameters.
+  bool ultrasound = false;
+  FrameContent content = show;
+  content.views_panel = [&](const std::optional<engine::NeedleLoad>& needle) {
+    ultrasound = show.ultrasound && view_.ultrasound && needle;
+    if (show.needle) ui::draw_view_panel(view_);  // a view of the tissue (not the start screen)
+    if (ultrasound) show.ultrasound->draw_panel(*needle);
+  };
+  content.add_views = [&](engine::FrameParams& params, const std::optional<engine::NeedleLoad>& needle) {
+    if (ultrasound) show.ultrasound->add_to_frame(params, renderer(), vw_.target.extent(), *needle);
+    ultrasound = false;
+    if (view_.section) params.section = engine::section_through_needle(params.camera, needle ? &*needle : nullptr, *view_.section);
+  };
   while (!vw_.window.should_close()) {
     vw_.window.poll_events();
     if (show.input) show.input(vw_.window);
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    frames_.draw(vw_.window, [&](engine::RgbaImage* shot) { return frame_.draw(vw_.target, scene, show, t, shot); });
+    frames_.draw(vw_.window, [&](engine::RgbaImage* shot) { return frame_.draw(vw_.target, scene, content, t, shot); });
     if (done && done()) break;
   }
   renderer().wait_idle();
@@ -69,25 +86,27 @@ TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices
   const std::vector<ui::Choice> stop = {{"Stop (Esc)", [&end] { end = TaskEnd::kBack; }}};
   window.run(
       scene,
-      task_content(
-          session,
-          [&] { session.draw_panel(std::nullopt, controls, session.finished() ? choices : offer_choices ? stop : std::vector<ui::Choice>{}); },
-          [&](engine::Window& w) {
-            const std::vector<engine::Window::KeyPress> keys = w.take_key_presses();
-            const bool typing = ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput;
-            for (const engine::Window::KeyPress& press : keys) {
-              if (!offer_choices || typing) break;
-              if (press.key == GLFW_KEY_ESCAPE) end = TaskEnd::kBack;
-              if (session.finished() && press.key == GLFW_KEY_R) end = TaskEnd::kRetry;
-              if (session.finished() && press.key == GLFW_KEY_N) end = TaskEnd::kNextTask;
-            }
-            if (!desk || session.finished()) {
-              w.take_scroll();
-              return;
-            }
-            desk->frame(w, keys, pointer_on_panel());
-            if (desk->take_fault_reset()) session.reset_fault();
-          }),
+      Show{task_content(
+               session,
+               [&] { session.draw_panel(std::nullopt, controls, session.finished() ? choices : offer_choices ? stop : std::vector<ui::Choice>{}); },
+               [&](engine::Window& w) {
+                 const std::vector<engine::Window::KeyPress> keys = w.take_key_presses();
+                 const bool typing = ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput;
+                 for (const engine::Window::KeyPress& press : keys) {
+                   if (!offer_choices || typing) break;
+                   if (press.key == GLFW_KEY_ESCAPE) end = TaskEnd::kBack;
+                   if (session.finished() && press.key == GLFW_KEY_R) end = TaskEnd::kRetry;
+                   if (session.finished() && press.key == GLFW_KEY_N) end = TaskEnd::kNextTask;
+                 }
+                 if (!desk || session.finished()) {
+                   w.take_scroll();
+                   return;
+                 }
+                 desk->frame(w, keys, pointer_on_panel());
+                 if (desk->take_fault_reset()) session.reset_fault();
+               }),
+           std::make_shared<UltrasoundWindow>(window.device(), session.task()),
+           session.task().ultrasound_probe.has_value()},
       [&end] { return end.has_value(); });
   return end.value_or(TaskEnd::kWindowClosed);
 }
@@ -99,7 +118,9 @@ int run_scene_headless(const engine::Scene& scene, const WindowOptions& options,
   engine::GpuScene gpu_scene(renderer, scene);
   const std::optional<engine::NeedleLoad> needle = scripted_content(gpu_scene).needle(kHeadlessMoment_s);
   engine::RgbaImage image;
-  renderer.draw(target, gpu_scene.frame_params(needle ? &*needle : nullptr), &image);
+  engine::FrameParams params = gpu_scene.frame_params(needle ? &*needle : nullptr);
+  if (options.section) params.section = engine::section_through_needle(params.camera, needle ? &*needle : nullptr, *options.section);
+  renderer.draw(target, params, &image);
   const fs::path out = out_dir / "scene.png";
   engine::write_png(out, image);
   std::printf("wrote %s (%ux%u)\n", out.c_str(), image.width, image.height);
@@ -118,7 +139,7 @@ int run_task_window(const TaskSessionOptions& task, const WindowOptions& options
 int run_scene_window(const engine::Scene& scene, const WindowOptions& options) {
   SessionWindow window(options);
   engine::GpuScene gpu_scene(window.renderer(), scene);
-  window.run(gpu_scene, scripted_content(gpu_scene));
+  window.run(gpu_scene, Show{scripted_content(gpu_scene)});
   std::printf("presented %ld frames\n", window.frames_drawn());
   return 0;
 }

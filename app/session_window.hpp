@@ -6,15 +6,18 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "app/task_session.hpp"
 #include "app/trainee_frame.hpp"
+#include "app/ultrasound_window.hpp"
 #include "app/window_frames.hpp"
 #include "engine/extent.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/scene.hpp"
+#include "ui/view_panel.hpp"
 
 namespace needle::app {
 
@@ -24,11 +27,17 @@ struct WindowOptions {
   long frames = 0;          // close after this many frames (0: when the user closes the window)
   std::optional<std::string> screenshot;  // save the last of `frames` as presented
   bool hud = true;                        // the panels
+  std::optional<engine::Section::Mode> section;  // the section view at the start (X and the view panel change it)
 };
 
 // What the window shows each frame: where the needle is, and a panel beside the status panel;
 // `input` takes the frame's input (the desk devices' cursor, keys and gamepad).
-using Show = FrameContent;
+// `ultrasound`: a task's ultrasound view, offered in the view panel; made on the window's device
+// and gone before it; `ultrasound_open`: open at the start (a task with a probe).
+struct Show : FrameContent {
+  std::shared_ptr<UltrasoundWindow> ultrasound;
+  bool ultrasound_open = false;
+};
 
 // The window, kept open across what it shows (a task, the start screen and the tasks it
 // starts): its GPU device and swapchain, the trainee's frame (the renderer and the UI pass, as
@@ -41,6 +50,7 @@ class SessionWindow {
   SessionWindow& operator=(const SessionWindow&) = delete;
 
   engine::Window& window() { return vw_.window; }
+  const engine::GpuDevice& device() const { return vw_.device; }
   engine::SceneRenderer& renderer() { return frame_.renderer(); }
   bool closed() const { return vw_.window.should_close(); }
   // Draws `scene` with `show` until the window closes or, checked after each frame, `done()`.
@@ -54,6 +64,7 @@ class SessionWindow {
   GpuWindow vw_;
   TraineeFrame frame_;
   WindowFrames frames_;
+  ui::ViewState view_;  // the section view and the ultrasound window, kept from task to task
 };
 
 // How a task run from the start screen ended: the score panel's choice, or the window closed.

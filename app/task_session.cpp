@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <ctime>
 
+#include "app/ultrasound_window.hpp"
 #include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/render_target.hpp"
@@ -177,7 +178,7 @@ void TaskSession::draw_panel(std::optional<size_t> step, const char* controls, c
   });
 }
 
-int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa) {
+int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa, std::optional<engine::Section::Mode> section) {
   const fs::path out_dir = options.out_dir;
   TaskSession run(std::move(options));
   engine::GpuDevice device;
@@ -185,20 +186,34 @@ int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa)
   engine::SceneRenderer renderer(device, target, {msaa});
   engine::GpuScene scene(renderer, run.scene());
   engine::UiPass ui(renderer, nullptr);
+  // The task's ultrasound image, in its window in each picture and on its own beside it; none
+  // made in a task without a probe.
+  std::optional<UltrasoundWindow> ultrasound;
+  if (run.task().ultrasound_probe) ultrasound.emplace(device, run.task());
   auto shoot = [&](const std::string& name, std::optional<size_t> step = std::nullopt) {
     engine::RgbaImage image;
     for (int frame = 0; frame < 2; ++frame) {  // ImGui fits its auto-sized windows on the first frame
       ui.begin_frame(target.extent(), 1.0f / 60.0f);
       run.draw_panel(step);
       const engine::NeedleLoad needle = run.needle();
+      if (ultrasound) ultrasound->draw_panel(needle);
       engine::FrameParams params = scene.frame_params(&needle);
+      if (section) params.section = engine::section_through_needle(params.camera, &needle, *section);
       params.overlay = ui.end_frame();
+      if (ultrasound) ultrasound->add_to_frame(params, renderer, target.extent(), needle);
       renderer.draw(target, params, frame == 1 ? &image : nullptr);
     }
     engine::write_png(out_dir / (name + ".png"), image);
   };
-  run.run_offline([&](size_t k) { shoot("step_" + std::to_string(k + 1) + "_" + run.task().steps[k].id, k); });
+  auto sonogram = [&](const std::string& name) {
+    if (ultrasound) engine::write_png(out_dir / (name + ".png"), ultrasound->picture(run.needle()));
+  };
+  run.run_offline([&](size_t k) {
+    shoot("step_" + std::to_string(k + 1) + "_" + run.task().steps[k].id, k);
+    sonogram("ultrasound_step_" + std::to_string(k + 1));
+  });
   shoot("final");
+  sonogram("ultrasound_final");
   run.finish();
   shoot("score_panel");
   std::printf("wrote the pictures of the run in %s\n", out_dir.c_str());

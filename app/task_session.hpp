@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "engine/extent.hpp"
+#include "engine/scene_renderer.hpp"
 #include "app/session_feed.hpp"
 #include "engine/scene.hpp"
 #include "haptics/realtime/haptic_loop.hpp"
@@ -89,7 +90,10 @@ class TaskSession {
 };
 
 // Headless: runs the session through, writing OUT/step_<n>_<id>.png as each step ends,
-// OUT/final.png and OUT/score_panel.png. Returns 0.
-int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa);
+// OUT/final.png and OUT/score_panel.png; in a task with an ultrasound probe also the probe's
+// image, OUT/ultrasound_step_<n>.png and OUT/ultrasound_final.png. Returns 0.
+// With `section`, every picture shows the section view through the needle.
+int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa,
+                      std::optional<engine::Section::Mode> section = std::nullopt);
 
 }  // namespace needle::app

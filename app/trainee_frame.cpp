@@ -79,8 +79,10 @@ bool TraineeFrame::draw(engine::RenderTarget& target, engine::GpuScene& scene, c
     ui::draw_status_panel({device_.device_description(), assets.empty() ? "" : assets[0].name,
                            renderer_.msaa_samples(), clock_.mean_frame_ms()});
     if (content.panel) content.panel();
+    if (content.views_panel) content.views_panel(needle);
     params.overlay = ui_->end_frame();
   }
+  if (content.add_views) content.add_views(params, needle);
   cost_ = {ms_between(start, needled), ms_between(needled, posed), ms_between(posed, Clock::now())};
   return renderer_.draw(target, params, capture);
 }

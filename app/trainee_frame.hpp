@@ -27,6 +27,10 @@ struct FrameContent {
   std::function<void()> panel;
   // Takes the window's cursor and scroll before the frame, when the tool follows them.
   std::function<void(engine::Window&)> input;
+  // The views' panel, after the others (the section and ultrasound views, SessionWindow), given the needle.
+  std::function<void(const std::optional<engine::NeedleLoad>&)> views_panel;
+  // The views' passes and settings added to the frame's parameters once the panels are built.
+  std::function<void(engine::FrameParams&, const std::optional<engine::NeedleLoad>&)> add_views;
 };
 
 // A guided task through its haptic loop: the loop starts at the first frame (after its input, so

@@ -14,6 +14,7 @@
 #include "engine/model.hpp"
 #include "engine/rgba_image.hpp"
 #include "engine/scene.hpp"
+#include "engine/tissue.hpp"
 
 namespace needle::engine {
 
@@ -33,7 +34,22 @@ struct DrawItem {
   // World-space spheres outside which the vertex buffers hold the uploaded mesh (a deformed
   // tissue's reach): chunks touching them are always drawn, the others are culled by rest bounds.
   std::vector<Sphere> moved;
+  bool sectioned = false;  // cut by the frame's section (the tissue), not the tool
 };
+
+// The section view (docs/RENDERING.md, "Section view"): the sectioned items cut by a plane, the
+// half on the side `normal` points to (towards the viewer) removed and the cut filled with each
+// surface's own colour (Cut), or drawn see-through (Translucent).
+struct Section {
+  enum class Mode { Cut, Translucent };
+  Mode mode = Mode::Cut;
+  glm::vec3 point{0.0f};
+  glm::vec3 normal{0.0f, -1.0f, 0.0f};  // unit
+};
+// The default plane: through the needle's axis, turned to face the camera as nearly as the axis
+// allows; without a needle in or on the tissue (`needle` nullptr), through the camera's target,
+// facing the camera.
+Section section_through_needle(const Camera& camera, const NeedleLoad* needle, Section::Mode mode = Section::Mode::Cut);
 
 // One frame, as GpuScene::frame_params makes it; the camera may be changed before drawing.
 struct FrameParams {
@@ -45,6 +61,7 @@ struct FrameParams {
   CommandRecorder before_pass;
   // Recorded last inside the scene's render pass (the UI pass), when set.
   CommandRecorder overlay;
+  std::optional<Section> section;  // the section view, when set
 };
 
 struct RendererSettings {

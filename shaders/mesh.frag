@@ -8,6 +8,7 @@ layout(location = 0) in vec3 in_world_position;
 layout(location = 1) in vec3 in_world_normal;
 layout(location = 2) in vec2 in_uv;
 layout(location = 3) in vec4 in_color;
+layout(location = 4) flat in int in_sectioned;
 
 layout(location = 0) out vec4 out_color;
 
@@ -20,6 +21,18 @@ void main() {
 
   vec3 n = normalize(in_world_normal);
   if (!gl_FrontFacing) n = -n;  // double-sided materials light their back faces too
+  // The section view (docs/RENDERING.md). Cut: what lies beyond the plane is discarded; through
+  // the opening the surface's inside (its back faces) shows, filled with its own colour and lit
+  // as the plane would be: the cap. Translucent: a fixed 4x4 ordered dither keeps a third of the
+  // fragments (screen-door transparency: no sorting, the needle shows through).
+  if (in_sectioned != 0 && frame.section.x == 1) {
+    if (dot(frame.section_plane.xyz, in_world_position) + frame.section_plane.w > 0.0) discard;
+    if (!gl_FrontFacing) n = frame.section_plane.xyz;
+  } else if (in_sectioned != 0 && frame.section.x == 2) {
+    const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
+    ivec2 p = ivec2(gl_FragCoord.xy) & 3;
+    if ((bayer[p.y * 4 + p.x] + 0.5) / 16.0 > 0.34) discard;
+  }
   vec3 v = normalize(frame.camera_position.xyz - in_world_position);
   float metallic = clamp(material.params.y, 0.0, 1.0);
   float roughness = clamp(material.params.z, 0.04, 1.0);

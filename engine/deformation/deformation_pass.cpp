@@ -4,6 +4,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "engine/vulkan/pipelines.hpp"
 #include "engine/vulkan/vk_check.hpp"
 #include "engine/vulkan/vulkan_context.hpp"
 #include "spirv/deform_comp.h"
@@ -42,32 +43,14 @@ double similarity_scale(const glm::dmat4& m) {
 }  // namespace
 
 DeformationPass::DeformationPass(const VulkanContext& context) : context_(context), device_(context.device()) {
-  std::array<VkDescriptorSetLayoutBinding, 4> bindings{{
-      {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-      {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-      {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-      {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-  }};
-  VkDescriptorSetLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  layout_info.bindingCount = uint32_t(bindings.size());
-  layout_info.pBindings = bindings.data();
-  VK_CHECK(vkCreateDescriptorSetLayout(device_, &layout_info, nullptr, &set_layout_));
-  VkPipelineLayoutCreateInfo pipeline_layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  pipeline_layout_info.setLayoutCount = 1;
-  pipeline_layout_info.pSetLayouts = &set_layout_;
-  VK_CHECK(vkCreatePipelineLayout(device_, &pipeline_layout_info, nullptr, &pipeline_layout_));
-
-  VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  module_info.codeSize = sizeof(deform_comp_spv);
-  module_info.pCode = deform_comp_spv;
-  VkShaderModule module;
-  VK_CHECK(vkCreateShaderModule(device_, &module_info, nullptr, &module));
-  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-  info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_COMPUTE_BIT, module, "main", nullptr};
-  info.layout = pipeline_layout_;
-  VkResult r = vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_);
-  vkDestroyShaderModule(device_, module, nullptr);
-  vk_check(r, "vkCreateComputePipelines");
+  set_layout_ = descriptor_set_layout(device_, {
+                                                  {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+                                                  {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+                                                  {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+                                                  {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+                                              });
+  pipeline_layout_ = single_set_pipeline_layout(device_, set_layout_);
+  pipeline_ = compute_pipeline(device_, pipeline_layout_, deform_comp_spv, sizeof(deform_comp_spv));
 }
 
 DeformationPass::~DeformationPass() {

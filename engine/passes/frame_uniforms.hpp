@@ -14,12 +14,14 @@ struct FrameUniforms {
   glm::vec4 light_direction[kMaxDirectionalLights];
   glm::vec4 light_radiance[kMaxDirectionalLights];
   glm::ivec4 light_count;
+  glm::vec4 section_plane;  // xyz the unit normal, w its offset: n·x + w > 0 is cut away
+  glm::ivec4 section;       // x: 0 none, 1 cut, 2 translucent
 };
-static_assert(sizeof(FrameUniforms) == 64 + 16 + 16 + 64 + 64 + 16, "std140 layout of Frame");
+static_assert(sizeof(FrameUniforms) == 64 + 16 + 16 + 64 + 64 + 16 + 32, "std140 layout of Frame");
 
 struct DrawPushConstants {
   glm::mat4 model;
-  glm::vec4 normal_matrix[3];  // std430 mat3: three columns, each padded to 16 bytes
+  glm::vec4 normal_matrix[3];  // std430 mat3's three columns; the first's w: 1 when the section cuts this draw
 };
 static_assert(sizeof(DrawPushConstants) == 112, "push-constant layout of Draw (at most 128)");
 

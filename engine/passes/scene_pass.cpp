@@ -8,6 +8,7 @@
 #include "engine/passes/frame_uniforms.hpp"
 #include "engine/passes/level_of_detail.hpp"
 #include "engine/screen_projection.hpp"
+#include "engine/vulkan/pipelines.hpp"
 #include "engine/vulkan/vk_check.hpp"
 #include "engine/vulkan/vulkan_context.hpp"
 #include "spirv/mesh_frag.h"
@@ -43,15 +44,6 @@ double lap_ms(Clock::time_point& since) {
 constexpr VkPipelineStageFlags kSelfStages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
 constexpr VkAccessFlags kSelfSrcAccess = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
 constexpr VkAccessFlags kSelfDstAccess = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-
-VkShaderModule make_shader(VkDevice device, const uint32_t* code, size_t bytes) {
-  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  info.codeSize = bytes;
-  info.pCode = code;
-  VkShaderModule module;
-  VK_CHECK(vkCreateShaderModule(device, &info, nullptr, &module));
-  return module;
-}
 
 }  // namespace
 
@@ -211,8 +203,8 @@ void ScenePass::create_layouts_and_sampler() {
 }
 
 void ScenePass::create_pipelines() {
-  VkShaderModule vert = make_shader(device_, mesh_vert_spv, sizeof(mesh_vert_spv));
-  VkShaderModule frag = make_shader(device_, mesh_frag_spv, sizeof(mesh_frag_spv));
+  VkShaderModule vert = shader_module(device_, mesh_vert_spv, sizeof(mesh_vert_spv));
+  VkShaderModule frag = shader_module(device_, mesh_frag_spv, sizeof(mesh_frag_spv));
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
   stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vert, "main", nullptr};
   stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, frag, "main", nullptr};
@@ -232,9 +224,6 @@ void ScenePass::create_pipelines() {
 
   VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
   assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-  viewport.viewportCount = 1;
-  viewport.scissorCount = 1;
   VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
   raster.polygonMode = VK_POLYGON_MODE_FILL;
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;  // glTF winding; the viewport flips y, not the winding
@@ -247,27 +236,8 @@ void ScenePass::create_pipelines() {
   VkPipelineColorBlendAttachmentState blend_attachment{};
   blend_attachment.colorWriteMask =
       VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-  VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-  blend.attachmentCount = 1;
-  blend.pAttachments = &blend_attachment;
-  std::array<VkDynamicState, 2> dynamic_states{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-  dynamic.dynamicStateCount = uint32_t(dynamic_states.size());
-  dynamic.pDynamicStates = dynamic_states.data();
-
-  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-  info.stageCount = uint32_t(stages.size());
-  info.pStages = stages.data();
-  info.pVertexInputState = &vertex_input;
-  info.pInputAssemblyState = &assembly;
-  info.pViewportState = &viewport;
-  info.pRasterizationState = &raster;
-  info.pMultisampleState = &multisample;
-  info.pDepthStencilState = &depth;
-  info.pColorBlendState = &blend;
-  info.pDynamicState = &dynamic;
-  info.layout = pipeline_layout_;
-  info.renderPass = render_pass_;
+  const GraphicsPipelineStates states{{stages.begin(), stages.end()}, &vertex_input, &assembly, &raster, &multisample,
+                                      &depth, &blend_attachment, pipeline_layout_, render_pass_};
 
   for (int blended = 0; blended < 2; ++blended) {
     for (int double_sided = 0; double_sided < 2; ++double_sided) {
@@ -280,7 +250,7 @@ void ScenePass::create_pipelines() {
       blend_attachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
       blend_attachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
       blend_attachment.alphaBlendOp = VK_BLEND_OP_ADD;
-      VkResult r = vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipelines_[blended][double_sided]);
+      VkResult r = create_graphics_pipeline(device_, states, &pipelines_[blended][double_sided]);
       if (r != VK_SUCCESS) {
         vkDestroyShaderModule(device_, vert, nullptr);
         vkDestroyShaderModule(device_, frag, nullptr);
@@ -392,6 +362,11 @@ void ScenePass::fill_uniforms(FrameSlot& slot, VkExtent2D extent, const FramePar
     u.light_radiance[i] = glm::vec4(l.color * l.intensity, 0.0f);
   }
   u.light_count = glm::ivec4(int(count), 0, 0, 0);
+  if (params.section) {
+    const glm::vec3 n = glm::normalize(params.section->normal);
+    u.section_plane = glm::vec4(n, -glm::dot(n, params.section->point));
+    u.section = glm::ivec4(params.section->mode == Section::Mode::Cut ? 1 : 2, 0, 0, 0);
+  }
   std::memcpy(slot.uniforms.mapped(), &u, sizeof u);
 }
 
@@ -527,7 +502,10 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
     glm::mat4 transform;
     float depth;  // distance from the camera, for back-to-front blending
     std::vector<IndexRange> ranges;  // of the primitive's indices
+    bool sectioned;
   };
+  // A cut shows the inside of what it cuts: its back faces are drawn, so none are culled.
+  const bool cut = params.section && params.section->mode == Section::Mode::Cut;
   std::vector<Draw> opaque, blended;
   for (const DrawItem& item : params.items) {
     for (const MeshInstance& instance : item.model->instances()) {
@@ -538,11 +516,12 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
       float depth = glm::length(glm::vec3(transform[3]) - params.camera.position);
       const GpuLevel& level = p.levels[level_of_detail_ ? level_to_draw(p, transform, params.camera, target.extent()) : 0];
       if (level.index_count == 0) continue;
-      std::vector<IndexRange> ranges = cull_chunks_ && !m.double_sided
+      const bool sectioned = params.section && item.sectioned;
+      std::vector<IndexRange> ranges = cull_chunks_ && !m.double_sided && !(cut && sectioned)
                                            ? visible_ranges(level.chunks, transform, params.camera.position, item.moved)
                                            : std::vector<IndexRange>{{level.first_index, level.index_count}};
       (m.alpha_mode == AlphaMode::Blend ? blended : opaque)
-          .push_back({item.model, instance.primitive, transform, depth, std::move(ranges)});
+          .push_back({item.model, instance.primitive, transform, depth, std::move(ranges), sectioned});
     }
   }
   std::sort(blended.begin(), blended.end(), [](const Draw& a, const Draw& b) { return a.depth > b.depth; });
@@ -574,7 +553,7 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
     for (const Draw& d : draws) {
       const GpuPrimitive& p = d.model->primitives()[d.primitive];
       const Material& m = d.model->material_of(d.primitive);
-      VkPipeline pipeline = pipelines_[blend][m.double_sided ? 1 : 0];
+      VkPipeline pipeline = pipelines_[blend][m.double_sided || (cut && d.sectioned) ? 1 : 0];
       if (pipeline != bound) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
         bound = pipeline;
@@ -586,6 +565,7 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
       // Inverse-transpose keeps normals perpendicular under non-uniform scale.
       glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(d.transform)));
       for (int c = 0; c < 3; ++c) push.normal_matrix[c] = glm::vec4(normal_matrix[c], 0.0f);
+      push.normal_matrix[0].w = d.sectioned ? 1.0f : 0.0f;
       vkCmdPushConstants(cmd, pipeline_layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
       VkDeviceSize offset = 0;
       VkBuffer vb = p.vertices.handle();

@@ -1,5 +1,7 @@
 #include "engine/scene_renderer.hpp"
 
+#include <cmath>
+
 #include "engine/gpu_device.hpp"
 #include "engine/render_target.hpp"
 #include "engine/passes/scene_pass.hpp"
@@ -24,5 +26,26 @@ size_t SceneRenderer::triangles_drawn() const { return pass_->triangles_drawn();
 void SceneRenderer::set_device_timings(bool on) { pass_->set_device_timings(on); }
 
 const FrameCost& SceneRenderer::frame_cost() const { return pass_->frame_cost(); }
+
+Section section_through_needle(const Camera& camera, const NeedleLoad* needle, Section::Mode mode) {
+  Section section;
+  section.mode = mode;
+  if (needle == nullptr || needle->contact == NeedleContact::Free) {
+    section.point = camera.target;
+    const glm::vec3 view = camera.position - camera.target;
+    section.normal = glm::length(view) > 0.0f ? glm::normalize(view) : glm::vec3(0.0f, -1.0f, 0.0f);
+    return section;
+  }
+  const glm::vec3 tip(needle->tip), axis = glm::normalize(glm::vec3(needle->axis));
+  // The camera's direction without its part along the axis: the plane holds the axis and faces the camera.
+  glm::vec3 n = camera.position - tip;
+  n -= glm::dot(n, axis) * axis;
+  if (glm::length(n) < 1e-6f) {  // looking down the needle: any plane through it
+    n = glm::cross(axis, std::abs(axis.z) < 0.9f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(1.0f, 0.0f, 0.0f));
+  }
+  section.point = tip;
+  section.normal = glm::normalize(n);
+  return section;
+}
 
 }  // namespace needle::engine

@@ -84,10 +84,11 @@ void GpuScene::set_asset_transform(size_t asset, const glm::mat4& transform) { t
 const Bounds& GpuScene::model_bounds(size_t asset) const { return models_[model_of_asset_[asset]]->world_bounds(); }
 
 FrameParams GpuScene::frame_params(const NeedleLoad* needle) {
-  FrameParams params{scene_.camera, scene_.lights, scene_.background, {}, {}, {}};
+  FrameParams params{scene_.camera, scene_.lights, scene_.background, {}, {}, {}, {}};
   for (size_t i = 0; i < scene_.assets.size(); ++i) {
     bool posed = needle && scene_.assets[i].role == AssetRole::Tool;
-    params.items.push_back({models_[model_of_asset_[i]].get(), posed ? needle_pose(needle->tip, needle->axis) : transforms_[i]});
+    params.items.push_back({models_[model_of_asset_[i]].get(), posed ? needle_pose(needle->tip, needle->axis) : transforms_[i],
+                            {}, scene_.assets[i].role == AssetRole::Tissue});
   }
   const NeedleLoad free_needle;
   std::vector<std::function<void(VkCommandBuffer)>> passes;

@@ -43,6 +43,8 @@ class ImplicitSurface {
       : ImplicitSurface(std::span<const SurfacePrimitive>(primitives.begin(), primitives.size()), combine) {}
 
   bool empty() const { return count_ == 0; }
+  std::span<const SurfacePrimitive> primitives() const { return {primitives_.data(), size_t(count_)}; }
+  Combine combine() const { return combine_; }
   // The sample of the primitive that decides the combination (min for union, max for intersection).
   SurfaceSample evaluate(const Eigen::Vector3d& x) const;
 

@@ -13,12 +13,19 @@ namespace {
 
 using nlohmann::json;
 
-// The keys of a layer's mechanics (every number, and "rigid") after `first`.
+// The keys of a layer's parameters (every mechanical number, "rigid" and "ultrasound") after `first`.
 std::vector<const char*> with_mechanics_keys(std::vector<const char*> first) {
-  for (const MechanicsField& f : kMechanicsFields) first.push_back(f.key);
+  for (const auto& f : kMechanicsFields) first.push_back(f.key);
   first.push_back("rigid");
+  first.push_back("ultrasound");
   return first;
 }
+
+// A layer's parameters: its mechanics and, when given, what it is to ultrasound.
+struct LayerParameters {
+  LayerMechanics mechanics;
+  std::optional<LayerAcoustics> acoustics;
+};
 
 // A layer's mechanical parameters: inline in a scenario (each a number, or {value, source}) or a
 // parameter set file (assets/tissues/*.json), where every parameter is {value, source} and the
@@ -30,7 +37,7 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
   // `references` is the file's references object, or nullptr inline (sources optional there).
   LayerMechanics mechanics(const json& j, const std::string& at, const json* references) {
     LayerMechanics m;
-    for (const MechanicsField& f : kMechanicsFields)
+    for (const auto& f : kMechanicsFields)
       if (j.contains(f.key)) m.*f.member = non_negative(value(j[f.key], at + "/" + f.key, references), pointer_to(at, f.key, j[f.key]));
     if (j.contains("rigid")) {
       const json& rigid = value(j["rigid"], at + "/rigid", references);
@@ -41,7 +48,22 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
     return m;
   }
 
-  LayerMechanics parameter_set(const json& j) {
+  // The `ultrasound` block, when there is one: every key of kAcousticsFields, numbers as above.
+  std::optional<LayerAcoustics> acoustics(const json& j, const std::string& at, const json* references) {
+    if (!j.contains("ultrasound")) return std::nullopt;
+    const json& u = j["ultrasound"];
+    const std::string where = at + "/ultrasound";
+    std::vector<const char*> keys;
+    for (const auto& f : kAcousticsFields) keys.push_back(f.key);
+    object(u, where, keys);
+    LayerAcoustics a;
+    for (const auto& f : kAcousticsFields)
+      a.*f.member = number(value(member(u, where, f.key), where + "/" + f.key, references), pointer_to(where, f.key, u[f.key]));
+    if (const auto problem = acoustics_problem(a)) fail(pointer_to(where, problem->key, u[problem->key]), problem->what);
+    return a;
+  }
+
+  LayerParameters parameter_set(const json& j) {
     object(j, "", with_mechanics_keys({"tissue", "description", "references"}));
     string(member(j, "", "tissue"), "/tissue");
     string(member(j, "", "description"), "/description");
@@ -52,13 +74,13 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
                                                     : std::vector<const char*>{"stiffness_N_per_m", "puncture_force_N", "cutting_force_N",
                                                                                "friction_N_per_m", "static_friction_N_per_m"};
     for (const char* key : required) member(j, "", key);
-    const LayerMechanics m = mechanics(j, "", &references);
+    const LayerParameters p{mechanics(j, "", &references), acoustics(j, "", &references)};
     for (const auto& [key, text] : references.items()) {
       string(text, "/references/" + key);
       if (std::none_of(sources_.begin(), sources_.end(), [&](const std::string& s) { return s.find(key) != std::string::npos; }))
         fail("/references/" + key, "not cited by any parameter's source");
     }
-    return m;
+    return p;
   }
 
  private:
@@ -216,13 +238,17 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     object(l, at, with_mechanics_keys({"name", "shape", "parameters"}));
     TissueLayer layer{string(member(l, at, "name"), at + "/name"), layer_shape(member(l, at, "shape"), at + "/shape", base), {}};
     if (!l.contains("parameters")) {
-      layer.mechanics = MechanicsReader(file_).mechanics(l, at, nullptr);
+      MechanicsReader inline_reader(file_);
+      layer.mechanics = inline_reader.mechanics(l, at, nullptr);
+      layer.acoustics = inline_reader.acoustics(l, at, nullptr);
       return layer;
     }
     for (const char* key : with_mechanics_keys({}))
       if (l.contains(key)) fail(at + "/" + key, "given beside \"parameters\": a layer's parameters come from the file or inline, not both");
     const std::string set = existing_file(l["parameters"], at + "/parameters", folder_).string();
-    layer.mechanics = MechanicsReader(set).parameter_set(io::read_json_file<ScenarioError>(set));
+    const LayerParameters p = MechanicsReader(set).parameter_set(io::read_json_file<ScenarioError>(set));
+    layer.mechanics = p.mechanics;
+    layer.acoustics = p.acoustics;
     return layer;
   }
 

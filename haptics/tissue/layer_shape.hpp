@@ -38,6 +38,8 @@ class LayerShape {
   SurfaceSample evaluate(const Eigen::Vector3d& x) const { return surface_.evaluate(x); }
   bool contains(const Eigen::Vector3d& x) const { return surface_.evaluate(x).phi < 0.0; }
   const Aabb& bounds() const { return bounds_; }
+  // The shape as primitives (slab and box: the intersection of their half-spaces).
+  const ImplicitSurface& surface() const { return surface_; }
 
   struct SlabPlanes {  // the slab {x : lo ≤ n·x ≤ hi}
     Eigen::Vector3d normal;

@@ -6,7 +6,7 @@
 namespace needle::haptics {
 
 std::optional<MechanicsProblem> mechanics_problem(const LayerMechanics& m) {
-  for (const MechanicsField& f : kMechanicsFields) {
+  for (const auto& f : kMechanicsFields) {
     const double value = m.*f.member;
     if (!(value >= 0.0) || !std::isfinite(value)) return MechanicsProblem{f.key, "must be a finite number >= 0"};
     if (m.rigid && value != 0.0)
@@ -19,6 +19,17 @@ std::optional<MechanicsProblem> mechanics_problem(const LayerMechanics& m) {
   if (m.static_friction_N_per_m < m.friction_N_per_m)
     return MechanicsProblem{"static_friction_N_per_m",
                             "must be >= friction_N_per_m (the stick limit is at least the slip force)"};
+  return std::nullopt;
+}
+
+std::optional<MechanicsProblem> acoustics_problem(const LayerAcoustics& a) {
+  for (const auto& f : kAcousticsFields)
+    if (!std::isfinite(a.*f.member)) return MechanicsProblem{f.key, "must be a finite number"};
+  if (!(a.impedance_MRayl > 0.0)) return MechanicsProblem{"impedance_MRayl", "must be > 0"};
+  if (!(a.attenuation_dB_per_cm_MHz >= 0.0)) return MechanicsProblem{"attenuation_dB_per_cm_MHz", "must be >= 0"};
+  if (!(a.echogenicity >= 0.0 && a.echogenicity <= 1.0)) return MechanicsProblem{"echogenicity", "must be in [0, 1]"};
+  if (!(a.scatterer_density > 0.0 && a.scatterer_density <= 1.0))
+    return MechanicsProblem{"scatterer_density", "must be in (0, 1]"};
   return std::nullopt;
 }
 
@@ -35,6 +46,8 @@ TissueModel::TissueModel(std::vector<TissueLayer> layers, StickParams stick)
       if (layers_[size_t(k)].name == l.name)
         throw TissueLayerError(i, "name", "\"" + l.name + "\" names an earlier layer too");
     if (const auto p = mechanics_problem(l.mechanics)) throw TissueLayerError(i, p->key, p->what);
+    if (l.acoustics)
+      if (const auto p = acoustics_problem(*l.acoustics)) throw TissueLayerError(i, std::string("ultrasound/") + p->key, p->what);
     shapes.push_back(l.shape);
   }
   if (const auto c = find_layer_conflict(shapes))

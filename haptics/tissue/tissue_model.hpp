@@ -25,12 +25,14 @@ struct LayerMechanics {
   bool rigid = false;                    // bone: never punctured, every other number zero
 };
 
-// The numeric parameters by their keys in scenario and parameter set files, in file order.
-struct MechanicsField {
+// A numeric parameter of `Set` by its key in scenario and parameter set files.
+template <class Set>
+struct ParameterField {
   const char* key;
-  double LayerMechanics::*member;
+  double Set::*member;
 };
-inline constexpr MechanicsField kMechanicsFields[] = {
+// The mechanical parameters, in file order.
+inline constexpr ParameterField<LayerMechanics> kMechanicsFields[] = {
     {"stiffness_N_per_m", &LayerMechanics::stiffness_N_per_m},
     {"stiffness2_N_per_m2", &LayerMechanics::stiffness2_N_per_m2},
     {"puncture_force_N", &LayerMechanics::puncture_force_N},
@@ -46,10 +48,29 @@ struct MechanicsProblem {
 };
 std::optional<MechanicsProblem> mechanics_problem(const LayerMechanics& m);
 
+// What a layer is to ultrasound (the simulated image, docs/RENDERING.md "Ultrasound"); the
+// physics does not use it. Absent, the image takes a generic soft tissue.
+struct LayerAcoustics {
+  double impedance_MRayl = 0.0;            // > 0: the interfaces' reflection
+  double attenuation_dB_per_cm_MHz = 0.0;  // ≥ 0, one way
+  double echogenicity = 0.0;               // mean backscatter amplitude, 0 (anechoic) to 1
+  double scatterer_density = 0.0;          // share of scatterer cells that hold one, (0, 1]
+};
+
+inline constexpr ParameterField<LayerAcoustics> kAcousticsFields[] = {
+    {"impedance_MRayl", &LayerAcoustics::impedance_MRayl},
+    {"attenuation_dB_per_cm_MHz", &LayerAcoustics::attenuation_dB_per_cm_MHz},
+    {"echogenicity", &LayerAcoustics::echogenicity},
+    {"scatterer_density", &LayerAcoustics::scatterer_density}};
+
+// The parameter at fault and why, or nothing when every number is in its range.
+std::optional<MechanicsProblem> acoustics_problem(const LayerAcoustics& a);
+
 struct TissueLayer {
   std::string name;
   LayerShape shape;
   LayerMechanics mechanics;
+  std::optional<LayerAcoustics> acoustics = std::nullopt;
 };
 
 // The tissue's grip on the shaft while it sticks (Karnopp's band) is elastic: a spring of this

@@ -33,7 +33,7 @@ TEST_P(ScriptedSessions, GoodPassesAndOutscoresSloppyWhichFails) {
   std::cout << GetParam() << " good: " << report(good.result) << "\n" << GetParam() << " sloppy: " << report(sloppy.result) << "\n";
 }
 
-INSTANTIATE_TEST_SUITE_P(ShippedTasks, ScriptedSessions, testing::Values("rigid_sphere", "penetrable_sphere"));
+INSTANTIATE_TEST_SUITE_P(ShippedTasks, ScriptedSessions, testing::Values("rigid_sphere", "penetrable_sphere", "sphere_ultrasound"));
 
 }  // namespace
 }  // namespace needle::test

@@ -90,7 +90,10 @@ TEST(TissueFiles, EveryParameterSetLoadsAndEveryNumberCarriesItsSource) {
   int sets = 0;
   for (const auto& entry : fs::directory_iterator(test::asset("assets/tissues"))) {
     const json set = read(entry.path().string());
-    for (const auto& [key, value] : set.items()) {
+    json numbers = set;
+    numbers.erase("ultrasound");
+    numbers.update(set["ultrasound"]);  // what the set is to ultrasound: every number with its source too
+    for (const auto& [key, value] : numbers.items()) {
       if (key == "tissue" || key == "description" || key == "references") continue;
       ASSERT_TRUE(value.is_object()) << entry.path() << " " << key;
       const std::string source = value["source"].get<std::string>();
@@ -101,6 +104,9 @@ TEST(TissueFiles, EveryParameterSetLoadsAndEveryNumberCarriesItsSource) {
     const json tissue = {
         {"layers", {{{"name", "x"}, {"shape", slab(0.05, 0.01)}, {"parameters", entry.path().string()}}}}};
     EXPECT_EQ(error_of(scenario_with_tissue(tissue)), "no error") << entry.path();
+    const LayerAcoustics acoustics = load_scenario(scenario_with_tissue(tissue)).tissue.layer(0).acoustics.value();
+    EXPECT_EQ(acoustics.impedance_MRayl, set["ultrasound"]["impedance_MRayl"]["value"].get<double>()) << entry.path();
+    EXPECT_EQ(acoustics.echogenicity, set["ultrasound"]["echogenicity"]["value"].get<double>()) << entry.path();
     ++sets;
   }
   EXPECT_GE(sets, 8);  // skin, fat, muscle, ligament, flavum, dura, liver, bone at least
@@ -110,7 +116,7 @@ TEST(TissueFiles, TheSingleSurfaceFormIsOneLayerWithEveryParameterZero) {
   const Scenario s = load_scenario(test::asset("assets/scenarios/nonholonomic_needle.json"));
   ASSERT_EQ(s.tissue.layer_count(), 1);
   const LayerMechanics& m = s.tissue.layer(0).mechanics;
-  for (const MechanicsField& f : kMechanicsFields) EXPECT_EQ(m.*f.member, 0.0) << f.key;
+  for (const auto& f : kMechanicsFields) EXPECT_EQ(m.*f.member, 0.0) << f.key;
   EXPECT_FALSE(m.rigid);
   // Same region as the closed loop's tissue: the thesis's sphere, r = 0.1 m at (0.4, 0, 0).
   for (const Vector3d& x :
@@ -232,6 +238,34 @@ TEST(TissueFiles, BadParameterSetsAreErrorsInTheirOwnFile) {
       "/puncture_force_N/value: needs stiffness_N_per_m or stiffness2_N_per_m2 > 0 (a surface without stiffness never "
       "reaches it)");
   EXPECT_EQ(error_in_set([](json& s) { s["colour"] = "pink"; }).substr(0, 20), "/colour: unknown key");
+  EXPECT_EQ(error_in_set([](json& s) { s["ultrasound"]["echogenicity"]["value"] = 1.5; }),
+            "/ultrasound/echogenicity/value: must be in [0, 1]");
+  EXPECT_EQ(error_in_set([](json& s) { s["ultrasound"]["impedance_MRayl"] = 1.99; }),
+            "/ultrasound/impedance_MRayl: expected {\"value\": ..., \"source\": \"...\"}: every number in a parameter "
+            "set carries its source");
+  EXPECT_EQ(error_in_set([](json& s) { s["ultrasound"].erase("scatterer_density"); }), "/ultrasound/scatterer_density: missing");
+  EXPECT_EQ(error_in_set([](json& s) { s["ultrasound"]["attenuation_dB_per_cm_MHz"]["source"] = "duck1990: p. 99"; }),
+            "/ultrasound/attenuation_dB_per_cm_MHz/source: cites \"duck1990\", which is not in /references");
+}
+
+TEST(TissueFiles, UltrasoundParametersInlineOrFromTheSetNotBoth) {
+  json t = two_slabs();
+  t["layers"][1]["ultrasound"] = {{"impedance_MRayl", 1.39}, {"attenuation_dB_per_cm_MHz", 0.63},
+                                  {"echogenicity", 0.25}, {"scatterer_density", 0.5}};
+  const Scenario s = load_scenario(scenario_with_tissue(t));
+  EXPECT_FALSE(s.tissue.layer(0).acoustics.has_value());  // the image takes a generic soft tissue
+  ASSERT_TRUE(s.tissue.layer(1).acoustics.has_value());
+  EXPECT_EQ(s.tissue.layer(1).acoustics->scatterer_density, 0.5);
+
+  t["layers"][1]["ultrasound"]["scatterer_density"] = 0.0;
+  EXPECT_EQ(error_of(scenario_with_tissue(t)), "/tissue/layers/1/ultrasound/scatterer_density: must be in (0, 1]");
+  t["layers"][1]["ultrasound"].erase("scatterer_density");
+  t["layers"][1]["parameters"] = test::asset("assets/tissues/subcutaneous_fat.json");
+  t["layers"][1].erase("friction_N_per_m");
+  t["layers"][1].erase("static_friction_N_per_m");
+  EXPECT_EQ(error_of(scenario_with_tissue(t)),
+            "/tissue/layers/1/ultrasound: given beside \"parameters\": a layer's parameters come from the file or inline, "
+            "not both");
 }
 
 }  // namespace

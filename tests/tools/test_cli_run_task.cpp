@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_process.hpp"
+#include "tests/engine/image_compare.hpp"
 #include "training/sessions/session_store.hpp"
 #include "tests/support/test_paths.hpp"
 
@@ -33,12 +34,73 @@ TEST(CliRunTask, GoodOperatorPassesAndEverythingIsWritten) {
   for (const char* picture : {"final.png", "score_panel.png", "step_1_approach.png"}) {
     EXPECT_TRUE(fs::is_regular_file(dir / picture)) << picture;
   }
+  // The task has no ultrasound probe: no ultrasound image is made.
+  for (const auto& entry : fs::directory_iterator(dir)) EXPECT_NE(entry.path().filename().string().rfind("ultrasound", 0), 0u) << entry.path();
   training::SessionStore store(dir / "sessions.db");
   std::vector<training::SessionInfo> sessions = store.sessions();
   ASSERT_EQ(sessions.size(), 1u);
   EXPECT_TRUE(sessions[0].complete);
   EXPECT_EQ(sessions[0].trainee, "ana");
   EXPECT_DOUBLE_EQ(sessions[0].score, score["score"].get<double>());
+}
+
+// Grey speckle (R = G = B, brighter than the panels' grey) in a share of a picture's rectangle.
+double speckle_share(const engine::RgbaImage& image, uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1) {
+  size_t speckle = 0, pixels = 0;
+  for (uint32_t y = y0; y < y1; ++y)
+    for (uint32_t x = x0; x < x1; ++x) {
+      const uint8_t* p = &image.pixels[(size_t(y) * image.width + x) * 4];
+      ++pixels;
+      speckle += p[0] == p[1] && p[1] == p[2] && p[0] > 60;
+    }
+  return double(speckle) / double(pixels);
+}
+
+// A task with an ultrasound probe writes the probe's image beside each step's picture, at the
+// probe's proportions: in the insert step the needle lies in the image plane, a bright line. The
+// instructor's review replays the session with the image at the scrubbed time (the end: the
+// needle withdrawn), top right of the 3D view.
+TEST(CliRunTask, AnUltrasoundTaskWritesTheProbesImageAtEachStep) {
+  const fs::path dir = test_output_dir("cli_run_task") / "ultrasound";
+  fs::remove_all(dir);
+  ProcessResult r = run_needle_sim("run --headless --size 320x240 --task " + quoted(source_dir() / "assets/tasks/sphere_ultrasound.json") +
+                                   " --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  for (const char* picture : {"ultrasound_step_1.png", "ultrasound_step_2.png", "ultrasound_step_3.png", "ultrasound_final.png"}) {
+    ASSERT_TRUE(fs::is_regular_file(dir / picture)) << picture;
+  }
+  const engine::RgbaImage insert = engine::read_png(dir / "ultrasound_step_2.png");
+  EXPECT_EQ(insert.height, 512u);  // the image's samples; 50 mm wide by 50 mm deep
+  EXPECT_EQ(insert.width, 512u);
+  EXPECT_TRUE(matches_golden(insert, "ultrasound_sphere_task_insert"));
+
+  const fs::path shot = dir / "review.png";
+  r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1280x800x24' " + test::needle_sim_exe().string() +
+                  " review --size 1200x700 --frames 4 --screenshot " + quoted(shot) + " --session 1 --db " +
+                  quoted(dir / "sessions.db"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  const engine::RgbaImage review = engine::read_png(shot);
+  // The image: 0.45 of the height (315 px square) under the window's title, from the right edge.
+  EXPECT_GT(speckle_share(review, 1200 - 300, 100, 1200 - 40, 300), 0.3);
+}
+
+// In the window, a task with a probe opens the ultrasound window beside the 3D view: its image
+// (grey speckle, R = G = B) fills the room the window keeps on the left; validation-clean.
+TEST(CliRunTask, TheWindowShowsTheUltrasoundImageBesideTheView) {
+  const fs::path dir = test_output_dir("cli_run_task") / "ultrasound_window";
+  fs::remove_all(dir);
+  const fs::path shot = dir / "window.png";
+  ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' " + test::needle_sim_exe().string() +
+                                " run --task " + quoted(source_dir() / "assets/tasks/sphere_ultrasound.json") +
+                                " --size 640x480 --frames 4 --screenshot " + quoted(shot) + " --out " + quoted(dir) + " --db " +
+                                quoted(dir / "sessions.db"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  const engine::RgbaImage image = engine::read_png(shot);
+  // The left third, rows 30 % to 70 %: the image's middle (0.45 of the height, at half height).
+  EXPECT_GT(speckle_share(image, 20, image.height * 3 / 10, image.width / 3, image.height * 7 / 10), 1.0 / 3.0);
 }
 
 TEST(CliRunTask, SloppyOperatorFailsThePassMark) {
@@ -68,6 +130,7 @@ TEST(CliRunTask, UnknownOperatorAndDeviceAreClearErrors) {
   EXPECT_EQ(missing.exit_code, 1) << missing.output;
   EXPECT_NE(missing.output.find("/nonexistent/script.json"), std::string::npos) << missing.output;
   EXPECT_EQ(run_needle_sim("run --headless --device mouse").exit_code, 2);
+  EXPECT_EQ(run_needle_sim("run --headless --section sideways").exit_code, 2);
 }
 
 }  // namespace

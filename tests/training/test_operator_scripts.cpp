@@ -44,3 +44,20 @@ TEST(OperatorScriptFiles, AScriptWithoutWaypointsIsAnErrorNamingIt) {
 
 }  // namespace
 }  // namespace needle::training
+
+namespace needle::training {
+namespace {
+
+// The merged scenario is written to the run's folder: a layered tissue's parameter files, named
+// relative to the task's scenario, must still be found from there.
+TEST(OperatorScriptFiles, ALayeredScenariosParameterFilesAreFoundFromTheMergedCopy) {
+  Task task = load_task(kTasks / "penetrable_sphere.json");
+  task.scenario = test::source_dir() / "assets/scenarios/tissue_block_layers.json";
+  const haptics::Scenario merged =
+      scenario_with_operator(task, kTasks / "penetrable_sphere_good.json", kOutput / "layered" / "scenario.json");
+  ASSERT_EQ(merged.tissue.layers().size(), 4u);
+  EXPECT_EQ(merged.tissue.layers()[3].name, "bone");
+}
+
+}  // namespace
+}  // namespace needle::training

@@ -212,6 +212,44 @@ TEST(TaskFiles, WeightsAreNormalizedToOneHundred) {
   EXPECT_DOUBLE_EQ(t.scoring.weights.retries, 50.0);
 }
 
+json probe() {
+  return json::parse(R"({"probe": {"position": [0.33, 0, 0.07], "direction": [0, 0, -2], "lateral": [1, 0, 0],
+                                   "depth_m": 0.06, "frequency_MHz": 5}})");
+}
+
+TEST(TaskFiles, AnUltrasoundProbeLoadsAndWeighsTheNeedlesVisibility) {
+  json j = valid_task();
+  j["ultrasound"] = probe();
+  j["steps"][0]["tip_out_of_plane_max_s"] = 1.5;
+  const Task t = load_task(write_task(j, "probe"));
+  ASSERT_TRUE(t.ultrasound_probe.has_value());
+  EXPECT_EQ(t.ultrasound_probe->direction, (Vec3{0, 0, -1}));  // normalized
+  EXPECT_EQ(t.ultrasound_probe->depth_m, 0.06);
+  EXPECT_EQ(t.ultrasound_probe->width_m, 0.04);  // the default
+  EXPECT_EQ(t.steps[0].tip_out_of_plane_max_s, 1.5);
+  // The default 10 joins the other defaults' 100, and all are normalized to 100.
+  EXPECT_DOUBLE_EQ(t.scoring.weights.needle_visibility, 1000.0 / 110.0);
+  EXPECT_DOUBLE_EQ(t.scoring.weights.completion, 3000.0 / 110.0);
+  // Without a probe it weighs nothing and the others keep their defaults.
+  EXPECT_EQ(load_task(write_task(valid_task(), "no_probe")).scoring.weights.needle_visibility, 0.0);
+}
+
+TEST(TaskFiles, TheNeedlesVisibilityNeedsAProbe) {
+  json j = valid_task();
+  j["steps"][0]["tip_out_of_plane_max_s"] = 1.5;
+  expect_error(j, "rule_without_probe", "/steps/0/tip_out_of_plane_max_s", "needs the task's ultrasound probe");
+  j = valid_task();
+  j["scoring"] = {{"weights", {{"needle_visibility", 5}}}};
+  expect_error(j, "weight_without_probe", "/scoring/weights/needle_visibility", "needs the task's ultrasound probe");
+  j = valid_task();
+  j["ultrasound"] = probe();
+  j["ultrasound"]["probe"]["lateral"] = {1, 0, 0.1};
+  expect_error(j, "skewed_probe", "/ultrasound/probe/lateral", "must be perpendicular to direction");
+  j["ultrasound"]["probe"]["lateral"] = {1, 0, 0};
+  j["ultrasound"]["probe"]["slice_thickness_m"] = 0;
+  expect_error(j, "thin_slice", "/ultrasound/probe/slice_thickness_m", "");
+}
+
 TEST(TaskFiles, UnreadableAndMalformedFilesNameTheFile) {
   EXPECT_THROW(
       {

@@ -42,9 +42,10 @@ TEST(TraineeHistory, TraineesMostRecentFirstAndTheLastAndBestScorePerTask) {
 
 TEST(TaskCatalog, TheShippedTasksWithTheirTitlesAndDescriptionsAndNoScripts) {
   const std::vector<TaskEntry> tasks = find_tasks(test::source_dir() / "assets/tasks");
-  ASSERT_EQ(tasks.size(), 2u);
+  ASSERT_EQ(tasks.size(), 3u);
   EXPECT_EQ(tasks[0].name, "penetrable_sphere");
   EXPECT_EQ(tasks[1].name, "rigid_sphere");
+  EXPECT_EQ(tasks[2].name, "sphere_ultrasound");
   for (const TaskEntry& t : tasks) {
     EXPECT_TRUE(t.error.empty()) << t.error;
     EXPECT_FALSE(t.title.empty());

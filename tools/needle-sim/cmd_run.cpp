@@ -55,6 +55,11 @@ int run_run(ArgList& args) {
     options.window.frames = long(n);
   }
   options.window.screenshot = args.value("--screenshot");
+  if (auto section = args.value("--section")) {
+    if (*section == "cut") options.window.section = engine::Section::Mode::Cut;
+    else if (*section == "translucent") options.window.section = engine::Section::Mode::Translucent;
+    else throw UsageError("--section: expected cut or translucent, got '" + *section + "'");
+  }
   const bool headless = args.flag("--headless");
   options.window.hud = !args.flag("--no-hud");
   args.finish();
@@ -87,14 +92,14 @@ int run_run(ArgList& args) {
                      (headless ? " (drop --headless)" : " and there is no display"));
   }
   return window ? app::run_task_window(options.task, options.window)
-                : app::run_task_headless(options.task, options.window.size, options.window.msaa.value_or(4));
+                : app::run_task_headless(options.task, options.window.size, options.window.msaa.value_or(4), options.window.section);
 }
 
 const CommandRegistrar reg{
     {"run",
      "needle-sim run [--task FILE | --scene FILE] [--device sim|mouse|keyboard|gamepad[:N]|falcon[:N]|replay:FILE]\n"
      "               [--trainee NAME] [--db FILE] [--out DIR] [--headless] [--operator good|sloppy|FILE] [--rate HZ] [--firmware FILE]\n"
-     "               [--size WxH] [--msaa N] [--frames N] [--screenshot FILE] [--no-hud]\n"
+     "               [--size WxH] [--msaa N] [--frames N] [--screenshot FILE] [--no-hud] [--section cut|translucent]\n"
      "  --task FILE        guided task (default: assets/tasks/penetrable_sphere.json)\n"
      "  --scene FILE       show a scene instead, a scripted needle inserting into its first deformable tissue\n"
      "  --device SPEC      sim: the simulated master and a scripted operator (default); mouse, keyboard,\n"
@@ -111,7 +116,9 @@ const CommandRegistrar reg{
      "  --msaa N           MSAA samples (default 4; 1 in a window on a CPU device)\n"
      "  --frames N         window: close after N frames\n"
      "  --screenshot FILE  window: save frame N as presented (needs --frames)\n"
-     "  --no-hud           window: no panels",
+     "  --no-hud           window: no panels\n"
+     "  --section MODE     the tissue cut along the needle's plane (cut) or see-through (translucent), in the\n"
+     "                     pictures and at the window's start (there X cycles off, cut, translucent)",
      run_run}};
 
 }  // namespace

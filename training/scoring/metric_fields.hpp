@@ -19,6 +19,7 @@ void for_each_metric(M& m, F&& f) {
   f("path_length_m", m.path_length_m);
   f("ideal_path_m", m.ideal_path_m);
   f("normalized_jerk", m.normalized_jerk);
+  f("needle_visibility", m.needle_visibility);
   f("withdrawals", m.withdrawals);
   f("reinsertions", m.reinsertions);
   f("rigid_contacts", m.rigid_contacts);

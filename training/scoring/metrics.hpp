@@ -20,6 +20,7 @@ struct Metrics {
   double path_length_m = 0.0;                  // tip path
   double ideal_path_m = 0.0;                   // straight line, start to end
   double normalized_jerk = kNotApplicable;     // dimensionless, sqrt(T^5 / (2 L^2) * integral |jerk|^2)
+  double needle_visibility = kNotApplicable;   // share of the inserted needle in the ultrasound slice, time mean in tissue
   uint32_t withdrawals = 0;                    // tissue -> free
   uint32_t reinsertions = 0;                   // free -> tissue after a first insertion
   uint32_t rigid_contacts = 0;                 // entries into a rigid surface the step did not ask for

@@ -60,6 +60,7 @@ Metrics combine_metrics(const std::vector<StepResult>& steps) {
   m.axis_deviation_deg = mean_applicable(steps, [](const Metrics& x) { return x.axis_deviation_deg; });
   m.force_sd_N = mean_applicable(steps, [](const Metrics& x) { return x.force_sd_N; });
   m.normalized_jerk = mean_applicable(steps, [](const Metrics& x) { return x.normalized_jerk; });
+  m.needle_visibility = mean_applicable(steps, [](const Metrics& x) { return x.needle_visibility; });
   return m;
 }
 
@@ -82,6 +83,10 @@ Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& step
       {"time", m.duration_s <= r.time_s ? 1.0 : r.time_s / m.duration_s, w.time},
       {"retries", 1.0 / (1.0 + m.reinsertions + m.rigid_contacts), w.retries},
   };
+  // Only a task with an ultrasound probe weighs the needle's visibility (docs/SCORING.md).
+  if (w.needle_visibility > 0.0)
+    score.components.push_back({"needle_visibility", std::isnan(m.needle_visibility) ? 1.0 : m.needle_visibility,
+                                w.needle_visibility});
   for (const ScoreComponent& c : score.components) score.total += c.points();
   if (score.total < spec.pass_score)
     score.reasons_failed.push_back("score " + format(score.total) + " below the pass mark " + format(spec.pass_score));

@@ -34,6 +34,11 @@ ContactEvents SessionScorer::contact_events(const haptics::ToolSnapshot& s) {
   }
   if (was_rigid && s.contact != ContactState::kRigidSurface) rigid_left_s_ = t;
   e.fault = s.fault != 0 && fault_ == 0;
+  if (s.contact != ContactState::kTissue)
+    entry_.reset();
+  else if (!entry_)
+    entry_ = vec3(s.needle_tip_m);
+  e.entry = entry_ ? &*entry_ : nullptr;
   started_ = true;
   contact_ = s.contact;
   fault_ = s.fault;
@@ -48,7 +53,7 @@ void SessionScorer::feed(const haptics::TickSample& sample) {
   steps_[step].add(s, events);
   progress_.feed(s);
   // The state that ends a step also starts the next: its path begins where the last one ended.
-  if (!progress_.finished() && progress_.current_step() != step) steps_[progress_.current_step()].add(s, {});
+  if (!progress_.finished() && progress_.current_step() != step) steps_[progress_.current_step()].add(s, ContactEvents{.entry = events.entry});
 }
 
 SessionResult SessionScorer::result() const {

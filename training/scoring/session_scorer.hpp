@@ -2,6 +2,7 @@
 // it one TickSample at a time; it allocates nothing per sample after construction.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "haptics/realtime/tick_sample.hpp"
@@ -45,6 +46,7 @@ class SessionScorer {
   bool rigid_seen_ = false;
   double rigid_left_s_ = 0.0;
   uint32_t fault_ = 0;
+  std::optional<Vec3> entry_;  // the tip where the needle entered the tissue, while it is in
 };
 
 }  // namespace needle::training

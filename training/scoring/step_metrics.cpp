@@ -46,6 +46,15 @@ void StepMetricsAccumulator::add(const haptics::ToolSnapshot& state, const Conta
       force_m2_ += delta * (force - force_mean_);
     }
   }
+  // Trapezoids between consecutive states in tissue: a time mean of the share in the slice.
+  const bool in_tissue = events.entry != nullptr && task_.ultrasound_probe.has_value();
+  const double visible = in_tissue ? share_in_image_slice(*task_.ultrasound_probe, *events.entry, tip_) : 0.0;
+  if (in_tissue && in_tissue_prev_) {
+    visible_integral_s_ += 0.5 * (visible + visible_prev_) * dt;
+    tissue_time_s_ += dt;
+  }
+  in_tissue_prev_ = in_tissue;
+  visible_prev_ = visible;
   m_.withdrawals += events.withdrawal;
   m_.reinsertions += events.reinsertion;
   m_.rigid_contacts += events.rigid_entry && !planned_rigid_;
@@ -69,6 +78,7 @@ Metrics StepMetricsAccumulator::result() const {
     m.axis_deviation_deg = rad * 180.0 / std::numbers::pi;
   }
   if (force_n_ > 0) m.force_sd_N = std::sqrt(force_m2_ / double(force_n_));
+  if (tissue_time_s_ > 0.0) m.needle_visibility = visible_integral_s_ / tissue_time_s_;
   return m;
 }
 

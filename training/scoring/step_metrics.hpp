@@ -18,6 +18,7 @@ struct ContactEvents {
   bool reinsertion = false;  // free -> tissue after an earlier insertion
   bool rigid_entry = false;  // -> rigid surface
   bool fault = false;        // a fault latched on this state
+  const Vec3* entry = nullptr;  // while in tissue: where the needle entered it
 };
 
 class StepMetricsAccumulator {
@@ -42,6 +43,9 @@ class StepMetricsAccumulator {
   bool in_band_seen_ = false;
   long force_n_ = 0;
   double force_mean_ = 0.0, force_m2_ = 0.0;
+  // The needle's share in the ultrasound slice, integrated over the time in tissue.
+  double visible_integral_s_ = 0.0, tissue_time_s_ = 0.0, visible_prev_ = 0.0;
+  bool in_tissue_prev_ = false;
   Metrics m_;
   PathAccumulator path_;
 };

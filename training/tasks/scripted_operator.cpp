@@ -38,6 +38,14 @@ json task_scenario_json(const Task& task) {
       throw TaskError(task.scenario.string() + ": /" + key + ": expected the robot's URDF file");
     scenario[key] = fs::absolute(task.scenario.parent_path() / scenario[key].get<std::string>()).string();
   }
+  // A layered tissue's parameter files, relative to the scenario as well.
+  if (scenario.contains("tissue") && scenario["tissue"].is_object() && scenario["tissue"].contains("layers") &&
+      scenario["tissue"]["layers"].is_array()) {
+    for (json& layer : scenario["tissue"]["layers"]) {
+      if (layer.is_object() && layer.contains("parameters") && layer["parameters"].is_string())
+        layer["parameters"] = fs::absolute(task.scenario.parent_path() / layer["parameters"].get<std::string>()).string();
+    }
+  }
   return scenario;
 }
 

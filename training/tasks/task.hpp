@@ -4,10 +4,12 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "training/tasks/ultrasound_probe.hpp"
 #include "training/tasks/vec3.hpp"
 
 namespace needle::training {
@@ -67,13 +69,19 @@ struct Step {
   Condition condition;
   double time_limit_s = 0.0;        // 0: none
   double tip_fixed_within_m = 0.0;  // 0: the tip may move; else the step fails if it drifts further
+  // 0: no rule; else the step fails when the tip, in tissue, stays out of the ultrasound probe's
+  // imaged slice this long (the in-plane technique keeps it in view).
+  double tip_out_of_plane_max_s = 0.0;
   Guidance guidance;
 };
 
 // Component weights of the overall score (docs/SCORING.md); normalized to 100 on load.
+// needle_visibility counts only in tasks with an ultrasound probe: 10 by default there, before
+// the weights are normalized; 0 without one.
 struct ScoreWeights {
   double completion = 30, tip_error = 15, axis_deviation = 10, lateral_load = 10, peak_force = 10, force_steadiness = 5,
-         path_efficiency = 5, smoothness = 5, time = 5, retries = 5;
+         path_efficiency = 5, smoothness = 5, time = 5, retries = 5, needle_visibility = 0;
+  static constexpr double kDefaultNeedleVisibility = 10;
 };
 
 // References at which a component's score reaches 0 (or, for time, starts to drop).
@@ -104,6 +112,7 @@ struct Task {
   std::vector<Marker> markers;
   std::vector<Step> steps;
   ScoringSpec scoring;
+  std::optional<UltrasoundProbeSpec> ultrasound_probe;  // the task's probe, when it has one
 
   int marker_index(const std::string& name) const;  // -1 when absent
 };

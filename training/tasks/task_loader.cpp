@@ -20,7 +20,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
   TaskReader(std::string file, fs::path folder) : StrictJsonReader(std::move(file)), folder_(std::move(folder)) {}
 
   Task task(const json& root) {
-    object(root, "", {"name", "title", "description", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps", "scoring"});
+    object(root, "", {"name", "title", "description", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps", "scoring",
+                      "ultrasound"});
     Task t;
     t.source = file_;
     t.name = string(member(root, "", "name"), "/name");
@@ -42,6 +43,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
                         [&](const Marker& m) { return m.name == t.markers.back().name; }) > 1)
         fail(at + "/name", "\"" + t.markers.back().name + "\" is used twice");
     }
+    if (root.contains("ultrasound")) t.ultrasound_probe = ultrasound(root["ultrasound"], "/ultrasound");
     const json& steps = member(root, "", "steps");
     if (!steps.is_array() || steps.empty()) fail("/steps", "expected a non-empty array of steps");
     std::set<std::string> ids;
@@ -50,7 +52,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       t.steps.push_back(step(t, steps[i], at));
       if (!ids.insert(t.steps.back().id).second) fail(at + "/id", "\"" + t.steps.back().id + "\" is used twice");
     }
-    if (root.contains("scoring")) t.scoring = scoring(root["scoring"], "/scoring");
+    t.scoring = scoring(root.contains("scoring") ? root["scoring"] : json::object(), "/scoring", t.ultrasound_probe.has_value());
     return t;
   }
 
@@ -186,8 +188,35 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     return g;
   }
 
+  // {"probe": {position, direction, lateral, depth_m, width_m, frequency_MHz, slice_thickness_m}}.
+  UltrasoundProbeSpec ultrasound(const json& value, const std::string& at) const {
+    object(value, at, {"probe"});
+    const json& p = member(value, at, "probe");
+    const std::string where = at + "/probe";
+    object(p, where, {"position", "direction", "lateral", "depth_m", "width_m", "frequency_MHz", "slice_thickness_m"});
+    UltrasoundProbeSpec probe;
+    probe.position = vector(member(p, where, "position"), where + "/position");
+    probe.direction = unit(member(p, where, "direction"), where + "/direction");
+    probe.lateral = unit(member(p, where, "lateral"), where + "/lateral");
+    if (std::abs(dot(probe.direction, probe.lateral)) > 1e-6) fail(where + "/lateral", "must be perpendicular to direction");
+    const std::pair<const char*, double*> sizes[] = {{"depth_m", &probe.depth_m},
+                                                     {"width_m", &probe.width_m},
+                                                     {"frequency_MHz", &probe.frequency_MHz},
+                                                     {"slice_thickness_m", &probe.slice_thickness_m}};
+    for (const auto& [key, field] : sizes)
+      if (p.contains(key)) *field = positive(p[key], where + "/" + key);
+    return probe;
+  }
+
+  Vec3 unit(const json& value, const std::string& at) const {
+    const Vec3 v = vector(value, at);
+    if (norm(v) < 1e-9) fail(at, "must not be the zero vector");
+    return (1.0 / norm(v)) * v;
+  }
+
   Step step(const Task& t, const json& value, const std::string& at) const {
-    object(value, at, {"id", "instruction", "condition", "time_limit_s", "tip_fixed_within_m", "guidance"});
+    object(value, at, {"id", "instruction", "condition", "time_limit_s", "tip_fixed_within_m", "tip_out_of_plane_max_s",
+                       "guidance"});
     Step s;
     s.id = string(member(value, at, "id"), at + "/id");
     s.instruction = string(member(value, at, "instruction"), at + "/instruction");
@@ -195,28 +224,35 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     if (value.contains("time_limit_s")) s.time_limit_s = positive(value["time_limit_s"], at + "/time_limit_s");
     if (value.contains("tip_fixed_within_m"))
       s.tip_fixed_within_m = positive(value["tip_fixed_within_m"], at + "/tip_fixed_within_m");
+    if (value.contains("tip_out_of_plane_max_s")) {
+      if (!t.ultrasound_probe) fail(at + "/tip_out_of_plane_max_s", "needs the task's ultrasound probe (/ultrasound)");
+      s.tip_out_of_plane_max_s = positive(value["tip_out_of_plane_max_s"], at + "/tip_out_of_plane_max_s");
+    }
     if (value.contains("guidance")) s.guidance = guidance(t, s, value["guidance"], at + "/guidance");
     return s;
   }
 
-  ScoringSpec scoring(const json& value, const std::string& at) const {
+  ScoringSpec scoring(const json& value, const std::string& at, bool has_probe) const {
     object(value, at, {"safe_force_N", "pass_score", "weights", "references"});
     ScoringSpec s;
+    if (has_probe) s.weights.needle_visibility = ScoreWeights::kDefaultNeedleVisibility;
     if (value.contains("safe_force_N")) s.safe_force_N = positive(value["safe_force_N"], at + "/safe_force_N");
     if (value.contains("pass_score")) {
       s.pass_score = number(value["pass_score"], at + "/pass_score");
       if (s.pass_score < 0.0 || s.pass_score > 100.0) fail(at + "/pass_score", "must be in [0, 100]");
     }
-    if (value.contains("weights")) s.weights = weights(value["weights"], at + "/weights");
+    s.weights = weights(value.contains("weights") ? value["weights"] : json::object(), at + "/weights", s.weights);
     if (value.contains("references")) s.references = references(value["references"], at + "/references");
     return s;
   }
 
-  ScoreWeights weights(const json& value, const std::string& at) const {
+  // The file's weights over the defaults, normalized to add up to 100.
+  ScoreWeights weights(const json& value, const std::string& at, ScoreWeights w) const {
     object(value, at,
            {"completion", "tip_error", "axis_deviation", "lateral_load", "peak_force", "force_steadiness",
-            "path_efficiency", "smoothness", "time", "retries"});
-    ScoreWeights w;
+            "path_efficiency", "smoothness", "time", "retries", "needle_visibility"});
+    if (value.contains("needle_visibility") && w.needle_visibility == 0.0)
+      fail(at + "/needle_visibility", "needs the task's ultrasound probe (/ultrasound)");
     const std::pair<const char*, double*> fields[] = {{"completion", &w.completion},
                                                       {"tip_error", &w.tip_error},
                                                       {"axis_deviation", &w.axis_deviation},
@@ -226,7 +262,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
                                                       {"path_efficiency", &w.path_efficiency},
                                                       {"smoothness", &w.smoothness},
                                                       {"time", &w.time},
-                                                      {"retries", &w.retries}};
+                                                      {"retries", &w.retries},
+                                                      {"needle_visibility", &w.needle_visibility}};
     double total = 0.0;
     for (const auto& [key, field] : fields) {
       if (value.contains(key)) *field = non_negative(value[key], at + "/" + key);

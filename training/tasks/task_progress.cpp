@@ -18,13 +18,15 @@ const char* step_outcome_name(StepOutcome outcome) {
       return "timed_out";
     case StepOutcome::kTipMoved:
       return "tip_moved";
+    case StepOutcome::kTipLost:
+      return "tip_lost";
   }
   return "unknown";
 }
 
 bool step_outcome_from_name(const std::string& name, StepOutcome& outcome) {
   for (const StepOutcome o : {StepOutcome::kPending, StepOutcome::kActive, StepOutcome::kCompleted,
-                              StepOutcome::kTimedOut, StepOutcome::kTipMoved})
+                              StepOutcome::kTimedOut, StepOutcome::kTipMoved, StepOutcome::kTipLost})
     if (name == step_outcome_name(o)) {
       outcome = o;
       return true;
@@ -38,6 +40,7 @@ void TaskProgress::end_step(StepOutcome outcome, const haptics::ToolSnapshot& st
   records_[current_].outcome = outcome;
   records_[current_].end_s = state.time_s;
   held_since_s_ = std::numeric_limits<double>::quiet_NaN();
+  out_of_plane_since_s_ = std::numeric_limits<double>::quiet_NaN();
   if (++current_ < records_.size()) {
     records_[current_].outcome = StepOutcome::kActive;
     records_[current_].start_s = state.time_s;
@@ -60,11 +63,19 @@ void TaskProgress::feed(const haptics::ToolSnapshot& state) {
   } else {
     held_since_s_ = std::numeric_limits<double>::quiet_NaN();
   }
-  // Order of precedence on one state: success, then the tip rule, then the clock.
+  const bool out_of_plane = step.tip_out_of_plane_max_s > 0.0 && state.contact == haptics::ContactState::kTissue &&
+                            !in_image_slice(*task_.ultrasound_probe, vec3(state.needle_tip_m));
+  if (!out_of_plane)
+    out_of_plane_since_s_ = std::numeric_limits<double>::quiet_NaN();
+  else if (std::isnan(out_of_plane_since_s_))
+    out_of_plane_since_s_ = state.time_s;
+  // Order of precedence on one state: success, then the tip rules, then the clock.
   if (condition_met() && state.time_s - held_since_s_ >= step.condition.hold_s)
     end_step(StepOutcome::kCompleted, state);
   else if (step.tip_fixed_within_m > 0.0 && distance(vec3(state.needle_tip_m), tip_at_start_) > step.tip_fixed_within_m)
     end_step(StepOutcome::kTipMoved, state);
+  else if (out_of_plane && state.time_s - out_of_plane_since_s_ >= step.tip_out_of_plane_max_s)
+    end_step(StepOutcome::kTipLost, state);
   else if (step.time_limit_s > 0.0 && state.time_s - record.start_s >= step.time_limit_s)
     end_step(StepOutcome::kTimedOut, state);
 }

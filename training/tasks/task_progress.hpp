@@ -18,6 +18,7 @@ enum class StepOutcome {
   kCompleted,  // its condition held for its hold time
   kTimedOut,   // its time limit passed first
   kTipMoved,   // the tip drifted beyond tip_fixed_within_m first
+  kTipLost,    // the tip, in tissue, stayed out of the ultrasound slice for tip_out_of_plane_max_s first
 };
 
 const char* step_outcome_name(StepOutcome outcome);                          // "pending", "completed", ...
@@ -52,6 +53,7 @@ class TaskProgress {
   double held_since_s_ = std::numeric_limits<double>::quiet_NaN();
   double last_s_ = 0.0;
   Vec3 tip_at_start_{};
+  double out_of_plane_since_s_ = std::numeric_limits<double>::quiet_NaN();  // the tip in tissue, out of the slice
 };
 
 }  // namespace needle::training

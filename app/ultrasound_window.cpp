@@ -1,0 +1,81 @@
+#include "app/ultrasound_window.hpp"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace needle::app {
+namespace {
+
+constexpr double kStep_m = 0.001, kTurn_rad = 0.0872664626;  // a key press: 1 mm, 5°
+
+}  // namespace
+
+UltrasoundWindow::UltrasoundWindow(const engine::GpuDevice& device, const training::Task& task)
+    : device_(device), scene_(echo_scene(task)), plan_(task_probe(task, scene_)) {}
+
+UltrasoundWindow::~UltrasoundWindow() = default;
+
+engine::UltrasoundProbe UltrasoundWindow::probe(const engine::NeedleLoad& needle) const {
+  if (!plan_.follow_needle || needle.contact == engine::NeedleContact::Free) return plan_.probe;
+  const engine::UltrasoundProbe over = engine::probe_following(plan_.probe, needle);
+  return engine::probe_on_skin(scene_, over, over.position - 0.05 * over.direction);
+}
+
+void UltrasoundWindow::draw_panel(const engine::NeedleLoad& needle) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (!io.WantCaptureKeyboard && !plan_.follow_needle) {
+    engine::UltrasoundProbe& p = plan_.probe;
+    glm::dvec3 move(0.0);
+    if (ImGui::IsKeyPressed('J')) move -= kStep_m * p.lateral;
+    if (ImGui::IsKeyPressed('L')) move += kStep_m * p.lateral;
+    if (ImGui::IsKeyPressed('K')) move -= kStep_m * p.elevation();
+    if (ImGui::IsKeyPressed('I')) move += kStep_m * p.elevation();
+    double turn = 0.0;
+    if (ImGui::IsKeyPressed('[')) turn -= kTurn_rad;
+    if (ImGui::IsKeyPressed(']')) turn += kTurn_rad;
+    if (turn != 0.0) p.lateral = glm::dvec3(glm::rotate(glm::dmat4(1.0), turn, p.direction) * glm::dvec4(p.lateral, 0.0));
+    if (move != glm::dvec3(0.0)) p = engine::probe_on_skin(scene_, p, p.position + move - 0.05 * p.direction);
+  }
+  const engine::UltrasoundProbe shown = probe(needle);
+  const float height = std::round(0.45f * io.DisplaySize.y);
+  const float width = std::round(height * float(shown.width_m / shown.depth_m));
+  // By default on the left, between the status panel above and the view panel below; the task's is on the right.
+  const Placement at = placement_.value_or(Placement{10.0f, 0.5f * io.DisplaySize.y, 0.0f, 0.5f});
+  ImGui::SetNextWindowPos(ImVec2(at.x, at.y), ImGuiCond_Always, ImVec2(at.pivot_x, at.pivot_y));
+  ImGui::Begin("Ultrasound", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
+  ImGui::Text("%.1f MHz linear, %.0f mm deep, %.0f mm wide", shown.frequency_MHz, 1000.0 * shown.depth_m, 1000.0 * shown.width_m);
+  ImGui::Dummy(ImVec2(width, height));
+  const ImVec2 lo = ImGui::GetItemRectMin();
+  rect_ = engine::ScreenRect{lo.x, lo.y, width, height};
+  ImGui::TextUnformatted(plan_.follow_needle ? "probe follows the needle" : "move the probe: J L along, I K across, [ ] turn");
+  ImGui::End();
+}
+
+engine::RgbaImage UltrasoundWindow::picture(const engine::NeedleLoad& needle) {
+  if (!view_) view_ = std::make_unique<engine::UltrasoundView>(device_, scene_);
+  const engine::UltrasoundProbe shown = probe(needle);
+  view_->render(shown, &needle);
+  return engine::to_picture(view_->image(), shown);
+}
+
+void UltrasoundWindow::add_to_frame(engine::FrameParams& params, const engine::SceneRenderer& renderer, engine::Extent frame,
+                                    const engine::NeedleLoad& needle) {
+  if (!view_) view_ = std::make_unique<engine::UltrasoundView>(device_, scene_);
+  engine::CommandRecorder image = view_->record(probe(needle), &needle);
+  params.before_pass = [before = std::move(params.before_pass), image](const engine::CommandBuffer& cmd) {
+    if (before) before(cmd);
+    image(cmd);
+  };
+  if (!rect_) return;
+  engine::CommandRecorder drawn = view_->draw(renderer, *rect_, frame);
+  rect_.reset();
+  if (!drawn) return;
+  params.overlay = [overlay = std::move(params.overlay), drawn](const engine::CommandBuffer& cmd) {
+    if (overlay) overlay(cmd);
+    drawn(cmd);
+  };
+}
+
+}  // namespace needle::app

@@ -1,0 +1,47 @@
+// The ultrasound image beside the 3D view: an ImGui window keeping the room for the image, the
+// image made each frame by the compute passes before the scene's render pass and drawn into that
+// room after the panels. The probe is the task's, moved with keys (J/L along the array, I/K
+// across it, [ and ] turning it about the beam, always set back on the skin), or, in a task
+// without one, a probe that follows the needle. Nothing is made while the window is closed.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "app/echo_scene.hpp"
+#include "engine/ultrasound.hpp"
+
+namespace needle::app {
+
+class UltrasoundWindow {
+ public:
+  UltrasoundWindow(const engine::GpuDevice& device, const training::Task& task);
+  ~UltrasoundWindow();
+
+  // The probe of now for this needle (the task's as moved, or following the needle).
+  engine::UltrasoundProbe probe(const engine::NeedleLoad& needle) const;
+  // Where the window goes: its corner `pivot` (0 to 1 of its size) at (x, y) pixels; by default
+  // its left edge's middle at (10, half the height).
+  void place(float x, float y, float pivot_x, float pivot_y) { placement_ = {x, y, pivot_x, pivot_y}; }
+  // Inside an ImGui frame: the window and its keys (when ImGui does not want the keyboard).
+  void draw_panel(const engine::NeedleLoad& needle);
+  // This frame's image (params.before_pass) and its drawing into the window (params.overlay,
+  // after what is there). Call after the UI pass's end_frame.
+  void add_to_frame(engine::FrameParams& params, const engine::SceneRenderer& renderer, engine::Extent frame,
+                    const engine::NeedleLoad& needle);
+  // The image for this needle, made now and read back at the probe's proportions (headless pictures).
+  engine::RgbaImage picture(const engine::NeedleLoad& needle);
+
+ private:
+  const engine::GpuDevice& device_;
+  engine::EchoScene scene_;
+  ProbePlan plan_;
+  std::unique_ptr<engine::UltrasoundView> view_;  // made when first shown
+  std::optional<engine::ScreenRect> rect_;        // where the window kept room, this frame
+  struct Placement {
+    float x, y, pivot_x, pivot_y;
+  };
+  std::optional<Placement> placement_;
+};
+
+}  // namespace needle::app

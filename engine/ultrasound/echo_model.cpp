@@ -1,0 +1,205 @@
+#include "engine/ultrasound/echo_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace needle::engine::echo {
+namespace {
+
+constexpr double kNepersPerDecibel = 0.11512925464970229;  // ln(10) / 20
+
+// The haptics' signed distances (haptics/constraints/implicit_surface.cpp), in glm.
+LayerSample point_distance(const glm::dvec3& x, const glm::dvec3& c, double r) {
+  const glm::dvec3 d = x - c;
+  const double len = glm::length(d);
+  if (len < 1e-12) return {-r, glm::dvec3(1.0, 0.0, 0.0)};
+  return {len - r, d / len};
+}
+
+LayerSample evaluate_primitive(const EchoPrimitive& p, const glm::dvec3& x) {
+  switch (p.kind) {
+    case EchoPrimitive::Kind::Sphere:
+      return point_distance(x, p.a, p.radius);
+    case EchoPrimitive::Kind::Plane:
+      return {glm::dot(p.b, x - p.a), p.b};
+    case EchoPrimitive::Kind::Capsule: {
+      const glm::dvec3 axis = p.b - p.a;
+      const double len2 = glm::dot(axis, axis);
+      const double t = len2 > 0.0 ? std::clamp(glm::dot(x - p.a, axis) / len2, 0.0, 1.0) : 0.0;
+      return point_distance(x, p.a + t * axis, p.radius);
+    }
+  }
+  return {0.0, glm::dvec3(1.0, 0.0, 0.0)};
+}
+
+double impedance(const EchoScene& scene, int layer) {
+  return layer < 0 ? kGelImpedance_MRayl : scene.layers[size_t(layer)].material.impedance_MRayl;
+}
+
+double time_gain(const UltrasoundProbe& probe, double depth_m) {
+  return std::exp(2.0 * nepers_per_m(kTimeGain_dB_per_cm_MHz, probe.frequency_MHz) * depth_m);
+}
+
+// The depth in [z0, z1] where layer k's φ at the rest position changes sign, to a nanometre; the
+// linear interpolation of its φ at the ends when it does not change sign there.
+double crossing_depth(const EchoScene& scene, const DeformationField& field, int k, const glm::dvec3& origin,
+                      const glm::dvec3& beam, double z0, double z1) {
+  const auto phi = [&](double z) { return evaluate(scene.layers[size_t(k)], rest_position(field, origin + z * beam)).phi; };
+  double lo = z0, hi = z1, phi_lo = phi(z0), phi_hi = phi(z1);
+  if (phi_lo * phi_hi > 0.0 || phi_lo == phi_hi) return z0 + std::clamp(phi_lo / (phi_lo - phi_hi), 0.0, 1.0) * (z1 - z0);
+  while (hi - lo > 1e-9) {
+    const double mid = 0.5 * (lo + hi), phi_mid = phi(mid);
+    if ((phi_mid < 0.0) == (phi_lo < 0.0)) lo = mid, phi_lo = phi_mid;
+    else hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+ScanLine trace_line(const EchoScene& scene, const UltrasoundProbe& probe, const NeedleLoad* needle,
+                    const UltrasoundSettings& settings, const DeformationField& field, uint32_t line) {
+  ScanLine out;
+  const glm::dvec3 origin = line_origin(probe, settings, line);
+  const glm::dvec3 beam = probe.direction;
+  std::optional<NeedleHit> hit;
+  if (needle) hit = needle_hit(scene, probe, *needle, origin);
+  if (hit) out.needle_depth_m = hit->depth_m;
+
+  double amplitude = 1.0;  // round trip, without time-gain compensation
+  int current = -1;
+  double z_prev = 0.0;
+  for (uint32_t j = 0; j < settings.samples; ++j) {
+    const double z = sample_depth(probe, settings, j);
+    const glm::dvec3 x = origin + z * beam;
+    const glm::dvec3 rest = rest_position(field, x);
+    const int layer = layer_at(scene, rest);
+    if (layer != current) {
+      const int k = deciding_layer(current, layer);
+      if (out.interfaces.size() < ScanLine::kMaxInterfaces)
+        out.interfaces.push_back({crossing_depth(scene, field, k, origin, beam, z_prev, z), current, layer});
+      const double r = reflection(impedance(scene, current), impedance(scene, layer));
+      amplitude *= 1.0 - r * r;
+      current = layer;
+    }
+    if (hit && hit->depth_m > z_prev && hit->depth_m <= z) {
+      const double r = reflection(impedance(scene, current), kNeedleImpedance_MRayl);
+      amplitude *= 1.0 - r * r * hit->weight;
+    }
+    const double alpha = current < 0 ? 0.0 : nepers_per_m(scene.layers[size_t(current)].material.attenuation_dB_per_cm_MHz,
+                                                          probe.frequency_MHz);
+    amplitude *= std::exp(-2.0 * alpha * (z - z_prev));
+    if (std::isinf(out.shadow_depth_m) && amplitude * time_gain(probe, z) < kShadowLevel) out.shadow_depth_m = z;
+    z_prev = z;
+  }
+  return out;
+}
+
+}  // namespace
+
+double nepers_per_m(double dB_per_cm_MHz, double frequency_MHz) {
+  return dB_per_cm_MHz * frequency_MHz * 100.0 * kNepersPerDecibel;
+}
+
+double reflection(double z1, double z2) { return (z2 - z1) / (z2 + z1); }
+
+double specular_factor(const glm::dvec3& normal, const glm::dvec3& beam) {
+  const double theta = std::acos(std::min(1.0, std::abs(glm::dot(normal, beam))));
+  return std::exp(-(theta * theta) / (kSpecularWidth_rad * kSpecularWidth_rad));
+}
+
+glm::dvec3 line_origin(const UltrasoundProbe& probe, const UltrasoundSettings& settings, uint32_t line) {
+  const double x = (double(line) + 0.5) / double(settings.lines) * probe.width_m - 0.5 * probe.width_m;
+  return probe.position + x * probe.lateral;
+}
+
+double sample_depth(const UltrasoundProbe& probe, const UltrasoundSettings& settings, uint32_t sample) {
+  return (double(sample) + 0.5) / double(settings.samples) * probe.depth_m;
+}
+
+LayerSample evaluate(const EchoLayer& layer, const glm::dvec3& x) {
+  LayerSample best{layer.intersection ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity(),
+                   glm::dvec3(1.0, 0.0, 0.0)};
+  for (const EchoPrimitive& p : layer.primitives) {
+    const LayerSample s = evaluate_primitive(p, x);
+    if (layer.intersection ? s.phi > best.phi : s.phi < best.phi) best = s;
+  }
+  return best;
+}
+
+int layer_at(const EchoScene& scene, const glm::dvec3& x) {
+  for (int k = int(scene.layers.size()) - 1; k >= 0; --k)
+    if (evaluate(scene.layers[size_t(k)], x).phi < 0.0) return k;
+  return -1;
+}
+
+DeformationField echo_field(const EchoScene& scene, const NeedleLoad* needle) {
+  if (!scene.deformation || !needle) return {};
+  return build_field(*needle, *scene.deformation);
+}
+
+glm::dvec3 rest_position(const DeformationField& field, const glm::dvec3& x, int iterations) {
+  glm::dvec3 rest = x;
+  if (field.empty()) return rest;
+  for (int i = 0; i < iterations; ++i) {
+    glm::dvec3 u(0.0);
+    for (const Kelvinlet& k : field.loads) u += evaluate(k, field.material, rest).displacement;
+    rest = x - u;
+  }
+  return rest;
+}
+
+std::optional<NeedleHit> needle_hit(const EchoScene& scene, const UltrasoundProbe& probe, const NeedleLoad& needle,
+                                    const glm::dvec3& line_origin) {
+  const glm::dvec3 e = probe.elevation();
+  const glm::dvec3 a = needle.axis, tip = needle.tip - line_origin;
+  // The shaft S(t) = tip − t a, t in [0, length], in the line's frame: lateral offset X, depth Z, elevation E.
+  const double x0 = glm::dot(tip, probe.lateral), z0 = glm::dot(tip, probe.direction), e0 = glm::dot(tip, e);
+  const double al = glm::dot(a, probe.lateral), ad = glm::dot(a, probe.direction), ae = glm::dot(a, e);
+  const double r = scene.needle.radius_m, length = scene.needle.length_m;
+  // Where the shaft lies within its radius of the line, laterally.
+  double t0 = 0.0, t1 = length;
+  if (std::abs(al) < 1e-9) {
+    if (std::abs(x0) > r) return std::nullopt;
+  } else {
+    const double ta = (x0 - r) / al, tb = (x0 + r) / al;
+    t0 = std::max(t0, std::min(ta, tb));
+    t1 = std::min(t1, std::max(ta, tb));
+    if (t0 > t1) return std::nullopt;
+  }
+  // There, the point nearest the image plane; along the plane, the one nearest the line.
+  const double t = std::abs(ae) > 1e-9 ? std::clamp(e0 / ae, t0, t1)
+                                        : std::clamp(std::abs(al) < 1e-9 ? t0 : x0 / al, t0, t1);
+  const double elevation = e0 - t * ae;
+  const double sigma = probe.slice_thickness_m / 2.3548200450309493;  // FWHM → σ
+  const double tilt = std::asin(std::min(1.0, std::abs(ad)));         // from the beam's normal plane
+  const double weight = std::exp(-0.5 * elevation * elevation / (sigma * sigma)) *
+                        std::exp(-(tilt * tilt) / (kSpecularWidth_rad * kSpecularWidth_rad));
+  if (weight < 1e-3) return std::nullopt;
+  const double wall = r / std::sqrt(std::max(1.0 - ad * ad, 1e-2));  // the near wall, along the beam
+  return NeedleHit{z0 - t * ad - wall, weight};
+}
+
+double axial_sigma_m(const UltrasoundProbe& probe) {
+  const double wavelength = kSoundSpeed_mps / (probe.frequency_MHz * 1e6);
+  return kPulseCycles * wavelength / 2.0 / 2.3548200450309493;  // resolution cell = half the pulse, as FWHM
+}
+
+double lateral_sigma_m(const UltrasoundProbe& probe) {
+  const double wavelength = kSoundSpeed_mps / (probe.frequency_MHz * 1e6);
+  return wavelength * kFNumber / 2.3548200450309493;
+}
+
+}  // namespace needle::engine::echo
+
+namespace needle::engine {
+
+std::vector<ScanLine> trace_scan_lines(const EchoScene& scene, const UltrasoundProbe& probe, const NeedleLoad* needle,
+                                       const UltrasoundSettings& settings) {
+  const DeformationField field = echo::echo_field(scene, needle);
+  std::vector<ScanLine> lines;
+  lines.reserve(settings.lines);
+  for (uint32_t i = 0; i < settings.lines; ++i) lines.push_back(echo::trace_line(scene, probe, needle, settings, field, i));
+  return lines;
+}
+
+}  // namespace needle::engine

@@ -1,0 +1,311 @@
+#include "engine/ultrasound/ultrasound_pass.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "engine/ultrasound/echo_model.hpp"
+#include "engine/vulkan/pipelines.hpp"
+#include "engine/vulkan/vk_check.hpp"
+#include "engine/vulkan/vulkan_context.hpp"
+#include "spirv/ultrasound_axial_comp.h"
+#include "spirv/ultrasound_cells_comp.h"
+#include "spirv/ultrasound_image_comp.h"
+#include "spirv/ultrasound_scan_comp.h"
+
+namespace needle::engine {
+namespace {
+
+constexpr uint32_t kWorkgroup = 64;  // local_size_x of the three shaders
+constexpr size_t kMaxLoads = 8;      // ultrasound.glsl MAX_LOADS
+constexpr size_t kKernelVec4s = 5;   // ultrasound.glsl KERNEL_VEC4S
+constexpr size_t kMaxPrimitives = 128;
+static_assert(4 * kKernelVec4s > size_t(echo::kMaxKernelRadius), "the kernel's weights fit the uniform");
+
+// std140 mirror of ultrasound.glsl's Echo block.
+struct LoadUniform {
+  glm::vec4 center_epsilon;
+  glm::vec4 force_support;
+};
+struct EchoUniforms {
+  glm::vec4 origin, direction, lateral, elevation, image;
+  glm::uvec4 counts, kernel;
+  glm::vec4 beam, media, needle_tip, needle_axis, needle, display, material;
+  glm::vec4 axial_weights[kKernelVec4s];
+  glm::vec4 lateral_weights[kKernelVec4s];
+  LoadUniform loads[kMaxLoads];
+};
+static_assert(sizeof(EchoUniforms) == 16 * (14 + 2 * kKernelVec4s) + 32 * kMaxLoads, "std140 layout of Echo");
+
+// std430 mirrors of the Layers and Lines buffers.
+struct LayerGpu {
+  glm::uvec4 shape;
+  glm::vec4 material;
+};
+struct PrimitiveGpu {
+  glm::vec4 a_kind;
+  glm::vec4 b_radius;
+};
+struct LayersGpu {
+  LayerGpu layers[EchoScene::kMaxLayers];
+  PrimitiveGpu primitives[kMaxPrimitives];
+};
+struct InterfaceGpu {
+  float depth;
+  int32_t from_layer, to_layer;
+  float pad;
+};
+struct LineRecordGpu {
+  uint32_t count;
+  float shadow_depth, needle_depth, needle_weight;
+  InterfaceGpu interfaces[ScanLine::kMaxInterfaces];
+};
+static_assert(sizeof(LineRecordGpu) == 16 + 16 * ScanLine::kMaxInterfaces, "std430 layout of LineRecord");
+
+enum Binding : uint32_t { kUniforms, kLayers, kEchoes, kAxial, kLines, kPicture, kCells, kBindings };
+
+void check(const EchoScene& scene, const UltrasoundSettings& settings) {
+  if (settings.lines == 0 || settings.samples == 0) throw std::invalid_argument("an ultrasound image needs lines and samples");
+  if (scene.layers.size() > EchoScene::kMaxLayers)
+    throw std::invalid_argument("the ultrasound takes " + std::to_string(EchoScene::kMaxLayers) + " layers, not " +
+                                std::to_string(scene.layers.size()));
+  for (const EchoLayer& layer : scene.layers)
+    if (layer.primitives.empty() || layer.primitives.size() > EchoLayer::kMaxPrimitives)
+      throw std::invalid_argument("layer \"" + layer.name + "\" has " + std::to_string(layer.primitives.size()) +
+                                  " primitives; the ultrasound takes 1 to " + std::to_string(EchoLayer::kMaxPrimitives));
+}
+
+LayersGpu pack_layers(const EchoScene& scene) {
+  LayersGpu out{};
+  uint32_t next = 0;
+  for (size_t k = 0; k < scene.layers.size(); ++k) {
+    const EchoLayer& l = scene.layers[k];
+    const EchoMaterial& m = l.material;
+    out.layers[k] = {glm::uvec4(next, uint32_t(l.primitives.size()), l.intersection ? 1u : 0u, 0u),
+                     glm::vec4(float(m.impedance_MRayl), float(m.attenuation_dB_per_cm_MHz), float(m.echogenicity),
+                               float(m.scatterer_density))};
+    for (const EchoPrimitive& p : l.primitives)
+      out.primitives[next++] = {glm::vec4(glm::vec3(p.a), float(int(p.kind))), glm::vec4(glm::vec3(p.b), float(p.radius))};
+  }
+  return out;
+}
+
+// Gaussian weights exp(−(kΔ)²/2σ²) for k = 0..radius, radius = ⌈3σ/Δ⌉ up to the shaders' limit.
+std::vector<float> gaussian_weights(double sigma, double spacing) {
+  const int radius = std::clamp(int(std::ceil(3.0 * sigma / spacing)), 0, echo::kMaxKernelRadius);
+  std::vector<float> w;
+  for (int k = 0; k <= radius; ++k) w.push_back(float(std::exp(-0.5 * std::pow(k * spacing / sigma, 2.0))));
+  return w;
+}
+
+// Σ of the weights (or of their squares) over the kernel's whole width (both sides).
+double sum(const std::vector<float>& w, int power) {
+  double s = std::pow(double(w[0]), power);
+  for (size_t k = 1; k < w.size(); ++k) s += 2.0 * std::pow(double(w[k]), power);
+  return s;
+}
+
+
+void compute_barrier(VkCommandBuffer cmd, VkPipelineStageFlags src_stage, VkAccessFlags src, VkAccessFlags dst) {
+  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  barrier.srcAccessMask = src;
+  barrier.dstAccessMask = dst;
+  vkCmdPipelineBarrier(cmd, src_stage, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+}
+
+}  // namespace
+
+UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, const UltrasoundSettings& settings)
+    : context_(context), device_(context.device()), scene_(std::move(scene)), settings_(settings) {
+  check(scene_, settings_);
+  std::array<VkDescriptorSetLayoutBinding, kBindings> bindings{};
+  for (uint32_t b = 0; b < kBindings; ++b) {
+    const VkDescriptorType type = b == kUniforms  ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
+                                  : b == kPicture ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
+                                                  : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    bindings[b] = {b, type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+  }
+  set_layout_ = descriptor_set_layout(device_, {bindings.begin(), bindings.end()});
+  pipeline_layout_ = single_set_pipeline_layout(device_, set_layout_);
+  pipelines_ = {compute_pipeline(device_, pipeline_layout_, ultrasound_cells_comp_spv, sizeof(ultrasound_cells_comp_spv)),
+                compute_pipeline(device_, pipeline_layout_, ultrasound_scan_comp_spv, sizeof(ultrasound_scan_comp_spv)),
+                compute_pipeline(device_, pipeline_layout_, ultrasound_axial_comp_spv, sizeof(ultrasound_axial_comp_spv)),
+                compute_pipeline(device_, pipeline_layout_, ultrasound_image_comp_spv, sizeof(ultrasound_image_comp_spv))};
+
+  const LayersGpu packed = pack_layers(scene_);
+  layers_ = GpuBuffer::device_local_with_data(context_, &packed, sizeof packed, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  const VkDeviceSize samples = VkDeviceSize(settings_.lines) * settings_.samples;
+  echoes_ = GpuBuffer(context_, samples * sizeof(glm::vec2), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  axial_ = GpuBuffer(context_, samples * sizeof(glm::vec2), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  cells_ = GpuBuffer(context_, samples * sizeof(int32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  lines_ = GpuBuffer::host_visible(context_, settings_.lines * sizeof(LineRecordGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  image_ = GpuImage(context_, {{settings_.lines, settings_.samples},
+                               VK_FORMAT_R8G8B8A8_UNORM,
+                               VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
+
+  std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kRing},
+                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5 * kRing},
+                                             {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kRing}}};
+  VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  pool_info.maxSets = kRing;
+  pool_info.poolSizeCount = uint32_t(sizes.size());
+  pool_info.pPoolSizes = sizes.data();
+  VK_CHECK(vkCreateDescriptorPool(device_, &pool_info, nullptr, &pool_));
+  for (size_t slot = 0; slot < kRing; ++slot) {
+    uniforms_[slot] = GpuBuffer::host_visible(context_, sizeof(EchoUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    alloc.descriptorPool = pool_;
+    alloc.descriptorSetCount = 1;
+    alloc.pSetLayouts = &set_layout_;
+    VK_CHECK(vkAllocateDescriptorSets(device_, &alloc, &sets_[slot]));
+    const std::array<VkDescriptorBufferInfo, kBindings> buffers{{{uniforms_[slot].handle(), 0, VK_WHOLE_SIZE},
+                                                                 {layers_.handle(), 0, VK_WHOLE_SIZE},
+                                                                 {echoes_.handle(), 0, VK_WHOLE_SIZE},
+                                                                 {axial_.handle(), 0, VK_WHOLE_SIZE},
+                                                                 {lines_.handle(), 0, VK_WHOLE_SIZE},
+                                                                 {},
+                                                                 {cells_.handle(), 0, VK_WHOLE_SIZE}}};
+    const VkDescriptorImageInfo picture{VK_NULL_HANDLE, image_.view(), VK_IMAGE_LAYOUT_GENERAL};
+    std::array<VkWriteDescriptorSet, kBindings> writes{};
+    for (uint32_t b = 0; b < kBindings; ++b) {
+      writes[b] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+      writes[b].dstSet = sets_[slot];
+      writes[b].dstBinding = b;
+      writes[b].descriptorCount = 1;
+      writes[b].descriptorType = bindings[b].descriptorType;
+      if (b == kPicture)
+        writes[b].pImageInfo = &picture;
+      else
+        writes[b].pBufferInfo = &buffers[b];
+    }
+    vkUpdateDescriptorSets(device_, uint32_t(writes.size()), writes.data(), 0, nullptr);
+  }
+}
+
+UltrasoundPass::~UltrasoundPass() {
+  vkDeviceWaitIdle(device_);
+  if (pool_) vkDestroyDescriptorPool(device_, pool_, nullptr);
+  for (VkPipeline p : pipelines_)
+    if (p) vkDestroyPipeline(device_, p, nullptr);
+  if (pipeline_layout_) vkDestroyPipelineLayout(device_, pipeline_layout_, nullptr);
+  if (set_layout_) vkDestroyDescriptorSetLayout(device_, set_layout_, nullptr);
+}
+
+std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProbe& probe, const NeedleLoad* needle) {
+  const UltrasoundSettings& s = settings_;
+  const double dz = probe.depth_m / s.samples, dx = probe.width_m / s.lines;
+  const std::vector<float> axial = gaussian_weights(echo::axial_sigma_m(probe), dz);
+  const std::vector<float> lateral = gaussian_weights(echo::lateral_sigma_m(probe), dx);
+  const DeformationField field = echo::echo_field(scene_, needle);
+  if (field.loads.size() > kMaxLoads) throw std::invalid_argument("the ultrasound takes " + std::to_string(kMaxLoads) + " tissue loads");
+
+  EchoUniforms u{};
+  u.origin = glm::vec4(glm::vec3(probe.position), 0.0f);
+  u.direction = glm::vec4(glm::vec3(probe.direction), 0.0f);
+  u.lateral = glm::vec4(glm::vec3(probe.lateral), 0.0f);
+  u.elevation = glm::vec4(glm::vec3(probe.elevation()), 0.0f);
+  u.image = glm::vec4(float(probe.depth_m), float(probe.width_m), float(dz), float(dx));
+  u.counts = glm::uvec4(s.lines, s.samples, uint32_t(scene_.layers.size()), uint32_t(field.loads.size()));
+  u.kernel = glm::uvec4(uint32_t(axial.size() - 1), uint32_t(lateral.size() - 1), s.speckle ? 1u : 0u, 0u);
+  u.beam = glm::vec4(float(echo::nepers_per_m(1.0, probe.frequency_MHz)),
+                     float(echo::nepers_per_m(echo::kTimeGain_dB_per_cm_MHz, probe.frequency_MHz)),
+                     float(echo::kBackscatterLevel), float(echo::kSpecularWidth_rad));
+  u.media = glm::vec4(float(echo::kGelImpedance_MRayl), float(echo::kNeedleImpedance_MRayl), float(echo::kReverberationRatio),
+                      float(echo::kShadowLevel));
+  if (needle) {
+    u.needle_tip = glm::vec4(glm::vec3(needle->tip), 1.0f);
+    u.needle_axis = glm::vec4(glm::vec3(glm::normalize(needle->axis)), float(scene_.needle.length_m));
+  }
+  u.needle = glm::vec4(float(scene_.needle.radius_m), float(probe.slice_thickness_m / 2.3548200450309493),
+                       float(echo::kReverberationEchoes), 0.0f);
+  // The tissue's level after the point spread function is its backscatter whatever the sampling:
+  // speckle's mean power over 1/√(Σ h²) of the 2-D kernel, a uniform level (no speckle) over 1/Σ h.
+  const double normalisation = s.speckle ? 1.0 / std::sqrt(sum(axial, 2) * sum(lateral, 2)) : 1.0 / (sum(axial, 1) * sum(lateral, 1));
+  u.display = glm::vec4(float(s.dynamic_range_dB), float(s.gain_dB), float(normalisation), float(echo::kScattererCell_m));
+  u.material = glm::vec4(float(field.material.a()), float(field.material.b()), 0.0f, 0.0f);
+  for (size_t k = 0; k < axial.size(); ++k) u.axial_weights[k / 4][int(k % 4)] = axial[k];
+  for (size_t k = 0; k < lateral.size(); ++k) u.lateral_weights[k / 4][int(k % 4)] = lateral[k];
+  for (size_t i = 0; i < field.loads.size(); ++i) {
+    const Kelvinlet& k = field.loads[i];
+    u.loads[i] = {glm::vec4(glm::vec3(k.center), float(k.epsilon)), glm::vec4(glm::vec3(k.force), float(k.support))};
+  }
+  auto bytes = std::make_shared<std::vector<uint8_t>>(sizeof u);
+  std::memcpy(bytes->data(), &u, sizeof u);
+  return [this, bytes](VkCommandBuffer cmd) { record(cmd, *bytes); };
+}
+
+void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms) {
+  const size_t slot = ring_;
+  ring_ = (ring_ + 1) % kRing;
+  std::memcpy(uniforms_[slot].mapped(), uniforms.data(), uniforms.size());
+  const uint32_t lines = settings_.lines, items = lines * settings_.samples;
+
+  // The last image's reads (the UI's fragment shader, a read-back copy, the passes themselves)
+  // come before this image's writes.
+  compute_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                  VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+  transition_image(cmd, image_.image(), image_layout_, VK_IMAGE_LAYOUT_GENERAL,
+                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
+                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &sets_[slot], 0, nullptr);
+  const std::array<uint32_t, 4> work_items{items, lines, items, items};  // cells, scan lines, axial, image
+  for (size_t p = 0; p < pipelines_.size(); ++p) {
+    if (p > 0)
+      compute_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[p]);
+    vkCmdDispatch(cmd, (work_items[p] + kWorkgroup - 1) / kWorkgroup, 1, 1);
+  }
+
+  // The picture goes to fragment shaders (the UI pass); the scan lines to the host.
+  transition_image(cmd, image_.image(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT);
+  VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  to_host.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+  to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
+  image_layout_ = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+}
+
+RgbaImage UltrasoundPass::read_image() const {
+  RgbaImage out{settings_.lines, settings_.samples, std::vector<uint8_t>(size_t(settings_.lines) * settings_.samples * 4)};
+  if (image_layout_ == VK_IMAGE_LAYOUT_UNDEFINED) return out;  // no image yet: black
+  GpuBuffer host = GpuBuffer::host_visible(context_, out.pixels.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  context_.submit_and_wait([&](VkCommandBuffer cmd) {
+    transition_image(cmd, image_.image(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     VK_ACCESS_TRANSFER_READ_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {settings_.lines, settings_.samples, 1};
+    vkCmdCopyImageToBuffer(cmd, image_.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.handle(), 1, &region);
+    transition_image(cmd, image_.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0);
+    VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
+  });
+  std::memcpy(out.pixels.data(), host.mapped(), out.pixels.size());
+  return out;
+}
+
+std::vector<ScanLine> UltrasoundPass::read_lines() const {
+  std::vector<LineRecordGpu> records(settings_.lines);
+  std::memcpy(records.data(), lines_.mapped(), records.size() * sizeof(LineRecordGpu));
+  std::vector<ScanLine> out(records.size());
+  for (size_t i = 0; i < records.size(); ++i) {
+    const LineRecordGpu& r = records[i];
+    for (uint32_t k = 0; k < std::min<uint32_t>(r.count, ScanLine::kMaxInterfaces); ++k)
+      out[i].interfaces.push_back({r.interfaces[k].depth, r.interfaces[k].from_layer, r.interfaces[k].to_layer});
+    if (r.shadow_depth >= 0.0f) out[i].shadow_depth_m = r.shadow_depth;
+    if (r.needle_weight > 0.0f) out[i].needle_depth_m = r.needle_depth;
+  }
+  return out;
+}
+
+}  // namespace needle::engine

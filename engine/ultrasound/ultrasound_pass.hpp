@@ -1,0 +1,66 @@
+// The ultrasound image's compute passes behind UltrasoundView (engine/ultrasound.hpp): each
+// sample's layer and scatterer (shaders/ultrasound_cells.comp), the scan lines walking them
+// (ultrasound_scan.comp), the point spread function along the lines (ultrasound_axial.comp),
+// across them with the envelope and log compression into an RGBA8 storage image
+// (ultrasound_image.comp). The image is left for fragment shaders to sample (the UI pass draws it).
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <array>
+#include <functional>
+#include <vector>
+
+#include "engine/ultrasound.hpp"
+#include "engine/vulkan/gpu_buffer.hpp"
+#include "engine/vulkan/gpu_image.hpp"
+
+namespace needle::engine {
+
+class VulkanContext;
+
+class UltrasoundPass {
+ public:
+  // std::invalid_argument for more layers or primitives than the shaders take, or a size of 0.
+  UltrasoundPass(const VulkanContext& context, EchoScene scene, const UltrasoundSettings& settings);
+  ~UltrasoundPass();
+  UltrasoundPass(const UltrasoundPass&) = delete;
+  UltrasoundPass& operator=(const UltrasoundPass&) = delete;
+
+  const VulkanContext& context() const { return context_; }
+  const EchoScene& scene() const { return scene_; }
+  const UltrasoundSettings& settings() const { return settings_; }
+
+  // The recorder of one image for this probe and needle (its uniforms are filled now).
+  std::function<void(VkCommandBuffer)> update(const UltrasoundProbe& probe, const NeedleLoad* needle);
+
+  // The image: sampled by fragment shaders in SHADER_READ_ONLY_OPTIMAL once an image was recorded.
+  VkImageView image_view() const { return image_.view(); }
+  bool has_image() const { return image_layout_ == VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL; }
+  RgbaImage read_image() const;
+  std::vector<ScanLine> read_lines() const;
+
+ private:
+  static constexpr size_t kRing = 3;  // more than the renderer's frames in flight
+
+  void record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms);
+
+  const VulkanContext& context_;
+  VkDevice device_;
+  EchoScene scene_;
+  UltrasoundSettings settings_;
+  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+  VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
+  std::array<VkPipeline, 4> pipelines_{};  // cells, scan lines, axial, image
+  VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  std::array<VkDescriptorSet, kRing> sets_{};
+  std::array<GpuBuffer, kRing> uniforms_;
+  GpuBuffer layers_;
+  GpuBuffer cells_, echoes_, axial_;
+  GpuBuffer lines_;  // host-visible: read back after an image
+  GpuImage image_;
+  VkImageLayout image_layout_ = VK_IMAGE_LAYOUT_UNDEFINED;
+  size_t ring_ = 0;
+};
+
+}  // namespace needle::engine

@@ -1,0 +1,75 @@
+#include "engine/vulkan/pipelines.hpp"
+
+#include <array>
+
+#include "engine/vulkan/vk_check.hpp"
+
+namespace needle::engine {
+
+VkShaderModule shader_module(VkDevice device, const uint32_t* code, size_t bytes) {
+  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  info.codeSize = bytes;
+  info.pCode = code;
+  VkShaderModule module = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateShaderModule(device, &info, nullptr, &module));
+  return module;
+}
+
+VkDescriptorSetLayout descriptor_set_layout(VkDevice device, const std::vector<VkDescriptorSetLayoutBinding>& bindings) {
+  VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  info.bindingCount = uint32_t(bindings.size());
+  info.pBindings = bindings.data();
+  VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateDescriptorSetLayout(device, &info, nullptr, &layout));
+  return layout;
+}
+
+VkPipelineLayout single_set_pipeline_layout(VkDevice device, VkDescriptorSetLayout set_layout) {
+  VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  info.setLayoutCount = 1;
+  info.pSetLayouts = &set_layout;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VK_CHECK(vkCreatePipelineLayout(device, &info, nullptr, &layout));
+  return layout;
+}
+
+VkPipeline compute_pipeline(VkDevice device, VkPipelineLayout layout, const uint32_t* code, size_t bytes) {
+  const VkShaderModule module = shader_module(device, code, bytes);
+  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_COMPUTE_BIT, module, "main", nullptr};
+  info.layout = layout;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  const VkResult r = vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+  vkDestroyShaderModule(device, module, nullptr);
+  vk_check(r, "vkCreateComputePipelines");
+  return pipeline;
+}
+
+VkResult create_graphics_pipeline(VkDevice device, const GraphicsPipelineStates& s, VkPipeline* pipeline) {
+  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  viewport.viewportCount = 1;
+  viewport.scissorCount = 1;
+  VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  blend.attachmentCount = 1;
+  blend.pAttachments = s.blend_attachment;
+  const std::array<VkDynamicState, 2> dynamic_states{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+  dynamic.dynamicStateCount = uint32_t(dynamic_states.size());
+  dynamic.pDynamicStates = dynamic_states.data();
+  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+  info.stageCount = uint32_t(s.stages.size());
+  info.pStages = s.stages.data();
+  info.pVertexInputState = s.vertex_input;
+  info.pInputAssemblyState = s.assembly;
+  info.pViewportState = &viewport;
+  info.pRasterizationState = s.raster;
+  info.pMultisampleState = s.multisample;
+  info.pDepthStencilState = s.depth;
+  info.pColorBlendState = &blend;
+  info.pDynamicState = &dynamic;
+  info.layout = s.layout;
+  info.renderPass = s.render_pass;
+  return vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, pipeline);
+}
+
+}  // namespace needle::engine

@@ -1,0 +1,35 @@
+// The Vulkan objects every pass makes the same way: shader modules, a descriptor set layout, a
+// pipeline layout of one set, a compute pipeline, and a graphics pipeline from its states with
+// one colour attachment and the viewport and scissor dynamic.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace needle::engine {
+
+VkShaderModule shader_module(VkDevice device, const uint32_t* code, size_t bytes);
+VkDescriptorSetLayout descriptor_set_layout(VkDevice device, const std::vector<VkDescriptorSetLayoutBinding>& bindings);
+// One set, no push constants.
+VkPipelineLayout single_set_pipeline_layout(VkDevice device, VkDescriptorSetLayout set_layout);
+// The compute shader `code` with `layout` (its module destroyed once the pipeline is made).
+VkPipeline compute_pipeline(VkDevice device, VkPipelineLayout layout, const uint32_t* code, size_t bytes);
+
+struct GraphicsPipelineStates {
+  std::vector<VkPipelineShaderStageCreateInfo> stages;
+  const VkPipelineVertexInputStateCreateInfo* vertex_input = nullptr;
+  const VkPipelineInputAssemblyStateCreateInfo* assembly = nullptr;
+  const VkPipelineRasterizationStateCreateInfo* raster = nullptr;
+  const VkPipelineMultisampleStateCreateInfo* multisample = nullptr;
+  const VkPipelineDepthStencilStateCreateInfo* depth = nullptr;
+  const VkPipelineColorBlendAttachmentState* blend_attachment = nullptr;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkRenderPass render_pass = VK_NULL_HANDLE;
+};
+// The result of vkCreateGraphicsPipelines, for the caller to free its modules before throwing.
+VkResult create_graphics_pipeline(VkDevice device, const GraphicsPipelineStates& states, VkPipeline* pipeline);
+
+}  // namespace needle::engine

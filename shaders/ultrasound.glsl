@@ -1,0 +1,130 @@
+// What the three ultrasound passes share (engine/ultrasound/ultrasound_pass.cpp mirrors it, std140
+// and std430): the frame's probe, needle and display settings, and the buffers between the passes.
+// The model: docs/RENDERING.md, "Ultrasound"; its double-precision reference:
+// engine/ultrasound/echo_model.cpp.
+#include "kelvinlet.glsl"
+
+#define MAX_LOADS 8
+#define KERNEL_VEC4S 5  // up to 17 weights (radius 16) of the point spread function, 4 to a vec4
+
+layout(set = 0, binding = 0, std140) uniform Echo {
+  vec4 origin;       // xyz: the probe face's centre
+  vec4 direction;    // xyz: the beams' direction
+  vec4 lateral;      // xyz: along the array
+  vec4 elevation;    // xyz: direction × lateral
+  vec4 image;        // x depth, y width, z sample spacing, w line spacing (m)
+  uvec4 counts;      // x lines, y samples, z layers, w loads
+  uvec4 kernel;      // x axial radius (samples), y lateral radius (lines), z speckle (0/1)
+  vec4 beam;         // x Np/m per dB/(cm MHz) at the probe's frequency, y time gain (Np/m, one way), z backscatter level, w specular width (rad)
+  vec4 media;        // x gel impedance, y needle impedance, z reverberation ratio, w shadow level
+  vec4 needle_tip;   // xyz, w: 1 when there is a needle
+  vec4 needle_axis;  // xyz unit, w shaft length
+  vec4 needle;       // x radius, y elevation σ, z reverberation echoes
+  vec4 display;      // x dynamic range (dB), y gain (dB), z speckle normalisation, w scatterer cell (m)
+  vec4 material;     // x a, y b of the tissue's Kelvinlets
+  vec4 axial_weights[KERNEL_VEC4S];    // exp(−(kΔz)²/2σ²), k = 0..radius
+  vec4 lateral_weights[KERNEL_VEC4S];
+  Load loads[MAX_LOADS];
+} echo;
+
+// The scene's layers, outside in, and their primitives (engine/ultrasound.hpp, EchoLayer).
+struct Layer {
+  uvec4 shape;    // x first primitive, y count, z 1 intersection / 0 union
+  vec4 material;  // x impedance (MRayl), y attenuation (dB/(cm MHz)), z echogenicity, w scatterer density
+};
+struct Primitive {
+  vec4 a_kind;    // xyz a, w kind: 0 sphere, 1 plane, 2 capsule
+  vec4 b_radius;  // xyz b, w radius
+};
+layout(set = 0, binding = 1, std430) readonly buffer Layers {
+  Layer layers[16];
+  Primitive primitives[128];
+};
+
+// Per sample, line after line: the layer holding it (-1: none) and its scatterer, a complex
+// phasor, which the scan lines then turn into the received echo (in-phase, quadrature); that echo
+// after the axial convolution; and what each scan line met (engine/ultrasound.hpp, ScanLine).
+layout(set = 0, binding = 2, std430) buffer Echoes { vec2 echoes[]; };
+layout(set = 0, binding = 3, std430) buffer Axial { vec2 axial[]; };
+#define MAX_INTERFACES 24
+struct Interface {
+  float depth;
+  int from_layer;
+  int to_layer;
+  float pad;
+};
+struct LineRecord {
+  uint count;
+  float shadow_depth;   // −1: none
+  float needle_depth;
+  float needle_weight;  // 0: the line misses the needle
+  Interface interfaces[MAX_INTERFACES];
+};
+layout(set = 0, binding = 4, std430) buffer Lines { LineRecord lines[]; };
+layout(set = 0, binding = 5, rgba8) uniform writeonly image2D picture;
+layout(set = 0, binding = 6, std430) buffer Cells { int cell_layers[]; };
+
+// The line's origin on the probe's face (echo_model.cpp, line_origin) and a sample's depth.
+vec3 line_origin(uint line) {
+  return echo.origin.xyz + ((float(line) + 0.5) * echo.image.w - 0.5 * echo.image.y) * echo.lateral.xyz;
+}
+float sample_depth(uint j) { return (float(j) + 0.5) * echo.image.z; }
+
+// The layers' signed distances (the haptics' implicit surfaces; echo_model.cpp, evaluate).
+struct LayerSample {
+  float phi;
+  vec3 normal;
+};
+
+LayerSample point_distance(vec3 x, vec3 c, float r) {
+  vec3 d = x - c;
+  float len = length(d);
+  if (len < 1e-12) return LayerSample(-r, vec3(1.0, 0.0, 0.0));
+  return LayerSample(len - r, d / len);
+}
+
+LayerSample evaluate_primitive(Primitive p, vec3 x) {
+  int kind = int(p.a_kind.w);
+  if (kind == 1) return LayerSample(dot(p.b_radius.xyz, x - p.a_kind.xyz), p.b_radius.xyz);
+  if (kind == 2) {
+    vec3 axis = p.b_radius.xyz - p.a_kind.xyz;
+    float len2 = dot(axis, axis);
+    float t = len2 > 0.0 ? clamp(dot(x - p.a_kind.xyz, axis) / len2, 0.0, 1.0) : 0.0;
+    return point_distance(x, p.a_kind.xyz + t * axis, p.b_radius.w);
+  }
+  return point_distance(x, p.a_kind.xyz, p.b_radius.w);
+}
+
+LayerSample evaluate_layer(uint k, vec3 x) {
+  uvec4 shape = layers[k].shape;
+  bool intersection = shape.z == 1u;
+  LayerSample best = LayerSample(intersection ? -1e30 : 1e30, vec3(1.0, 0.0, 0.0));
+  for (uint i = 0; i < shape.y; ++i) {
+    LayerSample s = evaluate_primitive(primitives[shape.x + i], x);
+    if (intersection ? s.phi > best.phi : s.phi < best.phi) best = s;
+  }
+  return best;
+}
+
+// The last layer whose region holds x, -1 in none.
+int layer_at(vec3 x) {
+  for (int k = int(echo.counts.z) - 1; k >= 0; --k)
+    if (evaluate_layer(uint(k), x).phi < 0.0) return k;
+  return -1;
+}
+
+// The rest position whose displaced position is x (echo_model.hpp, kRestIterations steps).
+vec3 rest_position(vec3 x) {
+  vec3 rest = x;
+  if (echo.counts.w == 0u) return rest;
+  for (int i = 0; i < 4; ++i) {
+    vec3 u = vec3(0.0);
+    mat3 unused = mat3(0.0);
+    for (uint k = 0; k < echo.counts.w; ++k) add_kelvinlet(echo.loads[k], rest, echo.material.x, echo.material.y, false, u, unused);
+    rest = x - u;
+  }
+  return rest;
+}
+
+float axial_weight(int k) { return echo.axial_weights[k / 4][k % 4]; }
+float lateral_weight(int k) { return echo.lateral_weights[k / 4][k % 4]; }

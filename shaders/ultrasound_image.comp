@@ -1,0 +1,27 @@
+#version 450
+// The point spread function across the lines, the envelope (the complex echo's magnitude) and log
+// compression: grey = 1 + (20 log10(envelope) + gain) / dynamic range, clamped to [0, 1]. The
+// picture is the image as shown: line i is column i, sample j row j.
+#extension GL_GOOGLE_include_directive : require
+#include "ultrasound.glsl"
+
+layout(local_size_x = 64) in;
+
+void main() {
+  uint item = gl_GlobalInvocationID.x;
+  uint samples = echo.counts.y;
+  int line_count = int(echo.counts.x);
+  if (item >= uint(line_count) * samples) return;
+  int line = int(item / samples);
+  uint j = item % samples;
+  int radius = int(echo.kernel.y);
+  vec2 sum = axial[item] * lateral_weight(0);
+  for (int m = 1; m <= radius; ++m) {
+    float w = lateral_weight(m);
+    if (line - m >= 0) sum += w * axial[uint(line - m) * samples + j];
+    if (line + m < line_count) sum += w * axial[uint(line + m) * samples + j];
+  }
+  float decibels = 20.0 * log(max(length(sum), 1e-12)) / log(10.0);
+  float grey = clamp(1.0 + (decibels + echo.display.y) / echo.display.x, 0.0, 1.0);
+  imageStore(picture, ivec2(line, int(j)), vec4(grey, grey, grey, 1.0));
+}

@@ -1,0 +1,98 @@
+// The section view (docs/RENDERING.md, "Section view"): the tissue cut along the needle's plane,
+// the cut filled with each layer's colour, the needle inside visible; and the translucent mode.
+// Goldens with the usual tolerance (image_compare.hpp) and pixel checks at projected points, all
+// under the validation layer.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "deformation_fixture.hpp"
+#include "engine/gpu_scene.hpp"
+#include "engine/render_target.hpp"
+#include "engine/screen_projection.hpp"
+#include "image_compare.hpp"
+#include "vulkan_fixture.hpp"
+#include "tests/support/test_paths.hpp"
+
+namespace needle::test {
+namespace {
+
+constexpr engine::Extent kSize{320, 240};
+
+class SectionView : public VulkanTest {};
+
+glm::ivec3 pixel(const engine::RgbaImage& image, glm::vec2 at) {
+  const size_t i = (size_t(at.y) * image.width + size_t(at.x)) * 4;
+  return {image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]};
+}
+
+// The darkest red channel within 2 pixels of `at`: the needle is dark grey, the tissue pink.
+int darkest_red(const engine::RgbaImage& image, glm::vec2 at) {
+  int dark = 255;
+  for (int dy = -2; dy <= 2; ++dy)
+    for (int dx = -2; dx <= 2; ++dx) dark = std::min(dark, pixel(image, at + glm::vec2(dx, dy)).x);
+  return dark;
+}
+
+TEST_F(SectionView, TheNeedleInsideTheSphereShowsInTheCutAndThroughTheTranslucentTissue) {
+  engine::HeadlessTarget target(device(), kSize);
+  engine::SceneRenderer renderer(device(), target);
+  engine::GpuScene scene(renderer, engine::load_scene(test::source_dir() / "assets/scenes/penetrable_sphere.json"));
+  const engine::NeedleLoad needle = sphere_load(engine::NeedleContact::Inserted, {-1.0, 0.0, 0.35}, 0.03);
+  std::map<std::string, engine::RgbaImage> images;
+  for (const char* mode : {"none", "cut", "translucent"}) {
+    engine::FrameParams params = scene.frame_params(&needle);
+    if (std::string(mode) == "cut") params.section = engine::section_through_needle(params.camera, &needle);
+    if (std::string(mode) == "translucent")
+      params.section = engine::section_through_needle(params.camera, &needle, engine::Section::Mode::Translucent);
+    ASSERT_TRUE(renderer.draw(target, params, &images[mode]));
+  }
+  EXPECT_TRUE(matches_golden(images["cut"], "section_sphere_cut"));
+  EXPECT_TRUE(matches_golden(images["translucent"], "section_sphere_translucent"));
+  // 2 cm in, the shaft is inside the tissue: hidden in the plain view, seen in both section modes.
+  const glm::vec3 inside = glm::vec3(needle.tip - 0.01 * needle.axis);
+  const std::optional<glm::vec2> at = engine::project_to_screen(scene.scene().camera, kSize, inside);
+  ASSERT_TRUE(at);
+  EXPECT_GT(darkest_red(images["none"], *at), 150);
+  EXPECT_LT(darkest_red(images["cut"], *at), 120);
+  EXPECT_LT(darkest_red(images["translucent"], *at), 120);
+}
+
+TEST_F(SectionView, TheCutShowsEachLayerOfTheBlockInItsColour) {
+  engine::HeadlessTarget target(device(), kSize);
+  engine::SceneRenderer renderer(device(), target);
+  engine::GpuScene scene(renderer, engine::load_scene(test::source_dir() / "assets/scenes/tissue_block.json"));
+  // Into the block (top at z = 0, 0.1 m square at the origin) at 30 degrees, 3 cm deep.
+  engine::NeedleLoad needle;
+  needle.contact = engine::NeedleContact::Inserted;
+  needle.axis = {0.8660254, 0.0, -0.5};
+  needle.surface_point = {-0.02, 0.0, 0.0};
+  needle.tip = needle.surface_point + 0.03 * needle.axis;
+  engine::FrameParams params = scene.frame_params(&needle);
+  const engine::Section section = engine::section_through_needle(params.camera, &needle);
+  params.section = section;
+  engine::RgbaImage image;
+  ASSERT_TRUE(renderer.draw(target, params, &image));
+  EXPECT_TRUE(matches_golden(image, "section_block_cut"));
+  // Points of the cut plane in the middle of each layer (skin 2 mm, fat 10, muscle 28, bone 10),
+  // 3 cm left of the block's centre, away from the needle: four colours, each its layer's.
+  std::vector<glm::ivec3> colours;
+  for (float z : {-0.001f, -0.007f, -0.026f, -0.045f}) {
+    const float x = -0.03f;
+    const glm::vec3 n = section.normal, p0 = section.point;
+    const float y = p0.y - (n.x * (x - p0.x) + n.z * (z - p0.z)) / n.y;  // on the plane
+    const std::optional<glm::vec2> at = engine::project_to_screen(params.camera, kSize, {x, y, z});
+    ASSERT_TRUE(at);
+    colours.push_back(pixel(image, *at));
+  }
+  for (size_t a = 0; a < colours.size(); ++a)
+    for (size_t b = a + 1; b < colours.size(); ++b) {
+      const glm::ivec3 d = glm::abs(colours[a] - colours[b]);
+      EXPECT_GT(std::max({d.x, d.y, d.z}), 20) << "layers " << a << " and " << b;
+    }
+  // Muscle is the red one (base colour 0.62, 0.14, 0.14; lit, in sRGB about 223, 118, 118).
+  EXPECT_GT(colours[2].x, colours[2].y + 60);
+}
+
+}  // namespace
+}  // namespace needle::test

@@ -1,0 +1,203 @@
+// The ultrasound pass on lavapipe against the double-precision scan-line model
+// (engine::trace_scan_lines): every interface, needle wall and shadow of every line, the image's
+// bright rows at the interfaces and its dark shadow columns, speckle that stays put, layers that
+// move with the tissue; all under the validation layer.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/ultrasound/echo_model.hpp"
+#include "ultrasound_fixture.hpp"
+#include "vulkan_fixture.hpp"
+
+namespace needle::test {
+namespace {
+
+// float on the GPU against double: scene coordinates near 0.33 m are float-spaced by 3e-8 m, and
+// the GPU places a crossing by interpolating φ between two samples (exact for planes) where the
+// reference bisects; 2 µm is 1/50 of a sample.
+constexpr double kDepthTolerance_m = 2e-6;
+
+class UltrasoundTest : public VulkanTest {
+ protected:
+  // The GPU's scan lines and the reference's agree for this scene, probe and needle.
+  void expect_lines_match(engine::UltrasoundView& view, const engine::UltrasoundProbe& probe,
+                          const engine::NeedleLoad* needle) {
+    view.render(probe, needle);
+    const std::vector<engine::ScanLine> gpu = view.scan_lines();
+    const std::vector<engine::ScanLine> cpu = engine::trace_scan_lines(view.scene(), probe, needle, view.settings());
+    ASSERT_EQ(gpu.size(), cpu.size());
+    const double sample_m = probe.depth_m / view.settings().samples;
+    for (size_t i = 0; i < cpu.size(); ++i) {
+      ASSERT_EQ(gpu[i].interfaces.size(), cpu[i].interfaces.size()) << "line " << i;
+      for (size_t k = 0; k < cpu[i].interfaces.size(); ++k) {
+        const engine::EchoInterface &g = gpu[i].interfaces[k], &c = cpu[i].interfaces[k];
+        EXPECT_EQ(g.from_layer, c.from_layer) << "line " << i << " interface " << k;
+        EXPECT_EQ(g.to_layer, c.to_layer) << "line " << i << " interface " << k;
+        EXPECT_NEAR(g.depth_m, c.depth_m, kDepthTolerance_m) << "line " << i << " interface " << k;
+      }
+      EXPECT_EQ(std::isinf(gpu[i].needle_depth_m), std::isinf(cpu[i].needle_depth_m)) << "line " << i;
+      if (!std::isinf(cpu[i].needle_depth_m)) {
+        EXPECT_NEAR(gpu[i].needle_depth_m, cpu[i].needle_depth_m, kDepthTolerance_m) << "line " << i;
+      }
+      // The shadow begins at a sample: the same one, or the next where float and double part.
+      EXPECT_EQ(std::isinf(gpu[i].shadow_depth_m), std::isinf(cpu[i].shadow_depth_m)) << "line " << i;
+      if (!std::isinf(cpu[i].shadow_depth_m)) {
+        EXPECT_NEAR(gpu[i].shadow_depth_m, cpu[i].shadow_depth_m, 1.01 * sample_m) << "line " << i;
+      }
+    }
+  }
+};
+
+TEST_F(UltrasoundTest, TheGpuScanLinesAreTheReferencesInTheLayeredBlock) {
+  engine::UltrasoundView view(device(), block_scene());
+  const engine::NeedleLoad in_plane = in_plane_needle(), out_of_plane = out_of_plane_needle();
+  expect_lines_match(view, block_probe(), nullptr);
+  expect_lines_match(view, block_probe(), &in_plane);
+  expect_lines_match(view, block_probe(), &out_of_plane);
+  // Every line crosses gel→skin→fat→muscle→bone; the needle in plane meets a run of lines.
+  const std::vector<engine::ScanLine> lines = engine::trace_scan_lines(view.scene(), block_probe(), &in_plane, view.settings());
+  ASSERT_EQ(lines[128].interfaces.size(), 4u);
+  EXPECT_NEAR(lines[128].interfaces[0].depth_m, 0.0, 1e-9);
+  EXPECT_NEAR(lines[128].interfaces[1].depth_m, 0.002, 1e-9);
+  EXPECT_NEAR(lines[128].interfaces[2].depth_m, 0.012, 1e-9);
+  EXPECT_NEAR(lines[128].interfaces[3].depth_m, 0.040, 1e-9);
+  EXPECT_NEAR(lines[128].shadow_depth_m, 0.041, 0.001);  // bone's 225 dB/cm round trip: dark within 2 mm
+  int needle_lines = 0;
+  for (const engine::ScanLine& l : lines) needle_lines += !std::isinf(l.needle_depth_m);
+  EXPECT_GT(needle_lines, 100);
+}
+
+TEST_F(UltrasoundTest, TheGpuScanLinesAreTheReferencesUnderHalfABonePlate) {
+  engine::UltrasoundView view(device(), half_bone_scene(), {128, 256});
+  expect_lines_match(view, block_probe(), nullptr);
+  // The plate lies under x > 0.33: the right half of the lines (the array runs along +x).
+  const std::vector<engine::ScanLine> lines = view.scan_lines();
+  for (size_t i = 0; i < lines.size(); ++i)
+    EXPECT_EQ(std::isinf(lines[i].shadow_depth_m), i < lines.size() / 2) << "line " << i;
+}
+
+TEST_F(UltrasoundTest, TheLayersMoveWithTheTissue) {
+  // The thesis's sphere, deformable as in assets/scenes/penetrable_sphere.json, pressed 6 mm
+  // straight down at its top.
+  engine::EchoScene scene;
+  scene.layers = {{"tissue", {{engine::EchoPrimitive::Kind::Sphere, {0.4, 0.0, 0.0}, {}, 0.1}}, false, {}}};
+  scene.deformation = engine::TissueParams{};
+  engine::UltrasoundProbe probe;
+  probe.position = {0.4, 0.0, 0.12};
+  probe.depth_m = 0.06;
+  engine::NeedleLoad press;
+  press.contact = engine::NeedleContact::Touching;
+  press.axis = {0.0, 0.0, -1.0};
+  press.surface_point = {0.4, 0.0, 0.1};
+  press.tip = {0.4, 0.0, 0.094};
+  engine::UltrasoundView view(device(), scene, {128, 512});
+  expect_lines_match(view, probe, &press);
+  // The middle line meets the surface at the tip (the dimple's floor, docs/DEFORMATION.md), not at rest.
+  const engine::ScanLine middle = view.scan_lines()[64];
+  ASSERT_FALSE(middle.interfaces.empty());
+  EXPECT_NEAR(middle.interfaces[0].depth_m, 0.026, 2e-4);
+  expect_lines_match(view, probe, nullptr);
+  EXPECT_NEAR(view.scan_lines()[64].interfaces[0].depth_m, 0.02, 2e-4);
+}
+
+// Without speckle, the image is the scan-line model blurred by the point spread function: each
+// interface the reference finds is the brightest row within the pulse's length around it.
+TEST_F(UltrasoundTest, TheImagesBrightRowsAreTheReferencesInterfaces) {
+  engine::UltrasoundSettings settings;
+  settings.speckle = false;
+  engine::UltrasoundView view(device(), block_scene(), settings);
+  const engine::UltrasoundProbe probe = block_probe();
+  view.render(probe, nullptr);
+  const engine::RgbaImage image = view.image();
+  const double sample_m = probe.depth_m / settings.samples;
+  const int reach = 3;  // samples either side: the axial PSF's radius at 7.5 MHz
+  const std::vector<engine::ScanLine> lines = engine::trace_scan_lines(view.scene(), probe, nullptr, settings);
+  int checked = 0;
+  for (uint32_t line = 0; line < settings.lines; line += 16) {
+    for (const engine::EchoInterface& e : lines[line].interfaces) {
+      const double expected = e.depth_m / sample_m - 0.5;
+      if (expected < reach) continue;  // the face's own echo has no row above it
+      int brightest = int(std::lround(expected));
+      for (int j = int(expected) - reach; j <= int(expected) + reach; ++j)
+        if (image.at(line, uint32_t(j))[0] > image.at(line, uint32_t(brightest))[0]) brightest = j;
+      EXPECT_LE(std::abs(brightest - expected), 1.0) << "line " << line << " depth " << e.depth_m;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 16 * 3);
+}
+
+// Below the plate's surface the shadowed lines are black; the others still show muscle.
+TEST_F(UltrasoundTest, ShadowColumnsAreDarkAndTheOthersAreNot) {
+  engine::UltrasoundView view(device(), half_bone_scene());
+  const engine::UltrasoundProbe probe = block_probe();
+  view.render(probe, nullptr);
+  const engine::RgbaImage image = view.image();
+  const std::vector<engine::ScanLine> lines = engine::trace_scan_lines(view.scene(), probe, nullptr, view.settings());
+  const double sample_m = probe.depth_m / view.settings().samples;
+  // Rows from 2 mm under the plate's surface (25 mm) to 2 mm above the muscle's floor (40 mm).
+  const uint32_t first = uint32_t(0.027 / sample_m), last = uint32_t(0.038 / sample_m);
+  for (uint32_t line = 8; line + 8 < view.settings().lines; line += 8) {
+    // Lines whose lateral point spread function reaches across the plate's edge are neither.
+    if (std::isinf(lines[line - 8].shadow_depth_m) != std::isinf(lines[line + 8].shadow_depth_m)) continue;
+    double sum = 0.0;
+    for (uint32_t j = first; j <= last; ++j) sum += image.at(line, j)[0];
+    const double mean = sum / (last - first + 1);
+    if (std::isinf(lines[line].shadow_depth_m)) {
+      EXPECT_GT(mean, 40.0) << "line " << line;
+    } else {
+      EXPECT_LT(mean, 2.0) << "line " << line;
+    }
+  }
+}
+
+TEST_F(UltrasoundTest, SpeckleStaysPutWhileTheProbeStaysPut) {
+  engine::UltrasoundView view(device(), block_scene());
+  engine::UltrasoundProbe probe = block_probe();
+  view.render(probe, nullptr);
+  const engine::RgbaImage first = view.image();
+  view.render(probe, nullptr);
+  EXPECT_EQ(view.image().pixels, first.pixels);
+  probe.position.y += 0.001;  // a millimetre across the plane: other scatterers
+  view.render(probe, nullptr);
+  EXPECT_NE(view.image().pixels, first.pixels);
+}
+
+TEST_F(UltrasoundTest, AScenePastTheShadersLimitsIsRefused) {
+  engine::EchoScene many = block_scene();
+  while (many.layers.size() <= engine::EchoScene::kMaxLayers) many.layers.push_back(many.layers.back());
+  EXPECT_THROW(engine::UltrasoundView(device(), many), std::invalid_argument);
+  EXPECT_THROW(engine::UltrasoundView(device(), block_scene(), {0, 512}), std::invalid_argument);
+}
+
+TEST(UltrasoundModel, ThePictureHasTheProbesProportions) {
+  engine::RgbaImage image{2, 4, std::vector<uint8_t>(32, 0)};
+  for (uint32_t y = 0; y < 4; ++y) image.pixels[(y * 2 + 1) * 4] = 200;  // the right line bright
+  engine::UltrasoundProbe probe;
+  probe.width_m = 0.04;
+  probe.depth_m = 0.02;
+  const engine::RgbaImage picture = engine::to_picture(image, probe);
+  EXPECT_EQ(picture.width, 8u);
+  EXPECT_EQ(picture.height, 4u);
+  EXPECT_EQ(picture.at(0, 0)[0], 0);
+  EXPECT_EQ(picture.at(7, 3)[0], 200);
+  EXPECT_GT(picture.at(4, 0)[0], 0);
+  EXPECT_LT(picture.at(4, 0)[0], 200);
+}
+
+TEST(UltrasoundModel, TheFollowingProbeLiesOverTheTipWithTheNeedleAlongItsArray) {
+  engine::UltrasoundProbe probe = block_probe();
+  const engine::NeedleLoad needle = out_of_plane_needle();  // along +y, down
+  const engine::UltrasoundProbe follow = engine::probe_following(probe, needle);
+  EXPECT_NEAR(glm::length(follow.lateral - glm::dvec3(0.0, 1.0, 0.0)), 0.0, 1e-12);
+  EXPECT_NEAR(follow.position.z, probe.position.z, 1e-12);  // still on the skin
+  EXPECT_NEAR(follow.position.x, needle.tip.x, 1e-12);
+  EXPECT_NEAR(follow.position.y, needle.tip.y, 1e-12);
+  engine::NeedleLoad down = needle;
+  down.axis = probe.direction;  // along the beam: no plane to follow
+  EXPECT_EQ(engine::probe_following(probe, down).position, probe.position);
+}
+
+}  // namespace
+}  // namespace needle::test

@@ -1,0 +1,111 @@
+// needle-sim bench ultrasound: the ultrasound image's compute passes through the layered tissue
+// block and the lumbar epidural section with the needle in plane, at 256 x 512 and 512 x 1024:
+// time per image (submitted and waited for) against the scan-line model's double-precision CPU
+// reference over the same lines, and the largest depth difference between the two.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "app/echo_scene.hpp"
+#include "arg_list.hpp"
+#include "asset_path.hpp"
+#include "bench_table.hpp"
+#include "command.hpp"
+#include "engine/gpu_device.hpp"
+#include "sample_stats.hpp"
+
+namespace needle::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
+
+// A scene of the bench: the scenario's layers, a probe on its skin and a needle in the probe's plane.
+struct Case {
+  const char* name;
+  const char* scenario;
+  engine::UltrasoundProbe probe;
+  engine::NeedleLoad needle;
+};
+
+engine::NeedleLoad needle_in_plane(glm::dvec3 entry, double angle_rad, double depth_m) {
+  engine::NeedleLoad n;
+  n.contact = engine::NeedleContact::Inserted;
+  n.axis = {std::cos(angle_rad), 0.0, -std::sin(angle_rad)};
+  n.tip = entry + depth_m * n.axis;
+  n.surface_point = entry;
+  return n;
+}
+
+std::vector<Case> cases() {
+  engine::UltrasoundProbe block;  // a 7.5 MHz linear probe on the block's skin (z = 0.07 m), 50 mm deep
+  block.position = {0.33, 0.0, 0.07};
+  engine::UltrasoundProbe epidural = block;  // 5 MHz, 80 mm deep, 50 mm wide: down to the vertebral body
+  epidural.depth_m = 0.08;
+  epidural.width_m = 0.05;
+  epidural.frequency_MHz = 5.0;
+  return {{"block", "scenarios/tissue_block_layers.json", block, needle_in_plane({0.315, 0.0, 0.07}, 0.5236, 0.035)},
+          {"epidural", "scenarios/lumbar_epidural.json", epidural, needle_in_plane({0.31, 0.0, 0.07}, 0.7854, 0.06)}};
+}
+
+// The largest depth difference between the GPU's and the reference's interfaces and needle walls.
+double max_depth_error(const std::vector<engine::ScanLine>& gpu, const std::vector<engine::ScanLine>& cpu) {
+  double worst = 0.0;
+  for (size_t i = 0; i < cpu.size(); ++i) {
+    if (gpu[i].interfaces.size() != cpu[i].interfaces.size() ||
+        std::isinf(gpu[i].needle_depth_m) != std::isinf(cpu[i].needle_depth_m))
+      return std::numeric_limits<double>::infinity();  // a line that met other things
+    for (size_t k = 0; k < cpu[i].interfaces.size(); ++k)
+      worst = std::max(worst, std::abs(gpu[i].interfaces[k].depth_m - cpu[i].interfaces[k].depth_m));
+    if (!std::isinf(cpu[i].needle_depth_m)) worst = std::max(worst, std::abs(gpu[i].needle_depth_m - cpu[i].needle_depth_m));
+  }
+  return worst;
+}
+
+int run_bench_ultrasound(ArgList& args) {
+  auto json = args.value("--json");
+  const double frames = parse_number(args.value("--frames").value_or("60"), "--frames");
+  args.finish();
+  if (frames < 2 || frames != double(long(frames))) throw UsageError("--frames: expected a whole number ≥ 2");
+
+  engine::GpuDevice device;
+  BenchTable table({"scene", "lines", "samples", "gpu_ms", "gpu_ms_p95", "cpu_ms", "max_depth_error_m"});
+  for (const Case& c : cases()) {
+    const haptics::Scenario scenario = haptics::load_scenario((asset_dir() / c.scenario).string());
+    const engine::EchoScene scene = app::echo_scene(scenario, engine::Scene{});
+    for (const auto& [lines, samples] : {std::pair{256u, 512u}, std::pair{512u, 1024u}}) {
+      engine::UltrasoundView view(device, scene, {lines, samples});
+      view.render(c.probe, &c.needle);  // pipelines warmed, memory touched
+      std::vector<double> gpu_ms;
+      for (int f = 0; f < int(frames); ++f) {
+        const auto start = Clock::now();
+        view.render(c.probe, &c.needle);
+        gpu_ms.push_back(ms_since(start));
+      }
+      std::vector<double> cpu_ms;
+      std::vector<engine::ScanLine> reference;
+      for (int r = 0; r < 3; ++r) {
+        const auto start = Clock::now();
+        reference = engine::trace_scan_lines(scene, c.probe, &c.needle, view.settings());
+        cpu_ms.push_back(ms_since(start));
+      }
+      table.add_row({c.name, lines, samples, percentile(gpu_ms, 0.5), percentile(gpu_ms, 0.95), percentile(cpu_ms, 0.5),
+                     max_depth_error(view.scan_lines(), reference)});
+    }
+  }
+  table.emit("bench ultrasound: one image on " + device.device_description() +
+                 " (gpu: submitted and waited for, median and 95th percentile; cpu: the scan-line reference, one thread, "
+                 "double)",
+             json);
+  return 0;
+}
+
+const CommandRegistrar reg{{"bench ultrasound",
+                            "needle-sim bench ultrasound [--json FILE] [--frames N]\n"
+                            "  --json FILE  also write the rows as JSON\n"
+                            "  --frames N   images timed per scene and size (default 60)",
+                            run_bench_ultrasound}};
+
+}  // namespace
+}  // namespace needle::cli
