@@ -170,7 +170,7 @@ int run_review_window(const ReviewOptions& options) {
     params.overlay = ui_pass.end_frame();
     if (needle && ultrasound) ultrasound->add_to_frame(params, renderer, extent, *needle);
 
-    frames.draw(window, renderer, target, params);
+    frames.draw(window, [&](engine::RgbaImage* shot) { return renderer.draw(target, params, shot); });
   }
   renderer.wait_idle();
   std::printf("presented %ld frames\n", frames.drawn());

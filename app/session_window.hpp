@@ -11,13 +11,12 @@
 #include <string>
 
 #include "app/task_session.hpp"
+#include "app/trainee_frame.hpp"
 #include "app/ultrasound_window.hpp"
 #include "app/window_frames.hpp"
 #include "engine/extent.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/scene.hpp"
-#include "engine/ui_pass.hpp"
-#include "ui/status_panel.hpp"
 #include "ui/view_panel.hpp"
 
 namespace needle::app {
@@ -33,17 +32,16 @@ struct WindowOptions {
 
 // What the window shows each frame: where the needle is, and a panel beside the status panel;
 // `input` takes the frame's input (the desk devices' cursor, keys and gamepad).
-struct Show {
-  std::function<std::optional<engine::NeedleLoad>(double t_s)> needle;
-  std::function<void()> panel;
-  std::function<void(engine::Window&)> input;
-  // A task's ultrasound view, offered in the view panel; made on the window's device and gone before it.
+// `ultrasound`: a task's ultrasound view, offered in the view panel; made on the window's device
+// and gone before it; `ultrasound_open`: open at the start (a task with a probe).
+struct Show : FrameContent {
   std::shared_ptr<UltrasoundWindow> ultrasound;
-  bool ultrasound_open = false;  // at the start (a task with a probe)
+  bool ultrasound_open = false;
 };
 
 // The window, kept open across what it shows (a task, the start screen and the tasks it
-// starts): its GPU device and swapchain, the renderer, the UI pass and the frame count.
+// starts): its GPU device and swapchain, the trainee's frame (the renderer and the UI pass, as
+// `bench frame` measures it) and the frame count.
 class SessionWindow {
  public:
   explicit SessionWindow(const WindowOptions& options);
@@ -53,7 +51,7 @@ class SessionWindow {
 
   engine::Window& window() { return vw_.window; }
   const engine::GpuDevice& device() const { return vw_.device; }
-  engine::SceneRenderer& renderer() { return renderer_; }
+  engine::SceneRenderer& renderer() { return frame_.renderer(); }
   bool closed() const { return vw_.window.should_close(); }
   // Draws `scene` with `show` until the window closes or, checked after each frame, `done()`.
   void run(engine::GpuScene& scene, const Show& show, const std::function<bool()>& done = {});
@@ -64,9 +62,7 @@ class SessionWindow {
 
   WindowOptions options_;
   GpuWindow vw_;
-  engine::SceneRenderer renderer_;
-  std::optional<engine::UiPass> ui_pass_;
-  ui::FrameClock clock_;
+  TraineeFrame frame_;
   WindowFrames frames_;
   ui::ViewState view_;  // the section view and the ultrasound window, kept from task to task
 };

@@ -131,7 +131,7 @@ ui::StartAction choose(SessionWindow& window, StartScreen& screen) {
   engine::GpuScene empty(window.renderer(), engine::Model{}, engine::Scene{});
   ui::StartAction action = ui::StartAction::kNone;
   window.run(empty,
-             Show{{},
+             Show{{{},
                   [&] {
                     screen.refresh();
                     const ui::StartAction clicked = ui::draw_start_screen(screen.state());
@@ -146,7 +146,7 @@ ui::StartAction choose(SessionWindow& window, StartScreen& screen) {
                       const ui::StartAction pressed = ui::start_key(screen.state(), *key, typing);
                       if (pressed != ui::StartAction::kNone) action = pressed;
                     }
-                  }},
+                  }}},
              [&] { return action != ui::StartAction::kNone; });
   return action;
 }

@@ -7,11 +7,10 @@ namespace needle::app {
 GpuWindow::GpuWindow(const std::string& title, engine::Extent size)
     : window(title, int(size.width), int(size.height)), device(window), target(device, window) {}
 
-void WindowFrames::draw(engine::Window& window, engine::SceneRenderer& renderer, engine::RenderTarget& target,
-                        const engine::FrameParams& params) {
+void WindowFrames::draw(engine::Window& window, const std::function<bool(engine::RgbaImage*)>& draw_frame) {
   const bool last = frames_ > 0 && drawn_ + 1 == frames_;
   engine::RgbaImage shot;
-  if (!renderer.draw(target, params, last && screenshot_ ? &shot : nullptr)) {
+  if (!draw_frame(last && screenshot_ ? &shot : nullptr)) {
     window.wait_events();
     return;
   }

@@ -3,6 +3,7 @@
 // saving it first when --screenshot names a file (the CLI tests under Xvfb use both).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -29,9 +30,10 @@ class WindowFrames {
  public:
   WindowFrames(long frames, std::optional<std::string> screenshot) : frames_(frames), screenshot_(std::move(screenshot)) {}
 
-  // Draws one frame; when nothing could be drawn (minimised, resizing) waits for an event instead.
-  void draw(engine::Window& window, engine::SceneRenderer& renderer, engine::RenderTarget& target,
-            const engine::FrameParams& params);
+  // Draws one frame with `draw_frame` (which reads it back into its argument when that is set,
+  // and says whether the target took a frame); when nothing could be drawn (minimised, resizing)
+  // waits for an event instead.
+  void draw(engine::Window& window, const std::function<bool(engine::RgbaImage* capture)>& draw_frame);
   long drawn() const { return drawn_; }
 
  private:

@@ -36,6 +36,9 @@ class GpuDevice {
   // A CPU device (Mesa's lavapipe) pays for every MSAA sample in frame time, so the interactive
   // window asks for fewer there (docs/RENDERING.md, MSAA).
   bool is_cpu_device() const;
+  // Whether the device writes timestamps in graphics and compute work (FrameCost's device times),
+  // and the nanoseconds a timestamp tick lasts; 0 when it has none.
+  double timestamp_period_ns() const;
   // Every message the validation layer sent (warnings and errors), in order.
   std::vector<std::string> validation_messages() const;
 

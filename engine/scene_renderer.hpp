@@ -75,6 +75,23 @@ struct RendererSettings {
   bool cull_chunks = true;
 };
 
+// What one pass of a frame cost, in milliseconds.
+struct PassCost {
+  double record_ms = 0.0;                // the CPU, recording its commands
+  std::optional<double> device_ms;       // the device, running them (SceneRenderer::set_device_timings)
+};
+
+// What drawing a frame cost, in milliseconds (docs/BENCHMARKS.md, "The trainee's frame").
+struct FrameCost {
+  double slot_wait_ms = 0.0;  // waiting for the frame drawn frames-in-flight ago to finish
+  double acquire_ms = 0.0;    // waiting for the target's next image (a window's swapchain)
+  double submit_ms = 0.0;     // handing the commands to the device (on a CPU device, running its vertex work)
+  double present_ms = 0.0;    // presenting (a CPU device's window copies the finished frame to the display)
+  PassCost before_pass;       // FrameParams::before_pass: tissue deformation
+  PassCost scene;             // the scene's meshes
+  PassCost overlay;           // FrameParams::overlay: the UI
+};
+
 class SceneRenderer {
  public:
   // The target fixes the colour format and what the frame is handed on to (presented or read back).
@@ -94,6 +111,13 @@ class SceneRenderer {
   int msaa_samples() const;
   // Triangles the last recorded frame sent to the device, after chunk culling.
   size_t triangles_drawn() const;
+  // Timestamp queries around each pass from the next frame on (FrameCost's device times), where
+  // the device has them (GpuDevice::timestamp_period_ns). A CPU device (lavapipe) then finishes
+  // each pass before it starts the next, so this is for measuring (`needle-sim bench frame`).
+  void set_device_timings(bool on);
+  // What the last draw() cost on the CPU; the device times are those of the last frame whose
+  // timestamps have come back, else nullopt.
+  const FrameCost& frame_cost() const;
 
   // The engine's own access (engine/passes/scene_pass.hpp); an incomplete type outside it.
   const ScenePass& pass() const { return *pass_; }

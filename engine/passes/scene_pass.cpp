@@ -1,6 +1,7 @@
 #include "engine/passes/scene_pass.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstring>
 
@@ -28,6 +29,22 @@ size_t level_to_draw(const GpuPrimitive& p, const glm::mat4& model_to_world, con
   return choose_level(triangles, projected_radius_px(world, camera, {extent.width, extent.height}));
 }
 
+using Clock = std::chrono::steady_clock;
+
+// Milliseconds since `since`, which moves on to now.
+double lap_ms(Clock::time_point& since) {
+  const Clock::time_point now = Clock::now();
+  const double ms = std::chrono::duration<double, std::milli>(now - since).count();
+  since = now;
+  return ms;
+}
+
+// The self-dependency of the scene's subpass that lets a timed frame wait, inside the render
+// pass, for the meshes' colour writes before the overlay (write_timestamp).
+constexpr VkPipelineStageFlags kSelfStages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+constexpr VkAccessFlags kSelfSrcAccess = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+constexpr VkAccessFlags kSelfDstAccess = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+
 }  // namespace
 
 ScenePass::ScenePass(const VulkanContext& context, const TargetImages& target, const RendererSettings& settings)
@@ -44,6 +61,19 @@ ScenePass::ScenePass(const VulkanContext& context, const TargetImages& target, c
   white_texture_ = GpuImage::texture(context_, Texture{1, 1, {255, 255, 255, 255}});
 }
 
+void ScenePass::set_device_timings(bool on) {
+  timed_ = on && context_.timestamp_period_ns() > 0.0;
+  if (!timed_) {
+    cost_.before_pass.device_ms = cost_.scene.device_ms = cost_.overlay.device_ms = std::nullopt;
+    return;
+  }
+  if (timestamps_) return;
+  VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+  info.queryCount = uint32_t(kFramesInFlight) * kTimestamps;
+  VK_CHECK(vkCreateQueryPool(device_, &info, nullptr, &timestamps_));
+}
+
 ScenePass::~ScenePass() {
   wait_idle();
   destroy_framebuffers();
@@ -53,6 +83,7 @@ ScenePass::~ScenePass() {
     if (slot.cmd) vkFreeCommandBuffers(device_, context_.command_pool(), 1, &slot.cmd);
   }
   if (frame_pool_) vkDestroyDescriptorPool(device_, frame_pool_, nullptr);
+  if (timestamps_) vkDestroyQueryPool(device_, timestamps_, nullptr);
   for (auto& row : pipelines_)
     for (VkPipeline p : row)
       if (p) vkDestroyPipeline(device_, p, nullptr);
@@ -123,7 +154,8 @@ void ScenePass::create_render_pass(const TargetImages& target) {
   to_capture.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
   to_capture.dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
   to_capture.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-  std::array<VkSubpassDependency, 2> dependencies{dependency, to_capture};
+  const VkSubpassDependency self{0, 0, kSelfStages, kSelfStages, kSelfSrcAccess, kSelfDstAccess, VK_DEPENDENCY_BY_REGION_BIT};
+  std::array<VkSubpassDependency, 3> dependencies{dependency, to_capture, self};
 
   VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
   info.attachmentCount = uint32_t(attachments.size());
@@ -340,8 +372,12 @@ void ScenePass::fill_uniforms(FrameSlot& slot, VkExtent2D extent, const FramePar
 
 bool ScenePass::draw(TargetImages& target, const FrameParams& params, RgbaImage* capture) {
   FrameSlot& slot = slots_[next_slot_];
+  Clock::time_point t = Clock::now();
   VK_CHECK(vkWaitForFences(device_, 1, &slot.done, VK_TRUE, UINT64_MAX));
+  cost_.slot_wait_ms = lap_ms(t);
+  read_timestamps(slot);
   std::optional<uint32_t> image = target.acquire(slot.image_ready);
+  cost_.acquire_ms = lap_ms(t);
   if (!image) return false;
   ensure_framebuffers(target);
   VK_CHECK(vkResetFences(device_, 1, &slot.done));
@@ -351,10 +387,12 @@ bool ScenePass::draw(TargetImages& target, const FrameParams& params, RgbaImage*
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   VK_CHECK(vkBeginCommandBuffer(slot.cmd, &begin));
+  slot.timed = timed_;
   record(slot.cmd, target, *image, params);
   if (capture) record_capture(slot.cmd, target, *image);
   VK_CHECK(vkEndCommandBuffer(slot.cmd));
 
+  t = Clock::now();
   const bool semaphores = target.uses_semaphores();
   VkPipelineStageFlags wait_stage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
@@ -366,13 +404,51 @@ bool ScenePass::draw(TargetImages& target, const FrameParams& params, RgbaImage*
   submit.signalSemaphoreCount = semaphores ? 1 : 0;
   submit.pSignalSemaphores = &render_done_[*image];
   VK_CHECK(vkQueueSubmit(context_.queue(), 1, &submit, slot.done));
+  cost_.submit_ms = lap_ms(t);
   target.present(*image, render_done_[*image]);
+  cost_.present_ms = lap_ms(t);
   next_slot_ = (next_slot_ + 1) % kFramesInFlight;
   if (capture) {
     VK_CHECK(vkWaitForFences(device_, 1, &slot.done, VK_TRUE, UINT64_MAX));
+    read_timestamps(slot);
     *capture = read_capture(target);
   }
   return true;
+}
+
+// A timestamp after everything recorded before it. A CPU device (lavapipe) takes a timestamp when
+// its rasterizer threads reach it in the binned work that follows, so each one is followed by a
+// barrier that makes the device finish what came before: the timestamp then marks the end of the
+// pass before it, not a moment within the next. Inside the render pass that barrier is the
+// subpass's self-dependency.
+void ScenePass::write_timestamp(VkCommandBuffer cmd, uint32_t index, bool in_render_pass) const {
+  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, uint32_t(next_slot_) * kTimestamps + index);
+  if (in_render_pass) {
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = kSelfSrcAccess;
+    barrier.dstAccessMask = kSelfDstAccess;
+    vkCmdPipelineBarrier(cmd, kSelfStages, kSelfStages, VK_DEPENDENCY_BY_REGION_BIT, 1, &barrier, 0, nullptr, 0, nullptr);
+  } else {
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0,
+                         nullptr, 0, nullptr);
+  }
+}
+
+void ScenePass::read_timestamps(FrameSlot& slot) {
+  if (!slot.timed) return;
+  slot.timed = false;
+  if (!timed_) return;  // timings were turned off since
+  const uint32_t first = uint32_t(&slot - slots_.data()) * kTimestamps;
+  std::array<uint64_t, kTimestamps> ticks{};
+  VK_CHECK(vkGetQueryPoolResults(device_, timestamps_, first, kTimestamps, sizeof ticks, ticks.data(), sizeof(uint64_t),
+                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+  const uint32_t bits = context_.timestamp_valid_bits();
+  const uint64_t mask = bits >= 64 ? ~uint64_t(0) : (uint64_t(1) << bits) - 1;
+  const double ms_per_tick = context_.timestamp_period_ns() * 1e-6;
+  auto between = [&](int a, int b) { return double((ticks[b] - ticks[a]) & mask) * ms_per_tick; };
+  cost_.before_pass.device_ms = between(0, 1);
+  cost_.scene.device_ms = between(1, 2);
+  cost_.overlay.device_ms = between(2, 3);
 }
 
 void ScenePass::record_capture(VkCommandBuffer cmd, const TargetImages& target, uint32_t image) {
@@ -410,7 +486,16 @@ RgbaImage ScenePass::read_capture(const TargetImages& target) const {
 }
 
 void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t image, const FrameParams& params) {
+  const bool timed = timed_;
+  if (timed) {
+    vkCmdResetQueryPool(cmd, timestamps_, uint32_t(next_slot_) * kTimestamps, kTimestamps);
+    write_timestamp(cmd, 0, false);
+  }
+  Clock::time_point t = Clock::now();
   if (params.before_pass) params.before_pass(CommandBuffer{cmd});
+  cost_.before_pass.record_ms = lap_ms(t);
+  if (timed) write_timestamp(cmd, 1, false);
+  t = Clock::now();
   struct Draw {
     const GpuModel* model;
     uint32_t primitive;
@@ -494,8 +579,13 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
   };
   draw_list(opaque, 0);
   draw_list(blended, 1);
+  cost_.scene.record_ms = lap_ms(t);
+  if (timed) write_timestamp(cmd, 2, true);
+  t = Clock::now();
   if (params.overlay) params.overlay(CommandBuffer{cmd});
+  cost_.overlay.record_ms = lap_ms(t);
   vkCmdEndRenderPass(cmd);
+  if (timed) write_timestamp(cmd, 3, false);
 }
 
 void ScenePass::wait_idle() const { vkQueueWaitIdle(context_.queue()); }

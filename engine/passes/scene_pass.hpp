@@ -41,18 +41,24 @@ class ScenePass {
 
   VkSampleCountFlagBits samples() const { return samples_; }
   size_t triangles_drawn() const { return triangles_drawn_; }
+  const FrameCost& frame_cost() const { return cost_; }
+  void set_device_timings(bool on);
   const VulkanContext& context() const { return context_; }
   // For passes drawn inside the scene's render pass (the UI pass).
   VkRenderPass render_pass() const { return render_pass_; }
 
  private:
   static constexpr size_t kFramesInFlight = 2;
+  // Timestamps a timed frame writes: before the compute passes, after them, after the scene's
+  // meshes, after the overlay.
+  static constexpr uint32_t kTimestamps = 4;
   struct FrameSlot {
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     VkFence done = VK_NULL_HANDLE;
     VkSemaphore image_ready = VK_NULL_HANDLE;
     GpuBuffer uniforms;
     VkDescriptorSet frame_set = VK_NULL_HANDLE;
+    bool timed = false;  // its last frame wrote timestamps not read yet
   };
 
   void create_render_pass(const TargetImages& target);
@@ -65,6 +71,8 @@ class ScenePass {
   void record_capture(VkCommandBuffer cmd, const TargetImages& target, uint32_t image);
   RgbaImage read_capture(const TargetImages& target) const;
   void fill_uniforms(FrameSlot& slot, VkExtent2D extent, const FrameParams& params) const;
+  void write_timestamp(VkCommandBuffer cmd, uint32_t index, bool in_render_pass) const;
+  void read_timestamps(FrameSlot& slot);
 
   const VulkanContext& context_;
   VkDevice device_;
@@ -84,6 +92,9 @@ class ScenePass {
   std::array<FrameSlot, kFramesInFlight> slots_;
   size_t next_slot_ = 0;
   size_t triangles_drawn_ = 0;
+  VkQueryPool timestamps_ = VK_NULL_HANDLE;  // kTimestamps a slot, made when timings are first asked for
+  bool timed_ = false;                       // this frame writes timestamps
+  FrameCost cost_;
 
   // Per target generation: attachments shared by the images, a framebuffer and a
   // render-done semaphore per target image.

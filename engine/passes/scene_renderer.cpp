@@ -23,6 +23,10 @@ int SceneRenderer::msaa_samples() const { return int(pass_->samples()); }
 
 size_t SceneRenderer::triangles_drawn() const { return pass_->triangles_drawn(); }
 
+void SceneRenderer::set_device_timings(bool on) { pass_->set_device_timings(on); }
+
+const FrameCost& SceneRenderer::frame_cost() const { return pass_->frame_cost(); }
+
 Section section_through_needle(const Camera& camera, const NeedleLoad* needle, Section::Mode mode) {
   Section section;
   section.mode = mode;

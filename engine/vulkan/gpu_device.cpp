@@ -30,6 +30,8 @@ bool GpuDevice::is_cpu_device() const {
   return context_->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
 }
 
+double GpuDevice::timestamp_period_ns() const { return context_->timestamp_period_ns(); }
+
 std::vector<std::string> GpuDevice::validation_messages() const { return context_->validation_messages(); }
 
 }  // namespace needle::engine

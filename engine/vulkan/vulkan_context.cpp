@@ -188,6 +188,7 @@ void VulkanContext::pick_physical_device() {
       physical_device_ = candidate;
       properties_ = props;
       queue_family_ = *family;
+      timestamp_valid_bits_ = families[*family].timestampValidBits;
     }
   }
   if (!physical_device_) {
@@ -231,6 +232,11 @@ uint32_t VulkanContext::memory_type(uint32_t allowed_types, VkMemoryPropertyFlag
     if ((allowed_types & (1u << i)) && (memory_properties_.memoryTypes[i].propertyFlags & flags) == flags) return i;
   }
   throw VulkanError("no Vulkan memory type with the required properties");
+}
+
+double VulkanContext::timestamp_period_ns() const {
+  if (timestamp_valid_bits_ == 0 || !properties_.limits.timestampComputeAndGraphics) return 0.0;
+  return properties_.limits.timestampPeriod;
 }
 
 VkSampleCountFlagBits VulkanContext::max_msaa(int wanted) const {

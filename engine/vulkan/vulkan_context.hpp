@@ -36,6 +36,11 @@ class VulkanContext {
 
   // Memory type index with the given bits among allowed_types; throws when there is none.
   uint32_t memory_type(uint32_t allowed_types, VkMemoryPropertyFlags flags) const;
+  // Nanoseconds a timestamp tick lasts; 0 when the queue cannot write timestamps in both graphics
+  // and compute work.
+  double timestamp_period_ns() const;
+  // The bits of a timestamp that count (the queue family's timestampValidBits).
+  uint32_t timestamp_valid_bits() const { return timestamp_valid_bits_; }
   // Highest sample count ≤ wanted supported for colour and depth attachments together.
   VkSampleCountFlagBits max_msaa(int wanted) const;
 
@@ -65,6 +70,7 @@ class VulkanContext {
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;
   uint32_t queue_family_ = 0;
+  uint32_t timestamp_valid_bits_ = 0;
   VkCommandPool command_pool_ = VK_NULL_HANDLE;
 
   mutable std::mutex messages_mutex_;  // the layer may call back from the driver's threads

@@ -1,0 +1,59 @@
+// `needle-sim bench frame --json`: the row keys other tools read, a window row under a virtual
+// display, and what it says when there is no display.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli_process.hpp"
+
+namespace needle::test {
+namespace {
+
+TEST(CliBenchFrame, OffscreenRowsCarryTheContractKeysAndEveryPass) {
+  const auto json_path = test_output_dir("cli_bench_frame") / "offscreen.json";
+  ProcessResult r = run_needle_sim("bench frame --contents tissue:20 --sizes 64x48 --targets offscreen --frames 16 "
+                                   "--warmup 2 --json " + quoted(json_path));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  const nlohmann::json rows = nlohmann::json::parse(std::ifstream(json_path));
+  ASSERT_EQ(rows.size(), 1u);
+  const nlohmann::json& row = rows[0];
+  for (const char* key : {"size", "target", "frame_ms_median", "frame_ms_p95", "frame_ms_p99", "passes"}) {
+    EXPECT_TRUE(row.contains(key)) << key;
+  }
+  EXPECT_EQ(row["size"], "64x48");
+  EXPECT_EQ(row["target"], "offscreen");
+  EXPECT_LE(row["frame_ms_median"].get<double>(), row["frame_ms_p95"].get<double>());
+  // lavapipe writes timestamps: each pass has its CPU and its device time.
+  for (const char* pass : {"scene_record_cpu", "ui_record_cpu", "ui_build_cpu", "acquire_wait", "present_wait",
+                           "scene_device", "ui_device", "deformation_device"}) {
+    EXPECT_TRUE(row["passes"].contains(pass)) << pass;
+  }
+}
+
+TEST(CliBenchFrame, WindowRowsDrawTheTaskInAWindow) {
+  const auto json_path = test_output_dir("cli_bench_frame") / "window.json";
+  ProcessResult r = run_on_virtual_display(test::needle_sim_exe().string() +
+                                           " bench frame --contents penetrable_sphere --sizes 320x240 --targets window "
+                                           "--frames 16 --warmup 2 --json " + quoted(json_path));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  const nlohmann::json rows = nlohmann::json::parse(std::ifstream(json_path));
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0]["target"], "window");
+  EXPECT_EQ(rows[0]["content"], "penetrable_sphere");
+  EXPECT_GT(rows[0]["passes"]["present_wait"].get<double>(), 0.0);
+}
+
+TEST(CliBenchFrame, WithoutADisplayTheWindowRowsSaySo) {
+  ProcessResult r = run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + test::needle_sim_exe().string() +
+                                " bench frame --frames 10");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("no display"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--targets offscreen"), std::string::npos) << r.output;
+  EXPECT_EQ(run_needle_sim("bench frame --views ultrasound").exit_code, 2);
+}
+
+}  // namespace
+}  // namespace needle::test

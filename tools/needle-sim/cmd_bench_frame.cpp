@@ -1,0 +1,263 @@
+// needle-sim bench frame: the trainee's whole frame as `run` draws it (app::TraineeFrame: the
+// scene with its deformation pass, the status panel, the trainee panel and the guidance), driven
+// by a scripted needle, in a window and offscreen, pass by pass: the CPU time to record each
+// pass, the device's time for it (timestamp queries), the waits for the swapchain, and the frame
+// period's median, p95 and p99.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "app/task_session.hpp"
+#include "app/trainee_frame.hpp"
+#include "app/window_frames.hpp"
+#include "arg_list.hpp"
+#include "asset-gen/assets.hpp"
+#include "asset_path.hpp"
+#include "bench_table.hpp"
+#include "command.hpp"
+#include "engine/gltf_loader.hpp"
+#include "engine/offscreen.hpp"
+#include "sample_stats.hpp"
+
+namespace needle::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+constexpr const char* kTissuePrefix = "tissue:";
+
+// What a row draws: a thesis task through its haptic loop with the scripted good operator, or
+// the N x N sphere (with its levels of detail) under the scripted needle.
+struct Content {
+  std::string name;
+  fs::path task;     // a task file, or
+  int tissue = 0;    // the sphere's resolution
+};
+
+std::vector<Content> parse_contents(const std::string& list) {
+  std::vector<Content> contents;
+  for (size_t start = 0; start <= list.size();) {
+    const size_t end = std::min(list.find(',', start), list.size());
+    const std::string item = list.substr(start, end - start);
+    start = end + 1;
+    if (item.rfind(kTissuePrefix, 0) == 0) {
+      const double n = parse_number(item.substr(std::string(kTissuePrefix).size()), "--contents");
+      if (n < 3 || n > 2000 || n != double(int(n))) throw UsageError("--contents: tissue:N takes N in 3..2000");
+      contents.push_back({item, {}, int(n)});
+      continue;
+    }
+    fs::path task = item.ends_with(".json") ? fs::path(item) : asset_dir() / "tasks" / (item + ".json");
+    if (!fs::is_regular_file(task)) throw UsageError("--contents: no task file " + task.string());
+    contents.push_back({fs::path(item).stem().string(), task, 0});
+  }
+  return contents;
+}
+
+std::vector<engine::Extent> parse_sizes(const std::string& list) {
+  std::vector<engine::Extent> sizes;
+  for (size_t start = 0; start <= list.size();) {
+    const size_t end = std::min(list.find(',', start), list.size());
+    sizes.push_back(parse_size(list.substr(start, end - start), "--sizes"));
+    start = end + 1;
+  }
+  return sizes;
+}
+
+// One frame's measures, in milliseconds.
+struct FrameSample {
+  bool timed = false;  // drawn with timestamp queries
+  double period_ms = 0.0;  // from this frame's start to the next one's
+  std::map<std::string, double> passes;
+};
+
+// The frame's parts, named as the JSON's `passes` keys.
+std::map<std::string, double> pass_times(const app::ContentCost& content, const engine::FrameCost& cost) {
+  std::map<std::string, double> passes{
+      {"needle_cpu", content.needle_ms},
+      {"frame_params_cpu", content.scene_ms},
+      {"ui_build_cpu", content.ui_ms},
+      {"deformation_record_cpu", cost.before_pass.record_ms},
+      {"scene_record_cpu", cost.scene.record_ms},
+      {"ui_record_cpu", cost.overlay.record_ms},
+      {"submit_cpu", cost.submit_ms},
+      {"slot_wait", cost.slot_wait_ms},
+      {"acquire_wait", cost.acquire_ms},
+      {"present_wait", cost.present_ms},
+  };
+  if (cost.before_pass.device_ms) passes["deformation_device"] = *cost.before_pass.device_ms;
+  if (cost.scene.device_ms) passes["scene_device"] = *cost.scene.device_ms;
+  if (cost.overlay.device_ms) passes["ui_device"] = *cost.overlay.device_ms;
+  return passes;
+}
+
+struct RowOptions {
+  long frames = 300;
+  long warmup = 30;
+  int msaa = 1;
+  bool timestamps = true;
+  long block = 8;  // timed and untimed frames alternate in blocks of this many
+};
+
+// Draws the content's frames into the target and measures them. The first frame of each block
+// carries the switch from the other kind and is left out.
+std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget& target, engine::GpuScene& scene,
+                                 const app::FrameContent& content, engine::Window* window, const RowOptions& options) {
+  std::vector<FrameSample> samples;
+  const Clock::time_point start = Clock::now();
+  Clock::time_point previous;
+  bool counting = false;
+  const long total = options.warmup + options.frames * (options.timestamps ? 2 : 1);
+  for (long i = 0; i < total; ++i) {
+    const long measured = i - options.warmup;
+    const bool timed = options.timestamps && measured >= 0 && (measured / options.block) % 2 == 1;
+    frame.renderer().set_device_timings(timed);
+    const Clock::time_point now = Clock::now();
+    if (counting) samples.back().period_ms = std::chrono::duration<double, std::milli>(now - previous).count();
+    previous = now;
+    if (window) {
+      window->poll_events();
+      if (content.input) content.input(*window);
+    }
+    const double t = std::chrono::duration<double>(now - start).count();
+    if (!frame.draw(target, scene, content, t)) throw std::runtime_error("the window took no frame (minimised?)");
+    counting = measured >= 0 && measured % options.block != 0;
+    if (counting) samples.push_back({timed, 0.0, pass_times(frame.content_cost(), frame.renderer().frame_cost())});
+  }
+  if (counting) samples.pop_back();  // no next frame to end its period
+  frame.renderer().wait_idle();
+  return samples;
+}
+
+int run_bench_frame(ArgList& args) {
+  const auto json = args.value("--json");
+  const std::vector<Content> contents =
+      parse_contents(args.value("--contents").value_or("penetrable_sphere,rigid_sphere,tissue:400"));
+  const std::vector<engine::Extent> sizes = parse_sizes(args.value("--sizes").value_or("1280x720,1920x1080"));
+  const std::string targets_arg = args.value("--targets").value_or("window,offscreen");
+  RowOptions options;
+  options.frames = long(parse_number(args.value("--frames").value_or("300"), "--frames"));
+  options.warmup = long(parse_number(args.value("--warmup").value_or("30"), "--warmup"));
+  std::optional<int> msaa;
+  if (auto m = args.value("--msaa")) msaa = parse_msaa(*m, "--msaa");
+  options.timestamps = !args.flag("--no-timestamps");
+  const std::optional<std::string> views = args.value("--views");
+  args.finish();
+  if (options.frames < 10 || options.warmup < 0) throw UsageError("--frames: at least 10; --warmup: 0 or more");
+  if (views) {
+    // The hook for the section and ultrasound views (issue 15): each will be a pass of the
+    // trainee's frame, drawn here with the others, with its own row key `views`.
+    throw UsageError("--views " + *views + ": the trainee's frame has no section or ultrasound view yet (issue 15)");
+  }
+  std::vector<std::string> targets;
+  for (const char* t : {"window", "offscreen"})
+    if (targets_arg.find(t) != std::string::npos) targets.push_back(t);
+  if (targets.empty()) throw UsageError("--targets: expected window, offscreen or both, got '" + targets_arg + "'");
+  const bool windows = targets.front() == "window";
+  if (windows && !engine::Window::display_available()) {
+    throw std::runtime_error(
+        "no display: the window rows need one. Run under a virtual display (xvfb-run -a -s '-screen 0 1920x1080x24' "
+        "needle-sim bench frame ...) or give --targets offscreen");
+  }
+
+  const fs::path scratch = fs::temp_directory_path() / ("needle_bench_frame_" + std::to_string(::getpid()));
+  fs::create_directories(scratch);
+  BenchTable table({"content", "target", "size", "msaa", "frames", "frame_ms_median", "frame_ms_p95", "frame_ms_p99",
+                    "fps_median", "fps_p95", "frame_ms_median_timed", "passes"});
+  BenchTable pass_table({"content", "target", "size", "pass", "ms_median", "ms_p95"});
+  std::string device_line;
+  double timestamp_period_ns = 0.0;
+
+  for (const Content& content : contents) {
+    const engine::Model tissue = content.tissue
+        ? engine::convert_gltf(asset_gen::make_sphere(content.tissue, content.tissue, {2, 4}), content.name)
+        : engine::Model{};
+    for (const std::string& target_name : targets) {
+      for (const engine::Extent& size : sizes) {
+        // A task runs its session in real time, as `run` does, into a scratch database.
+        std::unique_ptr<app::TaskSession> session;
+        if (!content.task.empty()) {
+          app::TaskSessionOptions task;
+          task.task = content.task;
+          task.trainee = "bench";
+          task.db = scratch / "sessions.db";
+          task.out_dir = scratch;
+          session = std::make_unique<app::TaskSession>(task);
+        }
+        auto make_scene = [&](const engine::SceneRenderer& renderer) {
+          return session ? engine::GpuScene(renderer, session->scene())
+                         : engine::GpuScene(renderer, tissue, engine::framing_view(tissue, size), engine::TissueParams{});
+        };
+        auto run_row = [&](const engine::GpuDevice& device, engine::RenderTarget& target, engine::Window* window) {
+          app::TraineeFrame frame(device, target, {msaa.value_or(device.is_cpu_device() ? 1 : 4), true}, window);
+          engine::GpuScene scene = make_scene(frame.renderer());
+          const app::FrameContent shown = session ? app::task_content(*session) : app::scripted_content(scene);
+          const std::vector<FrameSample> samples = measure(frame, target, scene, shown, window, options);
+          std::vector<double> untimed, timed;
+          std::map<std::string, std::vector<double>> parts;
+          for (const FrameSample& s : samples) {
+            (s.timed ? timed : untimed).push_back(s.period_ms);
+            for (const auto& [name, ms] : s.passes) {
+              if (s.timed == name.ends_with("_device")) parts[name].push_back(ms);
+            }
+          }
+          nlohmann::json passes = nlohmann::json::object();
+          const std::string size_text = std::to_string(target.extent().width) + "x" + std::to_string(target.extent().height);
+          for (const auto& [name, ms] : parts) {
+            passes[name] = percentile(ms, 0.5);
+            pass_table.add_row({content.name, target_name, size_text, name, percentile(ms, 0.5), percentile(ms, 0.95)});
+          }
+          const double median = percentile(untimed, 0.5), p95 = percentile(untimed, 0.95);
+          table.add_row({content.name, target_name, size_text, frame.renderer().msaa_samples(), long(untimed.size()),
+                         median, p95, percentile(untimed, 0.99), 1000.0 / median, 1000.0 / p95,
+                         timed.empty() ? nlohmann::json(nullptr) : nlohmann::json(percentile(timed, 0.5)), passes});
+          device_line = device.device_description();
+          timestamp_period_ns = device.timestamp_period_ns();
+        };
+        if (target_name == "window") {
+          app::GpuWindow vw("needle-sim bench frame", size);
+          run_row(vw.device, vw.target, &vw.window);
+        } else {
+          engine::DeviceOptions quiet;
+          quiet.announce_device = false;
+          engine::GpuDevice device(quiet);
+          engine::HeadlessTarget target(device, size);
+          run_row(device, target, nullptr);
+        }
+      }
+    }
+  }
+  fs::remove_all(scratch);
+  pass_table.print("bench frame: the frame's parts (ms; *_cpu: recording on the CPU, *_device: timestamps, *_wait: "
+                   "waiting), medians and p95 over the frames");
+  table.emit("bench frame: the trainee's frame on " + device_line + " (timestamp period " +
+                 (timestamp_period_ns > 0.0 ? std::to_string(timestamp_period_ns) + " ns" : std::string("none")) + ")",
+             json);
+  return 0;
+}
+
+const CommandRegistrar reg{
+    {"bench frame",
+     "needle-sim bench frame [--json FILE] [--contents penetrable_sphere,rigid_sphere,tissue:400]\n"
+     "                       [--sizes 1280x720,1920x1080] [--targets window,offscreen] [--frames N] [--warmup N]\n"
+     "                       [--msaa N] [--no-timestamps]\n"
+     "  --json FILE      also write the rows as JSON (keys: content, target, size, frame_ms_median, frame_ms_p95,\n"
+     "                   passes: name -> median ms, ...)\n"
+     "  --contents LIST  what the frame shows: a task (a name in assets/tasks or a file) run in real time by its\n"
+     "                   scripted good operator on the simulated device, as `run` shows it; tissue:N, the N x N\n"
+     "                   sphere with its levels of detail under the scripted needle, as `run --scene` shows it\n"
+     "  --sizes LIST     frame sizes (default 1280x720,1920x1080)\n"
+     "  --targets LIST   window (needs a display: xvfb-run), offscreen, or both (default)\n"
+     "  --frames N       measured frames of each kind per row (default 300), after --warmup N (default 30)\n"
+     "  --msaa N         MSAA samples (default: as the window, 1 on a CPU device, else 4)\n"
+     "  --no-timestamps  no device timings; otherwise frames with and without timestamps alternate in blocks\n"
+     "                   of 8, the frame times are those without, the device times those with",
+     run_bench_frame}};
+
+}  // namespace
+}  // namespace needle::cli
