@@ -30,6 +30,9 @@ fi
 
 # ccache keys on paths relative to the checkout, so a fresh clone (CI) reuses earlier builds.
 export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
+# Room for both builds CI makes (build/ and the sanitizers' build-asan/, about 2 GB each), so
+# neither evicts the other (ccache's default is 5 GB).
+ccache --max-size=12G >/dev/null
 build_dir=${BUILD_DIR:-build}
 cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE="${BUILD_TYPE:-RelWithDebInfo}" >/dev/null
 targets=()
