@@ -144,13 +144,13 @@ RecordingReader::RecordingReader(std::string path) : path_(std::move(path)) {
   if (::stat(path_.c_str(), &st) != 0) fail("", std::string("cannot be opened: ") + std::strerror(errno));
   if (S_ISDIR(st.st_mode)) fail("", "is a folder, not a recording");
   if (!S_ISREG(st.st_mode)) fail("", "not a regular file (a device or a pipe), not a recording");
-  file_ = std::fopen(path_.c_str(), "rb");
+  file_.reset(std::fopen(path_.c_str(), "rb"));
   if (file_ == nullptr) fail("", std::string("cannot be opened: ") + std::strerror(errno));
   size_ = uint64_t(st.st_size);
 
   auto read_exactly = [this](std::size_t bytes) {
     buffer_.resize(bytes);
-    return std::fread(buffer_.data(), 1, bytes, file_) == bytes;
+    return std::fread(buffer_.data(), 1, bytes, file_.get()) == bytes;
   };
   // Magic and version first: 12 bytes decide whether anything more is read.
   if (!read_exactly(12) || std::memcmp(buffer_.data(), kMagic, sizeof kMagic) != 0)
@@ -170,8 +170,8 @@ RecordingReader::RecordingReader(std::string path) : path_(std::move(path)) {
     if (header_bytes > size_) fail("header", "truncated (the file has " + std::to_string(size_) + " bytes)");
     // The whole header is checked before any of its fields is believed.
     std::vector<uint8_t> head(header_bytes);
-    std::fseek(file_, 0, SEEK_SET);
-    if (std::fread(head.data(), 1, header_bytes, file_) != header_bytes) fail("header", "truncated");
+    std::fseek(file_.get(), 0, SEEK_SET);
+    if (std::fread(head.data(), 1, header_bytes, file_.get()) != header_bytes) fail("header", "truncated");
     if (crc32(head.data(), header_bytes - 4) != get<uint32_t>(head.data() + header_bytes - 4))
       fail("header", "checksum mismatch: the header was changed or damaged");
     buffer_ = std::move(head);
@@ -213,7 +213,7 @@ RecordingReader::RecordingReader(std::string path) : path_(std::move(path)) {
     if (length > max) fail("header", std::string(what) + " of " + std::to_string(length) + " bytes (at most " + std::to_string(max) + ")");
     if (header_.version < 3) {
       std::vector<uint8_t> bytes(length);
-      if (length > size_ || std::fread(bytes.data(), 1, length, file_) != length) fail("header", std::string("truncated ") + what);
+      if (length > size_ || std::fread(bytes.data(), 1, length, file_.get()) != length) fail("header", std::string("truncated ") + what);
       out.assign(bytes.begin(), bytes.end());
     } else {
       if (at + length > header_bytes - 4) fail("header", std::string("truncated ") + what);
@@ -224,7 +224,7 @@ RecordingReader::RecordingReader(std::string path) : path_(std::move(path)) {
   string_field(header_.device, kMaxDeviceBytes, "device name");
   if (header_.version >= 2) string_field(header_.context, kMaxContextBytes, "context");
   if (header_.version >= 3 && at != header_bytes - 4) fail("header", "length does not match its fields");
-  offset_ = header_.version >= 3 ? header_bytes : uint64_t(std::ftell(file_));
+  offset_ = header_.version >= 3 ? header_bytes : uint64_t(std::ftell(file_.get()));
   end_.checksummed = header_.version >= 3;
   end_.whole_bytes = offset_;
 
@@ -235,10 +235,6 @@ RecordingReader::RecordingReader(std::string path) : path_(std::move(path)) {
   if (size_ - offset_ > most_bytes)
     fail("", std::to_string(size_) + " bytes: more than a session of at most " +
                  std::to_string(int(io::kMaxSessionSeconds / 60)) + " minutes at " + hz(header_.rate_hz) + " can hold");
-}
-
-RecordingReader::~RecordingReader() {
-  if (file_ != nullptr) std::fclose(file_);
 }
 
 void RecordingReader::fail(const std::string& element, const std::string& what) const {
@@ -265,7 +261,7 @@ bool RecordingReader::next_bare(std::vector<TickSample>& records) {
     return false;
   }
   buffer_.resize(count * record_bytes_);
-  if (std::fread(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size()) fail(at_byte(offset_), "cannot be read");
+  if (std::fread(buffer_.data(), 1, buffer_.size(), file_.get()) != buffer_.size()) fail(at_byte(offset_), "cannot be read");
   records.resize(count);
   for (std::size_t k = 0; k < count; ++k) {
     Reader reader{buffer_.data() + k * record_bytes_};
@@ -286,12 +282,12 @@ bool RecordingReader::next_block(std::vector<TickSample>& records) {
   };
   if (left < 4) return cut();
   buffer_.resize(4);
-  if (std::fread(buffer_.data(), 1, 4, file_) != 4) fail(where, "cannot be read");
+  if (std::fread(buffer_.data(), 1, 4, file_.get()) != 4) fail(where, "cannot be read");
   if (std::memcmp(buffer_.data(), kEndMagic, 4) == 0) {
     const std::string end_where = "end " + at_byte(offset_);
     if (left < kEndBytes) return cut();
     buffer_.resize(kEndBytes);
-    if (std::fread(buffer_.data() + 4, 1, kEndBytes - 4, file_) != kEndBytes - 4) fail(end_where, "cannot be read");
+    if (std::fread(buffer_.data() + 4, 1, kEndBytes - 4, file_.get()) != kEndBytes - 4) fail(end_where, "cannot be read");
     if (crc32(buffer_.data(), 16) != get<uint32_t>(buffer_.data() + 16)) fail(end_where, "checksum mismatch (damaged)");
     const uint64_t total = get<uint64_t>(buffer_.data() + 4);
     if (total != records_read_)
@@ -306,7 +302,7 @@ bool RecordingReader::next_block(std::vector<TickSample>& records) {
   if (std::memcmp(buffer_.data(), kBlockMagic, 4) != 0) fail(where, "not a block of records (damaged)");
   if (left < kBlockHeaderBytes) return cut();
   buffer_.resize(kBlockHeaderBytes);
-  if (std::fread(buffer_.data() + 4, 1, kBlockHeaderBytes - 4, file_) != kBlockHeaderBytes - 4) fail(where, "cannot be read");
+  if (std::fread(buffer_.data() + 4, 1, kBlockHeaderBytes - 4, file_.get()) != kBlockHeaderBytes - 4) fail(where, "cannot be read");
   if (crc32(buffer_.data(), 20) != get<uint32_t>(buffer_.data() + 20)) fail(where, "header checksum mismatch (damaged)");
   const uint64_t first = get<uint64_t>(buffer_.data() + 4);
   const uint32_t count = get<uint32_t>(buffer_.data() + 12);
@@ -319,7 +315,7 @@ bool RecordingReader::next_block(std::vector<TickSample>& records) {
   const std::size_t bytes = std::size_t(count) * record_bytes_;
   if (left - kBlockHeaderBytes < bytes) return cut();
   buffer_.resize(bytes);
-  if (std::fread(buffer_.data(), 1, bytes, file_) != bytes) fail(where, "cannot be read");
+  if (std::fread(buffer_.data(), 1, bytes, file_.get()) != bytes) fail(where, "cannot be read");
   if (crc32(buffer_.data(), bytes) != records_crc) fail(where, "records checksum mismatch (damaged)");
   records.resize(count);
   for (std::size_t k = 0; k < count; ++k) {

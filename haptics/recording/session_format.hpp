@@ -22,6 +22,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -83,7 +84,6 @@ class RecordingReader {
  public:
   // Throws RecordingError naming the file.
   explicit RecordingReader(std::string path);
-  ~RecordingReader();
   RecordingReader(const RecordingReader&) = delete;
   RecordingReader& operator=(const RecordingReader&) = delete;
 
@@ -101,7 +101,8 @@ class RecordingReader {
   bool next_bare(std::vector<TickSample>& records);  // versions 1 and 2
 
   std::string path_;
-  std::FILE* file_ = nullptr;
+  // Owned from the moment it opens: a header refused by the constructor must not leak the file.
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file_{nullptr, &std::fclose};
   uint64_t size_ = 0;    // bytes in the file
   uint64_t offset_ = 0;  // bytes consumed
   std::size_t record_bytes_ = 0;
