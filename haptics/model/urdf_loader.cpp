@@ -94,11 +94,29 @@ BodyInertia combine(const BodyInertia& a, const BodyInertia& b) {
   return c;
 }
 
+// (text) => the offset of its first byte that does not begin or continue a whole UTF-8 sequence,
+// or -1. TinyXML 2.6 (urdfdom's parser) reads past the end of its buffer on a broken sequence in a
+// name (found by tests/fuzz/fuzz_urdf), so such a document never reaches it.
+long first_non_utf8_byte(const std::string& text) {
+  for (size_t i = 0; i < text.size();) {
+    const auto lead = static_cast<unsigned char>(text[i]);
+    const size_t length = lead < 0x80 ? 1 : lead >= 0xC2 && lead <= 0xDF ? 2 : lead >= 0xE0 && lead <= 0xEF ? 3
+                          : lead >= 0xF0 && lead <= 0xF4 ? 4 : 0;
+    if (length == 0 || i + length > text.size()) return long(i);
+    for (size_t k = 1; k < length; ++k)
+      if ((static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80) return long(i);
+    i += length;
+  }
+  return -1;
+}
+
 }  // namespace
 
 RobotModel parse_robot_urdf(const std::string& xml, const std::string& source, std::optional<int> expected_dof) {
   urdf::ModelInterfaceSharedPtr urdf;
   std::string rejected;
+  if (const long at = first_non_utf8_byte(xml); at >= 0)
+    fail(source, "not a valid URDF document: byte " + std::to_string(at) + " is not UTF-8");
   {
     UrdfdomErrors errors;
     urdf = urdf::parseURDF(xml);

@@ -84,6 +84,16 @@ TEST(ModelUrdf, RejectsNumbersThatAreNotFinite) {
   expect_error(one_joint("revolute", inertial("1e999", "1", "1", "1")), "not a valid URDF document");
 }
 
+// A broken UTF-8 sequence never reaches urdfdom's TinyXML, which reads past its buffer on one in a
+// name (tests/fuzz/regressions/urdf/ holds the input the fuzzer found); whole sequences still parse.
+TEST(ModelUrdf, RefusesTextThatIsNotUtf8) {
+  std::string xml = one_joint("revolute", inertial("1", "1", "1", "1"));
+  const size_t at = xml.find("<robot");
+  expect_error(std::string(xml).insert(at, "<!-- \xe6? -->"), "not a valid URDF document: byte " + std::to_string(at + 5) + " is not UTF-8");
+  expect_error(xml + "\xc3", "not a valid URDF document: byte " + std::to_string(xml.size()) + " is not UTF-8");
+  EXPECT_NO_THROW(parse_robot_urdf(std::string(xml).insert(at, "<!-- \u00e9\u2014 -->"), "robot.urdf"));
+}
+
 TEST(ModelUrdf, MissingFileIsNamed) {
   try {
     load_robot_urdf("/nonexistent/robot.urdf");
