@@ -17,6 +17,7 @@ suites='BenchPrecision|BenchStability|PenaltyOnRobot|ControllerLoop|DeviceSim|Re
 suites+='|SimHolonomic|SimNonholonomic|SimFeel|TissueInsertion|RealtimeNoAlloc'
 suites+='|SessionLimits|SessionReviewTest|SessionStoreFailure|ShippedTasks/ScriptedSessions|ReviewPanels'
 suites+='|CliBench[A-Za-z]*|CliHapticsBench|CliHapticsSimulate|CliRecordings|CliReport|CliRunDevices|CliRunTask|CliWrites|Tasks/RunReplay'
+suites+='|CliPostgres'
 tests='BenchTickAllocations\.(NonholonomicContact|LayeredTissue)TickAllocatesNothing|RecordingReplay\.ControllerReplayIsBitForBit'
 tests+='|SimComponents\.DeviceEnergyBalancesTheWorkDoneOnIt|CliStartScreen\.(ATraineeStarts|TheKeyboards|TheScorePanels)[A-Za-z]*'
 skip=${SANITIZE_SKIP-"^((ShaderBuild|Layout|$suites)\\.|($tests)\$)"}

@@ -13,7 +13,7 @@ namespace fs = std::filesystem;
 
 int run_report(ArgList& args) {
   const int64_t id = parse_whole(args.required("--session"), "--session", 1, 9000000000000000);
-  const fs::path db = args.value("--db").value_or(app::default_db().string());
+  const std::string db = app::db_location(args.value("--db"));
   const fs::path out = args.required("--out");
   std::optional<double> at;
   if (auto text = args.value("--at")) at = parse_number(*text, "--at");
@@ -24,10 +24,11 @@ int run_report(ArgList& args) {
 
 const CommandRegistrar reg{
     {"report",
-     "needle-sim report --session ID --out DIR [--db FILE] [--at SECONDS]\n"
+     "needle-sim report --session ID --out DIR [--db FILE|URI] [--at SECONDS]\n"
      "  --session ID   the session to export (needle-sim review lists them)\n"
      "  --out DIR      where session_ID.json, session_ID.csv, the plots and the panels (PNG) go\n"
-     "  --db FILE      session database (default: $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)\n"
+     "  --db FILE|URI  session database, an SQLite file or postgresql://... (default: $NEEDLE_DB, else\n"
+     "                 $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)\n"
      "  --at SECONDS   the moment the replay picture shows (default: the end of the recording)",
      run_report}};
 
