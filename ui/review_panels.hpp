@@ -45,7 +45,10 @@ bool draw_replay_bar(const training::SessionReview& review, double& t_s, bool pl
 // With `open`, the window has a close button that clears it.
 void draw_comparison(const training::SessionReview& a, const training::SessionReview& b, const PanelRect& at, bool* open = nullptr);
 
-// One plot filling a window: the report's plot pictures.
-void draw_plot_window(const training::SessionReview& review, const training::Plot& plot, const PanelRect& at);
+// One plot filling a window: the report's plot pictures; `steps` (may be null) their start times.
+void draw_plot_window(const training::Plot& plot, const std::vector<training::StepResult>* steps, const PanelRect& at);
+inline void draw_plot_window(const training::SessionReview& review, const training::Plot& plot, const PanelRect& at) {
+  draw_plot_window(plot, &review.stored.steps, at);
+}
 
 }  // namespace needle::ui

@@ -113,6 +113,45 @@ TEST(CliPostgres, AStationThatLosesTheServerKeepsTheSessionAndSyncSendsItOnce) {
   EXPECT_EQ(server.recording(sessions[0].id), local) << "every tick arrived, none twice";
 }
 
+// The instructor's class view from the server: two stations' sessions, one trainee's learning
+// curve over both, the tables and the plots.
+TEST(CliPostgres, TheCohortReportReadsEveryStationsSessions) {
+  const std::string uri = fresh_postgres_database("cli_cohort");
+  const fs::path dir = test_output_dir("cli_postgres_cohort");
+  fs::remove_all(dir);
+  std::vector<nlohmann::json> scores;
+  for (const char* op : {"sloppy", "good"}) {
+    const fs::path run_dir = dir / op;
+    const ProcessResult run =
+        run_needle_sim(run_arguments(uri, run_dir, std::string("station-") + op) + " --operator " + op);
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    scores.push_back(nlohmann::json::parse(std::ifstream(run_dir / "out" / "score.json")));
+  }
+  const ProcessResult report = run_needle_sim("report --cohort --db '" + uri + "' --out " + quoted(dir / "cohort"));
+  ASSERT_EQ(report.exit_code, 0) << report.output;
+  const nlohmann::json cohort = nlohmann::json::parse(std::ifstream(dir / "cohort" / "cohort.json"));
+  EXPECT_EQ(cohort["sessions"], 2);
+  ASSERT_EQ(cohort["curves"].size(), 1u);
+  const nlohmann::json& curve = cohort["curves"][0];
+  EXPECT_EQ(curve["trainee"], "ana");
+  ASSERT_EQ(curve["attempts"].size(), 2u);
+  EXPECT_DOUBLE_EQ(curve["attempts"][0]["score"].get<double>(), scores[0]["score"].get<double>());
+  EXPECT_DOUBLE_EQ(curve["attempts"][1]["score"].get<double>(), scores[1]["score"].get<double>());
+  EXPECT_EQ(curve["first_pass"], scores[0]["passed"]);
+  EXPECT_EQ(curve["attempts"][1]["station"], "station-good");
+  for (const char* file : {"cohort_curves.csv", "cohort_failed_steps.csv", "cohort_percentiles.csv",
+                           "cohort_penetrable_sphere_score.png", "cohort_penetrable_sphere_time_to_target.png"})
+    EXPECT_TRUE(fs::is_regular_file(dir / "cohort" / file)) << file << "\n" << report.output;
+  // A filter: one station's sessions only.
+  const ProcessResult one = run_needle_sim("report --cohort --station station-good --db '" + uri + "' --out " +
+                                           quoted(dir / "one"));
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  EXPECT_EQ(nlohmann::json::parse(std::ifstream(dir / "one" / "cohort.json"))["sessions"], 1);
+  const ProcessResult bad = run_needle_sim("report --cohort --from yesterday --db '" + uri + "' --out " + quoted(dir / "bad"));
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--from: expected a date YYYY-MM-DD, got 'yesterday'"), std::string::npos) << bad.output;
+}
+
 TEST(CliPostgres, CredentialsAreNeverPrinted) {
   const std::string secret = "s3cret-Pw";
   const std::string uri = "postgresql://needle:" + secret + "@/no_such_database?host=" + postgres_dir();
