@@ -70,6 +70,7 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
     return 1;
   }
   for (const std::string& note : review.recording_notes) std::printf("note: %s\n", note.c_str());
+  std::printf("%s\n", training::describe(review.loop).c_str());
   const char* const names[] = {"plot_force.png", "plot_lateral_load.png", "plot_depth.png", "plot_tracking_error.png"};
   const std::vector<const training::Plot*> all = review.plots.all();
   for (size_t k = 0; k < all.size(); ++k) {

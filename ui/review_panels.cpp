@@ -141,6 +141,7 @@ void recording_line(const training::SessionReview& r) {
   const char* note = !end.checksummed ? " (older format, no checksums)" : !end.closed ? " (cut short: read up to its last whole block)" : "";
   ImGui::TextColored(kDim, "recording %s: %zu samples, %.2f to %.2f s%s", r.recording_file.filename().c_str(),
                      r.states.size(), r.start_s(), r.end_s(), note);
+  ImGui::TextColored(r.loop.degraded() ? kWarn : kDim, "%s", training::describe(r.loop).c_str());
 }
 
 const char* step_at(const training::SessionReview& r, double t) {
