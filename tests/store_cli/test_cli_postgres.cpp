@@ -33,6 +33,7 @@ TEST(CliPostgres, ARunStoresItsSessionAndRecordingOnTheServerAndAReportReplaysIt
   fs::remove_all(dir);
   const ProcessResult run = run_needle_sim(run_arguments(uri, dir, "station-01"));
   ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_EQ(run.output.find("Vulkan validation"), std::string::npos) << run.output;
   const nlohmann::json score = nlohmann::json::parse(std::ifstream(dir / "out" / "score.json"));
   EXPECT_TRUE(score["stored"].get<bool>());
   EXPECT_FALSE(score["kept_for_sync"].get<bool>());
@@ -57,6 +58,7 @@ TEST(CliPostgres, ARunStoresItsSessionAndRecordingOnTheServerAndAReportReplaysIt
   const ProcessResult report =
       run_needle_sim("report --db '" + uri + "' --session " + std::to_string(sessions[0].id) + " --out " + quoted(dir / "report"));
   ASSERT_EQ(report.exit_code, 0) << report.output;
+  EXPECT_EQ(report.output.find("Vulkan validation"), std::string::npos) << report.output;
   for (const char* picture : {"plot_force.png", "plot_depth.png", "review_replay.png"})
     EXPECT_TRUE(fs::is_regular_file(dir / "report" / picture)) << picture << "\n" << report.output;
   EXPECT_EQ(report.output.find("recording not found"), std::string::npos) << report.output;
@@ -129,6 +131,7 @@ TEST(CliPostgres, TheCohortReportReadsEveryStationsSessions) {
   }
   const ProcessResult report = run_needle_sim("report --cohort --db '" + uri + "' --out " + quoted(dir / "cohort"));
   ASSERT_EQ(report.exit_code, 0) << report.output;
+  EXPECT_EQ(report.output.find("Vulkan validation"), std::string::npos) << report.output;
   const nlohmann::json cohort = nlohmann::json::parse(std::ifstream(dir / "cohort" / "cohort.json"));
   EXPECT_EQ(cohort["sessions"], 2);
   ASSERT_EQ(cohort["curves"].size(), 1u);
@@ -147,9 +150,9 @@ TEST(CliPostgres, TheCohortReportReadsEveryStationsSessions) {
                                            quoted(dir / "one"));
   ASSERT_EQ(one.exit_code, 0) << one.output;
   EXPECT_EQ(nlohmann::json::parse(std::ifstream(dir / "one" / "cohort.json"))["sessions"], 1);
-  const ProcessResult bad = run_needle_sim("report --cohort --from yesterday --db '" + uri + "' --out " + quoted(dir / "bad"));
+  const ProcessResult bad = run_needle_sim("report --cohort --since yesterday --db '" + uri + "' --out " + quoted(dir / "bad"));
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
-  EXPECT_NE(bad.output.find("--from: expected a date YYYY-MM-DD, got 'yesterday'"), std::string::npos) << bad.output;
+  EXPECT_NE(bad.output.find("--since: expected a date YYYY-MM-DD, got 'yesterday'"), std::string::npos) << bad.output;
 }
 
 TEST(CliPostgres, CredentialsAreNeverPrinted) {

@@ -8,7 +8,7 @@ using nlohmann::json;
 
 json cohort_json(const CohortView& view) {
   const CohortFilter& f = view.filter;
-  json out = {{"filter", {{"task", f.task}, {"trainee", f.trainee}, {"station", f.station}, {"from", f.from}, {"to", f.to}}},
+  json out = {{"filter", {{"task", f.task}, {"trainee", f.trainee}, {"station", f.station}, {"since", f.since}, {"until", f.until}}},
               {"sessions", view.sessions},
               {"curves", json::array()},
               {"most_failed_steps", json::array()},

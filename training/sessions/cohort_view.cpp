@@ -21,8 +21,8 @@ bool is_date(const std::string& d) {
 bool passes(const SessionInfo& s, const CohortFilter& f) {
   const std::string day = s.started_at.substr(0, 10);
   return s.complete && (f.task.empty() || s.task == f.task) && (f.trainee.empty() || s.trainee == f.trainee) &&
-         (f.station.empty() || s.station == f.station) && (f.from.empty() || day >= f.from) &&
-         (f.to.empty() || day <= f.to);
+         (f.station.empty() || s.station == f.station) && (f.since.empty() || day >= f.since) &&
+         (f.until.empty() || day <= f.until);
 }
 
 double time_to_target(const StoredSession& s) {
@@ -35,10 +35,10 @@ double time_to_target(const StoredSession& s) {
 }  // namespace
 
 void check_cohort_filter(const CohortFilter& filter) {
-  if (!filter.from.empty() && !is_date(filter.from))
-    throw std::invalid_argument("--from: expected a date YYYY-MM-DD, got '" + filter.from + "'");
-  if (!filter.to.empty() && !is_date(filter.to))
-    throw std::invalid_argument("--to: expected a date YYYY-MM-DD, got '" + filter.to + "'");
+  if (!filter.since.empty() && !is_date(filter.since))
+    throw std::invalid_argument("--since: expected a date YYYY-MM-DD, got '" + filter.since + "'");
+  if (!filter.until.empty() && !is_date(filter.until))
+    throw std::invalid_argument("--until: expected a date YYYY-MM-DD, got '" + filter.until + "'");
 }
 
 double percentile(std::vector<double> values, double p) {

@@ -13,7 +13,7 @@ namespace needle::training {
 
 struct CohortFilter {
   std::string task, trainee, station;  // "" : any
-  std::string from, to;                // dates, YYYY-MM-DD, inclusive, on started_at (UTC); "": open
+  std::string since, until;            // dates, YYYY-MM-DD, inclusive, on started_at (UTC); "": open
 };
 
 // Throws std::invalid_argument naming the field when a date is not YYYY-MM-DD.
