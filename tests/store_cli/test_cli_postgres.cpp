@@ -62,6 +62,8 @@ TEST(CliPostgres, ARunStoresItsSessionAndRecordingOnTheServerAndAReportReplaysIt
   for (const char* picture : {"plot_force.png", "plot_depth.png", "review_replay.png"})
     EXPECT_TRUE(fs::is_regular_file(dir / "report" / picture)) << picture << "\n" << report.output;
   EXPECT_EQ(report.output.find("recording not found"), std::string::npos) << report.output;
+  EXPECT_FALSE(fs::exists(fs::temp_directory_path() / ("needle-sim-recording-" + sessions[0].uid + ".nrec")))
+      << "the server's copy is removed once read";
 }
 
 TEST(CliPostgres, AStationThatLosesTheServerKeepsTheSessionAndSyncSendsItOnce) {

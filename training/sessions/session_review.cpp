@@ -40,9 +40,10 @@ SessionReview load_session_review(const SessionStore& store, const fs::path& db_
   if (info.recording_path.empty()) {
     r.recording_problem = "no recording (the session was stored without one)";
   } else {
+    fs::path fetched;  // the server's copy, read then removed: the review keeps the samples
     try {
       // A server's session carries its recording; a file's names it beside the file.
-      if (store.engine() == SqlEngine::kPostgres) r.recording_file = fetch_stored_recording(store, info);
+      if (store.engine() == SqlEngine::kPostgres) r.recording_file = fetched = fetch_stored_recording(store, info);
       if (r.recording_file.empty()) r.recording_file = resolve_recording(db_file, info.recording_path);
       haptics::Session session = haptics::read_session(r.recording_file.string());
       samples = std::move(session.records);
@@ -54,6 +55,8 @@ SessionReview load_session_review(const SessionStore& store, const fs::path& db_
       r.recording_problem = e.what();
       if (!r.recording_file.empty() && !fs::exists(r.recording_file)) r.recording_problem = r.recording_file.string() + ": recording not found";
     }
+    std::error_code ignored;
+    if (!fetched.empty()) fs::remove(fetched, ignored);
   }
   r.plots = session_plots(samples, r.task ? &*r.task : nullptr);
   if (!r.has_recording()) {

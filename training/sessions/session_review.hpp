@@ -43,7 +43,8 @@ std::filesystem::path resolve_recording(const std::filesystem::path& db_file, co
 std::filesystem::path fetch_stored_recording(const SessionStore& store, const SessionInfo& info);
 
 // Loads session `id` (SessionStoreError when there is none) with its task and recording: from the
-// database when it holds the recording (PostgreSQL), else the file the session names.
+// database when it holds the recording (PostgreSQL; the fetched file is removed once read), else
+// the file the session names.
 SessionReview load_session_review(const SessionStore& store, const std::filesystem::path& db_file, int64_t id);
 
 }  // namespace needle::training
