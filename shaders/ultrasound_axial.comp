@@ -7,11 +7,11 @@
 layout(local_size_x = 64) in;
 
 void main() {
-  uint item = gl_GlobalInvocationID.x;
   uint samples = echo.counts.y;
-  if (item >= echo.counts.x * samples) return;
-  int j = int(item % samples);
-  uint base = item - uint(j);
+  if (gl_GlobalInvocationID.x >= samples) return;
+  int j = int(gl_GlobalInvocationID.x);  // of line gl_WorkGroupID.y
+  uint base = gl_WorkGroupID.y * samples;
+  uint item = base + uint(j);
   int radius = int(echo.kernel.x);
   vec2 sum = echoes[item] * axial_weight(0);
   for (int k = 1; k <= radius; ++k) {

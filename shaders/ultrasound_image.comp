@@ -8,12 +8,12 @@
 layout(local_size_x = 64) in;
 
 void main() {
-  uint item = gl_GlobalInvocationID.x;
   uint samples = echo.counts.y;
   int line_count = int(echo.counts.x);
-  if (item >= uint(line_count) * samples) return;
-  int line = int(item / samples);
-  uint j = item % samples;
+  uint j = gl_GlobalInvocationID.x;
+  if (j >= samples) return;
+  int line = int(gl_WorkGroupID.y);
+  uint item = uint(line) * samples + j;
   int radius = int(echo.kernel.y);
   vec2 sum = axial[item] * lateral_weight(0);
   for (int m = 1; m <= radius; ++m) {

@@ -70,7 +70,8 @@ int run_bench_ultrasound(ArgList& args) {
   if (frames < 2 || frames != double(long(frames))) throw UsageError("--frames: expected a whole number ≥ 2");
 
   engine::GpuDevice device;
-  BenchTable table({"scene", "lines", "samples", "gpu_ms", "gpu_ms_p95", "cpu_ms", "max_depth_error_m"});
+  BenchTable table({"scene", "lines", "samples", "gpu_ms", "gpu_ms_p95", "cpu_ms", "max_depth_error_m", "lines_ms", "echoes_ms",
+                    "axial_ms", "image_ms"});
   for (const Case& c : cases()) {
     const haptics::Scenario scenario = haptics::load_scenario((asset_dir() / c.scenario).string());
     const engine::EchoScene scene = app::echo_scene(scenario, engine::Scene{});
@@ -83,6 +84,18 @@ int run_bench_ultrasound(ArgList& args) {
         view.render(c.probe, &c.needle);
         gpu_ms.push_back(ms_since(start));
       }
+      // Each pass's device time, from images timed apart (the timestamps add a barrier a pass).
+      view.set_device_timings(true);
+      std::vector<std::vector<double>> pass_ms(4);
+      for (int f = 0; f < std::max(10, int(frames) / 4); ++f) {
+        view.render(c.probe, &c.needle);
+        const auto passes = view.pass_ms();
+        for (size_t p = 0; p < std::min(passes.size(), pass_ms.size()); ++p) pass_ms[p].push_back(passes[p].second);
+      }
+      view.set_device_timings(false);
+      const auto pass_median = [&](size_t p) -> nlohmann::json {
+        return pass_ms[p].empty() ? nlohmann::json(nullptr) : nlohmann::json(percentile(pass_ms[p], 0.5));
+      };
       std::vector<double> cpu_ms;
       std::vector<engine::ScanLine> reference;
       for (int r = 0; r < 3; ++r) {
@@ -91,12 +104,13 @@ int run_bench_ultrasound(ArgList& args) {
         cpu_ms.push_back(ms_since(start));
       }
       table.add_row({c.name, lines, samples, percentile(gpu_ms, 0.5), percentile(gpu_ms, 0.95), percentile(cpu_ms, 0.5),
-                     max_depth_error(view.scan_lines(), reference)});
+                     max_depth_error(view.scan_lines(), reference), pass_median(0), pass_median(1), pass_median(2),
+                     pass_median(3)});
     }
   }
   table.emit("bench ultrasound: one image on " + device.device_description() +
                  " (gpu: submitted and waited for, median and 95th percentile; cpu: the scan-line reference, one thread, "
-                 "double)",
+                 "double; *_ms: each pass's device time, median)",
              json);
   return 0;
 }
