@@ -30,18 +30,20 @@ void main() {
   uint samples = echo.counts.y;
   uint line = gl_WorkGroupID.y, j = gl_GlobalInvocationID.x;
   if (j >= samples) return;
-  uint item = line * samples + j;
   float z = sample_depth(j);
 
-  uint r = 0u;
-  for (uint k = 1u; k < lines[line].run_count; ++k)
-    if (lines[line].runs[k].first <= j) r = k;
-  Run run = lines[line].runs[r];
+  Run run = load_run(line, 0u);
+  uint count = lines[line].run_count;
+  for (uint k = 1u; k < count; ++k) {
+    Run next = load_run(line, k);
+    if (next.first <= j) run = next;
+  }
   if (run.layer < 0) return;  // gel: the specular echoes alone
   float gained = run.amplitude * exp(-2.0 * run.alpha * (z - interval_start(run.first))) * time_gain(z);
   vec2 scatter = vec2(1.0, 0.0);
   if (echo.kernel.z == 1u)
     scatter = scatterer(rest_position(line_origin(line) + z * echo.direction.xyz), layers[run.layer].material.w);
-  vec2 received = echoes[item] + gained * echo.beam.z * layers[run.layer].material.z * echo.display.z * scatter;
-  echoes[item] = received;
+  ivec2 at = ivec2(j, line);
+  vec2 received = imageLoad(echoes, at).xy + gained * echo.beam.z * layers[run.layer].material.z * echo.display.z * scatter;
+  imageStore(echoes, at, vec4(received, 0.0, 0.0));
 }

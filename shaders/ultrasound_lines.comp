@@ -92,9 +92,12 @@ float amplitude_into(uint j) { return run.amplitude * exp(-2.0 * run.alpha * (in
 void add_specular(uint j, float f, float amplitude) {
   uint samples = echo.counts.y;
   if (j >= samples) return;
-  uint item = line * samples + j;
-  echoes[item].x += (j == 0u ? 1.0 : f) * amplitude;
-  if (j > 0u) echoes[item - 1u].x += (1.0 - f) * amplitude;
+  ivec2 at = ivec2(j, line);
+  imageStore(echoes, at, imageLoad(echoes, at) + vec4((j == 0u ? 1.0 : f) * amplitude, 0.0, 0.0, 0.0));
+  if (j > 0u) {
+    ivec2 before = ivec2(j - 1u, line);
+    imageStore(echoes, before, imageLoad(echoes, before) + vec4((1.0 - f) * amplitude, 0.0, 0.0, 0.0));
+  }
 }
 
 // The first sample in shadow (its compensated round-trip amplitude below the shadow level), if
@@ -124,7 +127,7 @@ void begin_run(uint j, int layer, float amplitude) {
   else if (n >= MAX_RUNS) return;  // past the limit the last run goes on
   find_shadow(j);
   run = Run(j, layer, amplitude, attenuation(layer));
-  lines[line].runs[n] = run;
+  store_run(line, n, run);
   lines[line].run_count = n + 1u;
 }
 
@@ -142,7 +145,7 @@ void main() {
   lines[line].sample_spacing = echo.image.z;
   lines[line].run_count = 1u;
   run = Run(0u, -1, 1.0, 0.0);
-  lines[line].runs[0] = run;
+  store_run(line, 0u, run);
   uint count = 0u;
   int current = -1;
   uint j = 0u;

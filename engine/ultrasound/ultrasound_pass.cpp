@@ -42,7 +42,7 @@ struct EchoUniforms {
 };
 static_assert(sizeof(EchoUniforms) == 16 * (14 + 2 * kKernelVec4s) + 32 * kMaxLoads, "std140 layout of Echo");
 
-// std430 mirrors of the Layers and Lines buffers.
+// Mirrors of the Layers block (std140) and the Lines buffer (std430).
 struct LayerGpu {
   glm::uvec4 shape;
   glm::vec4 material;
@@ -60,7 +60,7 @@ struct InterfaceGpu {
   int32_t from_layer, to_layer;
   float pad;
 };
-constexpr size_t kMaxRuns = 32;  // ultrasound.glsl MAX_RUNS
+constexpr uint32_t kMaxRuns = 32;  // ultrasound.glsl MAX_RUNS: the runs image's width
 struct LineRecordGpu {
   uint32_t count, shadow_sample;
   float needle_depth, needle_weight;
@@ -68,11 +68,27 @@ struct LineRecordGpu {
   float sample_spacing;
   uint32_t pad[2];
   InterfaceGpu interfaces[ScanLine::kMaxInterfaces];
-  glm::vec4 runs[kMaxRuns];  // the shaders' own use
 };
-static_assert(sizeof(LineRecordGpu) == 32 + 16 * (ScanLine::kMaxInterfaces + kMaxRuns), "std430 layout of LineRecord");
+static_assert(sizeof(LineRecordGpu) == 32 + 16 * ScanLine::kMaxInterfaces, "std430 layout of LineRecord");
 
-enum Binding : uint32_t { kUniforms, kLayers, kEchoes, kAxial, kLines, kPicture, kBindings };
+enum Binding : uint32_t { kUniforms, kLayers, kEchoes, kAxial, kLines, kPicture, kRuns, kBindings };
+
+VkDescriptorType descriptor_type(uint32_t binding) {
+  switch (binding) {
+    case kUniforms:
+    case kLayers:
+      return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    case kLines:
+      return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    default:
+      return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  }
+}
+
+// A float image the passes keep in GENERAL layout between them.
+GpuImage work_image(const VulkanContext& context, uint32_t width, uint32_t height) {
+  return GpuImage(context, {{width, height}, VK_FORMAT_R32G32B32A32_SFLOAT, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
+}
 
 void check(const EchoScene& scene, const UltrasoundSettings& settings) {
   if (settings.lines == 0 || settings.samples == 0) throw std::invalid_argument("an ultrasound image needs lines and samples");
@@ -130,10 +146,7 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
   check(scene_, settings_);
   std::array<VkDescriptorSetLayoutBinding, kBindings> bindings{};
   for (uint32_t b = 0; b < kBindings; ++b) {
-    const VkDescriptorType type = b == kUniforms  ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-                                  : b == kPicture ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
-                                                  : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    bindings[b] = {b, type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+    bindings[b] = {b, descriptor_type(b), 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
   }
   set_layout_ = descriptor_set_layout(device_, {bindings.begin(), bindings.end()});
   pipeline_layout_ = single_set_pipeline_layout(device_, set_layout_);
@@ -143,19 +156,19 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
                 compute_pipeline(device_, pipeline_layout_, ultrasound_image_comp_spv, sizeof(ultrasound_image_comp_spv))};
 
   const LayersGpu packed = pack_layers(scene_);
-  layers_ = GpuBuffer::device_local_with_data(context_, &packed, sizeof packed, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  layers_ = GpuBuffer::device_local_with_data(context_, &packed, sizeof packed, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   const VkDeviceSize samples = VkDeviceSize(settings_.lines) * settings_.samples;
-  echoes_ = GpuBuffer(context_, samples * sizeof(glm::vec2), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                      VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  axial_ = GpuBuffer(context_, samples * sizeof(glm::vec2), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  echoes_ = work_image(context_, settings_.samples, settings_.lines);
+  axial_ = work_image(context_, settings_.samples, settings_.lines);
+  runs_ = work_image(context_, kMaxRuns, settings_.lines);
   lines_ = GpuBuffer::host_visible(context_, settings_.lines * sizeof(LineRecordGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   image_ = GpuImage(context_, {{settings_.lines, settings_.samples},
                                VK_FORMAT_R8G8B8A8_UNORM,
                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
 
-  std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kRing},
-                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4 * kRing},
-                                             {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kRing}}};
+  std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * kRing},
+                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kRing},
+                                             {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 4 * kRing}}};
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pool_info.maxSets = kRing;
   pool_info.poolSizeCount = uint32_t(sizes.size());
@@ -170,11 +183,16 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
     VK_CHECK(vkAllocateDescriptorSets(device_, &alloc, &sets_[slot]));
     const std::array<VkDescriptorBufferInfo, kBindings> buffers{{{uniforms_[slot].handle(), 0, VK_WHOLE_SIZE},
                                                                  {layers_.handle(), 0, VK_WHOLE_SIZE},
-                                                                 {echoes_.handle(), 0, VK_WHOLE_SIZE},
-                                                                 {axial_.handle(), 0, VK_WHOLE_SIZE},
+                                                                 {},
+                                                                 {},
                                                                  {lines_.handle(), 0, VK_WHOLE_SIZE},
+                                                                 {},
                                                                  {}}};
-    const VkDescriptorImageInfo picture{VK_NULL_HANDLE, image_.view(), VK_IMAGE_LAYOUT_GENERAL};
+    std::array<VkDescriptorImageInfo, kBindings> images{};
+    images[kEchoes] = {VK_NULL_HANDLE, echoes_.view(), VK_IMAGE_LAYOUT_GENERAL};
+    images[kAxial] = {VK_NULL_HANDLE, axial_.view(), VK_IMAGE_LAYOUT_GENERAL};
+    images[kPicture] = {VK_NULL_HANDLE, image_.view(), VK_IMAGE_LAYOUT_GENERAL};
+    images[kRuns] = {VK_NULL_HANDLE, runs_.view(), VK_IMAGE_LAYOUT_GENERAL};
     std::array<VkWriteDescriptorSet, kBindings> writes{};
     for (uint32_t b = 0; b < kBindings; ++b) {
       writes[b] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -182,8 +200,8 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
       writes[b].dstBinding = b;
       writes[b].descriptorCount = 1;
       writes[b].descriptorType = bindings[b].descriptorType;
-      if (b == kPicture)
-        writes[b].pImageInfo = &picture;
+      if (bindings[b].descriptorType == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)
+        writes[b].pImageInfo = &images[b];
       else
         writes[b].pBufferInfo = &buffers[b];
     }
@@ -278,14 +296,23 @@ void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uni
   transition_image(cmd, image_.image(), image_layout_, VK_IMAGE_LAYOUT_GENERAL,
                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
-  // The echoes zeroed for the line pass to add the specular echoes to, after the last image's
+  if (!work_images_ready_) {
+    for (const GpuImage* work : {&echoes_, &axial_, &runs_})
+      transition_image(cmd, work->image(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                       VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    work_images_ready_ = true;
+  }
+  // The echoes cleared for the line pass to add the specular echoes to, after the last image's
   // passes read them.
-  VkMemoryBarrier before_fill{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  before_fill.srcAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-  before_fill.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &before_fill, 0, nullptr, 0,
+  VkMemoryBarrier before_clear{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  before_clear.srcAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+  before_clear.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &before_clear, 0, nullptr, 0,
                        nullptr);
-  vkCmdFillBuffer(cmd, echoes_.handle(), 0, VK_WHOLE_SIZE, 0);
+  const VkClearColorValue zero{};
+  const VkImageSubresourceRange whole{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdClearColorImage(cmd, echoes_.image(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &whole);
   compute_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &sets_[slot], 0, nullptr);
   // A timestamp after each pass: the barrier after each makes a CPU device (lavapipe) finish the

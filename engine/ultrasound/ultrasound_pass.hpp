@@ -65,7 +65,8 @@ class UltrasoundPass {
   std::array<VkDescriptorSet, kRing> sets_{};
   std::array<GpuBuffer, kRing> uniforms_;
   GpuBuffer layers_;
-  GpuBuffer echoes_, axial_;
+  GpuImage echoes_, axial_, runs_;  // float images between the passes, in GENERAL layout
+  bool work_images_ready_ = false;   // once transitioned to GENERAL
   GpuBuffer lines_;  // host-visible: read back after an image
   GpuImage image_;
   VkImageLayout image_layout_ = VK_IMAGE_LAYOUT_UNDEFINED;
