@@ -7,7 +7,15 @@
 #define MAX_LOADS 8
 #define KERNEL_VEC4S 5  // up to 17 weights (radius 16) of the point spread function, 4 to a vec4
 
+// The line pass reads the block as a storage buffer (binding 7, the same memory): lavapipe (Mesa
+// 22.3) recompiles a shader whose branches test uniform-block values with those values inlined
+// each time the block is bound, that is every image, and the line pass's branches test many
+// (the needle's direction, the loads, the layers); it inlines nothing from storage buffers.
+#ifdef ECHO_IN_STORAGE_BUFFER
+layout(set = 0, binding = 7, std140) readonly buffer Echo {
+#else
 layout(set = 0, binding = 0, std140) uniform Echo {
+#endif
   vec4 origin;       // xyz: the probe face's centre
   vec4 direction;    // xyz: the beams' direction
   vec4 lateral;      // xyz: along the array
@@ -53,6 +61,10 @@ layout(set = 0, binding = 1, std140) uniform Layers {
 // lanes at once, a storage buffer lane by lane.
 layout(set = 0, binding = 2, rgba32f) uniform image2D echoes;
 layout(set = 0, binding = 3, rgba32f) uniform image2D axial;
+// The per-sample passes' work item does one sample of this many neighbouring lines: a CPU device
+// (lavapipe) pays for every SIMD group of work items it starts, as much as a few samples' arithmetic
+// (docs/BENCHMARKS.md, "Ultrasound image"). engine/ultrasound/ultrasound_pass.cpp kLinesPerItem.
+#define LINES_PER_ITEM 16
 #define MAX_INTERFACES 24
 #define MAX_RUNS 32
 struct Interface {

@@ -1,6 +1,7 @@
 #version 450
-// Echoes: one work item a sample adds the tissue's echo to the specular echoes the line pass left
-// there (ultrasound_lines.comp): the round-trip amplitude of its run, attenuated to its depth
+// Echoes: one work item a sample (of LINES_PER_ITEM lines) adds the tissue's echo to the specular
+// echoes the line pass left there (ultrasound_lines.comp): the round-trip amplitude of its run,
+// attenuated to its depth
 // and time-gain compensated, times its layer's backscatter on the scatterer of its cell at its
 // rest position (a fixed random phasor, so the speckle stays put while the probe does and moves
 // with the tissue).
@@ -24,14 +25,8 @@ vec2 scatterer(vec3 x, float density) {
   return vec2(cos(phase), sin(phase)) / sqrt(density);
 }
 
-// A work group's samples lie on one line (gl_WorkGroupID.y), so what it reads of the line is
-// the same for all of them: a CPU device (lavapipe) loads it once for its SIMD lanes.
-void main() {
-  uint samples = echo.counts.y;
-  uint line = gl_WorkGroupID.y, j = gl_GlobalInvocationID.x;
-  if (j >= samples) return;
-  float z = sample_depth(j);
-
+// Adds the tissue's echo to sample j of `line`.
+void add_tissue_echo(uint line, uint j) {
   Run run = load_run(line, 0u);
   uint count = lines[line].run_count;
   for (uint k = 1u; k < count; ++k) {
@@ -39,6 +34,7 @@ void main() {
     if (next.first <= j) run = next;
   }
   if (run.layer < 0) return;  // gel: the specular echoes alone
+  float z = sample_depth(j);
   float gained = run.amplitude * exp(-2.0 * run.alpha * (z - interval_start(run.first))) * time_gain(z);
   vec2 scatter = vec2(1.0, 0.0);
   if (echo.kernel.z == 1u)
@@ -46,4 +42,13 @@ void main() {
   ivec2 at = ivec2(j, line);
   vec2 received = imageLoad(echoes, at).xy + gained * echo.beam.z * layers[run.layer].material.z * echo.display.z * scatter;
   imageStore(echoes, at, vec4(received, 0.0, 0.0));
+}
+
+// A work item's lines are the same for all the items of its group (gl_WorkGroupID.y), so what it
+// reads of a line is the same for all its SIMD lanes: a CPU device (lavapipe) loads it once for them.
+void main() {
+  uint j = gl_GlobalInvocationID.x;
+  if (j >= echo.counts.y) return;
+  uint first = gl_WorkGroupID.y * LINES_PER_ITEM;
+  for (uint line = first; line < min(first + LINES_PER_ITEM, echo.counts.x); ++line) add_tissue_echo(line, j);
 }

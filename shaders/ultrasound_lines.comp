@@ -8,6 +8,7 @@
 // every sample's echo. Samples for samples, the CPU reference's walk
 // (engine/ultrasound/echo_model.cpp, trace_scan_lines).
 #extension GL_GOOGLE_include_directive : require
+#define ECHO_IN_STORAGE_BUFFER
 #include "ultrasound.glsl"
 
 layout(local_size_x = 8) in;

@@ -22,6 +22,9 @@ namespace {
 // local_size_x of the passes: a line's walk is long and its length varies, so lines go in small
 // groups (a CPU device runs a group's invocations on its SIMD lanes, a group to a thread).
 constexpr std::array<uint32_t, UltrasoundPass::kPasses> kWorkgroup{8, 64, 64, 64};
+// The lines a work item of the per-sample passes does (ultrasound.glsl LINES_PER_ITEM): each SIMD
+// group of work items a CPU device (lavapipe) starts costs about as much as a few samples' arithmetic.
+constexpr uint32_t kLinesPerItem = 16;
 constexpr size_t kMaxLoads = 8;      // ultrasound.glsl MAX_LOADS
 constexpr size_t kKernelVec4s = 5;   // ultrasound.glsl KERNEL_VEC4S
 constexpr size_t kMaxPrimitives = 128;
@@ -71,7 +74,7 @@ struct LineRecordGpu {
 };
 static_assert(sizeof(LineRecordGpu) == 32 + 16 * ScanLine::kMaxInterfaces, "std430 layout of LineRecord");
 
-enum Binding : uint32_t { kUniforms, kLayers, kEchoes, kAxial, kLines, kPicture, kRuns, kBindings };
+enum Binding : uint32_t { kUniforms, kLayers, kEchoes, kAxial, kLines, kPicture, kRuns, kUniformsStorage, kBindings };
 
 VkDescriptorType descriptor_type(uint32_t binding) {
   switch (binding) {
@@ -79,6 +82,7 @@ VkDescriptorType descriptor_type(uint32_t binding) {
     case kLayers:
       return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     case kLines:
+    case kUniformsStorage:
       return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     default:
       return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
@@ -157,7 +161,6 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
 
   const LayersGpu packed = pack_layers(scene_);
   layers_ = GpuBuffer::device_local_with_data(context_, &packed, sizeof packed, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-  const VkDeviceSize samples = VkDeviceSize(settings_.lines) * settings_.samples;
   echoes_ = work_image(context_, settings_.samples, settings_.lines);
   axial_ = work_image(context_, settings_.samples, settings_.lines);
   runs_ = work_image(context_, kMaxRuns, settings_.lines);
@@ -167,7 +170,7 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
 
   std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * kRing},
-                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kRing},
+                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * kRing},
                                              {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 4 * kRing}}};
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pool_info.maxSets = kRing;
@@ -175,7 +178,8 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
   pool_info.pPoolSizes = sizes.data();
   VK_CHECK(vkCreateDescriptorPool(device_, &pool_info, nullptr, &pool_));
   for (size_t slot = 0; slot < kRing; ++slot) {
-    uniforms_[slot] = GpuBuffer::host_visible(context_, sizeof(EchoUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    uniforms_[slot] = GpuBuffer::host_visible(context_, sizeof(EchoUniforms),
+                                              VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     alloc.descriptorPool = pool_;
     alloc.descriptorSetCount = 1;
@@ -187,7 +191,8 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
                                                                  {},
                                                                  {lines_.handle(), 0, VK_WHOLE_SIZE},
                                                                  {},
-                                                                 {}}};
+                                                                 {},
+                                                                 {uniforms_[slot].handle(), 0, VK_WHOLE_SIZE}}};
     std::array<VkDescriptorImageInfo, kBindings> images{};
     images[kEchoes] = {VK_NULL_HANDLE, echoes_.view(), VK_IMAGE_LAYOUT_GENERAL};
     images[kAxial] = {VK_NULL_HANDLE, axial_.view(), VK_IMAGE_LAYOUT_GENERAL};
@@ -325,11 +330,12 @@ void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uni
   } else {
     timed_slot_ = kRing;
   }
-  // The line pass: a work item a line; the others: a work group of samples of one line a time.
+  // The line pass: a work item a line; the others: a work item a sample of kLinesPerItem lines.
+  const uint32_t line_groups = (lines + kLinesPerItem - 1) / kLinesPerItem;
   const std::array<VkExtent2D, kPasses> groups{{{(lines + kWorkgroup[0] - 1) / kWorkgroup[0], 1},
-                                                {(samples + kWorkgroup[1] - 1) / kWorkgroup[1], lines},
-                                                {(samples + kWorkgroup[2] - 1) / kWorkgroup[2], lines},
-                                                {(samples + kWorkgroup[3] - 1) / kWorkgroup[3], lines}}};
+                                                {(samples + kWorkgroup[1] - 1) / kWorkgroup[1], line_groups},
+                                                {(samples + kWorkgroup[2] - 1) / kWorkgroup[2], line_groups},
+                                                {(samples + kWorkgroup[3] - 1) / kWorkgroup[3], line_groups}}};
   for (size_t p = 0; p < pipelines_.size(); ++p) {
     if (p > 0)
       compute_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,

@@ -1,9 +1,9 @@
 // The ultrasound image's compute passes behind UltrasoundView (engine/ultrasound.hpp): each scan
 // line's layer changes, reflections and runs between them (shaders/ultrasound_lines.comp), each
 // sample's echo from them and its scatterer (ultrasound_echoes.comp), the point spread function
-// along the lines (ultrasound_axial.comp),
-// across them with the envelope and log compression into an RGBA8 storage image
-// (ultrasound_image.comp). The image is left for fragment shaders to sample (the UI pass draws it).
+// along the lines (ultrasound_axial.comp), across them with the envelope and log compression into
+// an RGBA8 storage image (ultrasound_image.comp). The image is left for fragment shaders to sample
+// (the UI pass draws it).
 #pragma once
 
 #include <vulkan/vulkan.h>
