@@ -83,11 +83,13 @@ engine::RgbaImage UltrasoundWindow::picture(const engine::NeedleLoad& needle) {
 void UltrasoundWindow::add_to_frame(engine::FrameParams& params, const engine::SceneRenderer& renderer, engine::Extent frame,
                                     const engine::NeedleLoad& needle) {
   if (!view_) view_ = std::make_unique<engine::UltrasoundView>(device_, scene_);
-  engine::CommandRecorder image = view_->record(probe(needle), &needle);
-  params.before_pass = [before = std::move(params.before_pass), image](const engine::CommandBuffer& cmd) {
-    if (before) before(cmd);
-    image(cmd);
-  };
+  // None when neither the probe nor the needle moved: the image shown stays.
+  if (engine::CommandRecorder image = view_->record(probe(needle), &needle)) {
+    params.before_pass = [before = std::move(params.before_pass), image](const engine::CommandBuffer& cmd) {
+      if (before) before(cmd);
+      image(cmd);
+    };
+  }
   if (!rect_) return;
   engine::CommandRecorder drawn = view_->draw(renderer, *rect_, frame);
   rect_.reset();

@@ -143,7 +143,8 @@ class UltrasoundView {
   const UltrasoundSettings& settings() const;
 
   // This frame's image, to record before the scene's render pass (FrameParams::before_pass,
-  // after what is there); draw() then shows it.
+  // after what is there); draw() then shows it. Empty when the last image recorded is already
+  // this probe's and needle's (nothing moved): the passes then cost nothing.
   CommandRecorder record(const UltrasoundProbe& probe, const NeedleLoad* needle);
   // Records drawing the last image recorded into `rect` of a frame of `renderer`'s (`frame` its
   // size), stretched to the rectangle: to run after the UI pass in FrameParams::overlay, so it

@@ -245,7 +245,7 @@ std::optional<std::array<double, UltrasoundPass::kPasses>> UltrasoundPass::read_
   return ms;
 }
 
-std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProbe& probe, const NeedleLoad* needle) {
+std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProbe& probe, const NeedleLoad* needle, bool unless_shown) {
   const UltrasoundSettings& s = settings_;
   const double dz = probe.depth_m / s.samples, dx = probe.width_m / s.lines;
   const std::vector<float> axial = gaussian_weights(echo::axial_sigma_m(probe), dz);
@@ -285,6 +285,7 @@ std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProb
   }
   auto bytes = std::make_shared<std::vector<uint8_t>>(sizeof u);
   std::memcpy(bytes->data(), &u, sizeof u);
+  if (unless_shown && has_image() && *bytes == recorded_) return {};
   return [this, bytes](VkCommandBuffer cmd) { record(cmd, *bytes); };
 }
 
@@ -292,6 +293,7 @@ void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uni
   const size_t slot = ring_;
   ring_ = (ring_ + 1) % kRing;
   std::memcpy(uniforms_[slot].mapped(), uniforms.data(), uniforms.size());
+  recorded_ = uniforms;
   const uint32_t lines = settings_.lines, samples = settings_.samples;
 
   // The last image's reads (the UI's fragment shader, a read-back copy, the passes themselves)

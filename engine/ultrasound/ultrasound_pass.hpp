@@ -33,8 +33,10 @@ class UltrasoundPass {
   const EchoScene& scene() const { return scene_; }
   const UltrasoundSettings& settings() const { return settings_; }
 
-  // The recorder of one image for this probe and needle (its uniforms are filled now).
-  std::function<void(VkCommandBuffer)> update(const UltrasoundProbe& probe, const NeedleLoad* needle);
+  // The recorder of one image for this probe and needle (its uniforms are filled now). With
+  // `unless_shown`, none (an empty function) when the last image recorded was made from the same
+  // uniforms: the scene and settings are the pass's own, so the image would be the same.
+  std::function<void(VkCommandBuffer)> update(const UltrasoundProbe& probe, const NeedleLoad* needle, bool unless_shown = false);
 
   // The image: sampled by fragment shaders in SHADER_READ_ONLY_OPTIMAL once an image was recorded.
   VkImageView image_view() const { return image_.view(); }
@@ -71,6 +73,7 @@ class UltrasoundPass {
   GpuImage image_;
   VkImageLayout image_layout_ = VK_IMAGE_LAYOUT_UNDEFINED;
   size_t ring_ = 0;
+  std::vector<uint8_t> recorded_;  // the uniforms of the last image recorded
   VkQueryPool timestamps_ = VK_NULL_HANDLE;  // kPasses + 1 a ring slot, while timings are on
   bool timed_ = false;
   size_t timed_slot_ = kRing;  // the slot of the last image recorded with timings

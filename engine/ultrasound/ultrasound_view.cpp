@@ -20,7 +20,8 @@ const EchoScene& UltrasoundView::scene() const { return pass_->scene(); }
 const UltrasoundSettings& UltrasoundView::settings() const { return pass_->settings(); }
 
 CommandRecorder UltrasoundView::record(const UltrasoundProbe& probe, const NeedleLoad* needle) {
-  auto recorder = pass_->update(probe, needle);
+  auto recorder = pass_->update(probe, needle, true);
+  if (!recorder) return {};
   return [recorder](const CommandBuffer& cmd) { recorder(cmd.handle); };
 }
 

@@ -6,7 +6,10 @@
 
 #include <cmath>
 
+#include "engine/passes/scene_pass.hpp"
 #include "engine/ultrasound/echo_model.hpp"
+#include "engine/ultrasound/ultrasound_pass.hpp"
+#include "engine/vulkan/vulkan_context.hpp"
 #include "ultrasound_fixture.hpp"
 #include "vulkan_fixture.hpp"
 
@@ -162,6 +165,38 @@ TEST_F(UltrasoundTest, SpeckleStaysPutWhileTheProbeStaysPut) {
   probe.position.y += 0.001;  // a millimetre across the plane: other scatterers
   view.render(probe, nullptr);
   EXPECT_NE(view.image().pixels, first.pixels);
+}
+
+// A frame records the passes only when the image would change: the same probe and needle again
+// record nothing (the image shown is already theirs); a moved needle or probe records them, and
+// a recorder never run leaves the next frame to record. render() always makes the image.
+TEST_F(UltrasoundTest, AFrameRecordsThePassesOnlyWhenTheProbeOrTheNeedleMoved) {
+  engine::UltrasoundView view(device(), block_scene());
+  const auto run = [&](const engine::CommandRecorder& recorder) {
+    view.pass().context().submit_and_wait([&](VkCommandBuffer cmd) { recorder(engine::CommandBuffer{cmd}); });
+  };
+  engine::UltrasoundProbe probe = block_probe();
+  engine::NeedleLoad needle = in_plane_needle();
+  const engine::CommandRecorder first = view.record(probe, &needle);
+  ASSERT_TRUE(first);
+  run(first);
+  const engine::RgbaImage before = view.image();
+  EXPECT_FALSE(view.record(probe, &needle));
+
+  needle.tip += 0.002 * needle.axis;  // 2 mm deeper: the wall's echo moves
+  const engine::CommandRecorder deeper = view.record(probe, &needle);
+  ASSERT_TRUE(deeper);
+  run(deeper);
+  EXPECT_NE(view.image().pixels, before.pixels);
+  EXPECT_FALSE(view.record(probe, &needle));
+
+  probe.position.x += 0.001;
+  EXPECT_TRUE(view.record(probe, &needle));
+  EXPECT_TRUE(view.record(probe, &needle));  // the first was never run
+  view.render(block_probe(), &needle);       // render: whatever was recorded
+  const engine::RgbaImage rendered = view.image();
+  view.render(block_probe(), &needle);
+  EXPECT_EQ(view.image().pixels, rendered.pixels);
 }
 
 TEST_F(UltrasoundTest, AScenePastTheShadersLimitsIsRefused) {
