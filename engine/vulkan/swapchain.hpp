@@ -26,6 +26,8 @@ class Swapchain final : public TargetImages {
   bool accepts_transfer_writes() const override { return transfer_dst_; }
   std::optional<uint32_t> acquire(VkSemaphore image_ready) override;
   void present(uint32_t index, VkSemaphore render_done) override;
+  // WindowTarget::set_presentation.
+  bool set_present_mode(VkPresentModeKHR mode);
 
  private:
   bool recreate();  // false while the window has no area
@@ -39,6 +41,7 @@ class Swapchain final : public TargetImages {
   std::vector<VkImage> images_;
   std::vector<VkImageView> views_;
   uint64_t generation_ = 0;
+  VkPresentModeKHR present_mode_ = VK_PRESENT_MODE_FIFO_KHR;
   bool transfer_dst_ = false;  // the surface lets its images take transfer writes (the render scale's blit)
   bool stale_ = false;  // set by present on out-of-date/suboptimal; recreate before the next acquire
 };

@@ -77,6 +77,7 @@ struct Variant {
   std::string name;            // as given, "default" for the product's own settings
   std::optional<float> scale;  // scale=S: a fixed render scale
   bool cut_culling = true;     // cut_culling=off: the section's cut-away chunks drawn (to measure the culling)
+  engine::WindowTarget::Presentation presentation = engine::WindowTarget::Presentation::Fifo;  // present=...
 };
 
 std::vector<Variant> parse_variants(const std::string& list) {
@@ -95,10 +96,14 @@ std::vector<Variant> parse_variants(const std::string& list) {
         const double scale = parse_number(value, "--variants scale");
         if (!(scale > 0.0 && scale <= 1.0)) throw UsageError("--variants: scale=S takes S in (0, 1]");
         v.scale = float(scale);
+      } else if (setting == "present=fifo" || setting == "present=mailbox" || setting == "present=immediate") {
+        using P = engine::WindowTarget::Presentation;
+        v.presentation = setting == "present=mailbox" ? P::Mailbox : setting == "present=immediate" ? P::Immediate : P::Fifo;
       } else if (setting == "cut_culling=off") {
         v.cut_culling = false;
       } else {
-        throw UsageError("--variants: unknown setting '" + setting + "' (default, scale=S or cut_culling=off)");
+        throw UsageError("--variants: unknown setting '" + setting +
+                         "' (default, scale=S, cut_culling=off, present=fifo|mailbox|immediate)");
       }
     }
     variants.push_back(std::move(v));
@@ -148,8 +153,9 @@ struct RowOptions {
 // through the variants, untimed and (with timestamps) timed. The first frame of each block
 // carries the switch from the block before and is left out. A variant without a fixed scale
 // leaves the frame's own (automatic or fixed) render scale to it.
-std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget& target, engine::GpuScene& scene,
-                                 const app::FrameContent& content, engine::Window* window, const RowOptions& options) {
+std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget& target, engine::WindowTarget* window_target,
+                                 engine::GpuScene& scene, const app::FrameContent& content, engine::Window* window,
+                                 const RowOptions& options) {
   const std::optional<float> product_scale = frame.fixed_render_scale();
   const size_t kinds = options.variants.size() * (options.timestamps ? 2 : 1);
   std::vector<FrameSample> samples;
@@ -165,6 +171,8 @@ std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget&
     frame.renderer().set_device_timings(timed);
     frame.set_fixed_render_scale(options.variants[variant].scale ? options.variants[variant].scale : product_scale);
     frame.renderer().set_cull_cut_away(options.variants[variant].cut_culling);
+    if (window_target && !window_target->set_presentation(options.variants[variant].presentation))
+      throw std::runtime_error("--variants " + options.variants[variant].name + ": the window's surface does not offer it");
     const Clock::time_point now = Clock::now();
     if (counting) samples.back().period_ms = std::chrono::duration<double, std::milli>(now - previous).count();
     previous = now;
@@ -247,7 +255,8 @@ int run_bench_frame(ArgList& args) {
           return session ? engine::GpuScene(renderer, session->scene())
                          : engine::GpuScene(renderer, tissue, engine::framing_view(tissue, size), engine::TissueParams{});
         };
-        auto run_row = [&](const engine::GpuDevice& device, engine::RenderTarget& target, engine::Window* window) {
+        auto run_row = [&](const engine::GpuDevice& device, engine::RenderTarget& target, engine::Window* window,
+                           engine::WindowTarget* window_target) {
           app::TraineeFrame frame(device, target, {msaa.value_or(device.is_cpu_device() ? 1 : 4), true, render_scale}, window);
           engine::GpuScene scene = make_scene(frame.renderer());
           // The views as the window shows them (app::with_views): the section cut, the ultrasound window open.
@@ -258,7 +267,7 @@ int run_bench_frame(ArgList& args) {
           if (section_view) view.section = engine::Section::Mode::Cut;
           view.ultrasound = view.has_ultrasound = ultrasound_view;
           const app::FrameContent shown = app::with_views(show, view, frame.renderer(), target);
-          const std::vector<FrameSample> samples = measure(frame, target, scene, shown, window, options);
+          const std::vector<FrameSample> samples = measure(frame, target, window_target, scene, shown, window, options);
           const std::string size_text = std::to_string(target.extent().width) + "x" + std::to_string(target.extent().height);
           for (size_t v = 0; v < options.variants.size(); ++v) {
             std::vector<double> untimed, timed, scales;
@@ -288,13 +297,13 @@ int run_bench_frame(ArgList& args) {
         };
         if (target_name == "window") {
           app::GpuWindow vw("needle-sim bench frame", size);
-          run_row(vw.device, vw.target, &vw.window);
+          run_row(vw.device, vw.target, &vw.window, &vw.target);
         } else {
           engine::DeviceOptions quiet;
           quiet.announce_device = false;
           engine::GpuDevice device(quiet);
           engine::HeadlessTarget target(device, size);
-          run_row(device, target, nullptr);
+          run_row(device, target, nullptr, nullptr);
         }
       }
     }
@@ -332,7 +341,8 @@ const CommandRegistrar reg{
      "                   frame misses 60 fps); key render_scale (the median of the frames'), upscale_device\n"
      "  --variants LIST  settings compared within each row, block by block in turn, ';' between variants and\n"
      "                   ',' between the settings of one: default (the frame's own), scale=S (a fixed render scale),\n"
-     "                   cut_culling=off (the section's cut-away chunks drawn, as before they were culled)",
+     "                   cut_culling=off (the section's cut-away chunks drawn, as before they were culled),\n"
+     "                   present=fifo|mailbox|immediate (the window's present mode; default fifo)",
      run_bench_frame}};
 
 }  // namespace
