@@ -89,7 +89,7 @@ bool TraineeFrame::draw(engine::RenderTarget& target, engine::GpuScene& scene, c
     ui_->begin_frame(target.extent(), dt);
     const auto& assets = scene.scene().assets;
     ui::draw_status_panel({device_.device_description(), assets.empty() ? "" : assets[0].name,
-                           renderer_.msaa_samples(), clock_.mean_frame_ms()});
+                           renderer_.msaa_samples(), clock_.mean_frame_ms(), renderer_.render_scale()});
     if (content.panel) content.panel();
     if (content.views_panel) content.views_panel(needle, params.camera);
     params.overlay = ui_->end_frame();
