@@ -48,7 +48,8 @@ FrameContent with_views(const Show& show, ui::ViewState& view, const engine::Sce
 SessionWindow::SessionWindow(const WindowOptions& options)
     : options_(options),
       vw_("needle-sim", options.size),
-      frame_(vw_.device, vw_.target, {options.msaa.value_or(vw_.default_msaa_samples()), options.hud}, &vw_.window),
+      frame_(vw_.device, vw_.target, {options.msaa.value_or(vw_.default_msaa_samples()), options.hud, options.render_scale},
+             &vw_.window),
       frames_(options.frames, options.screenshot),
       view_{options.section, options.ultrasound},
       probe_(options.probe) {}

@@ -36,7 +36,7 @@ class SettingsReader : io::StrictJsonReader<SettingsError> {
   using StrictJsonReader::StrictJsonReader;
 
   Settings settings(const json& root) const {
-    object(root, "", {"version", "trainee", "device", "window", "views"});
+    object(root, "", {"version", "trainee", "device", "window", "views", "render_scale"});
     Settings s;
     if (root.contains("trainee")) s.trainee = string(root["trainee"], "/trainee");
     if (root.contains("device")) {
@@ -50,7 +50,14 @@ class SettingsReader : io::StrictJsonReader<SettingsError> {
       s.window.height = uint32_t(whole(member(w, "/window", "height"), "/window/height", 240, 16384));
     }
     if (root.contains("views")) s.views = views(root["views"]);
+    if (root.contains("render_scale")) s.render_scale = render_scale(root["render_scale"]);
     return s;
+  }
+
+  std::optional<float> render_scale(const json& v) const {
+    if (v.is_string() && v == "auto") return std::nullopt;
+    if (!v.is_number()) fail("/render_scale", "expected \"auto\" or a number in [0.25, 1]");
+    return float(in_range(v, "/render_scale", kMinRenderScale, 1.0, "[0.25, 1]"));
   }
 
   ViewSettings views(const json& v) const {
@@ -142,6 +149,7 @@ void save_settings(const fs::path& file, const Settings& settings) {
                 {"across_m", settings.views.probe.across_m},
                 {"turn_deg", settings.views.probe.turn_rad / kRadPerDeg}}}}}};
   if (!settings.trainee.empty()) j["trainee"] = settings.trainee;
+  j["render_scale"] = settings.render_scale ? json(*settings.render_scale) : json("auto");
   io::write_file(file, j.dump(2) + "\n");
 }
 

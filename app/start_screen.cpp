@@ -183,6 +183,7 @@ int run_start_screen(const StartScreenOptions& options) {
   window_options.section = settings.views.section;
   window_options.ultrasound = settings.views.ultrasound;
   window_options.probe = settings.views.probe;
+  window_options.render_scale = settings.render_scale;
   SessionWindow window(window_options);
   StartScreen screen(options, settings);
   if (!loaded.notice.empty())

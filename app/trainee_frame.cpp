@@ -61,8 +61,16 @@ FrameContent scripted_content(const engine::GpuScene& scene) {
 
 TraineeFrame::TraineeFrame(const engine::GpuDevice& device, const engine::RenderTarget& target,
                            const TraineeFrameSettings& settings, engine::Window* window)
-    : device_(device), renderer_(device, target, {settings.msaa}) {
+    : device_(device), renderer_(device, target, {settings.msaa}), target_(target) {
   if (settings.hud) ui_.emplace(renderer_, window);
+  if (device.is_cpu_device() && renderer_.render_scale_unsupported(target).empty()) auto_scale_.emplace();
+  set_fixed_render_scale(settings.render_scale);
+}
+
+void TraineeFrame::set_fixed_render_scale(std::optional<float> scale) {
+  if (scale) renderer_.set_render_scale(target_, *scale);
+  else renderer_.set_render_scale(target_, auto_scale_ ? auto_scale_->scale() : 1.0f);
+  fixed_scale_ = scale;
 }
 
 bool TraineeFrame::draw(engine::RenderTarget& target, engine::GpuScene& scene, const FrameContent& content,
@@ -73,11 +81,15 @@ bool TraineeFrame::draw(engine::RenderTarget& target, engine::GpuScene& scene, c
   engine::FrameParams params = scene.frame_params(needle ? &*needle : nullptr);
   const Clock::time_point posed = Clock::now();
   const float dt = clock_.tick();
+  if (!fixed_scale_ && auto_scale_ && dt > 0.0f) {
+    const float scale = auto_scale_->next(double(dt) * 1000.0);
+    if (scale != renderer_.render_scale()) renderer_.set_render_scale(target, scale);
+  }
   if (ui_) {
     ui_->begin_frame(target.extent(), dt);
     const auto& assets = scene.scene().assets;
     ui::draw_status_panel({device_.device_description(), assets.empty() ? "" : assets[0].name,
-                           renderer_.msaa_samples(), clock_.mean_frame_ms()});
+                           renderer_.msaa_samples(), clock_.mean_frame_ms(), renderer_.render_scale()});
     if (content.panel) content.panel();
     if (content.views_panel) content.views_panel(needle, params.camera);
     params.overlay = ui_->end_frame();

@@ -6,6 +6,7 @@
 #include <functional>
 #include <optional>
 
+#include "app/auto_render_scale.hpp"
 #include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/render_target.hpp"
@@ -46,6 +47,9 @@ FrameContent scripted_content(const engine::GpuScene& scene);
 struct TraineeFrameSettings {
   int msaa = 1;
   bool hud = true;  // the panels
+  // The 3D view's render scale (engine::RendererSettings::render_scale); nullopt: automatic, on a
+  // CPU device that can upscale, lowered while the frame misses 60 fps (AutoRenderScale), else 1.
+  std::optional<float> render_scale;
 };
 
 // The CPU time of the frame's parts before the renderer records it, in milliseconds.
@@ -69,6 +73,10 @@ class TraineeFrame {
             engine::RgbaImage* capture = nullptr);
 
   engine::SceneRenderer& renderer() { return renderer_; }
+  // The render scale fixed from the next frame on; nullopt: automatic (TraineeFrameSettings).
+  // std::invalid_argument as SceneRenderer::set_render_scale.
+  void set_fixed_render_scale(std::optional<float> scale);
+  std::optional<float> fixed_render_scale() const { return fixed_scale_; }
   // What the last frame's parts cost before the renderer (the renderer's own: renderer().frame_cost()).
   const ContentCost& content_cost() const { return cost_; }
 
@@ -78,6 +86,9 @@ class TraineeFrame {
   std::optional<engine::UiPass> ui_;
   ui::FrameClock clock_;
   ContentCost cost_;
+  const engine::RenderTarget& target_;
+  std::optional<float> fixed_scale_;
+  std::optional<AutoRenderScale> auto_scale_;  // on a CPU device that can upscale
 };
 
 }  // namespace needle::app

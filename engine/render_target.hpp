@@ -44,6 +44,13 @@ class WindowTarget final : public RenderTarget {
   // sRGB, FIFO presentation, recreated when the window is resized or the surface asks for it; no
   // frames while minimised. The device must have been made for this window.
   WindowTarget(const GpuDevice& device, Window& window);
+
+  // How finished frames reach the window: FIFO (the default: every frame shown, in turn, paced by
+  // the display), mailbox (the newest replaces one waiting), immediate (shown at once).
+  enum class Presentation { Fifo, Mailbox, Immediate };
+  // From the next frame on (the swapchain is made again); false, FIFO kept, where the surface
+  // does not offer it. For measuring (`bench frame --variants present=...`).
+  bool set_presentation(Presentation mode);
 };
 
 }  // namespace needle::engine

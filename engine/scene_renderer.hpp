@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "engine/model.hpp"
@@ -73,6 +74,15 @@ struct RendererSettings {
   // they save.
   bool level_of_detail = true;
   bool cull_chunks = true;
+  // With cull_chunks, a sectioned item's chunks wholly on the section's cut-away side are left
+  // out (the same picture). Off only to measure what it saves (`bench frame --variants`).
+  bool cull_cut_away = true;
+  // The scene's meshes drawn at this fraction of the target's width and height, in (0, 1], then
+  // blitted over the target with linear filtering before the overlay, drawn at full resolution:
+  // fewer pixels to shade where they cost the frame (a CPU device). Below 1 it needs MSAA 1, a
+  // colour format the device blits with linear filtering and a target that takes transfer writes
+  // (std::invalid_argument naming what is missing). docs/RENDERING.md, "Render scale".
+  float render_scale = 1.0f;
 };
 
 // What one pass of a frame cost, in milliseconds.
@@ -89,6 +99,7 @@ struct FrameCost {
   double present_ms = 0.0;    // presenting (a CPU device's window copies the finished frame to the display)
   PassCost before_pass;       // FrameParams::before_pass: tissue deformation
   PassCost scene;             // the scene's meshes
+  PassCost upscale;           // at a render scale below 1, the blit of the scene over the target (device only)
   PassCost overlay;           // FrameParams::overlay: the UI
 };
 
@@ -111,6 +122,14 @@ class SceneRenderer {
   int msaa_samples() const;
   // Triangles the last recorded frame sent to the device, after chunk culling.
   size_t triangles_drawn() const;
+  // The render scale from the next frame on (RendererSettings::render_scale), for frames drawn
+  // into `target`; std::invalid_argument outside (0, 1] or, below 1, where the upscale cannot be done.
+  void set_render_scale(const RenderTarget& target, float scale);
+  float render_scale() const;
+  // RendererSettings::cull_cut_away from the next frame on (for `bench frame --variants`).
+  void set_cull_cut_away(bool on);
+  // Why a render scale below 1 cannot be used with `target`, empty when it can.
+  std::string render_scale_unsupported(const RenderTarget& target) const;
   // Timestamp queries around each pass from the next frame on (FrameCost's device times), where
   // the device has them (GpuDevice::timestamp_period_ns). A CPU device (lavapipe) then finishes
   // each pass before it starts the next, so this is for measuring (`needle-sim bench frame`).

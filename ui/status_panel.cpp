@@ -35,6 +35,7 @@ void draw_status_panel(const StatusInfo& info) {
     ImGui::Text("scene   %s", info.scene.c_str());
     ImGui::Text("device  %s", info.device.c_str());
     ImGui::Text("msaa    %dx", info.msaa);
+    if (info.render_scale < 1.0f) ImGui::Text("scale   %.2f (3D view)", double(info.render_scale));
     if (info.frame_ms > 0.0) {
       ImGui::Text("frame   %.1f ms (%.0f fps)", info.frame_ms, 1000.0 / info.frame_ms);
     } else {

@@ -27,6 +27,7 @@ struct StatusInfo {
   std::string scene;
   int msaa = 1;
   double frame_ms = 0.0;
+  float render_scale = 1.0f;  // the 3D view's (shown below 1, so a softer picture is explained)
 };
 
 // Draws the panel into the current ImGui frame.

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 
 #include "engine/passes/frame_uniforms.hpp"
 #include "engine/passes/level_of_detail.hpp"
@@ -27,6 +30,12 @@ size_t level_to_draw(const GpuPrimitive& p, const glm::mat4& model_to_world, con
   std::vector<uint32_t> triangles;
   for (const GpuLevel& level : p.levels) triangles.push_back(level.index_count / 3);
   return choose_level(triangles, projected_radius_px(world, camera, {extent.width, extent.height}));
+}
+
+// The section's plane as (n, d), n unit: the cut discards where n · p + d > 0.
+glm::vec4 section_plane(const Section& section) {
+  const glm::vec3 n = glm::normalize(section.normal);
+  return glm::vec4(n, -glm::dot(n, section.point));
 }
 
 using Clock = std::chrono::steady_clock;
@@ -53,18 +62,38 @@ ScenePass::ScenePass(const VulkanContext& context, const TargetImages& target, c
       color_format_(target.format()),
       samples_(context.max_msaa(settings.msaa_samples)),
       level_of_detail_(settings.level_of_detail),
-      cull_chunks_(settings.cull_chunks) {
-  create_render_pass(target);
+      cull_chunks_(settings.cull_chunks),
+      cull_cut_away_(settings.cull_cut_away) {
+  render_pass_ = make_render_pass(VK_ATTACHMENT_LOAD_OP_CLEAR, target.final_layout());
   create_layouts_and_sampler();
   create_pipelines();
   create_frame_slots();
   white_texture_ = GpuImage::texture(context_, Texture{1, 1, {255, 255, 255, 255}});
+  if (settings.render_scale != 1.0f) set_render_scale(target, settings.render_scale);
+}
+
+void ScenePass::set_render_scale(const TargetImages& target, float scale) {
+  if (!(scale > 0.0f && scale <= 1.0f)) throw std::invalid_argument("render scale " + std::to_string(scale) + " is not in (0, 1]");
+  if (scale < 1.0f && !scaled_) {
+    if (const std::string why = ScaledScene::unsupported(context_, target, samples_); !why.empty())
+      throw std::invalid_argument("render scale " + std::to_string(scale) + ": " + why);
+    scaled_pass_ = make_render_pass(VK_ATTACHMENT_LOAD_OP_CLEAR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    overlay_pass_ = make_render_pass(VK_ATTACHMENT_LOAD_OP_LOAD, target.final_layout());
+    scaled_ = std::make_unique<ScaledScene>(context_);
+  }
+  render_scale_ = scale;
+}
+
+VkExtent2D ScenePass::scene_extent(VkExtent2D target) const {
+  if (render_scale_ >= 1.0f) return target;
+  return {std::max(1u, uint32_t(std::lround(float(target.width) * render_scale_))),
+          std::max(1u, uint32_t(std::lround(float(target.height) * render_scale_)))};
 }
 
 void ScenePass::set_device_timings(bool on) {
   timed_ = on && context_.timestamp_period_ns() > 0.0;
   if (!timed_) {
-    cost_.before_pass.device_ms = cost_.scene.device_ms = cost_.overlay.device_ms = std::nullopt;
+    cost_.before_pass.device_ms = cost_.scene.device_ms = cost_.upscale.device_ms = cost_.overlay.device_ms = std::nullopt;
     return;
   }
   if (timestamps_) return;
@@ -91,25 +120,34 @@ ScenePass::~ScenePass() {
   if (material_layout_) vkDestroyDescriptorSetLayout(device_, material_layout_, nullptr);
   if (frame_layout_) vkDestroyDescriptorSetLayout(device_, frame_layout_, nullptr);
   if (sampler_) vkDestroySampler(device_, sampler_, nullptr);
-  if (render_pass_) vkDestroyRenderPass(device_, render_pass_, nullptr);
+  scaled_.reset();
+  for (VkRenderPass p : {render_pass_, scaled_pass_, overlay_pass_})
+    if (p) vkDestroyRenderPass(device_, p, nullptr);
 }
 
-void ScenePass::create_render_pass(const TargetImages& target) {
+// The scene's pass into the target (`load` CLEAR from UNDEFINED, `final_layout` the target's), at
+// a render scale below 1 into the smaller attachments (final layout TRANSFER_SRC for the upscale),
+// and the overlay's pass after the upscale (`load` LOAD from COLOR_ATTACHMENT_OPTIMAL). They differ
+// only in load operations and layouts, so they are compatible: the same pipelines (the scene's,
+// the UI pass's) and framebuffers serve all of them.
+VkRenderPass ScenePass::make_render_pass(VkAttachmentLoadOp load, VkImageLayout final_layout) const {
   const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
   std::vector<VkAttachmentDescription> attachments;
   VkAttachmentDescription color{};
   color.format = color_format_;
   color.samples = samples_;
-  color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  color.loadOp = load;
   color.storeOp = msaa ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
   color.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   color.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  color.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  color.finalLayout = msaa ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : target.final_layout();
+  color.initialLayout = load == VK_ATTACHMENT_LOAD_OP_LOAD ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
+  color.finalLayout = msaa ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : final_layout;
   attachments.push_back(color);
 
   VkAttachmentDescription depth = color;
   depth.format = kDepthFormat;
+  depth.loadOp = load == VK_ATTACHMENT_LOAD_OP_LOAD ? VK_ATTACHMENT_LOAD_OP_DONT_CARE : load;  // the overlay tests no depth
+  depth.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
   attachments.push_back(depth);
@@ -119,7 +157,7 @@ void ScenePass::create_render_pass(const TargetImages& target) {
     resolve.samples = VK_SAMPLE_COUNT_1_BIT;
     resolve.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     resolve.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    resolve.finalLayout = target.final_layout();
+    resolve.finalLayout = final_layout;
     attachments.push_back(resolve);
   }
 
@@ -164,7 +202,9 @@ void ScenePass::create_render_pass(const TargetImages& target) {
   info.pSubpasses = &subpass;
   info.dependencyCount = uint32_t(dependencies.size());
   info.pDependencies = dependencies.data();
-  VK_CHECK(vkCreateRenderPass(device_, &info, nullptr, &render_pass_));
+  VkRenderPass pass;
+  VK_CHECK(vkCreateRenderPass(device_, &info, nullptr, &pass));
+  return pass;
 }
 
 void ScenePass::create_layouts_and_sampler() {
@@ -363,8 +403,7 @@ void ScenePass::fill_uniforms(FrameSlot& slot, VkExtent2D extent, const FramePar
   }
   u.light_count = glm::ivec4(int(count), 0, 0, 0);
   if (params.section) {
-    const glm::vec3 n = glm::normalize(params.section->normal);
-    u.section_plane = glm::vec4(n, -glm::dot(n, params.section->point));
+    u.section_plane = section_plane(*params.section);
     u.section = glm::ivec4(params.section->mode == Section::Mode::Cut ? 1 : 2, 0, 0, 0);
   }
   std::memcpy(slot.uniforms.mapped(), &u, sizeof u);
@@ -380,6 +419,8 @@ bool ScenePass::draw(TargetImages& target, const FrameParams& params, RgbaImage*
   cost_.acquire_ms = lap_ms(t);
   if (!image) return false;
   ensure_framebuffers(target);
+  const VkExtent2D scene = scene_extent(target.extent());
+  if (render_scale_ < 1.0f) scaled_->ensure(scene, color_format_, kDepthFormat, scaled_pass_);
   VK_CHECK(vkResetFences(device_, 1, &slot.done));
 
   fill_uniforms(slot, target.extent(), params);
@@ -388,13 +429,16 @@ bool ScenePass::draw(TargetImages& target, const FrameParams& params, RgbaImage*
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   VK_CHECK(vkBeginCommandBuffer(slot.cmd, &begin));
   slot.timed = timed_;
+  slot.scaled = render_scale_ < 1.0f;
   record(slot.cmd, target, *image, params);
   if (capture) record_capture(slot.cmd, target, *image);
   VK_CHECK(vkEndCommandBuffer(slot.cmd));
 
   t = Clock::now();
   const bool semaphores = target.uses_semaphores();
+  // The image is first written by the scene's pass, or at a render scale below 1 by the upscale's blit.
   VkPipelineStageFlags wait_stage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  if (render_scale_ < 1.0f) wait_stage |= VK_PIPELINE_STAGE_TRANSFER_BIT;
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.waitSemaphoreCount = semaphores ? 1 : 0;
   submit.pWaitSemaphores = &slot.image_ready;
@@ -448,7 +492,10 @@ void ScenePass::read_timestamps(FrameSlot& slot) {
   auto between = [&](int a, int b) { return double((ticks[b] - ticks[a]) & mask) * ms_per_tick; };
   cost_.before_pass.device_ms = between(0, 1);
   cost_.scene.device_ms = between(1, 2);
-  cost_.overlay.device_ms = between(2, 3);
+  // At scale 1 the fourth timestamp is written right after the third, without a barrier: on a CPU
+  // device it then lands anywhere in the overlay's work, so the overlay is timed from the third.
+  cost_.upscale.device_ms = slot.scaled ? std::optional<double>(between(2, 3)) : std::nullopt;
+  cost_.overlay.device_ms = between(slot.scaled ? 3 : 2, 4);
 }
 
 void ScenePass::record_capture(VkCommandBuffer cmd, const TargetImages& target, uint32_t image) {
@@ -496,6 +543,9 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
   cost_.before_pass.record_ms = lap_ms(t);
   if (timed) write_timestamp(cmd, 1, false);
   t = Clock::now();
+  const VkExtent2D full = target.extent();
+  const bool scaled = render_scale_ < 1.0f;
+  const VkExtent2D extent = scaled ? scaled_->extent() : full;
   struct Draw {
     const GpuModel* model;
     uint32_t primitive;
@@ -504,8 +554,10 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
     std::vector<IndexRange> ranges;  // of the primitive's indices
     bool sectioned;
   };
-  // A cut shows the inside of what it cuts: its back faces are drawn, so none are culled.
+  // A cut shows the inside of what it cuts: its back faces are drawn, so none are culled for their
+  // facing; those wholly on the cut-away side are.
   const bool cut = params.section && params.section->mode == Section::Mode::Cut;
+  const glm::vec4 cut_plane = cut ? section_plane(*params.section) : glm::vec4(0.0f);
   std::vector<Draw> opaque, blended;
   for (const DrawItem& item : params.items) {
     for (const MeshInstance& instance : item.model->instances()) {
@@ -514,26 +566,28 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
       if (p.index_count == 0) continue;
       const Material& m = item.model->material_of(instance.primitive);
       float depth = glm::length(glm::vec3(transform[3]) - params.camera.position);
-      const GpuLevel& level = p.levels[level_of_detail_ ? level_to_draw(p, transform, params.camera, target.extent()) : 0];
+      const GpuLevel& level = p.levels[level_of_detail_ ? level_to_draw(p, transform, params.camera, extent) : 0];
       if (level.index_count == 0) continue;
       const bool sectioned = params.section && item.sectioned;
-      std::vector<IndexRange> ranges = cull_chunks_ && !m.double_sided && !(cut && sectioned)
-                                           ? visible_ranges(level.chunks, transform, params.camera.position, item.moved)
-                                           : std::vector<IndexRange>{{level.first_index, level.index_count}};
+      std::vector<IndexRange> ranges =
+          !cull_chunks_        ? std::vector<IndexRange>{{level.first_index, level.index_count}}
+          : cut && sectioned   ? (cull_cut_away_ ? ranges_kept_by_cut(level.chunks, transform, cut_plane, item.moved)
+                                                 : std::vector<IndexRange>{{level.first_index, level.index_count}})
+          : !m.double_sided    ? visible_ranges(level.chunks, transform, params.camera.position, item.moved)
+                               : std::vector<IndexRange>{{level.first_index, level.index_count}};
       (m.alpha_mode == AlphaMode::Blend ? blended : opaque)
           .push_back({item.model, instance.primitive, transform, depth, std::move(ranges), sectioned});
     }
   }
   std::sort(blended.begin(), blended.end(), [](const Draw& a, const Draw& b) { return a.depth > b.depth; });
 
-  VkExtent2D extent = target.extent();
   std::array<VkClearValue, 3> clears{};
   clears[0].color = {{params.background.r, params.background.g, params.background.b, 1.0f}};
   clears[1].depthStencil = {1.0f, 0};
   clears[2].color = clears[0].color;
   VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-  pass.renderPass = render_pass_;
-  pass.framebuffer = framebuffers_[image];
+  pass.renderPass = scaled ? scaled_pass_ : render_pass_;
+  pass.framebuffer = scaled ? scaled_->framebuffer() : framebuffers_[image];
   pass.renderArea = {{0, 0}, extent};
   pass.clearValueCount = samples_ != VK_SAMPLE_COUNT_1_BIT ? 3 : 2;
   pass.pClearValues = clears.data();
@@ -580,12 +634,25 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
   draw_list(opaque, 0);
   draw_list(blended, 1);
   cost_.scene.record_ms = lap_ms(t);
-  if (timed) write_timestamp(cmd, 2, true);
+  if (scaled) {
+    vkCmdEndRenderPass(cmd);
+    if (timed) write_timestamp(cmd, 2, false);
+    scaled_->record_upscale(cmd, target.image(image), full);
+    if (timed) write_timestamp(cmd, 3, false);
+    // The overlay over the upscaled scene, at the target's full resolution.
+    pass.renderPass = overlay_pass_;
+    pass.framebuffer = framebuffers_[image];
+    pass.renderArea = {{0, 0}, full};
+    vkCmdBeginRenderPass(cmd, &pass, VK_SUBPASS_CONTENTS_INLINE);  // the overlay sets its own viewport
+  } else if (timed) {
+    write_timestamp(cmd, 2, true);
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, uint32_t(next_slot_) * kTimestamps + 3);
+  }
   t = Clock::now();
   if (params.overlay) params.overlay(CommandBuffer{cmd});
   cost_.overlay.record_ms = lap_ms(t);
   vkCmdEndRenderPass(cmd);
-  if (timed) write_timestamp(cmd, 3, false);
+  if (timed) write_timestamp(cmd, 4, false);
 }
 
 void ScenePass::wait_idle() const { vkQueueWaitIdle(context_.queue()); }

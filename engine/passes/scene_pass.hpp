@@ -12,6 +12,7 @@
 #include "engine/vulkan/gpu_buffer.hpp"
 #include "engine/vulkan/gpu_image.hpp"
 #include "engine/vulkan/gpu_model.hpp"
+#include "engine/passes/scaled_scene.hpp"
 #include "engine/rgba_image.hpp"
 #include "engine/scene_renderer.hpp"
 #include "engine/vulkan/target_images.hpp"
@@ -43,6 +44,10 @@ class ScenePass {
   size_t triangles_drawn() const { return triangles_drawn_; }
   const FrameCost& frame_cost() const { return cost_; }
   void set_device_timings(bool on);
+  // SceneRenderer's (scene_renderer.hpp); `target` fixes whether the upscale can be done.
+  void set_render_scale(const TargetImages& target, float scale);
+  float render_scale() const { return render_scale_; }
+  void set_cull_cut_away(bool on) { cull_cut_away_ = on; }
   const VulkanContext& context() const { return context_; }
   // For passes drawn inside the scene's render pass (the UI pass).
   VkRenderPass render_pass() const { return render_pass_; }
@@ -50,23 +55,26 @@ class ScenePass {
  private:
   static constexpr size_t kFramesInFlight = 2;
   // Timestamps a timed frame writes: before the compute passes, after them, after the scene's
-  // meshes, after the overlay.
-  static constexpr uint32_t kTimestamps = 4;
+  // meshes, after the upscale (at a render scale of 1, right after the meshes'), after the overlay.
+  static constexpr uint32_t kTimestamps = 5;
   struct FrameSlot {
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     VkFence done = VK_NULL_HANDLE;
     VkSemaphore image_ready = VK_NULL_HANDLE;
     GpuBuffer uniforms;
     VkDescriptorSet frame_set = VK_NULL_HANDLE;
-    bool timed = false;  // its last frame wrote timestamps not read yet
+    bool timed = false;   // its last frame wrote timestamps not read yet
+    bool scaled = false;  // that frame was drawn at a render scale below 1 (it timed an upscale)
   };
 
-  void create_render_pass(const TargetImages& target);
+  VkRenderPass make_render_pass(VkAttachmentLoadOp load, VkImageLayout final_layout) const;
   void create_layouts_and_sampler();
   void create_pipelines();
   void create_frame_slots();
   void ensure_framebuffers(const TargetImages& target);
   void destroy_framebuffers();
+  // The scene's size in pixels: the target's at a render scale of 1, else scaled.
+  VkExtent2D scene_extent(VkExtent2D target) const;
   void record(VkCommandBuffer cmd, const TargetImages& target, uint32_t image, const FrameParams& params);
   void record_capture(VkCommandBuffer cmd, const TargetImages& target, uint32_t image);
   RgbaImage read_capture(const TargetImages& target) const;
@@ -80,7 +88,14 @@ class ScenePass {
   VkSampleCountFlagBits samples_;
   bool level_of_detail_;
   bool cull_chunks_;
+  bool cull_cut_away_;
   VkRenderPass render_pass_ = VK_NULL_HANDLE;
+  // Made when the render scale first goes below 1: the scene's pass into the smaller attachments,
+  // the overlay's pass into the target after the upscale, the attachments and the upscale.
+  float render_scale_ = 1.0f;
+  VkRenderPass scaled_pass_ = VK_NULL_HANDLE;
+  VkRenderPass overlay_pass_ = VK_NULL_HANDLE;
+  std::unique_ptr<ScaledScene> scaled_;
   VkDescriptorSetLayout frame_layout_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout material_layout_ = VK_NULL_HANDLE;
   VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;

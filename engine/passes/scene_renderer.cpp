@@ -23,6 +23,16 @@ int SceneRenderer::msaa_samples() const { return int(pass_->samples()); }
 
 size_t SceneRenderer::triangles_drawn() const { return pass_->triangles_drawn(); }
 
+void SceneRenderer::set_render_scale(const RenderTarget& target, float scale) { pass_->set_render_scale(target.images(), scale); }
+
+float SceneRenderer::render_scale() const { return pass_->render_scale(); }
+
+void SceneRenderer::set_cull_cut_away(bool on) { pass_->set_cull_cut_away(on); }
+
+std::string SceneRenderer::render_scale_unsupported(const RenderTarget& target) const {
+  return ScaledScene::unsupported(pass_->context(), target.images(), pass_->samples());
+}
+
 void SceneRenderer::set_device_timings(bool on) { pass_->set_device_timings(on); }
 
 const FrameCost& SceneRenderer::frame_cost() const { return pass_->frame_cost(); }

@@ -13,6 +13,9 @@ constexpr float kFacingMargin = 0.01f;
 // A chunk's normals stay within 15° of its first triangle's, so its cone is at most about that
 // wide: the chunk is culled once it has turned past ~105° from the eye.
 const float kMaxNormalSpreadCos = std::cos(glm::radians(15.0f));
+// How far beyond the section's plane (m) a chunk must lie to be left out: the shader's single-
+// precision positions round by far less at the scenes' metre scale.
+constexpr double kCutMargin_m = 1e-5;
 
 TriangleChunk make_chunk(const std::vector<MeshVertex>& vertices, const std::vector<uint32_t>& indices, uint32_t first,
                          uint32_t count) {
@@ -28,6 +31,7 @@ TriangleChunk make_chunk(const std::vector<MeshVertex>& vertices, const std::vec
     if (length > 0.0f) normals.push_back(n / length);  // a degenerate triangle covers no pixel
   }
   chunk.center = (lo + hi) * 0.5f;
+  chunk.half_extent = (hi - lo) * 0.5f;
   for (uint32_t i = first; i < first + count; ++i)
     chunk.radius = std::max(chunk.radius, glm::length(vertices[indices[i]].position - chunk.center));
   for (const glm::vec3& n : normals) normal_sum += n;
@@ -83,18 +87,57 @@ bool chunk_faces_away(const TriangleChunk& chunk, const glm::vec3& eye) {
   return cos_theta_minus_alpha < -chunk.radius / distance - kFacingMargin;
 }
 
+namespace {
+
+bool touches(const glm::dvec3& center, double radius, const std::vector<Sphere>& spheres) {
+  return std::any_of(spheres.begin(), spheres.end(),
+                     [&](const Sphere& s) { return glm::length(center - s.center) < radius + s.radius; });
+}
+
+void append(std::vector<IndexRange>& ranges, const TriangleChunk& chunk) {
+  if (!ranges.empty() && ranges.back().first + ranges.back().count == chunk.first_index)
+    ranges.back().count += chunk.index_count;
+  else
+    ranges.push_back({chunk.first_index, chunk.index_count});
+}
+
+// A bound on the largest factor by which the linear part of `m` stretches a length: the square
+// root of Gershgorin's bound on the largest eigenvalue of mᵀm (its largest absolute row sum);
+// exact for a rotation times a scale.
+double stretch_bound(const glm::dmat3& m) {
+  const glm::dmat3 g = glm::transpose(m) * m;
+  double largest = 0.0;
+  for (int i = 0; i < 3; ++i) largest = std::max(largest, std::abs(g[0][i]) + std::abs(g[1][i]) + std::abs(g[2][i]));
+  return std::sqrt(largest);
+}
+
+}  // namespace
+
 std::vector<IndexRange> visible_ranges(const std::vector<TriangleChunk>& chunks, const glm::vec3& eye,
                                        const std::vector<Sphere>& moved) {
   std::vector<IndexRange> ranges;
   for (const TriangleChunk& chunk : chunks) {
-    const bool touches_moved = std::any_of(moved.begin(), moved.end(), [&](const Sphere& s) {
-      return glm::length(glm::dvec3(chunk.center) - s.center) < double(chunk.radius) + s.radius;
-    });
-    if (!touches_moved && chunk_faces_away(chunk, eye)) continue;
-    if (!ranges.empty() && ranges.back().first + ranges.back().count == chunk.first_index)
-      ranges.back().count += chunk.index_count;
-    else
-      ranges.push_back({chunk.first_index, chunk.index_count});
+    if (!touches(glm::dvec3(chunk.center), chunk.radius, moved) && chunk_faces_away(chunk, eye)) continue;
+    append(ranges, chunk);
+  }
+  return ranges;
+}
+
+std::vector<IndexRange> ranges_kept_by_cut(const std::vector<TriangleChunk>& chunks, const glm::mat4& model_to_world,
+                                           const glm::vec4& plane, const std::vector<Sphere>& moved) {
+  const glm::dmat4 to_world(model_to_world);
+  const double stretch = stretch_bound(glm::dmat3(to_world));
+  const glm::dvec3 normal(plane);
+  const glm::dvec3 normal_in_model = glm::transpose(glm::dmat3(to_world)) * normal;
+  std::vector<IndexRange> ranges;
+  for (const TriangleChunk& chunk : chunks) {
+    const glm::dvec3 center(to_world * glm::dvec4(glm::dvec3(chunk.center), 1.0));
+    // Wholly cut away: the box's nearest corner to the plane beyond it (n · M(c + e∘s) is least
+    // at the signs s against Mᵀn), by a margin for the shader's rounding (10 µm).
+    const double reach = glm::dot(glm::abs(normal_in_model), glm::dvec3(chunk.half_extent));
+    const bool cut_away = glm::dot(normal, center) + double(plane.w) > reach + kCutMargin_m;
+    if (cut_away && !touches(center, double(chunk.radius) * stretch, moved)) continue;
+    append(ranges, chunk);
   }
   return ranges;
 }
@@ -109,9 +152,7 @@ std::vector<IndexRange> visible_ranges(const std::vector<TriangleChunk>& chunks,
   // Facing is kept by an affine map of positive determinant: test in model space. A sphere maps
   // into one whose radius grows by at most the inverse's Frobenius norm.
   const glm::dmat4 world_to_model = glm::inverse(glm::dmat4(model_to_world));
-  const glm::dmat3 linear(world_to_model);
-  const double stretch = std::sqrt(glm::dot(linear[0], linear[0]) + glm::dot(linear[1], linear[1]) +
-                                   glm::dot(linear[2], linear[2]));
+  const double stretch = stretch_bound(glm::dmat3(world_to_model));
   std::vector<Sphere> moved_model;
   for (const Sphere& s : moved)
     moved_model.push_back({glm::dvec3(world_to_model * glm::dvec4(s.center, 1.0)), s.radius * stretch});

@@ -17,6 +17,7 @@ struct TriangleChunk {
   uint32_t index_count = 0;
   glm::vec3 center{0.0f};  // bounding sphere of the chunk's vertices, model space
   float radius = 0.0f;
+  glm::vec3 half_extent{0.0f};  // of the vertices' axis-aligned box about `center`, model space
   glm::vec3 cone_axis{0.0f, 0.0f, 1.0f};
   float cone_sin = 1.0f;  // sine and cosine of the cone's half angle; a cone over 90° never culls
   float cone_cos = 0.0f;
@@ -46,5 +47,13 @@ std::vector<IndexRange> visible_ranges(const std::vector<TriangleChunk>& chunks,
 // space. A mirroring transform turns the winding over: then no chunk is culled.
 std::vector<IndexRange> visible_ranges(const std::vector<TriangleChunk>& chunks, const glm::mat4& model_to_world,
                                        const glm::vec3& eye, const std::vector<Sphere>& moved);
+
+// The index ranges to draw of a mesh cut by the section view (Cut): the fragments where
+// plane.xyz · p + plane.w > 0 (world space, plane.xyz unit) are discarded and the back faces seen
+// through the opening drawn, so no chunk is culled for its facing; the chunks lying wholly on that
+// side (their box, through `model_to_world`) are left out, except those touching a
+// `moved` sphere (world space), whose vertices may have left the rest mesh. Adjacent ones merged.
+std::vector<IndexRange> ranges_kept_by_cut(const std::vector<TriangleChunk>& chunks, const glm::mat4& model_to_world,
+                                           const glm::vec4& plane, const std::vector<Sphere>& moved);
 
 }  // namespace needle::engine

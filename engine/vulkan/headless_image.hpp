@@ -20,6 +20,7 @@ class HeadlessImage final : public TargetImages {
   VkImageLayout final_layout() const override { return VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL; }
   uint64_t generation() const override { return 1; }
   bool uses_semaphores() const override { return false; }
+  bool accepts_transfer_writes() const override { return true; }
   std::optional<uint32_t> acquire(VkSemaphore) override { return 0; }
   void present(uint32_t, VkSemaphore) override {}
 

@@ -21,4 +21,11 @@ HeadlessTarget::HeadlessTarget(const GpuDevice& device, Extent extent)
 WindowTarget::WindowTarget(const GpuDevice& device, Window& window)
     : RenderTarget(std::make_unique<Swapchain>(device.context(), window)) {}
 
+bool WindowTarget::set_presentation(Presentation mode) {
+  const VkPresentModeKHR vk = mode == Presentation::Mailbox     ? VK_PRESENT_MODE_MAILBOX_KHR
+                              : mode == Presentation::Immediate ? VK_PRESENT_MODE_IMMEDIATE_KHR
+                                                                : VK_PRESENT_MODE_FIFO_KHR;
+  return static_cast<Swapchain&>(images()).set_present_mode(vk);
+}
+
 }  // namespace needle::engine

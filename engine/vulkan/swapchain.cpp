@@ -65,12 +65,14 @@ bool Swapchain::recreate() {
   info.imageColorSpace = VK_COLOR_SPACE_SRGB_NONLINEAR_KHR;
   info.imageExtent = extent_;
   info.imageArrayLayers = 1;
-  // TRANSFER_SRC lets tests screenshot the presented image.
-  info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+  // TRANSFER_SRC lets tests screenshot the presented image; TRANSFER_DST takes the render scale's blit.
+  info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                    (caps.supportedUsageFlags & (VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT));
+  transfer_dst_ = caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
   info.preTransform = caps.currentTransform;
   info.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
-  info.presentMode = VK_PRESENT_MODE_FIFO_KHR;  // always available; paces the frame loop to the display
+  info.presentMode = present_mode_;  // FIFO unless set_present_mode: always available; paces the frame loop to the display
   info.clipped = VK_TRUE;
   info.oldSwapchain = swapchain_;
   VkSwapchainKHR fresh;
@@ -113,6 +115,17 @@ std::optional<uint32_t> Swapchain::acquire(VkSemaphore image_ready) {
     vk_check(r, "vkAcquireNextImageKHR");
   }
   return index;
+}
+
+bool Swapchain::set_present_mode(VkPresentModeKHR mode) {
+  uint32_t count = 0;
+  VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(context_.physical_device(), context_.surface(), &count, nullptr));
+  std::vector<VkPresentModeKHR> modes(count);
+  VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(context_.physical_device(), context_.surface(), &count, modes.data()));
+  if (std::find(modes.begin(), modes.end(), mode) == modes.end()) return false;
+  if (mode != present_mode_) stale_ = true;
+  present_mode_ = mode;
+  return true;
 }
 
 void Swapchain::present(uint32_t index, VkSemaphore render_done) {

@@ -61,6 +61,19 @@ TEST(Settings, RoundTripAndDefaultsWithoutAFile) {
     EXPECT_EQ(e.path().filename(), "settings.json") << "no temporary file is left";
 }
 
+TEST(Settings, TheRenderScaleRoundTrips) {
+  const fs::path file = process_folder(output_dir() / "settings_render_scale") / "settings.json";
+  app::Settings s;
+  app::save_settings(file, s);
+  EXPECT_NE(text_of(file).find("\"render_scale\": \"auto\""), std::string::npos) << text_of(file);
+  EXPECT_FALSE(app::load_settings(file).settings.render_scale);
+  s.render_scale = 0.7f;
+  app::save_settings(file, s);
+  const app::LoadedSettings back = app::load_settings(file);
+  EXPECT_TRUE(back.notice.empty()) << back.notice;
+  EXPECT_FLOAT_EQ(back.settings.render_scale.value_or(0.0f), 0.7f);
+}
+
 TEST(Settings, TheViewsRoundTrip) {
   const fs::path file = process_folder(output_dir() / "settings_views") / "settings.json";
   app::Settings s;
@@ -101,6 +114,8 @@ TEST(Settings, ADamagedFileIsSetAsideWithAMessageNamingIt) {
                         Case{"{\"version\": 1, \"views\": {\"ultrasound\": 1}}", "/views/ultrasound: expected true or false"},
                         Case{"{\"version\": 1, \"views\": {\"probe\": {\"along_m\": 2}}}", "/views/probe/along_m"},
                         Case{"{\"version\": 1, \"views\": {\"probe\": {\"turn_deg\": \"left\"}}}", "/views/probe/turn_deg"},
+                        Case{"{\"version\": 1, \"render_scale\": \"fast\"}", "/render_scale: expected \"auto\" or a number in [0.25, 1]"},
+                        Case{"{\"version\": 1, \"render_scale\": 0.1}", "/render_scale: must be in [0.25, 1]"},
                         Case{"{\"trainee\": \"ana\"}", "/version: missing"},
                         Case{"[1, 2]", "expected an object"}}) {
     for (const fs::directory_entry& e : fs::directory_iterator(dir)) fs::remove(e.path());

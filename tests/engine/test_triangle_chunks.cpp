@@ -109,6 +109,49 @@ TEST(TriangleChunks, WorldTransformsScaleAndMirror) {
   EXPECT_EQ(all[0].count, p.indices.size());
 }
 
+// The section's cut against the plane's closed form: a triangle left out has its three vertices
+// beyond the plane (n · p + d > 0: the shader discards all of it); it leaves out most of those,
+// whatever the chunks' facing (the back faces show through the cut); chunks where the mesh may
+// have moved stay; through a placed, turned and stretched transform alike.
+TEST(TriangleChunks, TheCutLeavesOutOnlyTrianglesWhollyBeyondItsPlaneAndMostOfThem) {
+  const Primitive p = sphere(100);  // radius 0.1 about the origin in model space
+  const auto chunks = build_triangle_chunks(p.vertices, p.indices, 256);
+  glm::dmat4 m = glm::translate(glm::dmat4(1.0), glm::dvec3(0.4, 0.0, 0.1));
+  m = glm::rotate(m, 0.7, glm::dvec3(0.0, 0.0, 1.0));
+  m = glm::scale(m, glm::dvec3(1.0, 2.5, 0.5));
+  for (const glm::dmat4& to_world : {glm::dmat4(1.0), m}) {
+    const glm::dvec3 centre(to_world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+    for (const glm::dvec3 dir : {glm::dvec3(0, -1, 0), glm::normalize(glm::dvec3(1, 1, 0.5)), glm::dvec3(0, 0, 1)}) {
+      for (const double offset : {-0.05, 0.0, 0.04}) {
+        const glm::dvec3 point = centre + offset * dir;
+        const glm::vec4 plane(glm::vec3(dir), float(-glm::dot(dir, point)));
+        const std::vector<bool> kept = drawn(p, ranges_kept_by_cut(chunks, glm::mat4(to_world), plane, {}));
+        size_t beyond = 0, dropped = 0;
+        for (size_t t = 0; t < kept.size(); ++t) {
+          bool all_beyond = true;
+          for (int k = 0; k < 3; ++k) {
+            const glm::dvec3 v(to_world * glm::dvec4(glm::dvec3(p.vertices[p.indices[3 * t + k]].position), 1.0));
+            all_beyond = all_beyond && glm::dot(dir, v - point) > 0.0;
+          }
+          beyond += all_beyond;
+          dropped += !kept[t];
+          if (!kept[t]) EXPECT_TRUE(all_beyond) << "triangle " << t << " left out but not wholly cut away";
+        }
+        // Chunks whose box crosses the plane stay: a band of them (runs along the sphere's
+        // parallels, long near the poles); 74 to 94 % of the triangles beyond are left out here.
+        EXPECT_GT(double(dropped), 0.7 * double(beyond)) << "offset " << offset;
+        EXPECT_GT(beyond, kept.size() / 8) << "offset " << offset;
+      }
+    }
+    // A moved sphere (world space) beyond the plane keeps its chunks: the deformed vertices may
+    // have crossed it.
+    const glm::dvec3 pole(to_world * glm::dvec4(0.0, 0.0, -0.1, 1.0));  // the south pole's fan, first
+    const glm::vec4 plane(0.0f, 0.0f, -1.0f, float(glm::dot(glm::dvec3(0, 0, 1), centre)));  // cuts away z < centre
+    EXPECT_FALSE(drawn(p, ranges_kept_by_cut(chunks, glm::mat4(to_world), plane, {}))[0]);
+    EXPECT_TRUE(drawn(p, ranges_kept_by_cut(chunks, glm::mat4(to_world), plane, {{pole, 0.01}}))[0]);
+  }
+}
+
 TEST(TriangleChunks, ChunksAreCutWhereTheNormalsTurn) {
   // Two triangles back to back: one chunk could not cull either side, so they go apart.
   std::vector<MeshVertex> v(3);

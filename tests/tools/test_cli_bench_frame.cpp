@@ -47,6 +47,26 @@ TEST(CliBenchFrame, TheViewsRowDrawsTheSectionAndTheUltrasoundValidationClean) {
   EXPECT_EQ(run_needle_sim("bench frame --targets offscreen --views xray").exit_code, 2);
 }
 
+TEST(CliBenchFrame, VariantsTakeTurnsInOneRowGroupAndTheScaledOneTimesItsUpscale) {
+  const auto json_path = test_output_dir("cli_bench_frame") / "variants.json";
+  ProcessResult r = run_needle_sim("bench frame --contents tissue:20 --sizes 64x48 --targets offscreen --frames 10 "
+                                   "--warmup 2 --variants 'scale=1;scale=0.5;default' --render-scale 0.7 --json " +
+                                   quoted(json_path));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  const nlohmann::json rows = nlohmann::json::parse(std::ifstream(json_path));
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0]["variant"], "scale=1");
+  EXPECT_DOUBLE_EQ(rows[0]["render_scale"].get<double>(), 1.0);
+  EXPECT_FALSE(rows[0]["passes"].contains("upscale_device"));
+  EXPECT_NEAR(rows[1]["render_scale"].get<double>(), 0.5, 1e-6);
+  EXPECT_TRUE(rows[1]["passes"].contains("upscale_device"));
+  EXPECT_NEAR(rows[2]["render_scale"].get<double>(), 0.7, 1e-6) << "default: the frame's own, here --render-scale";
+  for (const char* bad : {"--render-scale 0.1", "--render-scale fast", "--variants scale=2", "--variants tint=red"})
+    EXPECT_EQ(run_needle_sim(std::string("bench frame --targets offscreen ") + bad).exit_code, 2) << bad;
+  EXPECT_EQ(run_needle_sim("run --render-scale 1.5").exit_code, 2);
+}
+
 TEST(CliBenchFrame, WindowRowsDrawTheTaskInAWindow) {
   const auto json_path = test_output_dir("cli_bench_frame") / "window.json";
   ProcessResult r = run_on_virtual_display(test::needle_sim_exe().string() +

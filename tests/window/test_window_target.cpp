@@ -1,5 +1,7 @@
 // The swapchain target under Xvfb: frames are presented, a resize recreates the swapchain at
-// the new size (new generation, new framebuffers), and none of it draws a validation message.
+// the new size (new generation, new framebuffers), also at a render scale below 1 (the scene's
+// smaller attachments follow, the blit goes into the swapchain's images), and none of it draws a
+// validation message.
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
 
@@ -28,13 +30,13 @@ engine::RgbaImage draw_until_presented(engine::SceneRenderer& renderer, engine::
   return image;
 }
 
-TEST(WindowTarget, PresentsAndFollowsAResize) {
+void presents_and_follows_a_resize(float render_scale) {
   ASSERT_TRUE(engine::Window::display_available()) << "run under xvfb-run";
   engine::Window window("needle-sim test", 320, 240);
   engine::GpuDevice device(window, {.validation = true, .announce_device = false});
   {
     engine::WindowTarget target(device, window);
-    engine::SceneRenderer renderer(device, target, {1});
+    engine::SceneRenderer renderer(device, target, {1, true, true, true, render_scale});
     engine::Scene view;
     view.background = {1.0f, 0.0f, 0.0f};
     engine::GpuScene scene(renderer, engine::Model{}, view);
@@ -61,6 +63,10 @@ TEST(WindowTarget, PresentsAndFollowsAResize) {
   }
   for (const auto& m : device.validation_messages()) ADD_FAILURE() << "Vulkan validation " << m;
 }
+
+TEST(WindowTarget, PresentsAndFollowsAResize) { presents_and_follows_a_resize(1.0f); }
+
+TEST(WindowTarget, PresentsAndFollowsAResizeAtHalfRenderScale) { presents_and_follows_a_resize(0.5f); }
 
 }  // namespace
 }  // namespace needle::test

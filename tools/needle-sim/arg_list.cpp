@@ -96,6 +96,13 @@ int parse_msaa(const std::string& text, const std::string& flag) {
   return int(v);
 }
 
+std::optional<float> parse_render_scale(const std::string& text, const std::string& flag) {
+  if (text == "auto") return std::nullopt;
+  const double v = parse_number(text, flag);
+  if (!(v >= 0.25 && v <= 1.0)) throw UsageError(flag + ": expected auto or a scale in [0.25, 1], got '" + text + "'");
+  return float(v);
+}
+
 std::vector<double> parse_number_list(const std::string& text, const std::string& flag) {
   std::vector<double> out;
   size_t start = 0;

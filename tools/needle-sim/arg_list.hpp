@@ -43,6 +43,8 @@ long long parse_whole(const std::string& text, const std::string& flag, long lon
 std::optional<std::string> output_file(ArgList& args, const std::string& flag);
 // MSAA sample count: 1, 2, 4 or 8 (the renderer caps it at what the device has).
 int parse_msaa(const std::string& text, const std::string& flag);
+// "auto" (nullopt) or a render scale in [0.25, 1].
+std::optional<float> parse_render_scale(const std::string& text, const std::string& flag);
 // Comma-separated numbers, "0.1,0.2,-1".
 std::vector<double> parse_number_list(const std::string& text, const std::string& flag);
 

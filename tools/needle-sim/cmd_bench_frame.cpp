@@ -71,10 +71,52 @@ std::vector<engine::Extent> parse_sizes(const std::string& list) {
   return sizes;
 }
 
+// A variant of the frame's settings; the variants of a row take turns block by block, so a load
+// that comes and goes on a shared machine weighs on all of them alike and their ratios hold.
+struct Variant {
+  std::string name;            // as given, "default" for the product's own settings
+  std::optional<float> scale;  // scale=S: a fixed render scale
+  bool cut_culling = true;     // cut_culling=off: the section's cut-away chunks drawn (to measure the culling)
+  engine::WindowTarget::Presentation presentation = engine::WindowTarget::Presentation::Fifo;  // present=...
+};
+
+std::vector<Variant> parse_variants(const std::string& list) {
+  std::vector<Variant> variants;
+  for (size_t start = 0; start <= list.size();) {
+    const size_t end = std::min(list.find(';', start), list.size());
+    Variant v{list.substr(start, end - start)};
+    start = end + 1;
+    for (size_t k = 0; k <= v.name.size() && v.name != "default";) {
+      const size_t stop = std::min(v.name.find(',', k), v.name.size());
+      const std::string setting = v.name.substr(k, stop - k);
+      k = stop + 1;
+      const size_t eq = setting.find('=');
+      const std::string key = setting.substr(0, eq), value = eq == std::string::npos ? "" : setting.substr(eq + 1);
+      if (key == "scale") {
+        const double scale = parse_number(value, "--variants scale");
+        if (!(scale > 0.0 && scale <= 1.0)) throw UsageError("--variants: scale=S takes S in (0, 1]");
+        v.scale = float(scale);
+      } else if (setting == "present=fifo" || setting == "present=mailbox" || setting == "present=immediate") {
+        using P = engine::WindowTarget::Presentation;
+        v.presentation = setting == "present=mailbox" ? P::Mailbox : setting == "present=immediate" ? P::Immediate : P::Fifo;
+      } else if (setting == "cut_culling=off") {
+        v.cut_culling = false;
+      } else {
+        throw UsageError("--variants: unknown setting '" + setting +
+                         "' (default, scale=S, cut_culling=off, present=fifo|mailbox|immediate)");
+      }
+    }
+    variants.push_back(std::move(v));
+  }
+  return variants;
+}
+
 // One frame's measures, in milliseconds.
 struct FrameSample {
-  bool timed = false;  // drawn with timestamp queries
+  size_t variant = 0;
+  bool timed = false;      // drawn with timestamp queries
   double period_ms = 0.0;  // from this frame's start to the next one's
+  float render_scale = 1.0f;
   std::map<std::string, double> passes;
 };
 
@@ -94,6 +136,7 @@ std::map<std::string, double> pass_times(const app::ContentCost& content, const 
   };
   if (cost.before_pass.device_ms) passes["deformation_device"] = *cost.before_pass.device_ms;
   if (cost.scene.device_ms) passes["scene_device"] = *cost.scene.device_ms;
+  if (cost.upscale.device_ms) passes["upscale_device"] = *cost.upscale.device_ms;
   if (cost.overlay.device_ms) passes["ui_device"] = *cost.overlay.device_ms;
   return passes;
 }
@@ -101,24 +144,35 @@ std::map<std::string, double> pass_times(const app::ContentCost& content, const 
 struct RowOptions {
   long frames = 300;
   long warmup = 30;
-  int msaa = 1;
   bool timestamps = true;
-  long block = 8;  // timed and untimed frames alternate in blocks of this many
+  long block = 8;  // frames of one variant, timed or not, in a row
+  std::vector<Variant> variants;
 };
 
-// Draws the content's frames into the target and measures them. The first frame of each block
-// carries the switch from the other kind and is left out.
-std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget& target, engine::GpuScene& scene,
-                                 const app::FrameContent& content, engine::Window* window, const RowOptions& options) {
+// Draws the content's frames into the target and measures them: blocks of frames take turns
+// through the variants, untimed and (with timestamps) timed. The first frame of each block
+// carries the switch from the block before and is left out. A variant without a fixed scale
+// leaves the frame's own (automatic or fixed) render scale to it.
+std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget& target, engine::WindowTarget* window_target,
+                                 engine::GpuScene& scene, const app::FrameContent& content, engine::Window* window,
+                                 const RowOptions& options) {
+  const std::optional<float> product_scale = frame.fixed_render_scale();
+  const size_t kinds = options.variants.size() * (options.timestamps ? 2 : 1);
   std::vector<FrameSample> samples;
   const Clock::time_point start = Clock::now();
   Clock::time_point previous;
   bool counting = false;
-  const long total = options.warmup + options.frames * (options.timestamps ? 2 : 1);
+  const long total = options.warmup + options.frames * long(kinds);
   for (long i = 0; i < total; ++i) {
     const long measured = i - options.warmup;
-    const bool timed = options.timestamps && measured >= 0 && (measured / options.block) % 2 == 1;
+    const size_t block = measured < 0 ? 0 : size_t(measured / options.block) % kinds;
+    const size_t variant = block % options.variants.size();
+    const bool timed = block >= options.variants.size();
     frame.renderer().set_device_timings(timed);
+    frame.set_fixed_render_scale(options.variants[variant].scale ? options.variants[variant].scale : product_scale);
+    frame.renderer().set_cull_cut_away(options.variants[variant].cut_culling);
+    if (window_target && !window_target->set_presentation(options.variants[variant].presentation))
+      throw std::runtime_error("--variants " + options.variants[variant].name + ": the window's surface does not offer it");
     const Clock::time_point now = Clock::now();
     if (counting) samples.back().period_ms = std::chrono::duration<double, std::milli>(now - previous).count();
     previous = now;
@@ -129,7 +183,9 @@ std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget&
     const double t = std::chrono::duration<double>(now - start).count();
     if (!frame.draw(target, scene, content, t)) throw std::runtime_error("the window took no frame (minimised?)");
     counting = measured >= 0 && measured % options.block != 0;
-    if (counting) samples.push_back({timed, 0.0, pass_times(frame.content_cost(), frame.renderer().frame_cost())});
+    if (counting)
+      samples.push_back({variant, timed, 0.0, frame.renderer().render_scale(),
+                         pass_times(frame.content_cost(), frame.renderer().frame_cost())});
   }
   if (counting) samples.pop_back();  // no next frame to end its period
   frame.renderer().wait_idle();
@@ -148,6 +204,8 @@ int run_bench_frame(ArgList& args) {
   std::optional<int> msaa;
   if (auto m = args.value("--msaa")) msaa = parse_msaa(*m, "--msaa");
   options.timestamps = !args.flag("--no-timestamps");
+  options.variants = parse_variants(args.value("--variants").value_or("default"));
+  const std::optional<float> render_scale = parse_render_scale(args.value("--render-scale").value_or("auto"), "--render-scale");
   const std::string views = args.value("--views").value_or("none");
   args.finish();
   if (options.frames < 10 || options.warmup < 0) throw UsageError("--frames: at least 10; --warmup: 0 or more");
@@ -171,9 +229,9 @@ int run_bench_frame(ArgList& args) {
 
   const fs::path scratch = fs::temp_directory_path() / ("needle_bench_frame_" + std::to_string(::getpid()));
   fs::create_directories(scratch);
-  BenchTable table({"content", "target", "size", "msaa", "frames", "frame_ms_median", "frame_ms_p95", "frame_ms_p99",
-                    "fps_median", "fps_p95", "frame_ms_median_timed", "passes", "views"});
-  BenchTable pass_table({"content", "target", "size", "pass", "ms_median", "ms_p95"});
+  BenchTable table({"content", "target", "size", "variant", "msaa", "render_scale", "frames", "frame_ms_median",
+                    "frame_ms_p95", "frame_ms_p99", "fps_median", "fps_p95", "frame_ms_median_timed", "passes", "views"});
+  BenchTable pass_table({"content", "target", "size", "variant", "pass", "ms_median", "ms_p95"});
   std::string device_line;
   double timestamp_period_ns = 0.0;
 
@@ -197,8 +255,9 @@ int run_bench_frame(ArgList& args) {
           return session ? engine::GpuScene(renderer, session->scene())
                          : engine::GpuScene(renderer, tissue, engine::framing_view(tissue, size), engine::TissueParams{});
         };
-        auto run_row = [&](const engine::GpuDevice& device, engine::RenderTarget& target, engine::Window* window) {
-          app::TraineeFrame frame(device, target, {msaa.value_or(device.is_cpu_device() ? 1 : 4), true}, window);
+        auto run_row = [&](const engine::GpuDevice& device, engine::RenderTarget& target, engine::Window* window,
+                           engine::WindowTarget* window_target) {
+          app::TraineeFrame frame(device, target, {msaa.value_or(device.is_cpu_device() ? 1 : 4), true, render_scale}, window);
           engine::GpuScene scene = make_scene(frame.renderer());
           // The views as the window shows them (app::with_views): the section cut, the ultrasound window open.
           app::Show show{session ? app::task_content(*session) : app::scripted_content(scene)};
@@ -208,37 +267,43 @@ int run_bench_frame(ArgList& args) {
           if (section_view) view.section = engine::Section::Mode::Cut;
           view.ultrasound = view.has_ultrasound = ultrasound_view;
           const app::FrameContent shown = app::with_views(show, view, frame.renderer(), target);
-          const std::vector<FrameSample> samples = measure(frame, target, scene, shown, window, options);
-          std::vector<double> untimed, timed;
-          std::map<std::string, std::vector<double>> parts;
-          for (const FrameSample& s : samples) {
-            (s.timed ? timed : untimed).push_back(s.period_ms);
-            for (const auto& [name, ms] : s.passes) {
-              if (s.timed == name.ends_with("_device")) parts[name].push_back(ms);
-            }
-          }
-          nlohmann::json passes = nlohmann::json::object();
+          const std::vector<FrameSample> samples = measure(frame, target, window_target, scene, shown, window, options);
           const std::string size_text = std::to_string(target.extent().width) + "x" + std::to_string(target.extent().height);
-          for (const auto& [name, ms] : parts) {
-            passes[name] = percentile(ms, 0.5);
-            pass_table.add_row({content.name, target_name, size_text, name, percentile(ms, 0.5), percentile(ms, 0.95)});
+          for (size_t v = 0; v < options.variants.size(); ++v) {
+            std::vector<double> untimed, timed, scales;
+            std::map<std::string, std::vector<double>> parts;
+            for (const FrameSample& s : samples) {
+              if (s.variant != v) continue;
+              (s.timed ? timed : untimed).push_back(s.period_ms);
+              if (!s.timed) scales.push_back(s.render_scale);
+              for (const auto& [name, ms] : s.passes) {
+                if (s.timed == name.ends_with("_device")) parts[name].push_back(ms);
+              }
+            }
+            const std::string& variant = options.variants[v].name;
+            nlohmann::json passes = nlohmann::json::object();
+            for (const auto& [name, ms] : parts) {
+              passes[name] = percentile(ms, 0.5);
+              pass_table.add_row({content.name, target_name, size_text, variant, name, percentile(ms, 0.5), percentile(ms, 0.95)});
+            }
+            const double median = percentile(untimed, 0.5), p95 = percentile(untimed, 0.95);
+            table.add_row({content.name, target_name, size_text, variant, frame.renderer().msaa_samples(),
+                           percentile(scales, 0.5), long(untimed.size()), median, p95, percentile(untimed, 0.99),
+                           1000.0 / median, 1000.0 / p95,
+                           timed.empty() ? nlohmann::json(nullptr) : nlohmann::json(percentile(timed, 0.5)), passes, views});
           }
-          const double median = percentile(untimed, 0.5), p95 = percentile(untimed, 0.95);
-          table.add_row({content.name, target_name, size_text, frame.renderer().msaa_samples(), long(untimed.size()),
-                         median, p95, percentile(untimed, 0.99), 1000.0 / median, 1000.0 / p95,
-                         timed.empty() ? nlohmann::json(nullptr) : nlohmann::json(percentile(timed, 0.5)), passes, views});
           device_line = device.device_description();
           timestamp_period_ns = device.timestamp_period_ns();
         };
         if (target_name == "window") {
           app::GpuWindow vw("needle-sim bench frame", size);
-          run_row(vw.device, vw.target, &vw.window);
+          run_row(vw.device, vw.target, &vw.window, &vw.target);
         } else {
           engine::DeviceOptions quiet;
           quiet.announce_device = false;
           engine::GpuDevice device(quiet);
           engine::HeadlessTarget target(device, size);
-          run_row(device, target, nullptr);
+          run_row(device, target, nullptr, nullptr);
         }
       }
     }
@@ -257,6 +322,7 @@ const CommandRegistrar reg{
      "needle-sim bench frame [--json FILE] [--contents penetrable_sphere,rigid_sphere,tissue:400]\n"
      "                       [--sizes 1280x720,1920x1080] [--targets window,offscreen] [--frames N] [--warmup N]\n"
      "                       [--msaa N] [--no-timestamps] [--views none|section|ultrasound|section,ultrasound]\n"
+     "                       [--render-scale auto|S] [--variants default;scale=S...]\n"
      "  --json FILE      also write the rows as JSON (keys: content, target, size, frame_ms_median, frame_ms_p95,\n"
      "                   passes: name -> median ms, ...)\n"
      "  --contents LIST  what the frame shows: a task (a name in assets/tasks or a file) run in real time by its\n"
@@ -270,7 +336,13 @@ const CommandRegistrar reg{
      "                   of 8, the frame times are those without, the device times those with\n"
      "  --views LIST     the views open as in the window (default none): the section view cut through the needle\n"
      "                   (or the task's plane), the ultrasound window with its 256 x 512 image made every frame\n"
-     "                   (its passes are in deformation_*, the work recorded before the scene's pass); key views",
+     "                   (its passes are in deformation_*, the work recorded before the scene's pass); key views\n"
+     "  --render-scale X the frame's render scale, as run's (default auto: lowered on a CPU device while the\n"
+     "                   frame misses 60 fps); key render_scale (the median of the frames'), upscale_device\n"
+     "  --variants LIST  settings compared within each row, block by block in turn, ';' between variants and\n"
+     "                   ',' between the settings of one: default (the frame's own), scale=S (a fixed render scale),\n"
+     "                   cut_culling=off (the section's cut-away chunks drawn, as before they were culled),\n"
+     "                   present=fifo|mailbox|immediate (the window's present mode; default fifo)",
      run_bench_frame}};
 
 }  // namespace

@@ -51,6 +51,7 @@ int run_run(ArgList& args) {
   options.task.rig.operator_spec = operator_spec.value_or("good");
   options.window.size = parse_size(args.value("--size").value_or("1280x720"), "--size");
   if (auto msaa = args.value("--msaa")) options.window.msaa = parse_msaa(*msaa, "--msaa");
+  if (auto scale = args.value("--render-scale")) options.window.render_scale = parse_render_scale(*scale, "--render-scale");
   if (auto frames = args.value("--frames")) options.window.frames = long(parse_whole(*frames, "--frames", 1, 1000000000));
   options.window.screenshot = args.value("--screenshot");
   if (auto section = args.value("--section")) {
@@ -100,7 +101,8 @@ const CommandRegistrar reg{
     {"run",
      "needle-sim run [--task FILE | --scene FILE] [--device sim|mouse|keyboard|gamepad[:N]|falcon[:N]|replay:FILE]\n"
      "               [--trainee NAME] [--db FILE|URI] [--station NAME] [--local FILE] [--out DIR] [--headless] [--operator good|sloppy|FILE] [--rate HZ] [--firmware FILE]\n"
-     "               [--size WxH] [--msaa N] [--frames N] [--screenshot FILE] [--no-hud] [--section cut|translucent]\n"
+     "               [--size WxH] [--msaa N] [--render-scale auto|S] [--frames N] [--screenshot FILE] [--no-hud]\n"
+     "               [--section cut|translucent]\n"
      "  --task FILE        guided task (default: assets/tasks/penetrable_sphere.json)\n"
      "  --scene FILE       show a scene instead, a scripted needle inserting into its first deformable tissue\n"
      "  --device SPEC      sim: the simulated master and a scripted operator (default); mouse, keyboard,\n"
@@ -119,6 +121,9 @@ const CommandRegistrar reg{
      "  --firmware FILE    falcon: Novint's firmware image, loaded when the device opens\n"
      "  --size WxH         window or image size (default 1280x720)\n"
      "  --msaa N           MSAA samples (default 4; 1 in a window on a CPU device)\n"
+     "  --render-scale X   window: the 3D view drawn at S (0.25 to 1) of the window's width and height and\n"
+     "                     blitted over it, the panels at full resolution; auto (default): on a CPU device,\n"
+     "                     lowered step by step to 0.5 while the frame misses 60 fps, raised when it fits\n"
      "  --frames N         window: close after N frames\n"
      "  --screenshot FILE  window: save frame N as presented (needs --frames)\n"
      "  --no-hud           window: no panels\n"

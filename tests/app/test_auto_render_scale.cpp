@@ -1,0 +1,90 @@
+// The automatic render scale against a model frame whose time is a fixed part, the upscale's cost
+// below scale 1 and a part that grows with the pixel count (fixed + upscale + per_pixels *
+// scale^2): it settles on the largest step whose frame fits the budget (found here by enumerating
+// the steps), holds it without swinging, climbs back when the frame gets cheaper, goes back up
+// when a lower step is no faster; one slow frame in a block moves nothing.
+#include <gtest/gtest.h>
+
+#include "app/auto_render_scale.hpp"
+
+namespace needle::test {
+namespace {
+
+struct ModelFrame {
+  double fixed_ms, per_pixels_ms, upscale_ms = 0.0;
+  double at(float scale) const {
+    return fixed_ms + (scale < 1.0f ? upscale_ms : 0.0) + per_pixels_ms * double(scale) * double(scale);
+  }
+};
+
+// The largest step whose frame is within the budget, else the smallest step.
+float largest_fitting(const ModelFrame& m, double budget_ms) {
+  for (float s : app::AutoRenderScale::kSteps)
+    if (m.at(s) <= budget_ms) return s;
+  return app::AutoRenderScale::kSteps.back();
+}
+
+// Runs `blocks` decision blocks of the model and returns the scale after each.
+std::vector<float> run(app::AutoRenderScale& control, const ModelFrame& m, int blocks) {
+  const app::AutoRenderScaleSettings settings;
+  std::vector<float> scales;
+  for (int b = 0; b < blocks; ++b) {
+    for (size_t f = 0; f < settings.frames; ++f) control.next(m.at(control.scale()));
+    scales.push_back(control.scale());
+  }
+  return scales;
+}
+
+TEST(AutoRenderScale, SettlesOnTheLargestStepThatFitsAndHoldsIt) {
+  const double budget = app::AutoRenderScaleSettings{}.budget_ms;
+  for (const ModelFrame m : {ModelFrame{4.0, 20.0}, ModelFrame{2.0, 40.0}, ModelFrame{8.0, 10.0}, ModelFrame{3.0, 12.0}}) {
+    app::AutoRenderScale control;
+    const std::vector<float> scales = run(control, m, 12);
+    const float expected = largest_fitting(m, budget);
+    // Within one block per step down; then constant to the end.
+    for (size_t b = app::AutoRenderScale::kSteps.size(); b < scales.size(); ++b)
+      EXPECT_FLOAT_EQ(scales[b], expected) << "model " << m.fixed_ms << " + " << m.per_pixels_ms << " s^2, block " << b;
+  }
+}
+
+TEST(AutoRenderScale, AFrameThatNeverFitsStopsAtTheSmallestStep) {
+  app::AutoRenderScale control;
+  const std::vector<float> scales = run(control, {40.0, 40.0}, 8);
+  EXPECT_FLOAT_EQ(scales[0], 0.7f);  // one step a block
+  EXPECT_FLOAT_EQ(scales[1], 0.5f);
+  EXPECT_FLOAT_EQ(scales.back(), app::AutoRenderScale::kSteps.back());
+}
+
+TEST(AutoRenderScale, ClimbsBackWhenTheFrameGetsCheaper) {
+  app::AutoRenderScale control;
+  run(control, {4.0, 40.0}, 8);  // a loaded machine: 0.5 (4 + 40 * 0.25 = 14 ms)
+  EXPECT_FLOAT_EQ(control.scale(), 0.5f);
+  run(control, {2.0, 8.0}, 8);  // the load gone: every step fits with room
+  EXPECT_FLOAT_EQ(control.scale(), 1.0f);
+}
+
+TEST(AutoRenderScale, ALowerStepThatIsNoFasterIsLeftAtOnceAndTriedAgainLater) {
+  // Over budget at scale 1 (30 ms), but the upscale costs more than 0.7 saves (33.9 ms).
+  const ModelFrame m{20.0, 10.0, 9.0};
+  app::AutoRenderScale control;
+  const std::vector<float> scales = run(control, m, 100);
+  size_t at_full = 0;
+  for (size_t b = 0; b < scales.size(); ++b) {
+    at_full += scales[b] == 1.0f;
+    if (b > 0 && scales[b - 1] < 1.0f) EXPECT_FLOAT_EQ(scales[b], 1.0f) << "block " << b << ": one block at 0.7, then back";
+  }
+  const app::AutoRenderScaleSettings settings;
+  EXPECT_GE(at_full, scales.size() - scales.size() / settings.hold_blocks - 1);
+  EXPECT_LT(at_full, scales.size()) << "it tries again once the hold is over";
+}
+
+TEST(AutoRenderScale, OneSlowFrameInABlockMovesNothing) {
+  const app::AutoRenderScaleSettings settings;
+  app::AutoRenderScale control;
+  for (int block = 0; block < 4; ++block)
+    for (size_t f = 0; f < settings.frames; ++f) control.next(f == 3 ? 200.0 : 10.0);
+  EXPECT_FLOAT_EQ(control.scale(), 1.0f);
+}
+
+}  // namespace
+}  // namespace needle::test
