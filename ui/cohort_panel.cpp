@@ -18,14 +18,16 @@ const ImVec4 kGood(0.35f, 0.8f, 0.4f, 1.0f), kBad(0.9f, 0.3f, 0.25f, 1.0f), kDim
 const ImGuiTableFlags kTableFlags =
     ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollY;
 
-// A combo of "any" and `names`; `chosen` "" is any.
-void choice(const char* label, const std::vector<std::string>& names, std::string& chosen, float width) {
+// A combo of "any" and `names` (`chosen` "" is any), the next item on its line.
+void choice(const char* id, const std::vector<std::string>& names, std::string& chosen, float width) {
   ImGui::SetNextItemWidth(width);
-  if (!ImGui::BeginCombo(label, chosen.empty() ? "any" : chosen.c_str())) return;
-  if (ImGui::Selectable("any", chosen.empty())) chosen.clear();
-  for (const std::string& name : names)
-    if (ImGui::Selectable(name.c_str(), name == chosen)) chosen = name;
-  ImGui::EndCombo();
+  if (ImGui::BeginCombo(id, chosen.empty() ? "any" : chosen.c_str())) {
+    if (ImGui::Selectable("any", chosen.empty())) chosen.clear();
+    for (const std::string& name : names)
+      if (ImGui::Selectable(name.c_str(), name == chosen)) chosen = name;
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
 }
 
 void number_cell(double v, const char* format = "%.4g") {
@@ -44,29 +46,26 @@ void text_cell(const std::string& s) {
 
 void filter_rows(CohortPanelState& state, bool& export_pressed) {
   const float unit = ImGui::GetFontSize();
+  auto label = [](const char* text) {
+    ImGui::TextUnformatted(text);
+    ImGui::SameLine();
+  };
+  auto date = [&](const char* id, char* text, size_t size) {
+    ImGui::SetNextItemWidth(7.0f * unit);
+    ImGui::InputTextWithHint(id, "YYYY-MM-DD", text, size);
+    ImGui::SameLine();
+  };
   ImGui::AlignTextToFramePadding();
-  ImGui::TextUnformatted("task");
-  ImGui::SameLine();
+  label("task");
   choice("##task", state.choices.tasks, state.task, 12.0f * unit);
-  ImGui::SameLine();
-  ImGui::TextUnformatted("trainee");
-  ImGui::SameLine();
+  label("trainee");
   choice("##trainee", state.choices.trainees, state.trainee, 9.0f * unit);
-  ImGui::SameLine();
-  ImGui::TextUnformatted("station");
-  ImGui::SameLine();
+  label("station");
   choice("##station", state.choices.stations, state.station, 9.0f * unit);
-  ImGui::SameLine();
-  ImGui::TextUnformatted("from");
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(7.0f * unit);
-  ImGui::InputTextWithHint("##since", "YYYY-MM-DD", state.since, sizeof state.since);
-  ImGui::SameLine();
-  ImGui::TextUnformatted("to");
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(7.0f * unit);
-  ImGui::InputTextWithHint("##until", "YYYY-MM-DD", state.until, sizeof state.until);
-  ImGui::SameLine();
+  label("from");
+  date("##since", state.since, sizeof state.since);
+  label("to");
+  date("##until", state.until, sizeof state.until);
   ImGui::TextColored(kDim, "(UTC, inclusive)");
   if (state.show_export) {
     ImGui::SameLine();

@@ -28,6 +28,35 @@ std::string run_arguments(const std::string& uri, const fs::path& dir, const std
          quoted(dir / "station.db") + " --out " + quoted(dir / "out");
 }
 
+// The one session DIR/station.db keeps for the server (complete, in its outbox): `sync` twice sends
+// it once (then nothing), and the server holds it complete, from `station`, with the score, the
+// steps and the recording byte for byte of the run's `score` (its score.json).
+void expect_sent_once(const std::string& uri, const fs::path& dir, const std::string& station_name, const nlohmann::json& score) {
+  const std::string local = file_bytes(score["recording"].get<std::string>());
+  ASSERT_GT(local.size(), 1000u);
+  std::string uid;
+  {
+    training::SessionStore station((dir / "station.db").string(), training::kReadOnly);
+    ASSERT_EQ(station.outbox().size(), 1u);
+    uid = station.sessions().at(0).uid;
+    EXPECT_TRUE(station.sessions().at(0).complete);
+  }
+  for (int pass = 0; pass < 2; ++pass) {
+    const ProcessResult sync = run_needle_sim("sync --db '" + uri + "' --local " + quoted(dir / "station.db"));
+    ASSERT_EQ(sync.exit_code, 0) << sync.output;
+    EXPECT_NE(sync.output.find(pass == 0 ? "1 sent" : "0 sent"), std::string::npos) << sync.output;
+  }
+  training::SessionStore server(uri, training::kReadOnly);
+  const std::vector<training::SessionInfo> sessions = server.sessions();
+  ASSERT_EQ(sessions.size(), 1u) << "sent once";
+  EXPECT_EQ(sessions[0].uid, uid);
+  EXPECT_TRUE(sessions[0].complete);
+  EXPECT_EQ(sessions[0].station, station_name);
+  EXPECT_DOUBLE_EQ(sessions[0].score, score["score"].get<double>());
+  EXPECT_EQ(server.load(sessions[0].id).steps.size(), score["steps"].size());
+  EXPECT_EQ(server.recording(sessions[0].id), local) << "every tick arrived, none twice";
+}
+
 TEST(CliPostgres, ARunStoresItsSessionAndRecordingOnTheServerAndAReportReplaysIt) {
   const std::string uri = fresh_postgres_database("cli_run");
   const fs::path dir = test_output_dir("cli_postgres_run");
@@ -92,30 +121,7 @@ TEST(CliPostgres, AStationThatLosesTheServerKeepsTheSessionAndSyncSendsItOnce) {
   EXPECT_NE(output.find("the server could not be reached"), std::string::npos) << output;
   const nlohmann::json score = nlohmann::json::parse(std::ifstream(dir / "out" / "score.json"));
   EXPECT_TRUE(score["kept_for_sync"].get<bool>());
-  const fs::path recording = score["recording"].get<std::string>();
-  const std::string local = file_bytes(recording);
-
-  std::string uid;
-  {
-    training::SessionStore station((dir / "station.db").string(), training::kReadOnly);
-    ASSERT_EQ(station.outbox().size(), 1u);
-    uid = station.sessions().at(0).uid;
-    EXPECT_TRUE(station.sessions().at(0).complete);
-  }
-  for (int pass = 0; pass < 2; ++pass) {
-    const ProcessResult sync = run_needle_sim("sync --db '" + uri + "' --local " + quoted(dir / "station.db"));
-    ASSERT_EQ(sync.exit_code, 0) << sync.output;
-    EXPECT_NE(sync.output.find(pass == 0 ? "1 sent" : "0 sent"), std::string::npos) << sync.output;
-  }
-  training::SessionStore server(uri, training::kReadOnly);
-  const std::vector<training::SessionInfo> sessions = server.sessions();
-  ASSERT_EQ(sessions.size(), 1u) << "sent once";
-  EXPECT_EQ(sessions[0].uid, uid);
-  EXPECT_TRUE(sessions[0].complete);
-  EXPECT_EQ(sessions[0].station, "station-02");
-  EXPECT_DOUBLE_EQ(sessions[0].score, score["score"].get<double>());
-  EXPECT_EQ(server.load(sessions[0].id).steps.size(), score["steps"].size());
-  EXPECT_EQ(server.recording(sessions[0].id), local) << "every tick arrived, none twice";
+  expect_sent_once(uri, dir, "station-02", score);
 }
 
 // A run that starts while the server is down (nothing answers at the URI): it runs, its session is
@@ -140,25 +146,7 @@ TEST(CliPostgres, ARunThatStartsWhileTheServerIsDownKeepsItsSessionForSync) {
   const nlohmann::json score = nlohmann::json::parse(std::ifstream(dir / "out" / "score.json"));
   EXPECT_TRUE(score["stored"].get<bool>());
   EXPECT_TRUE(score["kept_for_sync"].get<bool>());
-  const std::string local = file_bytes(score["recording"].get<std::string>());
-  ASSERT_GT(local.size(), 1000u);
-  {
-    training::SessionStore station((dir / "station.db").string(), training::kReadOnly);
-    ASSERT_EQ(station.outbox().size(), 1u);
-    EXPECT_TRUE(station.sessions().at(0).complete);
-  }
-  for (int pass = 0; pass < 2; ++pass) {
-    const ProcessResult sync = run_needle_sim("sync --db '" + uri + "' --local " + quoted(dir / "station.db"));
-    ASSERT_EQ(sync.exit_code, 0) << sync.output;
-    EXPECT_NE(sync.output.find(pass == 0 ? "1 sent" : "0 sent"), std::string::npos) << sync.output;
-  }
-  training::SessionStore server(uri, training::kReadOnly);
-  const std::vector<training::SessionInfo> sessions = server.sessions();
-  ASSERT_EQ(sessions.size(), 1u) << "sent once";
-  EXPECT_TRUE(sessions[0].complete);
-  EXPECT_EQ(sessions[0].station, "station-04");
-  EXPECT_DOUBLE_EQ(sessions[0].score, score["score"].get<double>());
-  EXPECT_EQ(server.recording(sessions[0].id), local) << "every tick arrived, none twice";
+  expect_sent_once(uri, dir, "station-04", score);
 }
 
 // The instructor's class view from the server: two stations' sessions, one trainee's learning
