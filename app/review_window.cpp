@@ -1,5 +1,6 @@
 #include "app/review_window.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -10,7 +11,9 @@
 #include "app/window_frames.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/ui_pass.hpp"
+#include "training/sessions/cohort_export.hpp"
 #include "training/sessions/session_export.hpp"
+#include "ui/cohort_panel.hpp"
 #include "ui/review_panels.hpp"
 #include "ui/review_replay.hpp"
 #include "ui/status_panel.hpp"
@@ -50,6 +53,39 @@ struct Loaded {
   }
 };
 
+// The rectangle `at` of `image` (clamped to it).
+engine::RgbaImage cropped(const engine::RgbaImage& image, const ui::PanelRect& at) {
+  const uint32_t x0 = std::min(uint32_t(std::max(at.pos.x, 0.0f)), image.width);
+  const uint32_t y0 = std::min(uint32_t(std::max(at.pos.y, 0.0f)), image.height);
+  const uint32_t x1 = std::min(uint32_t(std::max(at.pos.x + at.size.x, 0.0f)), image.width);
+  const uint32_t y1 = std::min(uint32_t(std::max(at.pos.y + at.size.y, 0.0f)), image.height);
+  engine::RgbaImage out{x1 - x0, y1 - y0, {}};
+  for (uint32_t y = y0; y < y1; ++y) out.pixels.insert(out.pixels.end(), image.at(x0, y), image.at(x0, y) + size_t(x1 - x0) * 4);
+  return out;
+}
+
+// The two tabs across the top of the window; returns whether the Class tab is the one shown.
+// `select_class` chooses it on the first frame (--class).
+bool draw_tabs(float width, bool& select_class) {
+  ImGui::SetNextWindowPos(ImVec2(0, 0));
+  ImGui::SetNextWindowSize(ImVec2(width, 0));
+  ImGui::Begin("##tabs", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_AlwaysAutoResize);
+  bool class_tab = false;
+  if (ImGui::BeginTabBar("view")) {
+    if (ImGui::BeginTabItem("Sessions")) ImGui::EndTabItem();
+    if (ImGui::BeginTabItem("Class", nullptr, select_class ? ImGuiTabItemFlags_SetSelected : 0)) {
+      class_tab = true;
+      ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
+  }
+  select_class = false;
+  ImGui::End();
+  return class_tab;
+}
+
 }  // namespace
 
 int run_review_window(const ReviewOptions& options) {
@@ -63,6 +99,7 @@ int run_review_window(const ReviewOptions& options) {
   engine::WindowTarget& target = vw.target;
   engine::SceneRenderer renderer(vw.device, target, {vw.default_msaa_samples()});
   auto scene = std::make_unique<engine::GpuScene>(renderer, engine::Model{}, engine::Scene{});
+  engine::GpuScene empty_scene(renderer, engine::Model{}, engine::Scene{});  // behind the Class tab
   fs::path scene_file;
   std::string scene_error;
   // The recorded task's ultrasound image at the scrubbed time, in a task with a probe.
@@ -82,6 +119,10 @@ int run_review_window(const ReviewOptions& options) {
   detail.show_export = true;
   ui::TimeSpan span;  // the plots' time range, the whole session at first
   detail.span = &span;
+  ui::CohortPanel class_view;
+  class_view.state.show_export = true;
+  bool select_class = options.class_view;
+  std::optional<fs::path> class_picture;  // the Class tab's PNG, written from the frame drawn next
 
   WindowFrames frames(options.frames, options.screenshot);
   while (!window.should_close()) {
@@ -129,42 +170,59 @@ int run_review_window(const ReviewOptions& options) {
     const engine::Extent extent = target.extent();
     const float w = float(extent.width), h = float(extent.height), left = kPanelsFraction * w, bar = 64.0f;
     ui_pass.begin_frame(extent, dt);
-    ui::draw_session_table(sessions, table, {ImVec2(0, 0), ImVec2(left, 0.32f * h)});
-    const ui::PanelRect below{ImVec2(0, 0.32f * h), ImVec2(left, 0.68f * h)};
-    if (a.review) {
-      detail.cursor_s = t;
-      if (ui::draw_session_detail(*a.review, detail, below)) {
-        const fs::path dir = local_folder(options.db.string()) / "exports";
+    const bool class_tab = draw_tabs(left, select_class);
+    const float top = ImGui::GetFrameHeightWithSpacing() + 2.0f * ImGui::GetStyle().WindowPadding.y;
+    const ui::PanelRect class_rect{ImVec2(0, top), ImVec2(w, h - top)};
+    if (class_tab) {
+      class_view.update(*store, sessions);
+      if (ui::draw_cohort_panel(class_view.view, class_view.state, class_rect)) {
+        const fs::path dir = local_folder(options.db.string()) / "exports" / "cohort";
         try {
-          detail.export_message = "wrote " + training::export_session(a.review->stored, dir).string() + " and the .csv";
+          training::export_cohort(class_view.view, dir);
+          class_picture = dir / "cohort_view.png";
+          class_view.state.export_message = "wrote " + (dir / "cohort.json").string() + ", the CSV tables and cohort_view.png";
         } catch (const std::exception& e) {
-          detail.export_message = e.what();
+          class_view.state.export_message = e.what();
         }
       }
-      playing = ui::draw_replay_bar(*a.review, t, playing, {ImVec2(left, h - bar), ImVec2(w - left, bar)});
-      if (!scene_error.empty()) {
-        ImGui::SetNextWindowPos(ImVec2(left + 10.0f, 10.0f));
-        ImGui::Begin("3D view", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
-        ImGui::TextWrapped("no replay: %s", scene_error.c_str());
+    } else {
+      ui::draw_session_table(sessions, table, {ImVec2(0, top), ImVec2(left, 0.32f * h - top)});
+      const ui::PanelRect below{ImVec2(0, 0.32f * h), ImVec2(left, 0.68f * h)};
+      if (a.review) {
+        detail.cursor_s = t;
+        if (ui::draw_session_detail(*a.review, detail, below)) {
+          const fs::path dir = local_folder(options.db.string()) / "exports";
+          try {
+            detail.export_message = "wrote " + training::export_session(a.review->stored, dir).string() + " and the .csv";
+          } catch (const std::exception& e) {
+            detail.export_message = e.what();
+          }
+        }
+        playing = ui::draw_replay_bar(*a.review, t, playing, {ImVec2(left, h - bar), ImVec2(w - left, bar)});
+        if (!scene_error.empty()) {
+          ImGui::SetNextWindowPos(ImVec2(left + 10.0f, 10.0f));
+          ImGui::Begin("3D view", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+          ImGui::TextWrapped("no replay: %s", scene_error.c_str());
+          ImGui::End();
+        }
+        if (b.review) {
+          bool open = true;
+          ui::draw_comparison(*a.review, *b.review, {ImVec2(left, 0), ImVec2(w - left, h - bar)}, &open, &span);
+          if (!open) table.compared = 0;
+        }
+      } else {
+        ImGui::SetNextWindowPos(below.pos);
+        ImGui::SetNextWindowSize(below.size);
+        ImGui::Begin("Session", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
+        ImGui::TextWrapped("%s", !a.error.empty()   ? a.error.c_str()
+                                 : sessions.empty() ? "The database has no sessions yet: needle-sim run makes them."
+                                                    : "Click a session to review it; B picks one to compare it with.");
         ImGui::End();
       }
-      if (b.review) {
-        bool open = true;
-        ui::draw_comparison(*a.review, *b.review, {ImVec2(left, 0), ImVec2(w - left, h - bar)}, &open, &span);
-        if (!open) table.compared = 0;
-      }
-    } else {
-      ImGui::SetNextWindowPos(below.pos);
-      ImGui::SetNextWindowSize(below.size);
-      ImGui::Begin("Session", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
-      ImGui::TextWrapped("%s", !a.error.empty()          ? a.error.c_str()
-                               : sessions.empty()        ? "The database has no sessions yet: needle-sim run makes them."
-                                                         : "Click a session to review it; B picks one to compare it with.");
-      ImGui::End();
     }
-    const bool replaying = a.review && a.review->has_recording() && scene_error.empty() && !b.review;
+    const bool replaying = !class_tab && a.review && a.review->has_recording() && scene_error.empty() && !b.review;
     const engine::NeedleLoad* needle = replaying ? &cursor.at(a.review->states, t) : nullptr;
-    engine::FrameParams params = scene->frame_params(needle);
+    engine::FrameParams params = (class_tab ? empty_scene : *scene).frame_params(needle);
     ui::frame_beside_panels(params.camera, w / h, kPanelsFraction);
     if (needle && ultrasound) {
       ultrasound->place(w - 10.0f, 10.0f, 1.0f, 0.0f);  // the 3D view's top right corner
@@ -173,7 +231,20 @@ int run_review_window(const ReviewOptions& options) {
     params.overlay = ui_pass.end_frame();
     if (needle && ultrasound) ultrasound->add_to_frame(params, renderer, extent, *needle);
 
-    frames.draw(window, [&](engine::RgbaImage* shot) { return renderer.draw(target, params, shot); });
+    frames.draw(window, [&](engine::RgbaImage* shot) {
+      engine::RgbaImage picture;
+      engine::RgbaImage* capture = shot ? shot : class_picture ? &picture : nullptr;
+      const bool drawn = renderer.draw(target, params, capture);
+      if (drawn && class_picture) {
+        try {
+          engine::write_png(*class_picture, cropped(*capture, class_rect));
+        } catch (const std::exception& e) {
+          class_view.state.export_message = e.what();
+        }
+        class_picture.reset();
+      }
+      return drawn;
+    });
   }
   renderer.wait_idle();
   std::printf("presented %ld frames\n", frames.drawn());

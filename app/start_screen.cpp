@@ -14,6 +14,7 @@
 #include "app/session_window.hpp"
 #include "app/settings.hpp"
 #include "haptics/devices/falcon/falcon_device.hpp"
+#include "training/sessions/store_location.hpp"
 #include "training/sessions/trainee_history.hpp"
 #include "training/tasks/task_catalog.hpp"
 
@@ -90,13 +91,11 @@ class StartScreen {
   // After a session: the store has a new one.
   void read_store() {
     sessions_.clear();
-    std::error_code ec;
-    if (fs::exists(options_.db, ec)) {
-      try {
-        sessions_ = training::SessionStore(options_.db.string()).sessions();
-      } catch (const std::exception& e) {
-        state_.notice = e.what();
-      }
+    try {
+      sessions_ = start_screen_sessions(options_.db);
+    } catch (const std::exception& e) {  // no records shown; the trainee can still run (the run says what fails)
+      std::fprintf(stderr, "needle-sim: %s\n", e.what());
+      state_.notice = e.what();
     }
     state_.known_trainees = training::known_trainees(sessions_);
     show_records(ui::trainee_name(state_));
@@ -154,6 +153,12 @@ ui::StartAction choose(SessionWindow& window, StartScreen& screen) {
 }
 
 }  // namespace
+
+std::vector<training::SessionInfo> start_screen_sessions(const std::string& db) {
+  std::error_code ec;
+  if (!training::is_postgres_uri(db) && !fs::exists(db, ec)) return {};
+  return training::SessionStore(db).sessions();
+}
 
 std::vector<ui::StartDevice> present_devices() {
   std::vector<ui::StartDevice> devices = {{"mouse", "Mouse", DeskInput::help("mouse"), true},
@@ -214,8 +219,8 @@ int run_start_screen(const StartScreenOptions& options) {
       task.rig.device = settings.device;
       task.trainee = settings.trainee;
       task.db = options.db;
-      task.station = station_name(std::nullopt);
-      task.out_dir = fs::absolute(options.db).parent_path() / "runs" / screen.task().name;
+      task.station = options.station;
+      task.out_dir = local_folder(options.db) / "runs" / screen.task().name;
       try {
         fs::create_directories(task.out_dir);
         if (task.rig.device.rfind("gamepad", 0) == 0) gamepad_id(task.rig.device);

@@ -17,6 +17,7 @@
 #include "haptics/safety/fault_cause.hpp"
 #include "io/file_write.hpp"
 #include "ui/guidance_overlay.hpp"
+#include "training/sessions/postgres_connection.hpp"
 #include "training/sessions/session_export.hpp"
 #include "training/sessions/store_location.hpp"
 
@@ -35,6 +36,19 @@ fs::path local_db(const TaskSessionOptions& options) {
 std::string with_folder(const fs::path& location) {
   if (!training::is_postgres_uri(location.string()) && location.has_parent_path()) fs::create_directories(location.parent_path());
   return location.string();
+}
+
+// (options) => the store the session begins in: the one named, or, when that is a server that does
+// not answer (postgres_server_unreachable), this station's own file, with `offline` saying why (the
+// session is kept there for sync when it ends). Any other failure is an error, as before.
+std::unique_ptr<training::SessionStore> open_store(const TaskSessionOptions& options, std::string& offline) {
+  try {
+    return std::make_unique<training::SessionStore>(with_folder(options.db));
+  } catch (const training::SessionStoreError& e) {
+    if (!training::is_postgres_uri(options.db.string()) || !training::postgres_server_unreachable(options.db.string())) throw;
+    offline = e.what();
+    return std::make_unique<training::SessionStore>(with_folder(local_db(options)));
+  }
 }
 
 // A progress bar on a terminal; on a pipe (CI, logs), a line every quarter.
@@ -89,7 +103,7 @@ TaskSession::TaskSession(TaskSessionOptions options)
       task_(session_task(options_.task, options_.rig.device)),
       scene_(engine::load_scene(task_.scene)),
       rig_(std::make_unique<SessionRig>(task_, with_task_settings(options_, scene_).rig)),
-      store_(with_folder(options_.db)),
+      store_(open_store(options_, offline_)),
       recording_path_(new_recording_path(local_db(options_), task_.name)),
       feed_(task_) {
   haptics::LoopConfig config;
@@ -106,15 +120,18 @@ TaskSession::TaskSession(TaskSessionOptions options)
       loop_->samples(), [this](const haptics::TickSample& s) { feed_.consume(s); });
   new_session_ = {options_.trainee, task_.name, task_.title, task_.source, rig_->description(), recording_path_.string(),
                   options_.station, training::new_session_uid(), training::utc_timestamp()};
-  session_ = store_.begin_session(new_session_);
-  if (store_.engine() == training::SqlEngine::kPostgres)
+  session_ = store_->begin_session(new_session_);
+  if (store_->engine() == training::SqlEngine::kPostgres)
     upload_ = std::make_unique<RecordingUpload>(options_.db.string(), session_, recording_path_);
   loop_->submit(haptics::LoopCommand::set_step(&rig_->step()));
   std::error_code ignored;
   fs::remove(options_.out_dir / "score.json", ignored);  // never an earlier run's score beside this run's pictures
   std::printf("task %s on %s, trainee %s, station %s: session %lld in %s\nrecording %s\n", task_.name.c_str(),
               rig_->description().c_str(), options_.trainee.c_str(), options_.station.c_str(),
-              static_cast<long long>(session_), store_.name().c_str(), recording_path_.c_str());
+              static_cast<long long>(session_), store_->name().c_str(), recording_path_.c_str());
+  if (!offline_.empty())
+    std::printf("note: the server could not be reached (%s): the session is kept in this station's file for needle-sim sync\n",
+                offline_.c_str());
   for (const std::string& note : rig_->notes()) std::printf("note: %s\n", note.c_str());
   if (rig_->ticks() && tick_budget_ < *rig_->ticks())
     std::printf("note: the operator script runs %.1f s, past the latest end of the task (%.1f s: its steps' time limits "
@@ -169,13 +186,20 @@ void TaskSession::stop_threads(bool ran_to_end) {
 }
 
 std::string TaskSession::store_result() {
+  if (!offline_.empty()) {  // begun in this station's file: finished there, kept for the server
+    store_->finish_session(session_, *result_);
+    store_->keep_for_server(session_, training::shown_location(options_.db.string()));
+    return "the server could not be reached when the run began (" + offline_ + "): the session is kept in " +
+           store_->name() + " as session " + std::to_string(session_) + "; needle-sim sync --db URI --local " +
+           local_db(options_).string() + " sends it";
+  }
   std::string server_error = upload_ && !upload_->error().empty() ? "sending the recording: " + upload_->error() : "";
   if (server_error.empty()) {
     try {
-      store_.finish_session(session_, *result_);
+      store_->finish_session(session_, *result_);
       return "";
     } catch (const std::exception& e) {
-      if (store_.engine() != training::SqlEngine::kPostgres) throw;
+      if (store_->engine() != training::SqlEngine::kPostgres) throw;
       server_error = e.what();
     }
   }
@@ -184,7 +208,7 @@ std::string TaskSession::store_result() {
   training::SessionStore station(with_folder(local));
   const int64_t id = station.begin_session(new_session_);
   station.finish_session(id, *result_);
-  station.keep_for_server(id, store_.name());
+  station.keep_for_server(id, store_->name());
   return "the server could not be reached (" + server_error + "): the session is kept in " + local.string() +
          " as session " + std::to_string(id) + "; needle-sim sync --db URI --local " + local.string() + " sends it";
 }

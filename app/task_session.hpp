@@ -84,15 +84,17 @@ class TaskSession {
 
  private:
   void stop_threads(bool ran_to_end);
-  // Stores the finished session on the server, or, when it cannot be reached, in this station's
-  // own file for needle-sim sync. Returns "" when stored on the server, else what happened.
+  // Stores the finished session on the server, or, when it cannot be reached (or could not when the
+  // run began), in this station's own file for needle-sim sync. Returns "" when stored on the
+  // server, else what happened.
   std::string store_result();
 
   TaskSessionOptions options_;
+  std::string offline_;  // why the server could not be reached when the run began; "": it was
   training::Task task_;
   engine::Scene scene_;
   std::unique_ptr<SessionRig> rig_;
-  training::SessionStore store_;
+  std::unique_ptr<training::SessionStore> store_;  // the server's, or this station's file when it was down
   std::filesystem::path recording_path_;
   training::NewSession new_session_;  // what begin_session stored, to keep it locally when needed
   int64_t session_ = 0;

@@ -13,15 +13,6 @@ namespace {
 
 const ImVec4 kGood(0.35f, 0.8f, 0.4f, 1.0f), kBad(0.9f, 0.3f, 0.25f, 1.0f), kDim(0.6f, 0.6f, 0.6f, 1.0f),
     kWarn(0.95f, 0.7f, 0.3f, 1.0f);
-const ImGuiWindowFlags kPanelFlags =
-    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
-
-bool begin_panel(const char* title, const PanelRect& at, bool* open = nullptr) {
-  ImGui::SetNextWindowPos(at.pos, ImGuiCond_Always);
-  ImGui::SetNextWindowSize(at.size, ImGuiCond_Always);
-  ImGui::SetNextWindowBgAlpha(0.92f);
-  return ImGui::Begin(title, open, kPanelFlags);
-}
 
 // How a metric is shown: label, unit and the factor from its stored SI value.
 struct MetricDisplay {
@@ -174,6 +165,14 @@ void span_row(const training::SessionReview& r, TimeSpan& span) {
 }
 
 }  // namespace
+
+bool begin_panel(const char* title, const PanelRect& at, bool* open) {
+  ImGui::SetNextWindowPos(at.pos, ImGuiCond_Always);
+  ImGui::SetNextWindowSize(at.size, ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(0.92f);
+  return ImGui::Begin(title, open,
+                      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+}
 
 void draw_session_table(const std::vector<training::SessionInfo>& sessions, SessionTableState& state, const PanelRect& at) {
   if (begin_panel("Sessions", at)) {

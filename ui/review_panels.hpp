@@ -20,6 +20,10 @@ struct PanelRect {
   ImVec2 size;
 };
 
+// Begins an ImGui window fixed at `at` (no move, resize or saved settings), as every review panel
+// is; with `open`, it has a close button. End it with ImGui::End() whatever this returns.
+bool begin_panel(const char* title, const PanelRect& at, bool* open = nullptr);
+
 struct SessionTableState {
   char filter[128] = "";
   std::vector<training::SessionSort> sort{{training::SessionColumn::kId, true}};  // ImGui's sort specs, once it has them

@@ -14,6 +14,10 @@ namespace {
 // Session A's lines in blues and greens, session B's in oranges, in the order of Plot::lines.
 const ImU32 kLinesA[] = {IM_COL32(110, 190, 255, 255), IM_COL32(120, 220, 140, 255)};
 const ImU32 kLinesB[] = {IM_COL32(255, 160, 70, 255), IM_COL32(240, 90, 120, 255)};
+// Learning curves: eight hues far enough apart to tell trainees apart on the dark plot.
+const ImU32 kTrainees[] = {IM_COL32(110, 190, 255, 255), IM_COL32(255, 160, 70, 255), IM_COL32(120, 220, 140, 255),
+                           IM_COL32(240, 90, 120, 255),  IM_COL32(200, 150, 255, 255), IM_COL32(240, 230, 90, 255),
+                           IM_COL32(90, 220, 220, 255),  IM_COL32(200, 200, 200, 255)};
 const ImU32 kAxis = IM_COL32(150, 150, 160, 255), kGrid = IM_COL32(70, 70, 80, 255), kText = IM_COL32(200, 200, 205, 255);
 const ImU32 kGuide = IM_COL32(255, 220, 80, 200), kStep = IM_COL32(120, 120, 135, 255), kCursor = IM_COL32(255, 255, 255, 230);
 
@@ -77,7 +81,8 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
     return;
   }
   std::vector<std::pair<const training::Series*, ImU32>> lines;
-  for (size_t i = 0; i < plot.lines.size(); ++i) lines.push_back({&plot.lines[i], kLinesA[i % 2]});
+  for (size_t i = 0; i < plot.lines.size(); ++i)
+    lines.push_back({&plot.lines[i], o.marked_points ? kTrainees[i % std::size(kTrainees)] : kLinesA[i % 2]});
   if (o.other) {
     for (size_t i = 0; i < o.other->lines.size(); ++i) lines.push_back({&o.other->lines[i], kLinesB[i % 2]});
   }
@@ -85,6 +90,7 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
   for (const auto& [series, colour] : lines) {
     for (double t : series->t) x.add(t);
   }
+  if (o.marked_points) x.lo -= 0.5, x.hi += 0.5;  // the first and last attempts' marks clear of the edges
   if (!(x.hi > x.lo)) x.hi = x.lo + 1.0;
   const TimeSpan whole{x.lo, x.hi}, shown = o.span ? clamped(*o.span, whole) : whole;
   x.lo = shown.lo;
@@ -122,6 +128,7 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
     draw->AddText(ImVec2(p0.x - 6.0f - ImGui::CalcTextSize(label.c_str()).x, sy(v) - 7.0f), kText, label.c_str());
   }
   for (double t : training::axis_ticks(x.lo, x.hi, 8)) {
+    if (o.marked_points && t != std::round(t)) continue;  // attempts are whole numbers
     draw->AddLine(ImVec2(sx(t), p1.y), ImVec2(sx(t), p1.y + 4.0f), kAxis);
     const std::string label = number(t);
     draw->AddText(ImVec2(sx(t) - 0.5f * ImGui::CalcTextSize(label.c_str()).x, p1.y + 3.0f), kText, label.c_str());
@@ -150,6 +157,8 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
       if (std::isfinite(drawn.v[i])) points.push_back(ImVec2(sx(drawn.t[i]), sy(drawn.v[i])));
     }
     if (points.size() > 1) draw->AddPolyline(points.data(), int(points.size()), colour, 0, 1.5f);
+    if (o.marked_points)
+      for (const ImVec2& p : points) draw->AddCircleFilled(p, 3.5f, colour);
   }
   if (o.cursor_s) draw->AddLine(ImVec2(sx(*o.cursor_s), p0.y), ImVec2(sx(*o.cursor_s), p1.y), kCursor, 1.5f);
   draw->PopClipRect();

@@ -20,6 +20,9 @@ struct PlotOptions {
   // The time range shown, y scaled to what lies in it; over the plot the wheel zooms it about the
   // pointer, a drag pans it and a double click shows the whole plot again. Null: the whole plot.
   TimeSpan* span = nullptr;
+  // Learning curves (a line per trainee, a point per attempt): a colour of its own for each of up
+  // to eight lines, and every point marked, so a single attempt shows too.
+  bool marked_points = false;
 };
 
 void draw_plot(const training::Plot& plot, const PlotOptions& options = {});

@@ -16,9 +16,15 @@ inline std::string postgres_dir() {
   return dir ? dir : "";
 }
 
-// A URI for `database` on the test cluster, as `user`.
+// The cluster's port (its socket's name; with NEEDLE_PG_TLS=on, also its TCP port on 127.0.0.1).
+inline std::string postgres_port() {
+  const char* port = std::getenv("NEEDLE_TEST_PG_PORT");
+  return port ? port : "5432";
+}
+
+// A URI for `database` on the test cluster's socket, as `user`.
 inline std::string postgres_uri(const std::string& database, const std::string& user = "needle") {
-  return "postgresql:///" + database + "?host=" + postgres_dir() + "&user=" + user;
+  return "postgresql:///" + database + "?host=" + postgres_dir() + "&port=" + postgres_port() + "&user=" + user;
 }
 
 // Runs SQL on the cluster's maintenance database as its superuser.

@@ -1,7 +1,7 @@
 // `needle-sim report` and `needle-sim review` as an instructor runs them, on a database holding
 // recorded closed-loop sessions: the report's files (metrics JSON and CSV, plots and panels as
-// PNG) and each of its clear errors; the review window under Xvfb, and its message without a
-// display.
+// PNG) and each of its clear errors; the review window under Xvfb (its Class tab's export too), and
+// its message without a display.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -153,6 +153,33 @@ TEST_F(CliReport, ReviewWindowShowsTheSessionAndItsReplay) {
   EXPECT_NE(r.output.find("presented 4 frames"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
   EXPECT_EQ(engine::read_png(shot).width, 1200u);
+}
+
+// The Class tab (review --class) under Xvfb: xdotool clicks its export button (where it stands in
+// a 1200x700 window, 13 px text); the window writes the cohort's JSON, identical to what
+// `report --cohort` writes (one computation), the CSV tables, and the tab as it was drawn.
+TEST_F(CliReport, ReviewClassTabExportsWhatReportCohortWrites) {
+  const fs::path exports = dir_ / "db" / "exports" / "cohort";
+  fs::remove_all(exports);
+  const fs::path script = dir_ / "class_tab.sh";
+  std::ofstream(script) << "NEEDLE_VALIDATION=1 " << test::needle_sim_exe().string() << " review --class --size 1200x700 --frames 400 --db "
+                        << quoted(db_) << " &\napp=$!\nid=$(xdotool search --sync --name '^needle-sim review$' | head -1)\n"
+                        << "sleep 3; xdotool mousemove --window \"$id\" 1030 76; sleep 0.5; xdotool click 1\n"
+                        << "wait $app\n";
+  const ProcessResult r = run_command("xvfb-run -a -s '-screen 0 1280x800x24' sh " + quoted(script));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  for (const char* file : {"cohort.json", "cohort_curves.csv", "cohort_failed_steps.csv", "cohort_percentiles.csv"})
+    EXPECT_TRUE(fs::is_regular_file(exports / file)) << file << "\n" << r.output;
+  const ProcessResult cohort = run_needle_sim("report --cohort --db " + quoted(db_) + " --out " + quoted(dir_ / "cohort"));
+  ASSERT_EQ(cohort.exit_code, 0) << cohort.output;
+  const nlohmann::json from_window = nlohmann::json::parse(std::ifstream(exports / "cohort.json"));
+  EXPECT_EQ(from_window, nlohmann::json::parse(std::ifstream(dir_ / "cohort" / "cohort.json")));
+  EXPECT_EQ(from_window["sessions"], 2) << "ana's and cy's complete sessions; bo's died";
+  const engine::RgbaImage tab = engine::read_png(exports / "cohort_view.png");
+  EXPECT_EQ(tab.width, 1200u);
+  EXPECT_GT(tab.height, 600u);  // the window less the tabs above it
+  EXPECT_LT(tab.height, 700u);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@ int run_review(ArgList& args) {
   if (auto id = args.value("--session")) options.session = parse_whole(*id, "--session", 1, 9000000000000000);
   if (auto frames = args.value("--frames")) options.frames = long(parse_whole(*frames, "--frames", 1, 1000000000));
   options.screenshot = args.value("--screenshot");
+  options.class_view = args.flag("--class");
   args.finish();
   if (options.screenshot && options.frames == 0) throw UsageError("--screenshot needs --frames N (the frame to capture)");
   return app::run_review_window(options);
@@ -23,10 +24,11 @@ int run_review(ArgList& args) {
 
 const CommandRegistrar reg{
     {"review",
-     "needle-sim review [--db FILE|URI] [--session ID] [--size WxH] [--frames N] [--screenshot FILE]\n"
+     "needle-sim review [--db FILE|URI] [--session ID] [--class] [--size WxH] [--frames N] [--screenshot FILE]\n"
      "  --db FILE|URI      session database, an SQLite file or postgresql://... (default: $NEEDLE_DB, else\n"
      "                    $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)\n"
      "  --session ID       the session to open first\n"
+     "  --class            open on the Class tab: the class view of report --cohort, with its filters and export\n"
      "  --size WxH         window size (default 1600x900)\n"
      "  --frames N         close after N frames\n"
      "  --screenshot FILE  save frame N as presented (needs --frames)\n"

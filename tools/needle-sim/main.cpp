@@ -29,7 +29,10 @@ std::vector<std::string> split_words(const std::string& s) {
 
 void print_overview() {
   std::printf("needle-sim: needle-procedure training simulator with force feedback\n\n"
-              "usage: needle-sim                     the start screen (a window): choose a task and a device, and go\n"
+              "usage: needle-sim [--db FILE|URI] [--station NAME]\n"
+              "                                      the start screen (a window): choose a task and a device, and go;\n"
+              "                                      its sessions go to --db (default: $NEEDLE_DB, else\n"
+              "                                      ~/.local/share/needle-sim/sessions.db), as run's do\n"
               "       needle-sim COMMAND [options]   (needle-sim COMMAND --help for its options)\n\ncommands:\n");
   for (const auto& c : registered_commands()) {
     std::string first_line = c.usage.substr(0, c.usage.find('\n'));
@@ -89,16 +92,24 @@ const std::vector<Command>& registered_commands() {
 int main(int argc, char** argv) {
   using namespace needle::cli;
   std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty() && needle::engine::Window::display_available()) {
+  // The start screen: no command, only where its sessions go.
+  const bool start_screen = args.empty() || args[0].rfind("--db", 0) == 0 || args[0].rfind("--station", 0) == 0;
+  if (start_screen && needle::engine::Window::display_available()) {
     try {
-      return needle::app::run_start_screen(
-          {asset_dir() / "tasks", needle::app::default_db(), needle::app::default_settings_file()});
+      ArgList options(args);
+      const std::string db = needle::app::db_location(options.value("--db"));
+      const std::string station = needle::app::station_name(options.value("--station"));
+      options.finish();
+      return needle::app::run_start_screen({asset_dir() / "tasks", db, station, needle::app::default_settings_file()});
+    } catch (const UsageError& e) {
+      std::fprintf(stderr, "needle-sim: %s (needle-sim --help shows the options)\n", e.what());
+      return 2;
     } catch (const std::exception& e) {
       std::fprintf(stderr, "needle-sim: error: %s\n", e.what());
       return 1;
     }
   }
-  if (args.empty()) {
+  if (start_screen) {
     std::fprintf(stderr,
                  "needle-sim: no display, so no start screen; needle-sim run runs the guided task headless "
                  "(tools/run-main.sh builds and runs it)\n\n");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 #include "training/scoring/metric_fields.hpp"
@@ -48,6 +49,16 @@ double percentile(std::vector<double> values, double p) {
   const size_t lo = size_t(std::floor(rank));
   const size_t hi = std::min(lo + 1, values.size() - 1);
   return values[lo] + (rank - double(lo)) * (values[hi] - values[lo]);
+}
+
+CohortChoices cohort_choices(const std::vector<SessionInfo>& sessions) {
+  std::set<std::string> tasks, trainees, stations;
+  for (const SessionInfo& s : sessions) {
+    if (!s.complete) continue;
+    for (auto [set, value] : {std::pair{&tasks, &s.task}, {&trainees, &s.trainee}, {&stations, &s.station}})
+      if (!value->empty()) set->insert(*value);  // "" (a station before schema 3) cannot be filtered on
+  }
+  return {{tasks.begin(), tasks.end()}, {trainees.begin(), trainees.end()}, {stations.begin(), stations.end()}};
 }
 
 CohortView cohort_view(const SessionStore& store, const CohortFilter& filter) {

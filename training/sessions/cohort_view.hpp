@@ -14,6 +14,7 @@ namespace needle::training {
 struct CohortFilter {
   std::string task, trainee, station;  // "" : any
   std::string since, until;            // dates, YYYY-MM-DD, inclusive, on started_at (UTC); "": open
+  bool operator==(const CohortFilter&) const = default;
 };
 
 // Throws std::invalid_argument naming the field when a date is not YYYY-MM-DD.
@@ -55,6 +56,13 @@ struct CohortView {
   std::vector<Percentiles> percentiles;     // by task, then metric (score, duration_s, then the Metrics fields)
   size_t sessions = 0;                      // complete sessions that passed the filter
 };
+
+// What the filters can choose: the tasks, trainees and stations of the complete sessions, each
+// sorted and once, empty names left out (the review window's Class tab offers them).
+struct CohortChoices {
+  std::vector<std::string> tasks, trainees, stations;
+};
+CohortChoices cohort_choices(const std::vector<SessionInfo>& sessions);
 
 // Loads every complete session of `store` that passes `filter` and summarises them.
 CohortView cohort_view(const SessionStore& store, const CohortFilter& filter);

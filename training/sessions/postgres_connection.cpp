@@ -62,6 +62,8 @@ std::string numbered_placeholders(const std::string& sql) {
   return out;
 }
 
+bool postgres_server_unreachable(const std::string& uri) { return PQping(uri.c_str()) == PQPING_NO_RESPONSE; }
+
 PostgresConnection::PostgresConnection(const std::string& uri, bool read_only) : shown_(shown_location(uri)) {
   conn_ = PQconnectdb(uri.c_str());
   if (PQstatus(conn_) != CONNECTION_OK) {

@@ -34,6 +34,11 @@ class PostgresConnection final : public SqlConnection {
   pg_conn* conn_ = nullptr;
 };
 
+// True when no server answers at `uri` at all (down, or nothing listening there): libpq's PQping
+// says PQPING_NO_RESPONSE. A server that answers but refuses the login, lacks the database or is
+// given a bad URI is not unreachable: those are errors to fix, not to work around.
+bool postgres_server_unreachable(const std::string& uri);
+
 // `sql` with its `?` placeholders numbered $1, $2, ... (a '?' inside '...' or "..." is kept).
 std::string numbered_placeholders(const std::string& sql);
 
