@@ -92,6 +92,10 @@ Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& step
     score.reasons_failed.push_back("score " + format(score.total) + " below the pass mark " + format(spec.pass_score));
   if (completed < long(steps.size()))
     score.reasons_failed.push_back(std::to_string(steps.size() - completed) + " step(s) not completed");
+  // A forbidden layer (the dura) or bone touched fails the task whatever the rest (issue 14).
+  for (const StepResult& s : steps)
+    if (s.record.outcome == StepOutcome::kForbiddenPuncture || s.record.outcome == StepOutcome::kRigidTouched)
+      score.reasons_failed.push_back("step " + s.id + ": " + (s.failure.empty() ? step_outcome_name(s.record.outcome) : s.failure));
   if (m.faults > 0) score.reasons_failed.push_back(std::to_string(m.faults) + " safety fault(s)");
   if (peak > safe)
     score.reasons_failed.push_back("peak force " + format(peak) + " N above the safe limit " + format(safe) + " N");

@@ -59,7 +59,8 @@ void SessionScorer::feed(const haptics::TickSample& sample) {
 SessionResult SessionScorer::result() const {
   SessionResult r;
   for (size_t i = 0; i < steps_.size(); ++i)
-    r.steps.push_back({task_.steps[i].id, progress_.records()[i], steps_[i].result()});
+    r.steps.push_back({task_.steps[i].id, progress_.records()[i], steps_[i].result(),
+                       step_failure_reason(task_, progress_.records()[i])});
   r.overall = combine_metrics(r.steps);
   r.score = score_session(task_.scoring, r.steps, r.overall);
   r.finished = progress_.finished();

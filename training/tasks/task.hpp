@@ -40,6 +40,8 @@ enum class ConditionType {
   kForceHeld,      // |environment force| in [min, max] N, held for hold_s
   kTargetReached,  // tip within `within_m` of a point marker while inside tissue
   kWithdrawn,      // no contact and the tip farther than `within_m` from a point marker
+  kTipInLayer,     // the layered tissue's layer `layer` holds the tip (ToolSnapshot::tissue.tip_layer)
+  kPunctured,      // the needle's track has passed into layer `layer` (ToolSnapshot::tissue.punctured_layers)
 };
 
 enum class ContactRequirement { kAny, kFree, kRigidSurface, kTissue };
@@ -52,6 +54,7 @@ struct Condition {
   double min = 0.0, max = 0.0;  // depth (m) or force (N) band
   double hold_s = 0.0;          // the condition must hold this long without a break
   ContactRequirement contact = ContactRequirement::kAny;
+  int layer = -1;               // tip_in_layer, punctured: index in Task::layers
 };
 
 // What the panels draw during a step; marker indices, -1 when absent.
@@ -72,7 +75,17 @@ struct Step {
   // 0: no rule; else the step fails when the tip, in tissue, stays out of the ultrasound probe's
   // imaged slice this long (the in-plane technique keeps it in view).
   double tip_out_of_plane_max_s = 0.0;
+  // Faults that end the step at once (issue 14), a bit per index in Task::layers: the track passing
+  // into one of `forbidden_punctures` (the dura), the tip meeting one of `forbidden_touches` (bone).
+  uint32_t forbidden_punctures = 0;
+  uint32_t forbidden_touches = 0;
   Guidance guidance;
+};
+
+// A layer of the scenario's tissue as the task sees it: its name and whether it is rigid (bone).
+struct TaskLayer {
+  std::string name;
+  bool rigid = false;
 };
 
 // Component weights of the overall score (docs/SCORING.md); normalized to 100 on load.
@@ -119,8 +132,14 @@ struct Task {
   std::vector<Step> steps;
   ScoringSpec scoring;
   std::optional<UltrasoundProbeSpec> ultrasound_probe;  // the task's probe, when it has one
+  // The scenario's tissue layers in its order (the indices of ToolSnapshot::tissue); empty without
+  // a scenario. The thesis's single-surface tissue is one layer, "tissue".
+  std::vector<TaskLayer> layers;
+  // Hide the layer names from the trainee's panel (assessment runs): it shows "layer 3" instead.
+  bool hide_layer_names = false;
 
   int marker_index(const std::string& name) const;  // -1 when absent
+  int layer_index(const std::string& name) const;   // -1 when absent
 };
 
 Task load_task(const std::filesystem::path& file);

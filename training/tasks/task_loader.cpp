@@ -7,6 +7,7 @@
 #include <numbers>
 #include <set>
 
+#include "haptics/sim/scenario.hpp"
 #include "io/input_limits.hpp"
 #include "io/strict_json.hpp"
 #include "training/tasks/task.hpp"
@@ -23,7 +24,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
 
   Task task(const json& root) {
     object(root, "", {"name", "title", "description", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps", "scoring",
-                      "ultrasound"});
+                      "ultrasound", "hide_layer_names"});
     Task t;
     t.name = name(member(root, "", "name"), "/name");
     t.title = root.contains("title") ? string(root["title"], "/title") : t.name;
@@ -33,7 +34,11 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       if (t.description.find('\n') != std::string::npos) fail("/description", "must be one line");
     }
     t.scene = existing_file(member(root, "", "scene"), "/scene", folder_);
-    if (root.contains("scenario")) t.scenario = existing_file(root["scenario"], "/scenario", folder_);
+    if (root.contains("scenario")) {
+      t.scenario = existing_file(root["scenario"], "/scenario", folder_);
+      t.layers = layers(t.scenario);
+    }
+    if (root.contains("hide_layer_names")) t.hide_layer_names = boolean(root["hide_layer_names"], "/hide_layer_names");
     if (root.contains("normal_marker_spacing_m"))
       t.normal_marker_spacing_m = positive(root["normal_marker_spacing_m"], "/normal_marker_spacing_m");
     const json& markers = member(root, "", "markers");
@@ -69,6 +74,52 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       fail(at, "\"" + (n.size() > 80 ? n.substr(0, 80) + "..." : n) + "\": a task name is 1 to " +
                    std::to_string(kMaxNameBytes) + " letters, digits, '_' or '-'");
     return n;
+  }
+
+  // The scenario's tissue layers, names and rigidity (the scenario read as a run reads it).
+  std::vector<TaskLayer> layers(const fs::path& scenario) const {
+    std::vector<TaskLayer> out;
+    try {
+      const haptics::Scenario s = haptics::load_scenario(scenario.string());
+      for (const haptics::TissueLayer& l : s.scene.tissue.layers()) out.push_back({l.name, l.mechanics.rigid});
+    } catch (const haptics::ScenarioError& e) {
+      fail("/scenario", e.what());
+    }
+    return out;
+  }
+
+  bool boolean(const json& value, const std::string& at) const {
+    if (!value.is_boolean()) fail(at, "expected true or false, got " + std::string(value.type_name()));
+    return value.get<bool>();
+  }
+
+  // A layer of the scenario's tissue by its name; `rigid` says whether it must be rigid (bone) or not.
+  int layer_ref(const Task& t, const json& value, const std::string& at, bool rigid) const {
+    const std::string name = string(value, at);
+    if (t.layers.empty()) fail(at, "the task has no layered tissue (its /scenario has no tissue layers)");
+    const int index = t.layer_index(name);
+    if (index < 0) {
+      std::string names;
+      for (const TaskLayer& l : t.layers) names += (names.empty() ? "\"" : ", \"") + l.name + "\"";
+      fail(at, "no layer named \"" + name + "\" in the scenario's tissue (its layers: " + names + ")");
+    }
+    if (t.layers[size_t(index)].rigid != rigid)
+      fail(at, "layer \"" + name + "\" is " + (rigid ? "not rigid (expected a rigid layer, bone)" : "rigid (bone is never punctured nor holds the tip)"));
+    return index;
+  }
+
+  // {"punctured": [layer, ...], "touched": [rigid layer, ...]}: a bit per layer.
+  void forbidden(const Task& t, Step& s, const json& value, const std::string& at) const {
+    object(value, at, {"punctured", "touched"});
+    const std::pair<const char*, uint32_t*> lists[] = {{"punctured", &s.forbidden_punctures}, {"touched", &s.forbidden_touches}};
+    for (const auto& [key, mask] : lists) {
+      if (!value.contains(key)) continue;
+      const json& list = value[key];
+      const std::string where = at + "/" + key;
+      if (!list.is_array() || list.empty()) fail(where, "expected a non-empty array of layer names");
+      for (size_t i = 0; i < list.size(); ++i)
+        *mask |= 1u << layer_ref(t, list[i], where + "/" + std::to_string(i), std::string(key) == "touched");
+    }
   }
 
   Vec3 vector(const json& value, const std::string& at) const {
@@ -160,10 +211,15 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       c.type = ConditionType::kForceHeld;
       band(c, value, at);
       if (!value.contains("hold_s")) fail(at + "/hold_s", "missing (a held force needs a time)");
+    } else if (type == "tip_in_layer" || type == "punctured") {
+      object(value, at, {"type", "layer", "hold_s", "contact"});
+      c.type = type == "tip_in_layer" ? ConditionType::kTipInLayer : ConditionType::kPunctured;
+      c.layer = layer_ref(t, member(value, at, "layer"), at + "/layer", false);
     } else {
       fail(at + "/type",
            "unknown step type \"" + type +
-               "\" (expected tip_near, axis_aligned, depth_in_band, force_held, target_reached or withdrawn)");
+               "\" (expected tip_near, axis_aligned, depth_in_band, force_held, target_reached, withdrawn, "
+               "tip_in_layer or punctured)");
     }
     if (value.contains("hold_s")) c.hold_s = non_negative(value["hold_s"], at + "/hold_s");
     if (c.type == ConditionType::kForceHeld && c.hold_s <= 0.0) fail(at + "/hold_s", "must be > 0 for force_held");
@@ -230,7 +286,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
 
   Step step(const Task& t, const json& value, const std::string& at) const {
     object(value, at, {"id", "instruction", "condition", "time_limit_s", "tip_fixed_within_m", "tip_out_of_plane_max_s",
-                       "guidance"});
+                       "forbidden", "guidance"});
     Step s;
     s.id = string(member(value, at, "id"), at + "/id");
     s.instruction = string(member(value, at, "instruction"), at + "/instruction");
@@ -244,6 +300,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       if (!t.ultrasound_probe) fail(at + "/tip_out_of_plane_max_s", "needs the task's ultrasound probe (/ultrasound)");
       s.tip_out_of_plane_max_s = positive(value["tip_out_of_plane_max_s"], at + "/tip_out_of_plane_max_s");
     }
+    if (value.contains("forbidden")) forbidden(t, s, value["forbidden"], at + "/forbidden");
     if (value.contains("guidance")) s.guidance = guidance(t, s, value["guidance"], at + "/guidance");
     return s;
   }
