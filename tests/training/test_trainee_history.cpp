@@ -42,10 +42,12 @@ TEST(TraineeHistory, TraineesMostRecentFirstAndTheLastAndBestScorePerTask) {
 
 TEST(TaskCatalog, TheShippedTasksWithTheirTitlesAndDescriptionsAndNoScripts) {
   const std::vector<TaskEntry> tasks = find_tasks(test::source_dir() / "assets/tasks");
-  ASSERT_EQ(tasks.size(), 3u);
-  EXPECT_EQ(tasks[0].name, "penetrable_sphere");
-  EXPECT_EQ(tasks[1].name, "rigid_sphere");
-  EXPECT_EQ(tasks[2].name, "sphere_ultrasound");
+  ASSERT_EQ(tasks.size(), 5u);
+  EXPECT_EQ(tasks[0].name, "epidural");
+  EXPECT_EQ(tasks[1].name, "layered_target");
+  EXPECT_EQ(tasks[2].name, "penetrable_sphere");
+  EXPECT_EQ(tasks[3].name, "rigid_sphere");
+  EXPECT_EQ(tasks[4].name, "sphere_ultrasound");
   for (const TaskEntry& t : tasks) {
     EXPECT_TRUE(t.error.empty()) << t.error;
     EXPECT_FALSE(t.title.empty());

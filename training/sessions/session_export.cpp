@@ -32,7 +32,15 @@ json steps_json(const std::vector<StepResult>& steps) {
                    {"outcome", step_outcome_name(s.record.outcome)},
                    {"start_s", number(s.record.start_s)},
                    {"end_s", number(s.record.end_s)},
+                   {"failure", s.failure},
                    {"metrics", metrics_json(s.metrics)}});
+  return out;
+}
+
+json punctures_json(const std::vector<PunctureResult>& punctures) {
+  json out = json::array();
+  for (const PunctureResult& p : punctures)
+    out.push_back({{"layer", p.layer}, {"t_s", p.t_s}, {"depth_m", p.depth_m}, {"peak_force_N", p.peak_force_N}});
   return out;
 }
 
@@ -67,6 +75,7 @@ json result_json(const SessionResult& result) {
           {"reasons_failed", result.score.reasons_failed},
           {"components", components_json(result.score.components)},
           {"metrics", metrics_json(result.overall)},
+          {"punctures", punctures_json(result.punctures)},
           {"steps", steps_json(result.steps)}};
 }
 

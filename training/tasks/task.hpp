@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -86,15 +87,20 @@ struct Step {
 struct TaskLayer {
   std::string name;
   bool rigid = false;
+  double puncture_force_N = 0.0;  // > 0: a membrane, whose puncture is a pop (scene newtons)
 };
 
 // Component weights of the overall score (docs/SCORING.md); normalized to 100 on load.
 // needle_visibility counts only in tasks with an ultrasound probe: 10 by default there, before
 // the weights are normalized; 0 without one.
+// overshoot, bone_contacts and redirections count only in tasks on a layered tissue (Task::layers):
+// 10, 10 and 5 by default there, before the weights are normalized; 0 without layers.
 struct ScoreWeights {
   double completion = 30, tip_error = 15, axis_deviation = 10, lateral_load = 10, peak_force = 10, force_steadiness = 5,
-         path_efficiency = 5, smoothness = 5, time = 5, retries = 5, needle_visibility = 0;
+         path_efficiency = 5, smoothness = 5, time = 5, retries = 5, needle_visibility = 0, overshoot = 0,
+         bone_contacts = 0, redirections = 0;
   static constexpr double kDefaultNeedleVisibility = 10;
+  static constexpr double kDefaultOvershoot = 10, kDefaultBoneContacts = 10, kDefaultRedirections = 5;
 };
 
 // References at which a component's score reaches 0 (or, for time, starts to drop).
@@ -105,6 +111,7 @@ struct ScoreReferences {
   double force_sd_N = 0.5;
   double normalized_jerk = 1e6;  // log scale, from sqrt(360)
   double time_s = 60.0;
+  double overshoot_m = 0.01;  // design value: twice the epidural space's 5 mm depth
 };
 
 struct ScoringSpec {

@@ -59,7 +59,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       t.steps.push_back(step(t, steps[i], at));
       if (!ids.insert(t.steps.back().id).second) fail(at + "/id", "\"" + t.steps.back().id + "\" is used twice");
     }
-    t.scoring = scoring(root.contains("scoring") ? root["scoring"] : json::object(), "/scoring", t.ultrasound_probe.has_value());
+    t.scoring = scoring(root.contains("scoring") ? root["scoring"] : json::object(), "/scoring", t.ultrasound_probe.has_value(),
+                        !t.layers.empty() && t.layers.size() > 1);
     return t;
   }
 
@@ -81,7 +82,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     std::vector<TaskLayer> out;
     try {
       const haptics::Scenario s = haptics::load_scenario(scenario.string());
-      for (const haptics::TissueLayer& l : s.scene.tissue.layers()) out.push_back({l.name, l.mechanics.rigid});
+      for (const haptics::TissueLayer& l : s.scene.tissue.layers()) out.push_back({l.name, l.mechanics.rigid, l.mechanics.puncture_force_N});
     } catch (const haptics::ScenarioError& e) {
       fail("/scenario", e.what());
     }
@@ -305,10 +306,15 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     return s;
   }
 
-  ScoringSpec scoring(const json& value, const std::string& at, bool has_probe) const {
+  ScoringSpec scoring(const json& value, const std::string& at, bool has_probe, bool layered) const {
     object(value, at, {"safe_force_N", "pass_score", "weights", "references"});
     ScoringSpec s;
     if (has_probe) s.weights.needle_visibility = ScoreWeights::kDefaultNeedleVisibility;
+    if (layered) {
+      s.weights.overshoot = ScoreWeights::kDefaultOvershoot;
+      s.weights.bone_contacts = ScoreWeights::kDefaultBoneContacts;
+      s.weights.redirections = ScoreWeights::kDefaultRedirections;
+    }
     if (value.contains("safe_force_N")) s.safe_force_N = positive(value["safe_force_N"], at + "/safe_force_N");
     if (value.contains("pass_score")) {
       s.pass_score = number(value["pass_score"], at + "/pass_score");
@@ -323,9 +329,12 @@ class TaskReader : io::StrictJsonReader<TaskError> {
   ScoreWeights weights(const json& value, const std::string& at, ScoreWeights w) const {
     object(value, at,
            {"completion", "tip_error", "axis_deviation", "lateral_load", "peak_force", "force_steadiness",
-            "path_efficiency", "smoothness", "time", "retries", "needle_visibility"});
+            "path_efficiency", "smoothness", "time", "retries", "needle_visibility", "overshoot", "bone_contacts", "redirections"});
     if (value.contains("needle_visibility") && w.needle_visibility == 0.0)
       fail(at + "/needle_visibility", "needs the task's ultrasound probe (/ultrasound)");
+    for (const char* key : {"overshoot", "bone_contacts", "redirections"})
+      if (value.contains(key) && w.overshoot == 0.0)
+        fail(at + "/" + key, "needs a layered tissue (the /scenario's tissue layers)");
     const std::pair<const char*, double*> fields[] = {{"completion", &w.completion},
                                                       {"tip_error", &w.tip_error},
                                                       {"axis_deviation", &w.axis_deviation},
@@ -336,7 +345,10 @@ class TaskReader : io::StrictJsonReader<TaskError> {
                                                       {"smoothness", &w.smoothness},
                                                       {"time", &w.time},
                                                       {"retries", &w.retries},
-                                                      {"needle_visibility", &w.needle_visibility}};
+                                                      {"needle_visibility", &w.needle_visibility},
+                                                      {"overshoot", &w.overshoot},
+                                                      {"bone_contacts", &w.bone_contacts},
+                                                      {"redirections", &w.redirections}};
     double total = 0.0;
     for (const auto& [key, field] : fields) {
       if (value.contains(key)) *field = non_negative(value[key], at + "/" + key);
@@ -350,12 +362,13 @@ class TaskReader : io::StrictJsonReader<TaskError> {
 
   ScoreReferences references(const json& value, const std::string& at) const {
     object(value, at,
-           {"tip_error_m", "axis_deviation_deg", "lateral_load_Ns", "force_sd_N", "normalized_jerk", "time_s"});
+           {"tip_error_m", "axis_deviation_deg", "lateral_load_Ns", "force_sd_N", "normalized_jerk", "time_s", "overshoot_m"});
     ScoreReferences r;
     const std::pair<const char*, double*> fields[] = {
         {"tip_error_m", &r.tip_error_m},         {"axis_deviation_deg", &r.axis_deviation_deg},
         {"lateral_load_Ns", &r.lateral_load_Ns}, {"force_sd_N", &r.force_sd_N},
-        {"normalized_jerk", &r.normalized_jerk}, {"time_s", &r.time_s}};
+        {"normalized_jerk", &r.normalized_jerk}, {"time_s", &r.time_s},
+        {"overshoot_m", &r.overshoot_m}};
     for (const auto& [key, field] : fields)
       if (value.contains(key)) *field = positive(value[key], at + "/" + key);
     if (r.normalized_jerk <= std::sqrt(360.0))

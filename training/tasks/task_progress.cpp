@@ -103,8 +103,13 @@ void TaskProgress::feed(const haptics::ToolSnapshot& state) {
   // A forbidden layer passed into or a forbidden rigid layer met on this state (not one the track
   // or the tip was already in: the fault is the event).
   const uint32_t passed_now = state.tissue.punctured_layers & ~punctured_before_ & step.forbidden_punctures;
+  // A touch is the tip meeting bone it was not on; leaving and meeting it again within the
+  // contact debounce is the penalty's chatter (docs/SCORING.md), the same touch.
   const int bone = state.tissue.bone_layer;
-  const bool touched_now = bone >= 0 && bone < 32 && bone != bone_before_ && (step.forbidden_touches >> bone & 1u);
+  const bool new_touch = bone != bone_before_ && !(bone_before_ < 0 && bone_left_s_ >= 0.0 &&
+                                                   state.time_s - bone_left_s_ < kBoneDebounce_s);
+  const bool touched_now = bone >= 0 && bone < 32 && new_touch && (step.forbidden_touches >> bone & 1u);
+  if (bone < 0 && bone_before_ >= 0) bone_left_s_ = state.time_s;
   punctured_before_ = state.tissue.punctured_layers;
   bone_before_ = bone;
   // Order of precedence on one state: a forbidden layer, success, then the tip rules, then the clock.

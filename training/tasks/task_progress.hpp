@@ -39,6 +39,9 @@ std::string step_failure_reason(const Task& task, const StepRecord& record);
 
 class TaskProgress {
  public:
+  // Bone left and met again within this time is one touch (the penalty contact chatters on release).
+  static constexpr double kBoneDebounce_s = 0.25;
+
   explicit TaskProgress(const Task& task);  // keeps a reference: the task must outlive it
 
   // Takes the next state (time_s non-decreasing). The first state starts step 0; a step that
@@ -63,6 +66,7 @@ class TaskProgress {
   double out_of_plane_since_s_ = std::numeric_limits<double>::quiet_NaN();  // the tip in tissue, out of the slice
   uint32_t punctured_before_ = 0;  // the previous state's punctured layers
   int bone_before_ = -1;           // and the rigid layer it touched
+  double bone_left_s_ = -1.0;      // when the tip last left a rigid layer (-1: never on one)
 };
 
 }  // namespace needle::training
