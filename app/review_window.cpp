@@ -80,6 +80,8 @@ int run_review_window(const ReviewOptions& options) {
   bool playing = false;
   ui::DetailOptions detail;
   detail.show_export = true;
+  ui::TimeSpan span;  // the plots' time range, the whole session at first
+  detail.span = &span;
 
   WindowFrames frames(options.frames, options.screenshot);
   while (!window.should_close()) {
@@ -93,6 +95,7 @@ int run_review_window(const ReviewOptions& options) {
       cursor.reset();
       playing = false;
       detail.export_message.clear();
+      span = {};
       t = a.review ? a.review->end_s() : 0.0;
       renderer.wait_idle();  // the old ultrasound view's image may still be drawn in flight
       ultrasound.reset();
@@ -147,7 +150,7 @@ int run_review_window(const ReviewOptions& options) {
       }
       if (b.review) {
         bool open = true;
-        ui::draw_comparison(*a.review, *b.review, {ImVec2(left, 0), ImVec2(w - left, h - bar)}, &open);
+        ui::draw_comparison(*a.review, *b.review, {ImVec2(left, 0), ImVec2(w - left, h - bar)}, &open, &span);
         if (!open) table.compared = 0;
       }
     } else {

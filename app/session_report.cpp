@@ -25,10 +25,21 @@ ui::PanelRect whole(engine::Extent e) { return {ImVec2(0, 0), ImVec2(float(e.wid
 
 }  // namespace
 
-int write_session_report(const fs::path& db, int64_t id, const fs::path& out, std::optional<double> at) {
+int write_session_report(const fs::path& db, int64_t id, const fs::path& out, std::optional<double> at,
+                         ui::TimeSpan plots) {
   const std::unique_ptr<training::SessionStore> store = open_existing_db(db);
   const training::SessionReview review = training::load_session_review(*store, db, id);
   const training::SessionInfo& info = review.stored.info;
+  if (plots.chosen() && review.has_recording()) {  // checked before anything is written
+    if (plots.hi < review.start_s() || plots.lo > review.end_s()) {
+      std::fprintf(stderr, "needle-sim report: the plots' range %g to %g s lies outside the recording (%.3f to %.3f s)\n",
+                   plots.lo, plots.hi, review.start_s(), review.end_s());
+      return 1;
+    }
+    plots = ui::clamped({std::max(plots.lo, review.start_s()), std::min(plots.hi, review.end_s())},
+                        {review.start_s(), review.end_s()});
+    std::printf("plots from %.3f to %.3f s\n", plots.lo, plots.hi);
+  }
   const fs::path json = training::export_session(review.stored, out);
   std::printf("wrote %s and %s\n", json.c_str(), fs::path(json).replace_extension(".csv").c_str());
   if (!info.complete) {
@@ -47,7 +58,8 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
                 }));
   const double t = std::clamp(at.value_or(review.end_s()), review.start_s(), review.end_s());
   write_picture(out / "review_detail.png", ui::panel_picture(device, detail_size, [&] {
-                  ui::draw_session_detail(review, {t, false, ""}, whole(detail_size));
+                  ui::DetailOptions options{t, false, "", plots.chosen() ? &plots : nullptr};
+                  ui::draw_session_detail(review, options, whole(detail_size));
                 }));
   if (!review.has_recording()) {
     // Sessions stored before runs kept recordings have none: not an error. A named one that
@@ -58,15 +70,16 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
     return 1;
   }
   for (const std::string& note : review.recording_notes) std::printf("note: %s\n", note.c_str());
+  std::printf("%s\n", training::describe(review.loop).c_str());
   const char* const names[] = {"plot_force.png", "plot_lateral_load.png", "plot_depth.png", "plot_tracking_error.png"};
-  const std::vector<const training::Plot*> plots = review.plots.all();
-  for (size_t k = 0; k < plots.size(); ++k) {
-    if (plots[k]->lines.empty()) {
-      std::printf("no %s: %s\n", names[k], plots[k]->missing.c_str());
+  const std::vector<const training::Plot*> all = review.plots.all();
+  for (size_t k = 0; k < all.size(); ++k) {
+    if (all[k]->lines.empty()) {
+      std::printf("no %s: %s\n", names[k], all[k]->missing.c_str());
       continue;
     }
     write_picture(out / names[k], ui::panel_picture(device, plot_size, [&] {
-                    ui::draw_plot_window(review, *plots[k], whole(plot_size));
+                    ui::draw_plot_window(review, *all[k], whole(plot_size), plots);
                   }));
   }
   if (!review.task) {

@@ -141,6 +141,7 @@ void recording_line(const training::SessionReview& r) {
   const char* note = !end.checksummed ? " (older format, no checksums)" : !end.closed ? " (cut short: read up to its last whole block)" : "";
   ImGui::TextColored(kDim, "recording %s: %zu samples, %.2f to %.2f s%s", r.recording_file.filename().c_str(),
                      r.states.size(), r.start_s(), r.end_s(), note);
+  ImGui::TextColored(r.loop.degraded() ? kWarn : kDim, "%s", training::describe(r.loop).c_str());
 }
 
 const char* step_at(const training::SessionReview& r, double t) {
@@ -149,6 +150,27 @@ const char* step_at(const training::SessionReview& r, double t) {
     if (steps[k].record.start_s <= t) return steps[k].id.c_str();
   }
   return "-";
+}
+
+// The time range typed as two numbers, and a button back to the whole session.
+void span_row(const training::SessionReview& r, TimeSpan& span) {
+  const TimeSpan whole{r.start_s(), r.end_s()};
+  TimeSpan shown = clamped(span, whole);
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("plots from");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90.0f);
+  bool edited = ImGui::InputDouble("##from", &shown.lo, 0.0, 0.0, "%.2f s");
+  ImGui::SameLine();
+  ImGui::TextUnformatted("to");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90.0f);
+  edited |= ImGui::InputDouble("##to", &shown.hi, 0.0, 0.0, "%.2f s");
+  if (edited && shown.chosen()) span = clamped(shown, whole);
+  ImGui::SameLine();
+  if (ImGui::Button("Whole session")) span = {};
+  ImGui::SameLine();
+  ImGui::TextDisabled("(over a plot: wheel zooms, drag pans)");
 }
 
 }  // namespace
@@ -241,7 +263,9 @@ bool draw_session_detail(const training::SessionReview& r, const DetailOptions& 
     PlotOptions plot;
     plot.cursor_s = r.has_recording() ? std::optional<double>(o.cursor_s) : std::nullopt;
     plot.steps = &r.stored.steps;
+    plot.span = o.span;
     if (r.has_recording()) {  // else the recording line says why there are none
+      if (o.span) span_row(r, *o.span);
       for (const training::Plot* p : r.plots.all()) draw_plot(*p, plot);
     }
   }
@@ -271,7 +295,8 @@ bool draw_replay_bar(const training::SessionReview& r, double& t, bool playing, 
   return playing;
 }
 
-void draw_comparison(const training::SessionReview& a, const training::SessionReview& b, const PanelRect& at, bool* open) {
+void draw_comparison(const training::SessionReview& a, const training::SessionReview& b, const PanelRect& at, bool* open,
+                     TimeSpan* span) {
   if (begin_panel("Compare A and B", at, open)) {
     const training::SessionInfo &ia = a.stored.info, &ib = b.stored.info;
     ImGui::Text("A: session %lld, %s, %s", static_cast<long long>(ia.id), ia.trainee.c_str(), ia.task.c_str());
@@ -301,10 +326,12 @@ void draw_comparison(const training::SessionReview& a, const training::SessionRe
       ImGui::EndTable();
     }
     ImGui::Separator();
+    if (span) span_row(a, *span);
     const std::vector<const training::Plot*> pa = a.plots.all(), pb = b.plots.all();
     for (size_t k = 0; k < pa.size(); ++k) {
       PlotOptions o;
       o.height = 120.0f;
+      o.span = span;
       if (pa[k]->unit == pb[k]->unit) {
         o.other = pb[k];
         draw_plot(*pa[k], o);
@@ -317,9 +344,10 @@ void draw_comparison(const training::SessionReview& a, const training::SessionRe
   ImGui::End();
 }
 
-void draw_plot_window(const training::SessionReview& r, const training::Plot& plot, const PanelRect& at) {
+void draw_plot_window(const training::SessionReview& r, const training::Plot& plot, const PanelRect& at, TimeSpan span) {
   if (begin_panel(plot.title.c_str(), at)) {
     PlotOptions o;
+    o.span = &span;
     o.height = std::max(80.0f, ImGui::GetContentRegionAvail().y - 2.0f * ImGui::GetTextLineHeightWithSpacing());
     o.steps = &r.stored.steps;
     draw_plot(plot, o);

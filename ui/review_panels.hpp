@@ -11,6 +11,7 @@
 
 #include "training/sessions/session_review.hpp"
 #include "training/sessions/session_table.hpp"
+#include "ui/time_span.hpp"
 
 namespace needle::ui {
 
@@ -33,6 +34,9 @@ struct DetailOptions {
   double cursor_s = 0.0;         // the replay's time, drawn on the plots
   bool show_export = false;      // the export button (the window; the report exports by itself)
   std::string export_message;    // what the last export did
+  // The plots' time range, one for all of them; with it the panel has a row to type it and a
+  // button back to the whole session, and the plots zoom and pan (ui/review_plot.hpp).
+  TimeSpan* span = nullptr;
 };
 
 // Returns true when the export button was pressed.
@@ -43,9 +47,12 @@ bool draw_replay_bar(const training::SessionReview& review, double& t_s, bool pl
 
 // Sessions A and B together: their scores and overall metrics side by side, their plots overlaid.
 // With `open`, the window has a close button that clears it.
-void draw_comparison(const training::SessionReview& a, const training::SessionReview& b, const PanelRect& at, bool* open = nullptr);
+// `span`: the plots' time range, as in DetailOptions.
+void draw_comparison(const training::SessionReview& a, const training::SessionReview& b, const PanelRect& at,
+                     bool* open = nullptr, TimeSpan* span = nullptr);
 
-// One plot filling a window: the report's plot pictures.
-void draw_plot_window(const training::SessionReview& review, const training::Plot& plot, const PanelRect& at);
+// One plot filling a window: the report's plot pictures, of the time range `span` (unchosen: the whole).
+void draw_plot_window(const training::SessionReview& review, const training::Plot& plot, const PanelRect& at,
+                      TimeSpan span = {});
 
 }  // namespace needle::ui

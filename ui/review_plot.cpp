@@ -32,6 +32,36 @@ std::string number(double v) {
   return text;
 }
 
+// The samples of `s` inside [span.lo, span.hi], with one more on either side so that the line
+// runs to the plot's edges.
+training::Series visible(const training::Series& s, const TimeSpan& span) {
+  const auto first = std::lower_bound(s.t.begin(), s.t.end(), span.lo);
+  const auto last = std::upper_bound(first, s.t.end(), span.hi);
+  const size_t i0 = size_t(std::max<std::ptrdiff_t>(first - s.t.begin() - 1, 0));
+  const size_t i1 = std::min(size_t(last - s.t.begin()) + 1, s.t.size());
+  return {s.name, {s.t.begin() + std::ptrdiff_t(i0), s.t.begin() + std::ptrdiff_t(i1)},
+          {s.v.begin() + std::ptrdiff_t(i0), s.v.begin() + std::ptrdiff_t(i1)}};
+}
+
+// The wheel, the drag and the double click over the plot's rectangle [p0, p1] => the next frame's span.
+void zoom_and_pan(const training::Plot& plot, TimeSpan& span, const TimeSpan& shown, const TimeSpan& whole, ImVec2 p0,
+                  ImVec2 p1) {
+  const ImVec2 back = ImGui::GetCursorScreenPos();
+  ImGui::SetCursorScreenPos(p0);
+  ImGui::PushID(&plot);
+  ImGui::InvisibleButton("##span", ImVec2(p1.x - p0.x, p1.y - p0.y));
+  ImGui::PopID();
+  const ImGuiIO& io = ImGui::GetIO();
+  const double seconds_per_pixel = shown.width() / double(p1.x - p0.x);
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
+    const double t = shown.lo + double(io.MousePos.x - p0.x) * seconds_per_pixel;
+    span = zoomed(shown, whole, t, std::pow(0.8, double(io.MouseWheel)));  // a notch: a fifth narrower
+  }
+  if (ImGui::IsItemActive() && io.MouseDelta.x != 0.0f) span = panned(shown, whole, -double(io.MouseDelta.x) * seconds_per_pixel);
+  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) span = {};
+  ImGui::SetCursorScreenPos(back);
+}
+
 void dashed_vertical(ImDrawList* draw, float x, float top, float bottom, ImU32 colour) {
   for (float y = top; y < bottom; y += 6.0f) draw->AddLine(ImVec2(x, y), ImVec2(x, std::min(y + 3.0f, bottom)), colour);
 }
@@ -52,13 +82,26 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
     for (size_t i = 0; i < o.other->lines.size(); ++i) lines.push_back({&o.other->lines[i], kLinesB[i % 2]});
   }
   Range x, y;
-  y.add(0.0);  // every plotted quantity is read from zero
   for (const auto& [series, colour] : lines) {
     for (double t : series->t) x.add(t);
-    for (double v : series->v) y.add(v);
   }
-  for (const training::Guide& g : plot.guides) y.add(g.value);
   if (!(x.hi > x.lo)) x.hi = x.lo + 1.0;
+  const TimeSpan whole{x.lo, x.hi}, shown = o.span ? clamped(*o.span, whole) : whole;
+  x.lo = shown.lo;
+  x.hi = shown.hi;
+  std::vector<std::pair<training::Series, ImU32>> in_span;
+  y.add(0.0);  // every plotted quantity is read from zero
+  for (const auto& [series, colour] : lines) {
+    in_span.push_back({visible(*series, shown), colour});
+    for (size_t i = 0; i < in_span.back().first.t.size(); ++i) {
+      const double t = in_span.back().first.t[i];
+      if (t >= shown.lo && t <= shown.hi) y.add(in_span.back().first.v[i]);
+    }
+  }
+  // Zoomed in, y fits the lines alone (a limit far above them would flatten what the zoom is for).
+  if (shown.width() >= whole.width()) {
+    for (const training::Guide& g : plot.guides) y.add(g.value);
+  }
   if (!(y.hi > y.lo)) y.hi = y.lo + 1.0;
   const double pad = 0.05 * (y.hi - y.lo);
   y.lo -= y.lo < 0.0 ? pad : 0.0;
@@ -70,6 +113,7 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
   const ImVec2 p0(origin.x + left, origin.y + 4.0f), p1(origin.x + width - right, origin.y + o.height - bottom);
   auto sx = [&](double t) { return float(p0.x + (t - x.lo) / (x.hi - x.lo) * (p1.x - p0.x)); };
   auto sy = [&](double v) { return float(p1.y - (v - y.lo) / (y.hi - y.lo) * (p1.y - p0.y)); };
+  if (o.span) zoom_and_pan(plot, *o.span, shown, whole, p0, p1);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(p0, p1, IM_COL32(22, 22, 28, 255));
   for (double v : training::axis_ticks(y.lo, y.hi, 4)) {
@@ -99,11 +143,11 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
     draw->AddText(ImVec2(p1.x - size.x - 2.0f, above < p0.y ? sy(g.value) + 1.0f : above), kGuide, g.label.c_str());
   }
   std::vector<ImVec2> points;
-  for (const auto& [series, colour] : lines) {
-    const training::Series shown = decimate(*series, size_t(std::max(1.0f, p1.x - p0.x)));
+  for (const auto& [series, colour] : in_span) {
+    const training::Series drawn = decimate(series, size_t(std::max(1.0f, p1.x - p0.x)));
     points.clear();
-    for (size_t i = 0; i < shown.t.size(); ++i) {
-      if (std::isfinite(shown.v[i])) points.push_back(ImVec2(sx(shown.t[i]), sy(shown.v[i])));
+    for (size_t i = 0; i < drawn.t.size(); ++i) {
+      if (std::isfinite(drawn.v[i])) points.push_back(ImVec2(sx(drawn.t[i]), sy(drawn.v[i])));
     }
     if (points.size() > 1) draw->AddPolyline(points.data(), int(points.size()), colour, 0, 1.5f);
   }

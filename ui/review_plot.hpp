@@ -8,6 +8,7 @@
 
 #include "training/scoring/score.hpp"
 #include "training/sessions/session_series.hpp"
+#include "ui/time_span.hpp"
 
 namespace needle::ui {
 
@@ -16,6 +17,9 @@ struct PlotOptions {
   std::optional<double> cursor_s;                // the replay's time
   const std::vector<training::StepResult>* steps = nullptr;  // their start times, as dashed lines
   const training::Plot* other = nullptr;                   // session B's lines, drawn over (comparison)
+  // The time range shown, y scaled to what lies in it; over the plot the wheel zooms it about the
+  // pointer, a drag pans it and a double click shows the whole plot again. Null: the whole plot.
+  TimeSpan* span = nullptr;
 };
 
 void draw_plot(const training::Plot& plot, const PlotOptions& options = {});

@@ -71,6 +71,22 @@ TEST_F(ReviewPanels, SessionDetailWithPlotsMatchesGolden) {
                              "panel_review_detail"));
 }
 
+// Zoomed into two seconds: the time axes read 10 to 12 s, each y axis is scaled to the lines in
+// them (the force's 3 N safe limit no longer flattens the 0.3 N the hand feels), and the row above
+// the plots shows the range.
+TEST_F(ReviewPanels, SessionDetailZoomedIntoTwoSecondsMatchesGolden) {
+  const training::SessionReview r = review(good_.id);
+  ASSERT_TRUE(r.has_recording());
+  ui::TimeSpan span{10.0, 12.0};
+  const engine::Extent size{720, 1340};
+  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] {
+                               ui::draw_session_detail(r, {11.0, false, "", &span}, whole(size));
+                             }),
+                             "panel_review_detail_zoomed"));
+  EXPECT_DOUBLE_EQ(span.lo, 10.0);  // no pointer over the plots: the range is as it was
+  EXPECT_DOUBLE_EQ(span.hi, 12.0);
+}
+
 TEST_F(ReviewPanels, SessionWithoutRecordingSaysSo) {
   const training::SessionReview r = review(3);
   EXPECT_FALSE(r.has_recording());

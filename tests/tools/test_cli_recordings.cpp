@@ -9,11 +9,13 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "cli_process.hpp"
 #include "haptics/recording/session_format.hpp"
+#include "haptics/recording/session_recorder.hpp"
 #include "tests/support/process_folder.hpp"
 #include "training/sessions/session_store.hpp"
 
@@ -187,6 +189,58 @@ TEST(CliRecordings, AReplayScoresTheTaskAsRecordedNotAsItsFileIsNow) {
   nlohmann::json a = live, b = *r.score;
   a.erase("recording"), b.erase("recording");
   EXPECT_EQ(a, b);
+}
+
+// `from` written again as `to` through the recorder (checksums and end mark as a run writes them),
+// with `edit` applied to its context's scenario gains.
+void rewrite_gains(const fs::path& from, const fs::path& to, const std::function<void(nlohmann::json&)>& edit) {
+  haptics::Session session = haptics::read_session(from.string());
+  nlohmann::json context = nlohmann::json::parse(session.header.context);
+  edit(context["scenario"]["gains"]);
+  session.header.context = context.dump();
+  haptics::SpscRing<haptics::TickSample> ring(session.records.size() + 1);
+  haptics::SessionRecorder recorder(to.string(), session.header, ring);
+  for (const haptics::TickSample& record : session.records) ASSERT_TRUE(ring.push(record));
+  recorder.stop(session.end.ran_to_end);
+  ASSERT_EQ(recorder.error(), "");
+}
+
+// A recording made before issue 13's tool law has no "law" in its context's gains: it replays
+// under the thesis law it was made with and scores as it did then. Made here as such a recording
+// was: a run under the thesis law whose context then loses the key. The control: the same
+// recording naming the tool law scores otherwise, so the replay does depend on the law.
+TEST(CliRecordings, ARecordingMadeBeforeTheToolLawReplaysUnderTheThesisLaw) {
+  const fs::path dir = process_folder(test_output_dir("cli_recordings") / "old_law");
+  nlohmann::json scenario = nlohmann::json::parse(std::ifstream(source_dir() / "assets/scenarios/holonomic_sphere.json"));
+  for (const char* key : {"master_urdf", "virtual_urdf"})
+    scenario[key] = (source_dir() / "assets/scenarios" / scenario[key].get<std::string>()).lexically_normal().string();
+  scenario["gains"]["law"] = "thesis";
+  std::ofstream(dir / "thesis_scenario.json") << scenario.dump(2);
+  nlohmann::json task = nlohmann::json::parse(std::ifstream(source_dir() / "assets/tasks/rigid_sphere.json"));
+  task["scene"] = (source_dir() / "assets/tasks" / task["scene"].get<std::string>()).lexically_normal().string();
+  task["scenario"] = (dir / "thesis_scenario.json").string();
+  const fs::path task_file = dir / "rigid_thesis.json";
+  std::ofstream(task_file) << task.dump(2);
+  fs::copy_file(source_dir() / "assets/tasks/rigid_sphere_good.json", dir / "good.json", fs::copy_options::overwrite_existing);
+  const fs::path recording = live_run(dir, task_file.string(), (dir / "good.json").string());
+  ASSERT_FALSE(recording.empty());
+  nlohmann::json live = nlohmann::json::parse(std::ifstream(dir / "live" / "score.json"));
+  live.erase("recording");
+
+  rewrite_gains(recording, dir / "before_the_tool_law.rec", [](nlohmann::json& gains) { gains.erase("law"); });
+  rewrite_gains(recording, dir / "named_tool.rec", [](nlohmann::json& gains) { gains["law"] = "tool"; });
+  const RunOutput old = replay(dir / "before_the_tool_law.rec", dir / "old", dir / "sessions.db");
+  ASSERT_EQ(old.process.exit_code, 0) << old.process.output;
+  ASSERT_TRUE(old.score);
+  nlohmann::json replayed = *old.score;
+  replayed.erase("recording");
+  EXPECT_EQ(replayed, live);
+  const RunOutput tool = replay(dir / "named_tool.rec", dir / "tool", dir / "sessions.db");
+  ASSERT_EQ(tool.process.exit_code, 0) << tool.process.output;
+  ASSERT_TRUE(tool.score);
+  nlohmann::json other = *tool.score;
+  other.erase("recording");
+  EXPECT_NE(other["metrics"], live["metrics"]);
 }
 
 TEST(CliRecordings, WhatIsNotARecordingIsRefusedAtOnce) {

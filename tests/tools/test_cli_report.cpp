@@ -44,6 +44,10 @@ TEST_F(CliReport, WritesMetricsPlotsAndPanels) {
   const ProcessResult r = report(good_.id, out);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  // An offline run ticks unpaced at the scenario's 2 ms: its loop reads as on time.
+  EXPECT_NE(r.output.find("haptic loop 500.0 Hz (nominal 500), period p99 2.00 ms, worst 2.00 ms, 0 late ticks"),
+            std::string::npos)
+      << r.output;
   const std::string stem = "session_" + std::to_string(good_.id);
   const nlohmann::json j = nlohmann::json::parse(std::ifstream(out / (stem + ".json")));
   EXPECT_DOUBLE_EQ(j["score"].get<double>(), good_.result.score.total);
@@ -62,6 +66,32 @@ TEST_F(CliReport, WritesMetricsPlotsAndPanels) {
     EXPECT_TRUE(fs::is_regular_file(out / panel)) << panel;
   }
   EXPECT_EQ(engine::read_png(out / "review_replay.png").width, 1280u);
+}
+
+// --from/--to: the plots of a time range; a range reaching past the recording is cut to it and
+// said; one outside it is an error before anything is written.
+TEST_F(CliReport, PlotsOfATimeRange) {
+  const fs::path out = dir_ / "zoomed";
+  fs::remove_all(out);
+  const std::string base = "report --session " + std::to_string(good_.id) + " --db " + quoted(db_) + " --out ";
+  const ProcessResult r = run_needle_sim(base + quoted(out) + " --from 10 --to 12");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("plots from 10.000 to 12.000 s"), std::string::npos) << r.output;
+  for (const char* plot : kPlots) EXPECT_TRUE(fs::is_regular_file(out / plot)) << plot;
+  const ProcessResult tail = run_needle_sim(base + quoted(dir_ / "tail") + " --from 12");
+  ASSERT_EQ(tail.exit_code, 0) << tail.output;
+  EXPECT_NE(tail.output.find("plots from 12.000 to "), std::string::npos) << tail.output;
+
+  const fs::path never = dir_ / "never";
+  fs::remove_all(never);
+  const ProcessResult outside = run_needle_sim(base + quoted(never) + " --from 5000 --to 6000");
+  EXPECT_EQ(outside.exit_code, 1) << outside.output;
+  EXPECT_NE(outside.output.find("the plots' range 5000 to 6000 s lies outside the recording"), std::string::npos)
+      << outside.output;
+  EXPECT_FALSE(fs::exists(never));
+  const ProcessResult backwards = run_needle_sim(base + quoted(never) + " --from 12 --to 10");
+  EXPECT_EQ(backwards.exit_code, 2) << backwards.output;
+  EXPECT_NE(backwards.output.find("--to must be later than --from"), std::string::npos) << backwards.output;
 }
 
 TEST_F(CliReport, IncompleteSessionExportsWhatIsStoredAndSaysSo) {

@@ -151,10 +151,14 @@ int run_bench_loop(ArgList& args) {
   run_all(false);
   if (with_load) {
     std::atomic<bool> stop{false};
-    std::thread renderer([&stop] { (*render_load())(stop); });
+    long frames = 0;
+    const auto start = std::chrono::steady_clock::now();
+    std::thread renderer([&stop, &frames] { frames = (*render_load())(stop); });
     run_all(true);
     stop = true;
     renderer.join();
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("render load: %ld trainee frames in %.1f s (%.1f per second)\n", frames, s, double(frames) / s);
   }
   std::printf("%s\n", realtime_line.c_str());
   table.emit("haptic loop vs bare clock_nanosleep loop (period error = |period - nominal|)", json);
@@ -169,7 +173,8 @@ const CommandRegistrar reg{
      "  --device       sim:SCENARIO.json (default: the nonholonomic scenario, master simulated, controller\n"
      "                 stepping) or mouse (no step: the loop's own machinery only)\n"
      "  --seconds      measuring time per row (after 0.2 s of settling)\n"
-     "  --render-load  repeat every row while the renderer draws as fast as it can\n"
+     "  --render-load  repeat every row while the trainee's frame (the penetrable task's scene, panels and\n"
+     "                 guidance, 1280x720 offscreen) is drawn as fast as it can\n"
      "  --json FILE    also write the rows as JSON",
      run_bench_loop}};
 

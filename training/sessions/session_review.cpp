@@ -36,6 +36,7 @@ SessionReview load_session_review(const SessionStore& store, const fs::path& db_
       samples = std::move(session.records);
       r.recording_end = session.end;
       r.recording_notes = haptics::recording_notes(r.recording_file.string(), session.end, samples.size());
+      r.loop = loop_health(samples, session.header.rate_hz);
       if (samples.empty()) r.recording_problem = r.recording_file.string() + ": the recording has no samples";
     } catch (const std::exception& e) {
       r.recording_problem = e.what();

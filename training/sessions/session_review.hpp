@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "haptics/recording/session_format.hpp"
+#include "training/sessions/loop_health.hpp"
 #include "training/sessions/session_series.hpp"
 #include "training/sessions/session_store.hpp"
 
@@ -24,6 +25,7 @@ struct SessionReview {
   std::string recording_problem;               // why `states` is empty ("no recording", unreadable...)
   haptics::RecordingEnd recording_end;         // closed, or cut short (the run was killed), or unchecked
   std::vector<std::string> recording_notes;    // what to tell the reader about it (haptics::recording_notes)
+  LoopHealth loop;                             // how the haptic loop kept time while it recorded
   SessionPlots plots;
 
   bool has_recording() const { return recording_problem.empty(); }
