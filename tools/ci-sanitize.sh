@@ -15,7 +15,7 @@ fuzz_seconds=${FUZZ_SECONDS:-20}
 # times slower (Eigen's small matrices, no longer inlined), a session of minutes.
 suites='BenchPrecision|BenchStability|PenaltyOnRobot|ControllerLoop|DeviceSim|RealtimeLoop|RealtimeTaskSpace'
 suites+='|SimHolonomic|SimNonholonomic|SimFeel|TissueInsertion|TissueSnapshot|RealtimeNoAlloc'
-suites+='|SessionLimits|SessionReviewTest|SessionStoreFailure|ShippedTasks/ScriptedSessions|ReviewPanels'
+suites+='|SessionLimits|SessionReviewTest|SessionStoreFailure|ShippedTasks/ScriptedSessions|LayeredSessions|ReviewPanels'
 suites+='|CliBench[A-Za-z]*|CliHapticsBench|CliHapticsSimulate|CliRecordings|CliReport|CliRunDevices|CliRunTask|CliWrites|Tasks/RunReplay'
 tests='BenchTickAllocations\.(NonholonomicContact|LayeredTissue)TickAllocatesNothing|RecordingReplay\.ControllerReplayIsBitForBit'
 tests+='|SimComponents\.DeviceEnergyBalancesTheWorkDoneOnIt|CliStartScreen\.(ATraineeStarts|TheKeyboards|TheScorePanels)[A-Za-z]*'

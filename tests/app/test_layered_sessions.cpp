@@ -53,14 +53,13 @@ TEST(LayeredSessions, EpiduralGoodReachesTheLossOfResistanceSloppyMeetsTheLamina
   const RecordedSession good = record_session(dir / "sessions.db", {"epidural", "good", "ana", true});
   const RecordedSession sloppy = record_session(dir / "sessions.db", {"epidural", "sloppy", "bo", true});
   std::cout << "epidural good: " << report(good.result) << "\nepidural sloppy: " << report(sloppy.result) << "\n";
-  // Both reach the loss of resistance: the flavum's puncture is the largest peak of the approach.
-  for (const RecordedSession* s : {&good, &sloppy}) {
-    const auto& p = s->result.punctures;
-    const auto flavum = std::find_if(p.begin(), p.end(), [](const auto& x) { return x.layer == "ligamentum flavum"; });
-    ASSERT_NE(flavum, p.end()) << report(s->result);
-    for (const training::PunctureResult& other : p)
-      if (other.layer != "dura") EXPECT_LE(other.peak_force_N, flavum->peak_force_N) << other.layer;
-  }
+  // The good run reaches the loss of resistance: the flavum's puncture is the largest peak of the
+  // approach (the dura, past it, aside).
+  const auto& p = good.result.punctures;
+  const auto flavum = std::find_if(p.begin(), p.end(), [](const auto& x) { return x.layer == "ligamentum flavum"; });
+  ASSERT_NE(flavum, p.end()) << report(good.result);
+  for (const training::PunctureResult& other : p)
+    if (other.layer != "dura") EXPECT_LE(other.peak_force_N, flavum->peak_force_N) << other.layer;
   EXPECT_FALSE(sloppy.result.score.passed) << report(sloppy.result);
   EXPECT_GE(sloppy.result.overall.bone_contacts, 1u) << report(sloppy.result);  // the upper lamina
   EXPECT_GT(good.result.score.total, sloppy.result.score.total) << report(good.result) << "\n" << report(sloppy.result);
