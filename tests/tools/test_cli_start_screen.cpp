@@ -116,10 +116,11 @@ TEST(CliStartScreen, ATraineeStartsTheTaskWithTheMouseAndFinishesItPivotIncluded
   const fs::path plan = user.root / "plan.xdo";
   std::ofstream(plan) << mouse_plan_script();
   const ProcessResult r = drive(user, open_start_screen(user)
-                                          // The name field has the keyboard: type, Esc leaves it; Down and Up
-                                          // come back to the first task, Left from the keyboard to the mouse.
+                                          // The name field has the keyboard: type, Esc leaves it; Down twice
+                                          // from the first task (epidural, layered_target, then
+                                          // penetrable_sphere), Left from the keyboard to the mouse.
                                           + "xdotool type --delay 50 'ana b'; sleep 0.5; xdotool key Escape; sleep 0.5\n" +
-                                          "xdotool key --delay 300 Down Up Left; sleep 0.5; xdotool key Return\n" +
+                                          "xdotool key --delay 300 Down Down Left; sleep 0.5; xdotool key Return\n" +
                                           wait_for("^real-time: ", 60, "the task did not start") + "sleep 1\n" +
                                           "sed \"s/WID/$id/\" " + quoted(plan) + " | xdotool -\n" +
                                           wait_for("^score ", 30, "the task did not end") +
