@@ -31,7 +31,7 @@ bool says(const training::SessionResult& r, const std::string& reason) {
                      [&](const std::string& why) { return why.find(reason) != std::string::npos; });
 }
 
-TEST(LayeredSessions, LayeredTargetGoodPassesSloppyTouchesTheBoneAndFails) {
+TEST(LayeredSessions, LayeredTargetGoodCompletesEveryStepSloppyTouchesTheBoneAndFails) {
   const std::filesystem::path dir = process_folder(output_dir() / "layered_sessions" / "layered_target");
   const RecordedSession good = record_session(dir / "sessions.db", {"layered_target", "good", "ana", true});
   const RecordedSession sloppy = record_session(dir / "sessions.db", {"layered_target", "sloppy", "bo", true});
