@@ -120,7 +120,7 @@ TEST(CliStartScreen, ATraineeStartsTheTaskWithTheMouseAndFinishesItPivotIncluded
                                           // from the first task (epidural, layered_target, then
                                           // penetrable_sphere), Left from the keyboard to the mouse.
                                           + "xdotool type --delay 50 'ana b'; sleep 0.5; xdotool key Escape; sleep 0.5\n" +
-                                          "xdotool key --delay 300 Down Down Left; sleep 0.5; xdotool key Return\n" +
+                                          "xdotool key Down; sleep 0.7; xdotool key Down; sleep 0.7; xdotool key Left; sleep 0.7; xdotool key Return\n" +
                                           wait_for("^real-time: ", 60, "the task did not start") + "sleep 1\n" +
                                           "sed \"s/WID/$id/\" " + quoted(plan) + " | xdotool -\n" +
                                           wait_for("^score ", 30, "the task did not end") +
