@@ -164,12 +164,12 @@ int run_review_window(const ReviewOptions& options) {
     }
     const bool replaying = a.review && a.review->has_recording() && scene_error.empty() && !b.review;
     const engine::NeedleLoad* needle = replaying ? &cursor.at(a.review->states, t) : nullptr;
-    if (needle && ultrasound) {
-      ultrasound->place(w - 10.0f, 10.0f, 1.0f, 0.0f);  // the 3D view's top right corner
-      ultrasound->draw_panel(*needle);
-    }
     engine::FrameParams params = scene->frame_params(needle);
     ui::frame_beside_panels(params.camera, w / h, kPanelsFraction);
+    if (needle && ultrasound) {
+      ultrasound->place(w - 10.0f, 10.0f, 1.0f, 0.0f);  // the 3D view's top right corner
+      ultrasound->draw_panel(*needle, params.camera);
+    }
     params.overlay = ui_pass.end_frame();
     if (needle && ultrasound) ultrasound->add_to_frame(params, renderer, extent, *needle);
 

@@ -23,12 +23,35 @@ bool pointer_on_panel() { return ImGui::GetCurrentContext() && ImGui::GetIO().Wa
 
 }  // namespace
 
+FrameContent with_views(const Show& show, ui::ViewState& view, const engine::SceneRenderer& renderer, const engine::RenderTarget& target) {
+  FrameContent content = show;
+  // The view panel beside the others, the ultrasound passes (only while its window is open) and
+  // the section added to the frame's parameters; the panel decides, the frame's parameters follow.
+  auto ultrasound_drawn = std::make_shared<bool>(false);
+  content.views_panel = [&view, shows_needle = bool(show.needle), ultrasound = show.ultrasound,
+                         ultrasound_drawn](const std::optional<engine::NeedleLoad>& needle, const engine::Camera& camera) {
+    *ultrasound_drawn = ultrasound && view.ultrasound && needle;
+    if (shows_needle) ui::draw_view_panel(view);  // a view of the tissue (not the start screen)
+    if (*ultrasound_drawn) ultrasound->draw_panel(*needle, camera);
+  };
+  content.add_views = [&view, &renderer, &target, ultrasound = show.ultrasound, fixed = show.fixed_section,
+                       ultrasound_drawn](engine::FrameParams& params, const std::optional<engine::NeedleLoad>& needle) {
+    if (*ultrasound_drawn) ultrasound->add_to_frame(params, renderer, target.extent(), *needle);
+    *ultrasound_drawn = false;
+    if (!view.section) return;
+    params.section = fixed.value_or(engine::section_through_needle(params.camera, needle ? &*needle : nullptr, *view.section));
+    params.section->mode = *view.section;
+  };
+  return content;
+}
+
 SessionWindow::SessionWindow(const WindowOptions& options)
     : options_(options),
       vw_("needle-sim", options.size),
       frame_(vw_.device, vw_.target, {options.msaa.value_or(vw_.default_msaa_samples()), options.hud}, &vw_.window),
       frames_(options.frames, options.screenshot),
-      view_{options.section} {}
+      view_{options.section, options.ultrasound},
+      probe_(options.probe) {}
 
 SessionWindow::~SessionWindow() { renderer().wait_idle(); }
 
@@ -45,25 +68,14 @@ void SessionWindow::frames(engine::GpuScene& scene, const Show& show, const std:
   const auto start = std::chrono::steady_clock::now();
   view_.has_ultrasound = show.ultrasound != nullptr;
   view_.ultrasound = view_.ultrasound || show.ultrasound_open;
-  // The views ride on the frame: the view panel beside the others, the ultrasound passes (only
-  // while its window is open) and the section added to the frame's parameters.
-  bool ultrasound = false;
-  FrameContent content = show;
-  content.views_panel = [&](const std::optional<engine::NeedleLoad>& needle) {
-    ultrasound = show.ultrasound && view_.ultrasound && needle;
-    if (show.needle) ui::draw_view_panel(view_);  // a view of the tissue (not the start screen)
-    if (ultrasound) show.ultrasound->draw_panel(*needle);
-  };
-  content.add_views = [&](engine::FrameParams& params, const std::optional<engine::NeedleLoad>& needle) {
-    if (ultrasound) show.ultrasound->add_to_frame(params, renderer(), vw_.target.extent(), *needle);
-    ultrasound = false;
-    if (view_.section) params.section = engine::section_through_needle(params.camera, needle ? &*needle : nullptr, *view_.section);
-  };
+  if (show.ultrasound) show.ultrasound->set_offset(probe_);
+  const FrameContent content = with_views(show, view_, renderer(), vw_.target);
   while (!vw_.window.should_close()) {
     vw_.window.poll_events();
     if (show.input) show.input(vw_.window);
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     frames_.draw(vw_.window, [&](engine::RgbaImage* shot) { return frame_.draw(vw_.target, scene, content, t, shot); });
+    if (show.ultrasound) probe_ = show.ultrasound->offset();
     if (done && done()) break;
   }
   renderer().wait_idle();
@@ -106,7 +118,7 @@ TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices
                  if (desk->take_fault_reset()) session.reset_fault();
                }),
            std::make_shared<UltrasoundWindow>(window.device(), session.task()),
-           session.task().ultrasound_probe.has_value()},
+           session.task().ultrasound_probe.has_value(), task_section(session.task(), engine::Section::Mode::Cut)},
       [&end] { return end.has_value(); });
   return end.value_or(TaskEnd::kWindowClosed);
 }

@@ -10,12 +10,15 @@
 #include <optional>
 #include <string>
 
+#include "app/probe_offset.hpp"
+#include "app/settings.hpp"
 #include "app/task_session.hpp"
 #include "app/trainee_frame.hpp"
 #include "app/ultrasound_window.hpp"
 #include "app/window_frames.hpp"
 #include "engine/extent.hpp"
 #include "engine/gpu_scene.hpp"
+#include "engine/render_target.hpp"
 #include "engine/scene.hpp"
 #include "ui/view_panel.hpp"
 
@@ -28,16 +31,27 @@ struct WindowOptions {
   std::optional<std::string> screenshot;  // save the last of `frames` as presented
   bool hud = true;                        // the panels
   std::optional<engine::Section::Mode> section;  // the section view at the start (X and the view panel change it)
+  bool ultrasound = false;                       // the ultrasound window open at the start, in a task that has one
+  ProbeOffset probe;                             // the keys' moves of a task's probe at the start
 };
 
 // What the window shows each frame: where the needle is, and a panel beside the status panel;
 // `input` takes the frame's input (the desk devices' cursor, keys and gamepad).
 // `ultrasound`: a task's ultrasound view, offered in the view panel; made on the window's device
 // and gone before it; `ultrasound_open`: open at the start (a task with a probe).
+// `fixed_section`: a task's own section plane (its mode the view's), else the plane through the needle.
 struct Show : FrameContent {
   std::shared_ptr<UltrasoundWindow> ultrasound;
   bool ultrasound_open = false;
+  std::optional<engine::Section> fixed_section;
 };
+
+// `show` with the views added as `view` has them each frame (the view panel's keys and buttons
+// change it): the view panel (when a needle is shown), the ultrasound window and its passes while
+// open, the section view (the fixed plane, else through the needle). `view`, `renderer` and
+// `target` outlive the content.
+FrameContent with_views(const Show& show, ui::ViewState& view, const engine::SceneRenderer& renderer,
+                        const engine::RenderTarget& target);
 
 // The window, kept open across what it shows (a task, the start screen and the tasks it
 // starts): its GPU device and swapchain, the trainee's frame (the renderer and the UI pass, as
@@ -56,6 +70,8 @@ class SessionWindow {
   // Draws `scene` with `show` until the window closes or, checked after each frame, `done()`.
   void run(engine::GpuScene& scene, const Show& show, const std::function<bool()>& done = {});
   long frames_drawn() const { return frames_.drawn(); }
+  // The views as the trainee left them (to keep in the settings).
+  ViewSettings views() const { return {view_.section, view_.ultrasound, probe_}; }
 
  private:
   void frames(engine::GpuScene& scene, const Show& show, const std::function<bool()>& done);
@@ -65,6 +81,7 @@ class SessionWindow {
   TraineeFrame frame_;
   WindowFrames frames_;
   ui::ViewState view_;  // the section view and the ultrasound window, kept from task to task
+  ProbeOffset probe_;   // the keys' moves of the tasks' probes, kept from task to task
 };
 
 // How a task run from the start screen ended: the score panel's choice, or the window closed.

@@ -15,6 +15,12 @@ using nlohmann::json;
 
 namespace {
 
+constexpr double kRadPerDeg = 0.017453292519943295;
+
+const char* section_name(const std::optional<engine::Section::Mode>& mode) {
+  return !mode ? "off" : *mode == engine::Section::Mode::Cut ? "cut" : "translucent";
+}
+
 struct SettingsError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -43,8 +49,33 @@ class SettingsReader : io::StrictJsonReader<SettingsError> {
       s.window.width = uint32_t(whole(member(w, "/window", "width"), "/window/width", 320, 16384));
       s.window.height = uint32_t(whole(member(w, "/window", "height"), "/window/height", 240, 16384));
     }
-    if (root.contains("views")) object(root["views"], "/views", std::initializer_list<const char*>{});
+    if (root.contains("views")) s.views = views(root["views"]);
     return s;
+  }
+
+  ViewSettings views(const json& v) const {
+    object(v, "/views", {"section", "ultrasound", "probe"});
+    ViewSettings out;
+    if (v.contains("section")) {
+      const std::string mode = string(v["section"], "/views/section");
+      if (mode == "cut") out.section = engine::Section::Mode::Cut;
+      else if (mode == "translucent") out.section = engine::Section::Mode::Translucent;
+      else if (mode != "off") fail("/views/section", "\"" + mode + "\": expected off, cut or translucent");
+    }
+    if (v.contains("ultrasound")) {
+      if (!v["ultrasound"].is_boolean()) fail("/views/ultrasound", "expected true or false");
+      out.ultrasound = v["ultrasound"].get<bool>();
+    }
+    if (v.contains("probe")) {
+      const json& p = v["probe"];
+      object(p, "/views/probe", {"along_m", "across_m", "turn_deg"});
+      // A probe stays on its task's skin: a metre either way is past any task's tissue.
+      if (p.contains("along_m")) out.probe.along_m = in_range(p["along_m"], "/views/probe/along_m", -1.0, 1.0, "[-1, 1] m");
+      if (p.contains("across_m")) out.probe.across_m = in_range(p["across_m"], "/views/probe/across_m", -1.0, 1.0, "[-1, 1] m");
+      if (p.contains("turn_deg"))
+        out.probe.turn_rad = in_range(p["turn_deg"], "/views/probe/turn_deg", -360.0, 360.0, "[-360, 360] degrees") * kRadPerDeg;
+    }
+    return out;
   }
 
   int version(const json& root) const {
@@ -103,7 +134,13 @@ void save_settings(const fs::path& file, const Settings& settings) {
   json j = {{"version", kSettingsVersion},
             {"device", settings.device},
             {"window", {{"width", settings.window.width}, {"height", settings.window.height}}},
-            {"views", json::object()}};
+            {"views",
+             {{"section", section_name(settings.views.section)},
+              {"ultrasound", settings.views.ultrasound},
+              {"probe",
+               {{"along_m", settings.views.probe.along_m},
+                {"across_m", settings.views.probe.across_m},
+                {"turn_deg", settings.views.probe.turn_rad / kRadPerDeg}}}}}};
   if (!settings.trainee.empty()) j["trainee"] = settings.trainee;
   io::write_file(file, j.dump(2) + "\n");
 }

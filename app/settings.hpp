@@ -5,19 +5,30 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
+#include "app/probe_offset.hpp"
 #include "engine/extent.hpp"
+#include "engine/scene_renderer.hpp"
 
 namespace needle::app {
 
 inline constexpr int kSettingsVersion = 1;
 
+// The views of the tissue as the trainee left them ("views": README.md, "Settings").
+struct ViewSettings {
+  std::optional<engine::Section::Mode> section;  // "section": "off", "cut" or "translucent"
+  bool ultrasound = false;                       // "ultrasound": the ultrasound window open
+  ProbeOffset probe;  // "probe": {"along_m", "across_m", "turn_deg"}, the keys' moves of a task's probe
+  bool operator==(const ViewSettings&) const = default;
+};
+
 struct Settings {
   std::string trainee;           // the last trainee; empty before the first
   std::string device = "mouse";  // the last device spec (mouse, keyboard, gamepad[:N], falcon[:N])
   engine::Extent window{1280, 720};
-  // Issue 15's views (the section view, the ultrasound) will be kept under "views".
+  ViewSettings views;
 };
 
 // $XDG_CONFIG_HOME/needle-sim/settings.json, else ~/.config/needle-sim/settings.json.

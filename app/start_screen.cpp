@@ -178,6 +178,9 @@ int run_start_screen(const StartScreenOptions& options) {
   Settings& settings = loaded.settings;
   WindowOptions window_options;
   window_options.size = settings.window;
+  window_options.section = settings.views.section;
+  window_options.ultrasound = settings.views.ultrasound;
+  window_options.probe = settings.views.probe;
   SessionWindow window(window_options);
   StartScreen screen(options, settings);
   if (!loaded.notice.empty())
@@ -186,6 +189,7 @@ int run_start_screen(const StartScreenOptions& options) {
     if (!loaded.writable) return;
     const engine::Extent size = window.window().framebuffer_extent();
     if (size.width > 0 && size.height > 0) settings.window = size;
+    settings.views = window.views();
     try {
       save_settings(options.settings, settings);
     } catch (const std::exception& e) {

@@ -219,6 +219,12 @@ void TaskSession::draw_panel(std::optional<size_t> step, const char* controls, c
   });
 }
 
+std::optional<engine::Section> task_section(const training::Task& task, engine::Section::Mode mode) {
+  if (!task.section_plane) return std::nullopt;
+  const training::Vec3 &p = task.section_plane->point, &n = task.section_plane->normal;
+  return engine::Section{mode, glm::vec3(float(p[0]), float(p[1]), float(p[2])), glm::vec3(float(n[0]), float(n[1]), float(n[2]))};
+}
+
 int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa, std::optional<engine::Section::Mode> section) {
   const fs::path out_dir = options.out_dir;
   TaskSession run(std::move(options));
@@ -237,9 +243,9 @@ int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa,
       ui.begin_frame(target.extent(), 1.0f / 60.0f);
       run.draw_panel(step);
       const engine::NeedleLoad needle = run.needle();
-      if (ultrasound) ultrasound->draw_panel(needle);
       engine::FrameParams params = scene.frame_params(&needle);
-      if (section) params.section = engine::section_through_needle(params.camera, &needle, *section);
+      if (ultrasound) ultrasound->draw_panel(needle, params.camera);
+      if (section) params.section = task_section(run.task(), *section).value_or(engine::section_through_needle(params.camera, &needle, *section));
       params.overlay = ui.end_frame();
       if (ultrasound) ultrasound->add_to_frame(params, renderer, target.extent(), needle);
       renderer.draw(target, params, frame == 1 ? &image : nullptr);

@@ -103,10 +103,14 @@ class TaskSession {
 // the same second in this process. Makes the folder.
 std::filesystem::path new_recording_path(const std::filesystem::path& db, const std::string& task_name);
 
+// The section view's plane a task fixes, in `mode` (docs/TASKS.md, "Section"); nullopt when the
+// task fixes none (the view then cuts through the needle).
+std::optional<engine::Section> task_section(const training::Task& task, engine::Section::Mode mode);
+
 // Headless: runs the session through, writing OUT/step_<n>_<id>.png as each step ends,
 // OUT/final.png and OUT/score_panel.png; in a task with an ultrasound probe also the probe's
 // image, OUT/ultrasound_step_<n>.png and OUT/ultrasound_final.png. Returns 0.
-// With `section`, every picture shows the section view through the needle.
+// With `section`, every picture shows the section view: the task's own plane, else through the needle.
 int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa,
                       std::optional<engine::Section::Mode> section = std::nullopt);
 

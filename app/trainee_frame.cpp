@@ -79,7 +79,7 @@ bool TraineeFrame::draw(engine::RenderTarget& target, engine::GpuScene& scene, c
     ui::draw_status_panel({device_.device_description(), assets.empty() ? "" : assets[0].name,
                            renderer_.msaa_samples(), clock_.mean_frame_ms()});
     if (content.panel) content.panel();
-    if (content.views_panel) content.views_panel(needle);
+    if (content.views_panel) content.views_panel(needle, params.camera);
     params.overlay = ui_->end_frame();
   }
   if (content.add_views) content.add_views(params, needle);

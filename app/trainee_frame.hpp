@@ -27,8 +27,9 @@ struct FrameContent {
   std::function<void()> panel;
   // Takes the window's cursor and scroll before the frame, when the tool follows them.
   std::function<void(engine::Window&)> input;
-  // The views' panel, after the others (the section and ultrasound views, SessionWindow), given the needle.
-  std::function<void(const std::optional<engine::NeedleLoad>&)> views_panel;
+  // The views' panel, after the others (the section and ultrasound views, SessionWindow), given the
+  // needle and the 3D view's camera (the probe is drawn over the view).
+  std::function<void(const std::optional<engine::NeedleLoad>&, const engine::Camera&)> views_panel;
   // The views' passes and settings added to the frame's parameters once the panels are built.
   std::function<void(engine::FrameParams&, const std::optional<engine::NeedleLoad>&)> add_views;
 };

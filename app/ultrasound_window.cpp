@@ -5,6 +5,8 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "ui/probe_overlay.hpp"
+
 namespace needle::app {
 namespace {
 
@@ -13,7 +15,21 @@ constexpr double kStep_m = 0.001, kTurn_rad = 0.0872664626;  // a key press: 1 m
 }  // namespace
 
 UltrasoundWindow::UltrasoundWindow(const engine::GpuDevice& device, const training::Task& task)
-    : device_(device), scene_(echo_scene(task)), plan_(task_probe(task, scene_)) {}
+    : device_(device), scene_(echo_scene(task)), plan_(task_probe(task, scene_)), task_probe_(plan_.probe) {}
+
+void UltrasoundWindow::set_offset(const ProbeOffset& offset) {
+  offset_ = offset;  // kept as given for a probe following the needle, which it does not move
+  if (plan_.follow_needle) return;
+  const engine::UltrasoundProbe& t = task_probe_;
+  if (offset == ProbeOffset{}) {
+    plan_.probe = t;
+    return;
+  }
+  engine::UltrasoundProbe p = t;
+  p.lateral = glm::dvec3(glm::rotate(glm::dmat4(1.0), offset.turn_rad, t.direction) * glm::dvec4(t.lateral, 0.0));
+  const glm::dvec3 moved = t.position + offset.along_m * t.lateral + offset.across_m * t.elevation();
+  plan_.probe = engine::probe_on_skin(scene_, p, moved - 0.05 * p.direction);
+}
 
 UltrasoundWindow::~UltrasoundWindow() = default;
 
@@ -23,10 +39,10 @@ engine::UltrasoundProbe UltrasoundWindow::probe(const engine::NeedleLoad& needle
   return engine::probe_on_skin(scene_, over, over.position - 0.05 * over.direction);
 }
 
-void UltrasoundWindow::draw_panel(const engine::NeedleLoad& needle) {
+void UltrasoundWindow::draw_panel(const engine::NeedleLoad& needle, const engine::Camera& camera) {
   const ImGuiIO& io = ImGui::GetIO();
   if (!io.WantCaptureKeyboard && !plan_.follow_needle) {
-    engine::UltrasoundProbe& p = plan_.probe;
+    const engine::UltrasoundProbe& p = plan_.probe;
     glm::dvec3 move(0.0);
     if (ImGui::IsKeyPressed('J')) move -= kStep_m * p.lateral;
     if (ImGui::IsKeyPressed('L')) move += kStep_m * p.lateral;
@@ -35,10 +51,14 @@ void UltrasoundWindow::draw_panel(const engine::NeedleLoad& needle) {
     double turn = 0.0;
     if (ImGui::IsKeyPressed('[')) turn -= kTurn_rad;
     if (ImGui::IsKeyPressed(']')) turn += kTurn_rad;
-    if (turn != 0.0) p.lateral = glm::dvec3(glm::rotate(glm::dmat4(1.0), turn, p.direction) * glm::dvec4(p.lateral, 0.0));
-    if (move != glm::dvec3(0.0)) p = engine::probe_on_skin(scene_, p, p.position + move - 0.05 * p.direction);
+    if (turn != 0.0 || move != glm::dvec3(0.0)) {
+      // In the task probe's frame, so that the offset can be kept (app/probe_offset.hpp).
+      set_offset({offset_.along_m + glm::dot(move, task_probe_.lateral), offset_.across_m + glm::dot(move, task_probe_.elevation()),
+                  offset_.turn_rad + turn});
+    }
   }
   const engine::UltrasoundProbe shown = probe(needle);
+  ui::draw_probe(shown, camera);
   const float height = std::round(0.45f * io.DisplaySize.y);
   const float width = std::round(height * float(shown.width_m / shown.depth_m));
   // By default on the left, between the status panel above and the view panel below; the task's is on the right.

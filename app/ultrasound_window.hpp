@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "app/echo_scene.hpp"
+#include "app/probe_offset.hpp"
 #include "engine/ultrasound.hpp"
 
 namespace needle::app {
@@ -20,11 +21,16 @@ class UltrasoundWindow {
 
   // The probe of now for this needle (the task's as moved, or following the needle).
   engine::UltrasoundProbe probe(const engine::NeedleLoad& needle) const;
+  // The keys' moves of the task's probe, to keep and to set again (a probe following the needle
+  // keeps the offset it is given without using it).
+  const ProbeOffset& offset() const { return offset_; }
+  void set_offset(const ProbeOffset& offset);
   // Where the window goes: its corner `pivot` (0 to 1 of its size) at (x, y) pixels; by default
   // its left edge's middle at (10, half the height).
   void place(float x, float y, float pivot_x, float pivot_y) { placement_ = {x, y, pivot_x, pivot_y}; }
-  // Inside an ImGui frame: the window and its keys (when ImGui does not want the keyboard).
-  void draw_panel(const engine::NeedleLoad& needle);
+  // Inside an ImGui frame: the window and its keys (when ImGui does not want the keyboard), and
+  // the probe over the 3D view seen by `camera` (ui/probe_overlay.hpp).
+  void draw_panel(const engine::NeedleLoad& needle, const engine::Camera& camera);
   // This frame's image (params.before_pass) and its drawing into the window (params.overlay,
   // after what is there). Call after the UI pass's end_frame.
   void add_to_frame(engine::FrameParams& params, const engine::SceneRenderer& renderer, engine::Extent frame,
@@ -36,6 +42,8 @@ class UltrasoundWindow {
   const engine::GpuDevice& device_;
   engine::EchoScene scene_;
   ProbePlan plan_;
+  engine::UltrasoundProbe task_probe_;  // the task's, unmoved
+  ProbeOffset offset_;
   std::unique_ptr<engine::UltrasoundView> view_;  // made when first shown
   std::optional<engine::ScreenRect> rect_;        // where the window kept room, this frame
   struct Placement {

@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/extent.hpp"
@@ -154,6 +155,11 @@ class UltrasoundView {
   RgbaImage image() const;
   // The scan lines the GPU traced for the last image, read back (what trace_scan_lines computes).
   std::vector<ScanLine> scan_lines() const;
+
+  // Device time per pass of the images made from now on (timestamp queries): the last image's,
+  // pass name → ms, in order; empty with timings off or on a device without timestamps.
+  void set_device_timings(bool on);
+  std::vector<std::pair<std::string, double>> pass_ms() const;
 
   // The engine's own access (engine/ultrasound/ultrasound_pass.hpp); an incomplete type outside it.
   const UltrasoundPass& pass() const { return *pass_; }

@@ -1,6 +1,7 @@
 // One windowed regularized Kelvinlet (engine/deformation/kelvinlet.cpp, the double-precision
-// reference): shared by the deformation pass (deform.comp) and the ultrasound's scan lines
-// (ultrasound_scan.comp), which undo the tissue's displacement to find its rest position.
+// reference): shared by the deformation pass (deform.comp) and the ultrasound's passes
+// (ultrasound_lines.comp, ultrasound_echoes.comp), which undo the tissue's displacement to find
+// a sample's rest position.
 struct Load {
   vec4 center_epsilon;  // xyz centre, w regularization radius ε
   vec4 force_support;   // xyz force, w window radius R

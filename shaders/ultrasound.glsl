@@ -1,4 +1,4 @@
-// What the three ultrasound passes share (engine/ultrasound/ultrasound_pass.cpp mirrors it, std140
+// What the four ultrasound passes share (engine/ultrasound/ultrasound_pass.cpp mirrors it, std140
 // and std430): the frame's probe, needle and display settings, and the buffers between the passes.
 // The model: docs/RENDERING.md, "Ultrasound"; its double-precision reference:
 // engine/ultrasound/echo_model.cpp.
@@ -36,39 +36,71 @@ struct Primitive {
   vec4 a_kind;    // xyz a, w kind: 0 sphere, 1 plane, 2 capsule
   vec4 b_radius;  // xyz b, w radius
 };
-layout(set = 0, binding = 1, std430) readonly buffer Layers {
+// A uniform block, not a storage buffer: a CPU device (lavapipe) reads a uniform the work items
+// share once for all its SIMD lanes, where it reads a storage buffer lane by lane.
+layout(set = 0, binding = 1, std140) uniform Layers {
   Layer layers[16];
   Primitive primitives[128];
 };
 
-// Per sample, line after line: the layer holding it (-1: none) and its scatterer, a complex
-// phasor, which the scan lines then turn into the received echo (in-phase, quadrature); that echo
-// after the axial convolution; and what each scan line met (engine/ultrasound.hpp, ScanLine).
-layout(set = 0, binding = 2, std430) buffer Echoes { vec2 echoes[]; };
-layout(set = 0, binding = 3, std430) buffer Axial { vec2 axial[]; };
+// Per sample (x) of each line (y): its received echo (xy: in-phase, quadrature): the specular
+// echoes (interfaces, needle wall, reverberation) the line pass adds to the cleared image, then
+// the tissue's the per-sample pass adds; then that echo after the axial convolution. Per scan
+// line, what it met (engine/ultrasound.hpp, ScanLine) and what the per-sample pass needs to make
+// its echoes without walking the line again: the runs of samples between the line's events (an
+// interface, the needle's wall), each with its layer and the round-trip amplitude it starts with.
+// Storage images, not buffers: a CPU device (lavapipe) reads and writes an image for all its SIMD
+// lanes at once, a storage buffer lane by lane.
+layout(set = 0, binding = 2, rgba32f) uniform image2D echoes;
+layout(set = 0, binding = 3, rgba32f) uniform image2D axial;
 #define MAX_INTERFACES 24
+#define MAX_RUNS 32
 struct Interface {
   float depth;
   int from_layer;
   int to_layer;
   float pad;
 };
+// Samples [first, next run's first) lie in `layer`; the round-trip amplitude at sample j of the
+// run is amplitude · exp(−2 alpha (depth(j) − start)), start the depth the run's attenuation
+// begins at (the previous sample's, 0 for the first). Kept in `runs` (x: the run, y: the line) as
+// (first, layer, amplitude, alpha).
+struct Run {
+  uint first;
+  int layer;
+  float amplitude;
+  float alpha;
+};
+layout(set = 0, binding = 6, rgba32f) uniform image2D runs;
+void store_run(uint line, uint n, Run r) {
+  imageStore(runs, ivec2(n, line), vec4(float(r.first), float(r.layer), r.amplitude, r.alpha));
+}
+Run load_run(uint line, uint n) {
+  vec4 r = imageLoad(runs, ivec2(n, line));
+  return Run(uint(r.x), int(r.y), r.z, r.w);
+}
 struct LineRecord {
   uint count;
-  float shadow_depth;   // −1: none
+  uint shadow_sample;   // the first sample in shadow; 0xffffffff: none
   float needle_depth;
   float needle_weight;  // 0: the line misses the needle
+  uint run_count;
+  float sample_spacing;
+  uint pad0, pad1;
   Interface interfaces[MAX_INTERFACES];
 };
 layout(set = 0, binding = 4, std430) buffer Lines { LineRecord lines[]; };
 layout(set = 0, binding = 5, rgba8) uniform writeonly image2D picture;
-layout(set = 0, binding = 6, std430) buffer Cells { int cell_layers[]; };
 
 // The line's origin on the probe's face (echo_model.cpp, line_origin) and a sample's depth.
 vec3 line_origin(uint line) {
   return echo.origin.xyz + ((float(line) + 0.5) * echo.image.w - 0.5 * echo.image.y) * echo.lateral.xyz;
 }
 float sample_depth(uint j) { return (float(j) + 0.5) * echo.image.z; }
+// Where sample j's interval begins: the previous sample's depth, the face's for the first.
+float interval_start(uint j) { return j == 0u ? 0.0 : sample_depth(j - 1u); }
+// Time-gain compensation of the round trip to `depth`.
+float time_gain(float depth) { return exp(2.0 * echo.beam.y * depth); }
 
 // The layers' signed distances (the haptics' implicit surfaces; echo_model.cpp, evaluate).
 struct LayerSample {

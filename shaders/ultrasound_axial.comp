@@ -7,17 +7,15 @@
 layout(local_size_x = 64) in;
 
 void main() {
-  uint item = gl_GlobalInvocationID.x;
   uint samples = echo.counts.y;
-  if (item >= echo.counts.x * samples) return;
-  int j = int(item % samples);
-  uint base = item - uint(j);
+  if (gl_GlobalInvocationID.x >= samples) return;
+  int j = int(gl_GlobalInvocationID.x), line = int(gl_WorkGroupID.y);
   int radius = int(echo.kernel.x);
-  vec2 sum = echoes[item] * axial_weight(0);
+  vec2 sum = imageLoad(echoes, ivec2(j, line)).xy * axial_weight(0);
   for (int k = 1; k <= radius; ++k) {
     float w = axial_weight(k);
-    if (j - k >= 0) sum += w * echoes[base + uint(j - k)];
-    if (j + k < int(samples)) sum += w * echoes[base + uint(j + k)];
+    if (j - k >= 0) sum += w * imageLoad(echoes, ivec2(j - k, line)).xy;
+    if (j + k < int(samples)) sum += w * imageLoad(echoes, ivec2(j + k, line)).xy;
   }
-  axial[item] = sum;
+  imageStore(axial, ivec2(j, line), vec4(sum, 0.0, 0.0));
 }

@@ -8,18 +8,17 @@
 layout(local_size_x = 64) in;
 
 void main() {
-  uint item = gl_GlobalInvocationID.x;
   uint samples = echo.counts.y;
   int line_count = int(echo.counts.x);
-  if (item >= uint(line_count) * samples) return;
-  int line = int(item / samples);
-  uint j = item % samples;
+  uint j = gl_GlobalInvocationID.x;
+  if (j >= samples) return;
+  int line = int(gl_WorkGroupID.y);
   int radius = int(echo.kernel.y);
-  vec2 sum = axial[item] * lateral_weight(0);
+  vec2 sum = imageLoad(axial, ivec2(j, line)).xy * lateral_weight(0);
   for (int m = 1; m <= radius; ++m) {
     float w = lateral_weight(m);
-    if (line - m >= 0) sum += w * axial[uint(line - m) * samples + j];
-    if (line + m < line_count) sum += w * axial[uint(line + m) * samples + j];
+    if (line - m >= 0) sum += w * imageLoad(axial, ivec2(j, line - m)).xy;
+    if (line + m < line_count) sum += w * imageLoad(axial, ivec2(j, line + m)).xy;
   }
   float decibels = 20.0 * log(max(length(sum), 1e-12)) / log(10.0);
   float grey = clamp(1.0 + (decibels + echo.display.y) / echo.display.x, 0.0, 1.0);

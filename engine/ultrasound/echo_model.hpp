@@ -1,6 +1,7 @@
 // The scan-line model's constants and geometry, shared by the CPU reference (echo_model.cpp,
-// double precision) and the GPU pass, which hands them to shaders/ultrasound_scan.comp. The
-// equations and where each number comes from: docs/RENDERING.md, "Ultrasound".
+// double precision) and the GPU pass, which hands them to shaders/ultrasound_lines.comp and
+// ultrasound_echoes.comp. The equations and where each number comes from: docs/RENDERING.md,
+// "Ultrasound".
 #pragma once
 
 #include <glm/glm.hpp>

@@ -12,14 +12,16 @@
 #include "engine/vulkan/vk_check.hpp"
 #include "engine/vulkan/vulkan_context.hpp"
 #include "spirv/ultrasound_axial_comp.h"
-#include "spirv/ultrasound_cells_comp.h"
+#include "spirv/ultrasound_echoes_comp.h"
 #include "spirv/ultrasound_image_comp.h"
-#include "spirv/ultrasound_scan_comp.h"
+#include "spirv/ultrasound_lines_comp.h"
 
 namespace needle::engine {
 namespace {
 
-constexpr uint32_t kWorkgroup = 64;  // local_size_x of the three shaders
+// local_size_x of the passes: a line's walk is long and its length varies, so lines go in small
+// groups (a CPU device runs a group's invocations on its SIMD lanes, a group to a thread).
+constexpr std::array<uint32_t, UltrasoundPass::kPasses> kWorkgroup{8, 64, 64, 64};
 constexpr size_t kMaxLoads = 8;      // ultrasound.glsl MAX_LOADS
 constexpr size_t kKernelVec4s = 5;   // ultrasound.glsl KERNEL_VEC4S
 constexpr size_t kMaxPrimitives = 128;
@@ -40,7 +42,7 @@ struct EchoUniforms {
 };
 static_assert(sizeof(EchoUniforms) == 16 * (14 + 2 * kKernelVec4s) + 32 * kMaxLoads, "std140 layout of Echo");
 
-// std430 mirrors of the Layers and Lines buffers.
+// Mirrors of the Layers block (std140) and the Lines buffer (std430).
 struct LayerGpu {
   glm::uvec4 shape;
   glm::vec4 material;
@@ -58,14 +60,35 @@ struct InterfaceGpu {
   int32_t from_layer, to_layer;
   float pad;
 };
+constexpr uint32_t kMaxRuns = 32;  // ultrasound.glsl MAX_RUNS: the runs image's width
 struct LineRecordGpu {
-  uint32_t count;
-  float shadow_depth, needle_depth, needle_weight;
+  uint32_t count, shadow_sample;
+  float needle_depth, needle_weight;
+  uint32_t run_count;
+  float sample_spacing;
+  uint32_t pad[2];
   InterfaceGpu interfaces[ScanLine::kMaxInterfaces];
 };
-static_assert(sizeof(LineRecordGpu) == 16 + 16 * ScanLine::kMaxInterfaces, "std430 layout of LineRecord");
+static_assert(sizeof(LineRecordGpu) == 32 + 16 * ScanLine::kMaxInterfaces, "std430 layout of LineRecord");
 
-enum Binding : uint32_t { kUniforms, kLayers, kEchoes, kAxial, kLines, kPicture, kCells, kBindings };
+enum Binding : uint32_t { kUniforms, kLayers, kEchoes, kAxial, kLines, kPicture, kRuns, kBindings };
+
+VkDescriptorType descriptor_type(uint32_t binding) {
+  switch (binding) {
+    case kUniforms:
+    case kLayers:
+      return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    case kLines:
+      return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    default:
+      return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  }
+}
+
+// A float image the passes keep in GENERAL layout between them.
+GpuImage work_image(const VulkanContext& context, uint32_t width, uint32_t height) {
+  return GpuImage(context, {{width, height}, VK_FORMAT_R32G32B32A32_SFLOAT, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
+}
 
 void check(const EchoScene& scene, const UltrasoundSettings& settings) {
   if (settings.lines == 0 || settings.samples == 0) throw std::invalid_argument("an ultrasound image needs lines and samples");
@@ -123,32 +146,29 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
   check(scene_, settings_);
   std::array<VkDescriptorSetLayoutBinding, kBindings> bindings{};
   for (uint32_t b = 0; b < kBindings; ++b) {
-    const VkDescriptorType type = b == kUniforms  ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-                                  : b == kPicture ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
-                                                  : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    bindings[b] = {b, type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+    bindings[b] = {b, descriptor_type(b), 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
   }
   set_layout_ = descriptor_set_layout(device_, {bindings.begin(), bindings.end()});
   pipeline_layout_ = single_set_pipeline_layout(device_, set_layout_);
-  pipelines_ = {compute_pipeline(device_, pipeline_layout_, ultrasound_cells_comp_spv, sizeof(ultrasound_cells_comp_spv)),
-                compute_pipeline(device_, pipeline_layout_, ultrasound_scan_comp_spv, sizeof(ultrasound_scan_comp_spv)),
+  pipelines_ = {compute_pipeline(device_, pipeline_layout_, ultrasound_lines_comp_spv, sizeof(ultrasound_lines_comp_spv)),
+                compute_pipeline(device_, pipeline_layout_, ultrasound_echoes_comp_spv, sizeof(ultrasound_echoes_comp_spv)),
                 compute_pipeline(device_, pipeline_layout_, ultrasound_axial_comp_spv, sizeof(ultrasound_axial_comp_spv)),
                 compute_pipeline(device_, pipeline_layout_, ultrasound_image_comp_spv, sizeof(ultrasound_image_comp_spv))};
 
   const LayersGpu packed = pack_layers(scene_);
-  layers_ = GpuBuffer::device_local_with_data(context_, &packed, sizeof packed, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  layers_ = GpuBuffer::device_local_with_data(context_, &packed, sizeof packed, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   const VkDeviceSize samples = VkDeviceSize(settings_.lines) * settings_.samples;
-  echoes_ = GpuBuffer(context_, samples * sizeof(glm::vec2), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  axial_ = GpuBuffer(context_, samples * sizeof(glm::vec2), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  cells_ = GpuBuffer(context_, samples * sizeof(int32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  echoes_ = work_image(context_, settings_.samples, settings_.lines);
+  axial_ = work_image(context_, settings_.samples, settings_.lines);
+  runs_ = work_image(context_, kMaxRuns, settings_.lines);
   lines_ = GpuBuffer::host_visible(context_, settings_.lines * sizeof(LineRecordGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   image_ = GpuImage(context_, {{settings_.lines, settings_.samples},
                                VK_FORMAT_R8G8B8A8_UNORM,
                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
 
-  std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kRing},
-                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5 * kRing},
-                                             {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kRing}}};
+  std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * kRing},
+                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kRing},
+                                             {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 4 * kRing}}};
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pool_info.maxSets = kRing;
   pool_info.poolSizeCount = uint32_t(sizes.size());
@@ -163,12 +183,16 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
     VK_CHECK(vkAllocateDescriptorSets(device_, &alloc, &sets_[slot]));
     const std::array<VkDescriptorBufferInfo, kBindings> buffers{{{uniforms_[slot].handle(), 0, VK_WHOLE_SIZE},
                                                                  {layers_.handle(), 0, VK_WHOLE_SIZE},
-                                                                 {echoes_.handle(), 0, VK_WHOLE_SIZE},
-                                                                 {axial_.handle(), 0, VK_WHOLE_SIZE},
+                                                                 {},
+                                                                 {},
                                                                  {lines_.handle(), 0, VK_WHOLE_SIZE},
                                                                  {},
-                                                                 {cells_.handle(), 0, VK_WHOLE_SIZE}}};
-    const VkDescriptorImageInfo picture{VK_NULL_HANDLE, image_.view(), VK_IMAGE_LAYOUT_GENERAL};
+                                                                 {}}};
+    std::array<VkDescriptorImageInfo, kBindings> images{};
+    images[kEchoes] = {VK_NULL_HANDLE, echoes_.view(), VK_IMAGE_LAYOUT_GENERAL};
+    images[kAxial] = {VK_NULL_HANDLE, axial_.view(), VK_IMAGE_LAYOUT_GENERAL};
+    images[kPicture] = {VK_NULL_HANDLE, image_.view(), VK_IMAGE_LAYOUT_GENERAL};
+    images[kRuns] = {VK_NULL_HANDLE, runs_.view(), VK_IMAGE_LAYOUT_GENERAL};
     std::array<VkWriteDescriptorSet, kBindings> writes{};
     for (uint32_t b = 0; b < kBindings; ++b) {
       writes[b] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -176,8 +200,8 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
       writes[b].dstBinding = b;
       writes[b].descriptorCount = 1;
       writes[b].descriptorType = bindings[b].descriptorType;
-      if (b == kPicture)
-        writes[b].pImageInfo = &picture;
+      if (bindings[b].descriptorType == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)
+        writes[b].pImageInfo = &images[b];
       else
         writes[b].pBufferInfo = &buffers[b];
     }
@@ -187,11 +211,33 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
 
 UltrasoundPass::~UltrasoundPass() {
   vkDeviceWaitIdle(device_);
+  if (timestamps_) vkDestroyQueryPool(device_, timestamps_, nullptr);
   if (pool_) vkDestroyDescriptorPool(device_, pool_, nullptr);
   for (VkPipeline p : pipelines_)
     if (p) vkDestroyPipeline(device_, p, nullptr);
   if (pipeline_layout_) vkDestroyPipelineLayout(device_, pipeline_layout_, nullptr);
   if (set_layout_) vkDestroyDescriptorSetLayout(device_, set_layout_, nullptr);
+}
+
+void UltrasoundPass::set_device_timings(bool on) {
+  timed_ = on && context_.timestamp_period_ns() > 0.0;
+  if (!timed_ || timestamps_) return;
+  VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+  info.queryCount = uint32_t(kRing * (kPasses + 1));
+  VK_CHECK(vkCreateQueryPool(device_, &info, nullptr, &timestamps_));
+}
+
+std::optional<std::array<double, UltrasoundPass::kPasses>> UltrasoundPass::read_pass_ms() const {
+  if (!timed_ || timed_slot_ >= kRing) return std::nullopt;
+  std::array<uint64_t, kPasses + 1> ticks{};
+  VK_CHECK(vkGetQueryPoolResults(device_, timestamps_, uint32_t(timed_slot_ * (kPasses + 1)), uint32_t(ticks.size()), sizeof ticks,
+                                 ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+  const uint32_t bits = context_.timestamp_valid_bits();
+  const uint64_t mask = bits >= 64 ? ~uint64_t(0) : (uint64_t(1) << bits) - 1;
+  std::array<double, kPasses> ms{};
+  for (size_t p = 0; p < kPasses; ++p) ms[p] = double((ticks[p + 1] - ticks[p]) & mask) * context_.timestamp_period_ns() * 1e-6;
+  return ms;
 }
 
 std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProbe& probe, const NeedleLoad* needle) {
@@ -241,7 +287,7 @@ void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uni
   const size_t slot = ring_;
   ring_ = (ring_ + 1) % kRing;
   std::memcpy(uniforms_[slot].mapped(), uniforms.data(), uniforms.size());
-  const uint32_t lines = settings_.lines, items = lines * settings_.samples;
+  const uint32_t lines = settings_.lines, samples = settings_.samples;
 
   // The last image's reads (the UI's fragment shader, a read-back copy, the passes themselves)
   // come before this image's writes.
@@ -250,14 +296,51 @@ void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uni
   transition_image(cmd, image_.image(), image_layout_, VK_IMAGE_LAYOUT_GENERAL,
                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
+  if (!work_images_ready_) {
+    for (const GpuImage* work : {&echoes_, &axial_, &runs_})
+      transition_image(cmd, work->image(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                       VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    work_images_ready_ = true;
+  }
+  // The echoes cleared for the line pass to add the specular echoes to, after the last image's
+  // passes read them.
+  VkMemoryBarrier before_clear{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  before_clear.srcAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+  before_clear.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &before_clear, 0, nullptr, 0,
+                       nullptr);
+  const VkClearColorValue zero{};
+  const VkImageSubresourceRange whole{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdClearColorImage(cmd, echoes_.image(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &whole);
+  compute_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &sets_[slot], 0, nullptr);
-  const std::array<uint32_t, 4> work_items{items, lines, items, items};  // cells, scan lines, axial, image
+  // A timestamp after each pass: the barrier after each makes a CPU device (lavapipe) finish the
+  // pass before it takes the next (engine/passes/scene_pass.cpp, write_timestamp).
+  const uint32_t first_query = uint32_t(slot * (kPasses + 1));
+  if (timed_) {
+    vkCmdResetQueryPool(cmd, timestamps_, first_query, uint32_t(kPasses + 1));
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, first_query);
+    timed_slot_ = slot;
+  } else {
+    timed_slot_ = kRing;
+  }
+  // The line pass: a work item a line; the others: a work group of samples of one line a time.
+  const std::array<VkExtent2D, kPasses> groups{{{(lines + kWorkgroup[0] - 1) / kWorkgroup[0], 1},
+                                                {(samples + kWorkgroup[1] - 1) / kWorkgroup[1], lines},
+                                                {(samples + kWorkgroup[2] - 1) / kWorkgroup[2], lines},
+                                                {(samples + kWorkgroup[3] - 1) / kWorkgroup[3], lines}}};
   for (size_t p = 0; p < pipelines_.size(); ++p) {
     if (p > 0)
       compute_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                       VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[p]);
-    vkCmdDispatch(cmd, (work_items[p] + kWorkgroup - 1) / kWorkgroup, 1, 1);
+    vkCmdDispatch(cmd, groups[p].width, groups[p].height, 1);
+    if (timed_) {
+      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0, nullptr, 0,
+                           nullptr);
+      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, first_query + uint32_t(p) + 1);
+    }
   }
 
   // The picture goes to fragment shaders (the UI pass); the scan lines to the host.
@@ -302,7 +385,7 @@ std::vector<ScanLine> UltrasoundPass::read_lines() const {
     const LineRecordGpu& r = records[i];
     for (uint32_t k = 0; k < std::min<uint32_t>(r.count, ScanLine::kMaxInterfaces); ++k)
       out[i].interfaces.push_back({r.interfaces[k].depth, r.interfaces[k].from_layer, r.interfaces[k].to_layer});
-    if (r.shadow_depth >= 0.0f) out[i].shadow_depth_m = r.shadow_depth;
+    if (r.shadow_sample != ~uint32_t(0)) out[i].shadow_depth_m = (double(r.shadow_sample) + 0.5) * r.sample_spacing;
     if (r.needle_weight > 0.0f) out[i].needle_depth_m = r.needle_depth;
   }
   return out;

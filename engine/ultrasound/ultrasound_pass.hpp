@@ -1,6 +1,7 @@
-// The ultrasound image's compute passes behind UltrasoundView (engine/ultrasound.hpp): each
-// sample's layer and scatterer (shaders/ultrasound_cells.comp), the scan lines walking them
-// (ultrasound_scan.comp), the point spread function along the lines (ultrasound_axial.comp),
+// The ultrasound image's compute passes behind UltrasoundView (engine/ultrasound.hpp): each scan
+// line's layer changes, reflections and runs between them (shaders/ultrasound_lines.comp), each
+// sample's echo from them and its scatterer (ultrasound_echoes.comp), the point spread function
+// along the lines (ultrasound_axial.comp),
 // across them with the envelope and log compression into an RGBA8 storage image
 // (ultrasound_image.comp). The image is left for fragment shaders to sample (the UI pass draws it).
 #pragma once
@@ -9,6 +10,7 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "engine/ultrasound.hpp"
@@ -40,6 +42,13 @@ class UltrasoundPass {
   RgbaImage read_image() const;
   std::vector<ScanLine> read_lines() const;
 
+  // Device time of each pass of the images recorded from now on (timestamp queries; a device
+  // without them gives none), read once an image is done.
+  static constexpr size_t kPasses = 4;
+  static constexpr std::array<const char*, kPasses> kPassNames{"lines", "echoes", "axial", "image"};
+  void set_device_timings(bool on);
+  std::optional<std::array<double, kPasses>> read_pass_ms() const;
+
  private:
   static constexpr size_t kRing = 3;  // more than the renderer's frames in flight
 
@@ -51,16 +60,20 @@ class UltrasoundPass {
   UltrasoundSettings settings_;
   VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
   VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
-  std::array<VkPipeline, 4> pipelines_{};  // cells, scan lines, axial, image
+  std::array<VkPipeline, kPasses> pipelines_{};  // kPassNames
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   std::array<VkDescriptorSet, kRing> sets_{};
   std::array<GpuBuffer, kRing> uniforms_;
   GpuBuffer layers_;
-  GpuBuffer cells_, echoes_, axial_;
+  GpuImage echoes_, axial_, runs_;  // float images between the passes, in GENERAL layout
+  bool work_images_ready_ = false;   // once transitioned to GENERAL
   GpuBuffer lines_;  // host-visible: read back after an image
   GpuImage image_;
   VkImageLayout image_layout_ = VK_IMAGE_LAYOUT_UNDEFINED;
   size_t ring_ = 0;
+  VkQueryPool timestamps_ = VK_NULL_HANDLE;  // kPasses + 1 a ring slot, while timings are on
+  bool timed_ = false;
+  size_t timed_slot_ = kRing;  // the slot of the last image recorded with timings
 };
 
 }  // namespace needle::engine

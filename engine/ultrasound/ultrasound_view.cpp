@@ -40,6 +40,15 @@ RgbaImage UltrasoundView::image() const { return pass_->read_image(); }
 
 std::vector<ScanLine> UltrasoundView::scan_lines() const { return pass_->read_lines(); }
 
+void UltrasoundView::set_device_timings(bool on) { pass_->set_device_timings(on); }
+
+std::vector<std::pair<std::string, double>> UltrasoundView::pass_ms() const {
+  std::vector<std::pair<std::string, double>> out;
+  if (const auto ms = pass_->read_pass_ms())
+    for (size_t p = 0; p < ms->size(); ++p) out.emplace_back(UltrasoundPass::kPassNames[p], (*ms)[p]);
+  return out;
+}
+
 UltrasoundProbe probe_following(const UltrasoundProbe& probe, const NeedleLoad& needle) {
   const glm::dvec3 d = probe.direction;
   const glm::dvec3 along = needle.axis - glm::dot(needle.axis, d) * d;

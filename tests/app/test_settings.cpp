@@ -50,7 +50,7 @@ TEST(Settings, RoundTripAndDefaultsWithoutAFile) {
   app::save_settings(file, s);  // makes the folder
   const std::string text = text_of(file);
   EXPECT_NE(text.find("\"version\": 1"), std::string::npos) << text;
-  EXPECT_NE(text.find("\"views\": {}"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"section\": \"off\""), std::string::npos) << text;
   const app::LoadedSettings back = app::load_settings(file);
   EXPECT_TRUE(back.notice.empty()) << back.notice;
   EXPECT_EQ(back.settings.trainee, "Ana María");
@@ -59,6 +59,30 @@ TEST(Settings, RoundTripAndDefaultsWithoutAFile) {
   EXPECT_EQ(back.settings.window.height, 1080u);
   for (const fs::directory_entry& e : fs::directory_iterator(file.parent_path()))
     EXPECT_EQ(e.path().filename(), "settings.json") << "no temporary file is left";
+}
+
+TEST(Settings, TheViewsRoundTrip) {
+  const fs::path file = process_folder(output_dir() / "settings_views") / "settings.json";
+  app::Settings s;
+  s.views.section = engine::Section::Mode::Translucent;
+  s.views.ultrasound = true;
+  s.views.probe = {0.004, -0.002, 0.0872664626};  // 4 mm along, 2 mm back across, turned 5°
+  app::save_settings(file, s);
+  const std::string text = text_of(file);
+  EXPECT_NE(text.find("\"section\": \"translucent\""), std::string::npos) << text;
+  EXPECT_NE(text.find("\"turn_deg\": 5."), std::string::npos) << text;  // degrees in the file
+  const app::LoadedSettings back = app::load_settings(file);
+  EXPECT_TRUE(back.notice.empty()) << back.notice;
+  EXPECT_EQ(back.settings.views.section, engine::Section::Mode::Translucent);
+  EXPECT_TRUE(back.settings.views.ultrasound);
+  EXPECT_DOUBLE_EQ(back.settings.views.probe.along_m, 0.004);
+  EXPECT_DOUBLE_EQ(back.settings.views.probe.across_m, -0.002);
+  EXPECT_NEAR(back.settings.views.probe.turn_rad, 0.0872664626, 1e-15);
+  s.views = {};  // off, closed, unmoved: what a file without "views" gives
+  app::save_settings(file, s);
+  EXPECT_EQ(app::load_settings(file).settings.views, app::ViewSettings{});
+  std::ofstream(file) << "{\"version\": 1}";
+  EXPECT_EQ(app::load_settings(file).settings.views, app::ViewSettings{});
 }
 
 TEST(Settings, ADamagedFileIsSetAsideWithAMessageNamingIt) {
@@ -73,6 +97,10 @@ TEST(Settings, ADamagedFileIsSetAsideWithAMessageNamingIt) {
                         Case{"{\"version\": 1, \"device\": \"phantom\"}", "/device: unknown device \"phantom\""},
                         Case{"{\"version\": 1, \"window\": {\"width\": 10, \"height\": 720}}", "/window/width"},
                         Case{"{\"version\": 1, \"views\": {\"xray\": true}}", "/views/xray: unknown key"},
+                        Case{"{\"version\": 1, \"views\": {\"section\": \"sliced\"}}", "/views/section: \"sliced\": expected off, cut or translucent"},
+                        Case{"{\"version\": 1, \"views\": {\"ultrasound\": 1}}", "/views/ultrasound: expected true or false"},
+                        Case{"{\"version\": 1, \"views\": {\"probe\": {\"along_m\": 2}}}", "/views/probe/along_m"},
+                        Case{"{\"version\": 1, \"views\": {\"probe\": {\"turn_deg\": \"left\"}}}", "/views/probe/turn_deg"},
                         Case{"{\"trainee\": \"ana\"}", "/version: missing"},
                         Case{"[1, 2]", "expected an object"}}) {
     for (const fs::directory_entry& e : fs::directory_iterator(dir)) fs::remove(e.path());

@@ -94,5 +94,35 @@ TEST_F(SectionView, TheCutShowsEachLayerOfTheBlockInItsColour) {
   EXPECT_GT(colours[2].x, colours[2].y + 60);
 }
 
+// A plane fixed as a task fixes it (docs/TASKS.md, "Section"): the block's y = 0 plane, facing
+// the camera, with the needle crossing it out of plane (entering 15 mm in front of it at 45°).
+// Where the shaft crosses the plane it shows dark in the cut; the part in front of the plane,
+// inside the cut-away tissue, shows too (tools are never cut), so the picture shows the needle
+// against the cut layers as a trainee sees a needle crossing a fixed anatomical plane.
+TEST_F(SectionView, AFixedPlaneCutsTheBlockWithTheNeedleCrossingIt) {
+  engine::HeadlessTarget target(device(), kSize);
+  engine::SceneRenderer renderer(device(), target);
+  engine::GpuScene scene(renderer, engine::load_scene(test::source_dir() / "assets/scenes/tissue_block.json"));
+  engine::NeedleLoad needle;
+  needle.contact = engine::NeedleContact::Inserted;
+  needle.surface_point = {0.0, -0.015, 0.0};
+  needle.axis = {0.0, 0.70710678, -0.70710678};
+  needle.tip = needle.surface_point + 0.03 * needle.axis;  // crosses y = 0 at 15 mm deep
+  engine::FrameParams params = scene.frame_params(&needle);
+  engine::Section section;
+  section.point = glm::vec3(0.0f);
+  section.normal = glm::vec3(0.0f, params.camera.position.y > params.camera.target.y ? 1.0f : -1.0f, 0.0f);
+  params.section = section;
+  engine::RgbaImage cut;
+  ASSERT_TRUE(renderer.draw(target, params, &cut));
+  EXPECT_TRUE(matches_golden(cut, "section_block_fixed_plane_needle_across"));
+  // The plane's point where the shaft crosses it, and one 2 cm to its side in the muscle.
+  const std::optional<glm::vec2> crossing = engine::project_to_screen(params.camera, kSize, {0.0f, 0.0f, -0.015f});
+  const std::optional<glm::vec2> beside = engine::project_to_screen(params.camera, kSize, {0.02f, 0.0f, -0.025f});
+  ASSERT_TRUE(crossing && beside);
+  EXPECT_LT(darkest_red(cut, *crossing), 120);
+  EXPECT_GT(pixel(cut, *beside).x, 150);  // muscle's red in the cut face, no needle there
+}
+
 }  // namespace
 }  // namespace needle::test

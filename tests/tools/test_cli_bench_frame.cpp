@@ -32,6 +32,21 @@ TEST(CliBenchFrame, OffscreenRowsCarryTheContractKeysAndEveryPass) {
   }
 }
 
+TEST(CliBenchFrame, TheViewsRowDrawsTheSectionAndTheUltrasoundValidationClean) {
+  const auto json_path = test_output_dir("cli_bench_frame") / "views.json";
+  ProcessResult r = run_needle_sim("bench frame --contents sphere_ultrasound --sizes 320x240 --targets offscreen --frames 10 "
+                                   "--warmup 2 --views section,ultrasound --json " + quoted(json_path));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  const nlohmann::json rows = nlohmann::json::parse(std::ifstream(json_path));
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0]["views"], "section,ultrasound");
+  EXPECT_TRUE(rows[0]["passes"].contains("deformation_device"));  // the ultrasound's passes are recorded there
+  // The ultrasound images a task's layers: a bare tissue has none; an unknown view is refused.
+  EXPECT_EQ(run_needle_sim("bench frame --contents tissue:20 --targets offscreen --views ultrasound").exit_code, 2);
+  EXPECT_EQ(run_needle_sim("bench frame --targets offscreen --views xray").exit_code, 2);
+}
+
 TEST(CliBenchFrame, WindowRowsDrawTheTaskInAWindow) {
   const auto json_path = test_output_dir("cli_bench_frame") / "window.json";
   ProcessResult r = run_on_virtual_display(test::needle_sim_exe().string() +

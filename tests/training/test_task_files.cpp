@@ -347,6 +347,24 @@ TEST(TaskFiles, TheNeedlesVisibilityNeedsAProbe) {
   expect_error(j, "thin_slice", "/ultrasound/probe/slice_thickness_m", "");
 }
 
+TEST(TaskFiles, ASectionPlaneLoadsNormalizedAndABadOneIsAnError) {
+  json j = valid_task();
+  j["section"] = {{"point", {0.33, 0.0, 0.05}}, {"normal", {0.0, -3.0, 0.0}}};
+  const Task t = load_task(write_task(j, "section"));
+  ASSERT_TRUE(t.section_plane.has_value());
+  EXPECT_EQ(t.section_plane->point, (Vec3{0.33, 0.0, 0.05}));
+  EXPECT_EQ(t.section_plane->normal, (Vec3{0.0, -1.0, 0.0}));  // normalized
+  EXPECT_FALSE(load_task(write_task(valid_task(), "no_section")).section_plane.has_value());
+  j["section"]["normal"] = {0, 0, 0};
+  expect_error(j, "zero_normal", "/section/normal", "must not be the zero vector");
+  j["section"] = {{"point", {0.33, 0.0, 0.05}}};
+  expect_error(j, "no_normal", "/section/normal", "missing");
+  j["section"] = {{"point", {0.33, 0.0}}, {"normal", {0, 1, 0}}};
+  expect_error(j, "short_point", "/section/point", "expected an array of 3 numbers");
+  j["section"] = {{"point", {0.33, 0.0, 0.05}}, {"normal", {0, 1, 0}}, {"mode", "cut"}};
+  expect_error(j, "unknown_key", "/section/mode", "unknown key (allowed: point, normal)");
+}
+
 TEST(TaskFiles, UnreadableAndMalformedFilesNameTheFile) {
   EXPECT_THROW(
       {

@@ -12,7 +12,9 @@
 #include <memory>
 #include <string>
 
+#include "app/session_window.hpp"
 #include "app/task_session.hpp"
+#include "app/ultrasound_window.hpp"
 #include "app/trainee_frame.hpp"
 #include "app/window_frames.hpp"
 #include "arg_list.hpp"
@@ -146,14 +148,16 @@ int run_bench_frame(ArgList& args) {
   std::optional<int> msaa;
   if (auto m = args.value("--msaa")) msaa = parse_msaa(*m, "--msaa");
   options.timestamps = !args.flag("--no-timestamps");
-  const std::optional<std::string> views = args.value("--views");
+  const std::string views = args.value("--views").value_or("none");
   args.finish();
   if (options.frames < 10 || options.warmup < 0) throw UsageError("--frames: at least 10; --warmup: 0 or more");
-  if (views) {
-    // The hook for the section and ultrasound views (issue 15): each will be a pass of the
-    // trainee's frame, drawn here with the others, with its own row key `views`.
-    throw UsageError("--views " + *views + ": the trainee's frame has no section or ultrasound view yet (issue 15)");
-  }
+  const bool section_view = views.find("section") != std::string::npos;
+  const bool ultrasound_view = views.find("ultrasound") != std::string::npos;
+  if (views != "none" && views != "section" && views != "ultrasound" && views != "section,ultrasound" && views != "ultrasound,section")
+    throw UsageError("--views: expected none, section, ultrasound or section,ultrasound, got '" + views + "'");
+  if (ultrasound_view)
+    for (const Content& c : contents)
+      if (c.task.empty()) throw UsageError("--views ultrasound: " + c.name + " is no task (the ultrasound images a task's layers)");
   std::vector<std::string> targets;
   for (const char* t : {"window", "offscreen"})
     if (targets_arg.find(t) != std::string::npos) targets.push_back(t);
@@ -168,7 +172,7 @@ int run_bench_frame(ArgList& args) {
   const fs::path scratch = fs::temp_directory_path() / ("needle_bench_frame_" + std::to_string(::getpid()));
   fs::create_directories(scratch);
   BenchTable table({"content", "target", "size", "msaa", "frames", "frame_ms_median", "frame_ms_p95", "frame_ms_p99",
-                    "fps_median", "fps_p95", "frame_ms_median_timed", "passes"});
+                    "fps_median", "fps_p95", "frame_ms_median_timed", "passes", "views"});
   BenchTable pass_table({"content", "target", "size", "pass", "ms_median", "ms_p95"});
   std::string device_line;
   double timestamp_period_ns = 0.0;
@@ -196,7 +200,14 @@ int run_bench_frame(ArgList& args) {
         auto run_row = [&](const engine::GpuDevice& device, engine::RenderTarget& target, engine::Window* window) {
           app::TraineeFrame frame(device, target, {msaa.value_or(device.is_cpu_device() ? 1 : 4), true}, window);
           engine::GpuScene scene = make_scene(frame.renderer());
-          const app::FrameContent shown = session ? app::task_content(*session) : app::scripted_content(scene);
+          // The views as the window shows them (app::with_views): the section cut, the ultrasound window open.
+          app::Show show{session ? app::task_content(*session) : app::scripted_content(scene)};
+          if (ultrasound_view) show.ultrasound = std::make_shared<app::UltrasoundWindow>(device, session->task());
+          if (session) show.fixed_section = app::task_section(session->task(), engine::Section::Mode::Cut);
+          ui::ViewState view;
+          if (section_view) view.section = engine::Section::Mode::Cut;
+          view.ultrasound = view.has_ultrasound = ultrasound_view;
+          const app::FrameContent shown = app::with_views(show, view, frame.renderer(), target);
           const std::vector<FrameSample> samples = measure(frame, target, scene, shown, window, options);
           std::vector<double> untimed, timed;
           std::map<std::string, std::vector<double>> parts;
@@ -215,7 +226,7 @@ int run_bench_frame(ArgList& args) {
           const double median = percentile(untimed, 0.5), p95 = percentile(untimed, 0.95);
           table.add_row({content.name, target_name, size_text, frame.renderer().msaa_samples(), long(untimed.size()),
                          median, p95, percentile(untimed, 0.99), 1000.0 / median, 1000.0 / p95,
-                         timed.empty() ? nlohmann::json(nullptr) : nlohmann::json(percentile(timed, 0.5)), passes});
+                         timed.empty() ? nlohmann::json(nullptr) : nlohmann::json(percentile(timed, 0.5)), passes, views});
           device_line = device.device_description();
           timestamp_period_ns = device.timestamp_period_ns();
         };
@@ -245,7 +256,7 @@ const CommandRegistrar reg{
     {"bench frame",
      "needle-sim bench frame [--json FILE] [--contents penetrable_sphere,rigid_sphere,tissue:400]\n"
      "                       [--sizes 1280x720,1920x1080] [--targets window,offscreen] [--frames N] [--warmup N]\n"
-     "                       [--msaa N] [--no-timestamps]\n"
+     "                       [--msaa N] [--no-timestamps] [--views none|section|ultrasound|section,ultrasound]\n"
      "  --json FILE      also write the rows as JSON (keys: content, target, size, frame_ms_median, frame_ms_p95,\n"
      "                   passes: name -> median ms, ...)\n"
      "  --contents LIST  what the frame shows: a task (a name in assets/tasks or a file) run in real time by its\n"
@@ -256,7 +267,10 @@ const CommandRegistrar reg{
      "  --frames N       measured frames of each kind per row (default 300), after --warmup N (default 30)\n"
      "  --msaa N         MSAA samples (default: as the window, 1 on a CPU device, else 4)\n"
      "  --no-timestamps  no device timings; otherwise frames with and without timestamps alternate in blocks\n"
-     "                   of 8, the frame times are those without, the device times those with",
+     "                   of 8, the frame times are those without, the device times those with\n"
+     "  --views LIST     the views open as in the window (default none): the section view cut through the needle\n"
+     "                   (or the task's plane), the ultrasound window with its 256 x 512 image made every frame\n"
+     "                   (its passes are in deformation_*, the work recorded before the scene's pass); key views",
      run_bench_frame}};
 
 }  // namespace

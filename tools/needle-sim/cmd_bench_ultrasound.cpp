@@ -2,6 +2,8 @@
 // block and the lumbar epidural section with the needle in plane, at 256 x 512 and 512 x 1024:
 // time per image (submitted and waited for) against the scan-line model's double-precision CPU
 // reference over the same lines, and the largest depth difference between the two.
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -20,6 +22,16 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
+
+// The CPU time this process has used, all its threads (a CPU device's too), in milliseconds: on
+// a machine shared with other work it is what the images cost, where the wall time also holds
+// the waits for a core.
+double process_cpu_ms() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const auto ms = [](const timeval& t) { return 1e3 * double(t.tv_sec) + 1e-3 * double(t.tv_usec); };
+  return ms(usage.ru_utime) + ms(usage.ru_stime);
+}
 
 // A scene of the bench: the scenario's layers, a probe on its skin and a needle in the probe's plane.
 struct Case {
@@ -70,7 +82,8 @@ int run_bench_ultrasound(ArgList& args) {
   if (frames < 2 || frames != double(long(frames))) throw UsageError("--frames: expected a whole number ≥ 2");
 
   engine::GpuDevice device;
-  BenchTable table({"scene", "lines", "samples", "gpu_ms", "gpu_ms_p95", "cpu_ms", "max_depth_error_m"});
+  BenchTable table({"scene", "lines", "samples", "gpu_ms", "gpu_ms_p95", "gpu_cpu_time_ms", "cpu_ms", "max_depth_error_m",
+                    "lines_ms", "echoes_ms", "axial_ms", "image_ms"});
   for (const Case& c : cases()) {
     const haptics::Scenario scenario = haptics::load_scenario((asset_dir() / c.scenario).string());
     const engine::EchoScene scene = app::echo_scene(scenario, engine::Scene{});
@@ -78,11 +91,25 @@ int run_bench_ultrasound(ArgList& args) {
       engine::UltrasoundView view(device, scene, {lines, samples});
       view.render(c.probe, &c.needle);  // pipelines warmed, memory touched
       std::vector<double> gpu_ms;
+      const double cpu_time_before = process_cpu_ms();
       for (int f = 0; f < int(frames); ++f) {
         const auto start = Clock::now();
         view.render(c.probe, &c.needle);
         gpu_ms.push_back(ms_since(start));
       }
+      const double gpu_cpu_time_ms = (process_cpu_ms() - cpu_time_before) / frames;
+      // Each pass's device time, from images timed apart (the timestamps add a barrier a pass).
+      view.set_device_timings(true);
+      std::vector<std::vector<double>> pass_ms(4);
+      for (int f = 0; f < std::max(10, int(frames) / 4); ++f) {
+        view.render(c.probe, &c.needle);
+        const auto passes = view.pass_ms();
+        for (size_t p = 0; p < std::min(passes.size(), pass_ms.size()); ++p) pass_ms[p].push_back(passes[p].second);
+      }
+      view.set_device_timings(false);
+      const auto pass_median = [&](size_t p) -> nlohmann::json {
+        return pass_ms[p].empty() ? nlohmann::json(nullptr) : nlohmann::json(percentile(pass_ms[p], 0.5));
+      };
       std::vector<double> cpu_ms;
       std::vector<engine::ScanLine> reference;
       for (int r = 0; r < 3; ++r) {
@@ -90,13 +117,14 @@ int run_bench_ultrasound(ArgList& args) {
         reference = engine::trace_scan_lines(scene, c.probe, &c.needle, view.settings());
         cpu_ms.push_back(ms_since(start));
       }
-      table.add_row({c.name, lines, samples, percentile(gpu_ms, 0.5), percentile(gpu_ms, 0.95), percentile(cpu_ms, 0.5),
-                     max_depth_error(view.scan_lines(), reference)});
+      table.add_row({c.name, lines, samples, percentile(gpu_ms, 0.5), percentile(gpu_ms, 0.95), gpu_cpu_time_ms, percentile(cpu_ms, 0.5),
+                     max_depth_error(view.scan_lines(), reference), pass_median(0), pass_median(1), pass_median(2),
+                     pass_median(3)});
     }
   }
   table.emit("bench ultrasound: one image on " + device.device_description() +
                  " (gpu: submitted and waited for, median and 95th percentile; cpu: the scan-line reference, one thread, "
-                 "double)",
+                 "double; gpu_cpu_time_ms: the process's CPU time per image, all threads; *_ms: each pass's device time, median)",
              json);
   return 0;
 }

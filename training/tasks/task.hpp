@@ -126,6 +126,13 @@ struct ScoringSpec {
 inline constexpr size_t kMaxNameBytes = 64;
 inline constexpr size_t kMaxTitleBytes = 200;
 
+// The section view's plane a task fixes (docs/TASKS.md, "Section"), instead of the default one
+// through the needle: through `point`, `normal` unit, pointing to the side cut away (the viewer's).
+struct SectionPlaneSpec {
+  Vec3 point{};
+  Vec3 normal{0.0, -1.0, 0.0};
+};
+
 struct Task {
   std::string text;  // the file's text as it was read (a recording keeps it for the replay)
   std::string name;
@@ -144,6 +151,7 @@ struct Task {
   std::vector<TaskLayer> layers;
   // Hide the layer names from the trainee's panel (assessment runs): it shows "layer 3" instead.
   bool hide_layer_names = false;
+  std::optional<SectionPlaneSpec> section_plane;        // the section view's plane, when the task fixes it
 
   int marker_index(const std::string& name) const;  // -1 when absent
   int layer_index(const std::string& name) const;   // -1 when absent

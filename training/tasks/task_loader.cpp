@@ -24,7 +24,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
 
   Task task(const json& root) {
     object(root, "", {"name", "title", "description", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps", "scoring",
-                      "ultrasound", "hide_layer_names"});
+                      "ultrasound", "section", "hide_layer_names"});
     Task t;
     t.name = name(member(root, "", "name"), "/name");
     t.title = root.contains("title") ? string(root["title"], "/title") : t.name;
@@ -51,6 +51,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
         fail(at + "/name", "\"" + t.markers.back().name + "\" is used twice");
     }
     if (root.contains("ultrasound")) t.ultrasound_probe = ultrasound(root["ultrasound"], "/ultrasound");
+    if (root.contains("section")) t.section_plane = section(root["section"], "/section");
     const json& steps = member(root, "", "steps");
     if (!steps.is_array() || steps.empty()) fail("/steps", "expected a non-empty array of steps");
     std::set<std::string> ids;
@@ -277,6 +278,11 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     for (const auto& [key, field] : sizes)
       if (p.contains(key)) *field = positive(p[key], where + "/" + key);
     return probe;
+  }
+
+  SectionPlaneSpec section(const json& value, const std::string& at) const {
+    object(value, at, {"point", "normal"});
+    return {vector(member(value, at, "point"), at + "/point"), unit(member(value, at, "normal"), at + "/normal")};
   }
 
   Vec3 unit(const json& value, const std::string& at) const {
