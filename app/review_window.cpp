@@ -57,7 +57,7 @@ int run_review_window(const ReviewOptions& options) {
     throw std::runtime_error(
         "no display: the review is a window; for a headless export use needle-sim report --session ID --out DIR");
   }
-  const std::unique_ptr<training::SessionStore> store = open_existing_db(options.db);
+  const std::unique_ptr<training::SessionStore> store = open_existing_db(options.db.string());
   GpuWindow vw("needle-sim review", options.size);
   engine::Window& window = vw.window;
   engine::WindowTarget& target = vw.target;
@@ -134,7 +134,7 @@ int run_review_window(const ReviewOptions& options) {
     if (a.review) {
       detail.cursor_s = t;
       if (ui::draw_session_detail(*a.review, detail, below)) {
-        const fs::path dir = fs::absolute(options.db).parent_path() / "exports";
+        const fs::path dir = local_folder(options.db.string()) / "exports";
         try {
           detail.export_message = "wrote " + training::export_session(a.review->stored, dir).string() + " and the .csv";
         } catch (const std::exception& e) {

@@ -27,7 +27,7 @@ ui::PanelRect whole(engine::Extent e) { return {ImVec2(0, 0), ImVec2(float(e.wid
 
 int write_session_report(const fs::path& db, int64_t id, const fs::path& out, std::optional<double> at,
                          ui::TimeSpan plots) {
-  const std::unique_ptr<training::SessionStore> store = open_existing_db(db);
+  const std::unique_ptr<training::SessionStore> store = open_existing_db(db.string());
   const training::SessionReview review = training::load_session_review(*store, db, id);
   const training::SessionInfo& info = review.stored.info;
   if (plots.chosen() && review.has_recording()) {  // checked before anything is written

@@ -1,5 +1,7 @@
 #include "app/start_screen.hpp"
 
+#include "app/default_db.hpp"
+
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -91,7 +93,7 @@ class StartScreen {
     std::error_code ec;
     if (fs::exists(options_.db, ec)) {
       try {
-        sessions_ = training::SessionStore(options_.db).sessions();
+        sessions_ = training::SessionStore(options_.db.string()).sessions();
       } catch (const std::exception& e) {
         state_.notice = e.what();
       }
@@ -211,6 +213,7 @@ int run_start_screen(const StartScreenOptions& options) {
       task.rig.device = settings.device;
       task.trainee = settings.trainee;
       task.db = options.db;
+      task.station = station_name(std::nullopt);
       task.out_dir = fs::absolute(options.db).parent_path() / "runs" / screen.task().name;
       try {
         fs::create_directories(task.out_dir);

@@ -8,6 +8,7 @@
 #include <ctime>
 #include <cctype>
 
+#include "app/default_db.hpp"
 #include "app/ultrasound_window.hpp"
 #include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
@@ -17,16 +18,23 @@
 #include "io/file_write.hpp"
 #include "ui/guidance_overlay.hpp"
 #include "training/sessions/session_export.hpp"
+#include "training/sessions/store_location.hpp"
 
 namespace needle::app {
 namespace fs = std::filesystem;
 
 namespace {
 
-// The store's folder is made before SQLite opens the file in it.
-const fs::path& with_folder(const fs::path& file) {
-  if (file.has_parent_path()) fs::create_directories(file.parent_path());
-  return file;
+// This station's own file: the database itself, or with a server where a session is kept for sync.
+fs::path local_db(const TaskSessionOptions& options) {
+  if (!training::is_postgres_uri(options.db.string())) return options.db;
+  return options.local_db.empty() ? default_db() : options.local_db;
+}
+
+// A database location with its folder made, when it is a file: SQLite makes the file, not the folder.
+std::string with_folder(const fs::path& location) {
+  if (!training::is_postgres_uri(location.string()) && location.has_parent_path()) fs::create_directories(location.parent_path());
+  return location.string();
 }
 
 // A progress bar on a terminal; on a pipe (CI, logs), a line every quarter.
@@ -55,16 +63,13 @@ TaskSessionOptions with_task_settings(TaskSessionOptions options, const engine::
   return options;
 }
 
-// A task name as part of a file name: letters, digits, '-' and '_' kept, anything else (a '/',
-// a '.', a NUL) made '_', at most training::kMaxNameBytes characters. Task names are checked when
-// a task loads (docs/TASKS.md); this holds whatever the name.
+}  // namespace
+
 std::string file_name_part(const std::string& name) {
   std::string part;
   for (char c : name.substr(0, training::kMaxNameBytes)) part += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
   return part.empty() ? "task" : part;
 }
-
-}  // namespace
 
 fs::path new_recording_path(const fs::path& db, const std::string& task_name) {
   const std::string task = file_name_part(task_name);
@@ -85,7 +90,7 @@ TaskSession::TaskSession(TaskSessionOptions options)
       scene_(engine::load_scene(task_.scene)),
       rig_(std::make_unique<SessionRig>(task_, with_task_settings(options_, scene_).rig)),
       store_(with_folder(options_.db)),
-      recording_path_(new_recording_path(options_.db, task_.name)),
+      recording_path_(new_recording_path(local_db(options_), task_.name)),
       feed_(task_) {
   haptics::LoopConfig config;
   config.rate_hz = rig_->rate_hz();
@@ -99,13 +104,17 @@ TaskSession::TaskSession(TaskSessionOptions options)
       haptics::SessionHeader{haptics::kSessionFormatVersion, rig_->rate_hz(), static_cast<int64_t>(std::time(nullptr)),
                              options_.rig.device, rig_->context()},
       loop_->samples(), [this](const haptics::TickSample& s) { feed_.consume(s); });
-  session_ = store_.begin_session(options_.trainee, task_, rig_->description(), recording_path_.string());
+  new_session_ = {options_.trainee, task_.name, task_.title, task_.source, rig_->description(), recording_path_.string(),
+                  options_.station, training::new_session_uid(), training::utc_timestamp()};
+  session_ = store_.begin_session(new_session_);
+  if (store_.engine() == training::SqlEngine::kPostgres)
+    upload_ = std::make_unique<RecordingUpload>(options_.db.string(), session_, recording_path_);
   loop_->submit(haptics::LoopCommand::set_step(&rig_->step()));
   std::error_code ignored;
   fs::remove(options_.out_dir / "score.json", ignored);  // never an earlier run's score beside this run's pictures
-  std::printf("task %s on %s, trainee %s: session %lld in %s\nrecording %s\n", task_.name.c_str(),
-              rig_->description().c_str(), options_.trainee.c_str(), static_cast<long long>(session_),
-              options_.db.c_str(), recording_path_.c_str());
+  std::printf("task %s on %s, trainee %s, station %s: session %lld in %s\nrecording %s\n", task_.name.c_str(),
+              rig_->description().c_str(), options_.trainee.c_str(), options_.station.c_str(),
+              static_cast<long long>(session_), store_.name().c_str(), recording_path_.c_str());
   for (const std::string& note : rig_->notes()) std::printf("note: %s\n", note.c_str());
   if (rig_->ticks() && tick_budget_ < *rig_->ticks())
     std::printf("note: the operator script runs %.1f s, past the latest end of the task (%.1f s: its steps' time limits "
@@ -127,9 +136,12 @@ void TaskSession::run_offline(const std::function<void(size_t)>& on_step_end) {
   loop_->submit(haptics::LoopCommand::start(ticks));
   ProgressBar progress(double(ticks) / rig_->rate_hz());
   // One tick and one recorder pass at a time, so a step's picture shows the tick that ended it.
+  // With a server, the recording goes to it every RecordingUpload::kPeriod of session time.
+  const uint64_t upload_ticks = std::max<uint64_t>(1, uint64_t(rig_->rate_hz() * RecordingUpload::kPeriod.count() / 1000.0));
   for (uint64_t k = 0; k < ticks; ++k) {
     loop_->run_unpaced(1);
     recorder_->drain();
+    if (upload_ && (k + 1) % upload_ticks == 0) upload_->send_new();
     for (size_t step : feed_.take_ended_steps()) on_step_end(step);
     progress.show(double(k + 1) / rig_->rate_hz());
   }
@@ -138,6 +150,7 @@ void TaskSession::run_offline(const std::function<void(size_t)>& on_step_end) {
 std::string TaskSession::start_realtime() {
   const std::string line = loop_->launch();
   recorder_->start();
+  if (upload_) upload_->start();
   loop_->apply(haptics::LoopCommand::start(tick_budget_));
   return line;
 }
@@ -149,6 +162,31 @@ bool TaskSession::over() const {
 void TaskSession::stop_threads(bool ran_to_end) {
   if (loop_) loop_->shutdown();
   if (recorder_) recorder_->stop(ran_to_end);  // the last pass: every sample the loop made is scored
+  if (upload_) {
+    upload_->stop();
+    upload_->send_new();  // the rest, with the end mark
+  }
+}
+
+std::string TaskSession::store_result() {
+  std::string server_error = upload_ && !upload_->error().empty() ? "sending the recording: " + upload_->error() : "";
+  if (server_error.empty()) {
+    try {
+      store_.finish_session(session_, *result_);
+      return "";
+    } catch (const std::exception& e) {
+      if (store_.engine() != training::SqlEngine::kPostgres) throw;
+      server_error = e.what();
+    }
+  }
+  // The server was lost: the session is kept in this station's own file, by the same uid.
+  const fs::path local = local_db(options_);
+  training::SessionStore station(with_folder(local));
+  const int64_t id = station.begin_session(new_session_);
+  station.finish_session(id, *result_);
+  station.keep_for_server(id, store_.name());
+  return "the server could not be reached (" + server_error + "): the session is kept in " + local.string() +
+         " as session " + std::to_string(id) + "; needle-sim sync --db URI --local " + local.string() + " sends it";
 }
 
 const training::SessionResult* TaskSession::finish() {
@@ -166,9 +204,9 @@ const training::SessionResult* TaskSession::finish() {
   }
   result_ = feed_.result();
   // The score is written even when the store fails: the session's record must not be lost.
-  std::string store_error;
+  std::string store_error, kept;
   try {
-    store_.finish_session(session_, *result_);
+    kept = store_result();
   } catch (const std::exception& e) {
     store_error = e.what();
   }
@@ -176,6 +214,7 @@ const training::SessionResult* TaskSession::finish() {
   nlohmann::json score = training::result_json(*result_);
   score["recording"] = recording_path_.string();
   score["stored"] = store_error.empty();
+  score["kept_for_sync"] = !kept.empty();  // stored in the station's own file, not yet on the server
   try {
     io::write_file(score_file, score.dump(2) + "\n");
   } catch (const io::WriteError& e) {
@@ -186,6 +225,7 @@ const training::SessionResult* TaskSession::finish() {
   std::printf("score %.0f / 100: %s\n", result_->score.total, result_->score.passed ? "passed" : "not passed");
   for (const std::string& why : result_->score.reasons_failed) std::printf("  %s\n", why.c_str());
   std::printf("wrote %s\n", score_file.c_str());
+  if (!kept.empty()) std::printf("note: %s\n", kept.c_str());
   std::fflush(stdout);  // a window's run goes on: whoever reads the output sees the score now
   if (!store_error.empty())
     throw std::runtime_error("the session could not be stored: " + store_error + "; its score is in " +

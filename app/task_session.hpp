@@ -14,6 +14,7 @@
 
 #include "engine/extent.hpp"
 #include "engine/scene_renderer.hpp"
+#include "app/recording_upload.hpp"
 #include "app/session_feed.hpp"
 #include "engine/scene.hpp"
 #include "haptics/realtime/haptic_loop.hpp"
@@ -28,7 +29,10 @@ struct TaskSessionOptions {
   std::filesystem::path task;  // unused for replay:FILE, which runs the task its recording keeps
   RigOptions rig;              // its out_dir and camera are set from here and the task's scene
   std::string trainee;
-  std::filesystem::path db;
+  std::filesystem::path db;     // an SQLite file or a postgresql:// URI (app/default_db.hpp)
+  std::string station;          // the station's name, stored with the session
+  std::filesystem::path local_db;  // with a server: this station's own file, where a session the
+                                   // server missed is kept for sync (default: default_db())
   std::filesystem::path out_dir;
 };
 
@@ -80,6 +84,9 @@ class TaskSession {
 
  private:
   void stop_threads(bool ran_to_end);
+  // Stores the finished session on the server, or, when it cannot be reached, in this station's
+  // own file for needle-sim sync. Returns "" when stored on the server, else what happened.
+  std::string store_result();
 
   TaskSessionOptions options_;
   training::Task task_;
@@ -87,7 +94,9 @@ class TaskSession {
   std::unique_ptr<SessionRig> rig_;
   training::SessionStore store_;
   std::filesystem::path recording_path_;
+  training::NewSession new_session_;  // what begin_session stored, to keep it locally when needed
   int64_t session_ = 0;
+  std::unique_ptr<RecordingUpload> upload_;  // with a server
   uint64_t tick_budget_ = 0;
   bool finished_ = false;
   std::unique_ptr<haptics::HapticLoop> loop_;
@@ -97,7 +106,12 @@ class TaskSession {
   std::optional<training::SessionResult> result_;
 };
 
-// Where a new session of task `task_name` is recorded: <db folder>/recordings/<name>_<UTC start>_
+// A task name as part of a file name: letters, digits, '-' and '_' kept, anything else (a '/', a
+// '.', a NUL) made '_', at most training::kMaxNameBytes characters. Task names are checked when a
+// task loads (docs/TASKS.md); this holds whatever the name.
+std::string file_name_part(const std::string& name);
+
+// Where a new session of task `task_name` is recorded: <folder of `db`>/recordings/<name>_<UTC start>_
 // <pid>[_<n>].nrec, the name made safe for a file name whatever it holds (no '/', '.', NUL; at most
 // training::kMaxNameBytes characters), the number added when a session of the same task started in
 // the same second in this process. Makes the folder.

@@ -14,9 +14,10 @@ fuzz_seconds=${FUZZ_SECONDS:-20}
 # The closed-loop simulations and the sessions run end to end: the sanitized tick is 50 to 300
 # times slower (Eigen's small matrices, no longer inlined), a session of minutes.
 suites='BenchPrecision|BenchStability|PenaltyOnRobot|ControllerLoop|DeviceSim|RealtimeLoop|RealtimeTaskSpace'
-suites+='|SimHolonomic|SimNonholonomic|SimFeel|TissueInsertion|TissueSnapshot|RealtimeNoAlloc'
+suites+='|SimHolonomic|SimNonholonomic|SimFeel|SimHandPassivity|TissueInsertion|TissueSnapshot|RealtimeNoAlloc'
 suites+='|SessionLimits|SessionReviewTest|SessionStoreFailure|ShippedTasks/ScriptedSessions|LayeredSessions|ReviewPanels'
 suites+='|CliBench[A-Za-z]*|CliHapticsBench|CliHapticsSimulate|CliRecordings|CliReport|CliRunDevices|CliRunTask|CliWrites|Tasks/RunReplay'
+suites+='|CliPostgres'
 tests='BenchTickAllocations\.(NonholonomicContact|LayeredTissue)TickAllocatesNothing|RecordingReplay\.ControllerReplayIsBitForBit'
 tests+='|SimComponents\.DeviceEnergyBalancesTheWorkDoneOnIt|CliStartScreen\.(ATraineeStarts|TheKeyboards|TheScorePanels)[A-Za-z]*'
 skip=${SANITIZE_SKIP-"^((ShaderBuild|Layout|$suites)\\.|($tests)\$)"}

@@ -344,12 +344,13 @@ void draw_comparison(const training::SessionReview& a, const training::SessionRe
   ImGui::End();
 }
 
-void draw_plot_window(const training::SessionReview& r, const training::Plot& plot, const PanelRect& at, TimeSpan span) {
+void draw_plot_window(const training::Plot& plot, const std::vector<training::StepResult>* steps, const PanelRect& at,
+                      TimeSpan span) {
   if (begin_panel(plot.title.c_str(), at)) {
     PlotOptions o;
     o.span = &span;
     o.height = std::max(80.0f, ImGui::GetContentRegionAvail().y - 2.0f * ImGui::GetTextLineHeightWithSpacing());
-    o.steps = &r.stored.steps;
+    o.steps = steps;
     draw_plot(plot, o);
   }
   ImGui::End();

@@ -51,8 +51,13 @@ bool draw_replay_bar(const training::SessionReview& review, double& t_s, bool pl
 void draw_comparison(const training::SessionReview& a, const training::SessionReview& b, const PanelRect& at,
                      bool* open = nullptr, TimeSpan* span = nullptr);
 
-// One plot filling a window: the report's plot pictures, of the time range `span` (unchosen: the whole).
-void draw_plot_window(const training::SessionReview& review, const training::Plot& plot, const PanelRect& at,
+// One plot filling a window: the report's plot pictures, of the time range `span` (unchosen: the
+// whole); `steps` (may be null) their start times.
+void draw_plot_window(const training::Plot& plot, const std::vector<training::StepResult>* steps, const PanelRect& at,
                       TimeSpan span = {});
+inline void draw_plot_window(const training::SessionReview& review, const training::Plot& plot, const PanelRect& at,
+                             TimeSpan span = {}) {
+  draw_plot_window(plot, &review.stored.steps, at, span);
+}
 
 }  // namespace needle::ui

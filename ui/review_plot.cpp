@@ -126,7 +126,7 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
     const std::string label = number(t);
     draw->AddText(ImVec2(sx(t) - 0.5f * ImGui::CalcTextSize(label.c_str()).x, p1.y + 3.0f), kText, label.c_str());
   }
-  draw->AddText(ImVec2(origin.x + 4.0f, p1.y + 3.0f), kText, "t (s)");
+  draw->AddText(ImVec2(origin.x + 4.0f, p1.y + 3.0f), kText, plot.x_label.c_str());
   draw->PushClipRect(p0, p1, true);
   if (o.steps) {
     for (size_t k = 0; k < o.steps->size(); ++k) {

@@ -1,5 +1,7 @@
 #include "haptics/sim/closed_loop.hpp"
 
+#include "haptics/sim/hand_port.hpp"
+
 #include <cmath>
 
 namespace needle::haptics {
@@ -30,7 +32,8 @@ nlohmann::json SimSummary::to_json() const {
           {"max_penetration_m", max_penetration_m},       {"max_lateral_speed_mps", max_lateral_speed_mps},
           {"max_axis_deviation_m", max_axis_deviation_m}, {"energy_error_J", energy_error_J},
           {"punctures", pops},                            {"tissue_work_J", tissue_work_J},
-          {"faults", faults}};
+          {"hand_work_J", hand_work_J},                   {"hand_work_min_J", hand_work_min_J},
+          {"world_dissipated_min_J", world_dissipated_min_J}, {"faults", faults}};
 }
 
 SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::function<void(const TickRecord&)>& on_tick) {
@@ -43,6 +46,7 @@ SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::functi
   plant.reset(sc.q0, VecN::Zero(n));
   sensor.reset(Wrench::Zero());
   const double e0 = plant.energy() + tele.world().energy();
+  const double stored0 = world_stored_energy(sc, plant, tele.world());
 
   SimResult result;
   ErrorStats free_pos, contact_pos, force;
@@ -81,6 +85,8 @@ SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::functi
     rec.mode = c.mode;
     rec.axial_force_N = world.tissue().out.axial_force_N;
     rec.layer = world.tissue().out.holding_layer;
+    rec.hand_work_J = plant.hand_port_work();
+    rec.world_stored_J = world_stored_energy(sc, plant, world) - stored0;
     rec.position_error = (rec.x_m - rec.x_v).norm();
     rec.force_error = 0.0;
 
@@ -107,6 +113,9 @@ SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::functi
     if (tissue.punctured_layer >= 0)
       s.punctures.push_back({sc.scene.tissue.layer(tissue.punctured_layer).name, world.tissue().s, tissue.axial_force_N, rec.t});
     s.tissue_work_J = world.tissue().tissue_work_J;
+    s.hand_work_J = rec.hand_work_J;
+    s.hand_work_min_J = std::min(s.hand_work_min_J, rec.hand_work_J);
+    s.world_dissipated_min_J = std::min(s.world_dissipated_min_J, rec.hand_work_J - rec.world_stored_J);
     s.energy_error_J = std::max(s.energy_error_J, std::abs(rec.energy - e0 - plant.external_work() - world.external_work()));
     if (keep_ticks) result.ticks.push_back(rec);
     if (on_tick) on_tick(rec);

@@ -32,6 +32,11 @@ struct TickRecord {
   double force_error = 0.0;     // rigid: |F_h,n − F_v|; tissue: |λ_m + λ_v|
   double axial_force_N = 0.0;   // the tissue's along the needle (needle on tissue, > 0 resists advancing)
   int layer = -1;               // the tissue layer holding the tip, −1 in none
+  // The hand's port (forces and torques through the sensor, haptics/sim/hand_port.hpp): the work
+  // the hand has done on the stylus since the start, and the change of the energy the world holds
+  // and may give back. Their difference is what the world dissipated (≥ 0 when it is passive).
+  double hand_work_J = 0.0;
+  double world_stored_J = 0.0;
 };
 
 // A surface that gave way in closed loop (as bench insertion's InsertionPuncture, the depth being the
@@ -53,6 +58,9 @@ struct SimSummary {
   double energy_error_J = 0;          // max |E(t) − E(0) − W_ext(t)|
   std::vector<SimPuncture> punctures; // in order
   double tissue_work_J = 0;           // work of the needle on the tissue (≥ 0: the tissue is passive)
+  double hand_work_J = 0;             // work of the hand on the stylus over the run (forces and torques)
+  double hand_work_min_J = 0;         // its least value over the run (< 0: the world has pushed the hand)
+  double world_dissipated_min_J = 0;  // least of hand work − Δ(world's stored energy) (≥ 0 when passive)
   std::vector<std::string> faults;
   nlohmann::json to_json() const;     // the keys, SI units
 };

@@ -19,10 +19,11 @@ void MasterPlant::reset(const VecN& q, const VecN& dq) {
   dq_ = dq;
   applied_.setZero(model_.dof());
   ddq_.setZero(model_.dof());
-  work_ = 0.0;
+  work_ = impedance_work_ = 0.0;
   saturated_ = false;
   update_kinematics(model_, data_, q_, dq_);
   update_dynamics(model_, data_);
+  hand_kinetic0_ = hand_kinetic_energy();
 }
 
 void MasterPlant::saturate(const VecN& tau_command) {
@@ -36,11 +37,12 @@ void MasterPlant::saturate(const VecN& tau_command) {
   if (saturated_) applied_ *= device_.force_limit_N / force.norm();
 }
 
-double MasterPlant::energy() const {
+double MasterPlant::hand_kinetic_energy() const {
   const Eigen::Vector3d v = data_.tip_twist.head<3>(), w = data_.tip_twist.tail<3>();
-  return kinetic_energy(data_) + potential_energy(model_, data_) + 0.5 * hand_.mass_kg * v.squaredNorm() +
-         0.5 * hand_.rotational_inertia() * w.squaredNorm();
+  return 0.5 * hand_.mass_kg * v.squaredNorm() + 0.5 * hand_.rotational_inertia() * w.squaredNorm();
 }
+
+double MasterPlant::energy() const { return kinetic_energy(data_) + potential_energy(model_, data_) + hand_kinetic_energy(); }
 
 void MasterPlant::acceleration(const VecN& q, const VecN& dq, double t, VecN& ddq) {
   update_kinematics(model_, data_, q, dq);
@@ -68,10 +70,11 @@ void MasterPlant::advance(const VecN& tau_command, const HandTrajectory& traject
     const double ts = t + i * h;
     // The hand target is held over the sub-step; the work uses the same force law (trapezoidal).
     acceleration(q_, dq_, ts, ddq_);
-    const double p_start = power();
+    const double p_start = power(), hand_start = impedance_.dot(data_.tip_twist);
     integrate_step(integrator_, q_, dq_, h, [&](const VecN& qs, const VecN& vs, VecN& a) { acceleration(qs, vs, ts, a); });
     acceleration(q_, dq_, ts, ddq_);
     work_ += 0.5 * h * (p_start + power());
+    impedance_work_ += 0.5 * h * (hand_start + impedance_.dot(data_.tip_twist));
   }
   const Eigen::Vector3d a_tip = data_.J.topRows<3>() * ddq_ + data_.Jdot.topRows<3>() * dq_;
   hand_wrench_ = impedance_;

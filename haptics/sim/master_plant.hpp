@@ -35,6 +35,12 @@ class MasterPlant {
   double energy() const;
   // Work done on it by motors and hand impedance, minus joint damping, since reset.
   double external_work() const { return work_; }
+  // The hand's port (the sensor between hand and stylus, forces and torques): work the hand has
+  // done on the stylus since reset, ∫ w_h·twist dt with w_h the impedance wrench minus the hand's
+  // inertial wrench, i.e. the impedance's work minus the change of the hand's own kinetic energy.
+  double hand_port_work() const { return impedance_work_ - (hand_kinetic_energy() - hand_kinetic0_); }
+  // ½M|v_tip|² + ½I|ω_tip|²: the hand's mass and inertia riding on the tip.
+  double hand_kinetic_energy() const;
 
  private:
   void saturate(const VecN& tau_command);
@@ -51,7 +57,7 @@ class MasterPlant {
   MatN h_eff_;
   Wrench impedance_ = Wrench::Zero(), hand_wrench_ = Wrench::Zero();
   bool saturated_ = false;
-  double work_ = 0.0;
+  double work_ = 0.0, impedance_work_ = 0.0, hand_kinetic0_ = 0.0;
 };
 
 }  // namespace needle::haptics

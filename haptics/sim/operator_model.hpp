@@ -41,6 +41,7 @@ class HandTrajectory {
   explicit HandTrajectory(std::vector<HandWaypoint> waypoints);  // throws unless t strictly increases
   HandTarget at(double t) const;
   double end_time() const { return waypoints_.empty() ? 0.0 : waypoints_.back().t; }
+  const std::vector<HandWaypoint>& waypoints() const { return waypoints_; }
 
  private:
   std::vector<HandWaypoint> waypoints_;

@@ -35,7 +35,7 @@ void write_ticks_csv(const std::string& path, const std::vector<TickRecord>& tic
     for (int i = 1; i <= dof; ++i) csv += "," + std::string(robot) + std::to_string(i);
   for (const char* v : {"x_m", "x_v", "F_h", "F_v"})
     for (const char* axis : {"_x", "_y", "_z"}) csv += "," + std::string(v) + axis;
-  csv += ",lambda_v1,lambda_v2,lambda_m1,lambda_m2,phi,psi1,psi2,energy,mode,axial_force_N,layer\n";
+  csv += ",lambda_v1,lambda_v2,lambda_m1,lambda_m2,phi,psi1,psi2,energy,mode,axial_force_N,layer,hand_work_J,world_stored_J\n";
   for (const TickRecord& r : ticks) {
     append(csv, "%.6f", r.t);
     for (const VecN* q : {&r.q_m, &r.q_v})
@@ -46,7 +46,8 @@ void write_ticks_csv(const std::string& path, const std::vector<TickRecord>& tic
       append(csv, ",%.9g", x);
     csv += std::string(",") + contact_mode_name(r.mode);
     append(csv, ",%.9g,", r.axial_force_N);
-    csv += (r.layer < 0 ? std::string() : csv_field(tissue.layer(r.layer).name)) + "\n";
+    csv += r.layer < 0 ? std::string() : csv_field(tissue.layer(r.layer).name);
+    append(csv, ",%.9g,%.9g\n", r.hand_work_J, r.world_stored_J);
   }
   io::write_file(path, csv);
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "haptics/model/kinematics.hpp"
 
@@ -67,6 +68,59 @@ Scenario pressing(Scenario s, double force_N, double hold_until_s) {
                                  {hold_until_s, deep, -at.gradient}});
   s.duration_s = hold_until_s + 2.0;
   return s;
+}
+
+Scenario with_layer_mechanics(Scenario s, void (*change)(LayerMechanics&, double), double k) {
+  const TissueModel& tissue = s.scene.tissue;
+  std::vector<TissueLayer> layers(tissue.layers().begin(), tissue.layers().end());
+  for (TissueLayer& layer : layers)
+    if (!layer.mechanics.rigid) change(layer.mechanics, k);
+  s.scene.tissue = TissueModel(std::move(layers), tissue.stick());
+  return s;
+}
+
+Scenario pushing_onto_bone(Scenario s, double force_N) {
+  if (s.trajectory.waypoints().size() < 3) throw std::invalid_argument(s.name + ": the push needs the script's first three waypoints");
+  std::vector<HandWaypoint> waypoints(s.trajectory.waypoints().begin(), s.trajectory.waypoints().begin() + 3);
+  const HandWaypoint on_surface = waypoints.back();
+  // March along the needle to the first rigid layer (0.1 mm steps, at most 0.3 m).
+  double depth = 0.0;
+  for (; depth < 0.3; depth += 1e-4) {
+    const int layer = s.scene.tissue.layer_at(on_surface.position + depth * on_surface.direction);
+    if (layer >= 0 && s.scene.tissue.layer(layer).mechanics.rigid) break;
+  }
+  if (depth >= 0.3) throw std::invalid_argument(s.name + ": no rigid layer on the needle's line");
+  const Eigen::Vector3d deep = on_surface.position + (depth + force_N / s.hand.stiffness_N_per_m) * on_surface.direction;
+  waypoints.push_back({on_surface.t + 15.0, deep, on_surface.direction});
+  waypoints.push_back({on_surface.t + 20.0, deep, on_surface.direction});
+  waypoints.push_back({on_surface.t + 30.0, on_surface.position, on_surface.direction});
+  s.trajectory = HandTrajectory(waypoints);
+  s.duration_s = on_surface.t + 32.0;
+  return s;
+}
+
+std::vector<StressCase> layered_stress_cases(const Scenario& s) {
+  std::vector<StressCase> cases;
+  const std::string of = " (" + s.name + ")";
+  for (double k : {0.1, 0.3, 1.0, 3.0, 10.0}) {
+    cases.push_back({"puncture force x" + of, number(k), with_layer_mechanics(s, [](LayerMechanics& m, double k) { m.puncture_force_N *= k; }, k)});
+    cases.push_back({"friction x" + of, number(k), with_layer_mechanics(s, [](LayerMechanics& m, double k) {
+                       m.friction_N_per_m *= k;
+                       m.static_friction_N_per_m *= k;
+                     }, k)});
+    cases.push_back({"stiffness x" + of, number(k), with_layer_mechanics(s, [](LayerMechanics& m, double k) {
+                       m.stiffness_N_per_m *= k;
+                       m.stiffness2_N_per_m2 *= k;
+                     }, k)});
+  }
+  for (double k : {1.0, 2.0, 4.0, 8.0}) cases.push_back({"period x" + of, number(k), with_period_scale(s, k)});
+  bool bone = false;
+  for (const TissueLayer& layer : s.scene.tissue.layers()) bone = bone || layer.mechanics.rigid;
+  if (bone) {
+    const double force = 2 * s.device.force_limit_N;
+    cases.push_back({"push onto bone" + of, number(force) + " N (2x limit)", pushing_onto_bone(s, force)});
+  }
+  return cases;
 }
 
 std::vector<StressCase> stress_cases(const Scenario& h, const Scenario& nh, double sustained_s) {

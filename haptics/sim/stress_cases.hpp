@@ -24,10 +24,20 @@ double passivity_stiffness_bound(const Scenario& scenario);
 // Every sweep built from the two thesis scenarios; the sustained-contact case lasts sustained_s.
 std::vector<StressCase> stress_cases(const Scenario& holonomic, const Scenario& nonholonomic, double sustained_s);
 
+// Issue 12's sweeps of a layered scenario: every layer's puncture force, friction (dynamic and
+// static) and surface stiffness (k₁, k₂) each ×0.1 … ×10, the period ×1 … ×8, and, when its
+// tissue has a rigid layer, the hand pushing the needle onto it at twice the device's force limit.
+std::vector<StressCase> layered_stress_cases(const Scenario& layered);
+
 // Single sweeps, also used by tests.
 Scenario with_gain_scale(Scenario s, double scale);
 Scenario with_period_scale(Scenario s, double scale);
 Scenario holding_pose(Scenario s, const VecN& q0, bool in_tissue);
 Scenario pressing(Scenario s, double force_N, double hold_until_s);
+// Every layer's mechanics through `change` (the model rebuilt: the same checks as a file's).
+Scenario with_layer_mechanics(Scenario s, void (*change)(LayerMechanics&, double), double k);
+// The scenario's script up to its third waypoint (on the surface), then the hand target driven along
+// the needle to force_N / K_h beyond the first rigid layer on that line, held, and withdrawn.
+Scenario pushing_onto_bone(Scenario s, double force_N);
 
 }  // namespace needle::haptics

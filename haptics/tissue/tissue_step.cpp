@@ -174,4 +174,12 @@ const TissueOutput& step_tissue(const TissueModel& model, TissueState& st, const
   return out;
 }
 
+double tissue_stored_energy(const TissueModel& model, const TissueState& st) {
+  const double grip = st.grip_force_N * st.grip_force_N / (2.0 * model.stick().stiffness_N_per_m);
+  if (!st.on_track || st.surface_layer < 0) return grip;
+  const LayerMechanics& m = model.layer(st.surface_layer).mechanics;
+  const double d = std::max(0.0, st.s - st.surface_s);
+  return grip + d * d * (m.stiffness_N_per_m / 2.0 + m.stiffness2_N_per_m2 * d / 3.0);
+}
+
 }  // namespace needle::haptics

@@ -68,4 +68,9 @@ uint32_t passed_layers(const TissueState& state);
 const TissueOutput& step_tissue(const TissueModel& model, TissueState& state, const Eigen::Vector3d& tip,
                                 const Eigen::Vector3d& axis, double dt);
 
+// (model, state) => the energy the tissue holds and can give back: the tented surface's
+// k₁d²/2 + k₂d³/3 and the stick element's F_g²/2k_g. tissue_work_J minus this is what it has
+// dissipated (≥ 0: docs/TISSUE.md, Passivity).
+double tissue_stored_energy(const TissueModel& model, const TissueState& state);
+
 }  // namespace needle::haptics

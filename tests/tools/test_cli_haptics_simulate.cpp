@@ -22,9 +22,10 @@ TEST(CliHapticsSimulate, WritesTicksCsvAndSummaryWithTheIssueKeys) {
   const auto summary = nlohmann::json::parse(summary_file);
   for (const char* key : {"position_rms_free_m", "position_max_free_m", "position_rms_contact_m", "position_max_contact_m",
                           "force_rms_N", "force_max_N", "max_penetration_m", "max_lateral_speed_mps", "max_axis_deviation_m",
-                          "energy_error_J", "faults", "punctures", "tissue_work_J"})
+                          "energy_error_J", "faults", "punctures", "tissue_work_J", "hand_work_J", "hand_work_min_J",
+                          "world_dissipated_min_J"})
     EXPECT_TRUE(summary.contains(key)) << key;
-  EXPECT_EQ(summary.size(), 13u) << "exactly the issues' keys";
+  EXPECT_EQ(summary.size(), 16u) << "exactly the issues' keys";
   EXPECT_TRUE(summary["punctures"].empty());  // a rigid sphere: no tissue
   EXPECT_EQ(summary["tissue_work_J"], 0.0);
   EXPECT_TRUE(summary["faults"].empty());
@@ -33,7 +34,7 @@ TEST(CliHapticsSimulate, WritesTicksCsvAndSummaryWithTheIssueKeys) {
   std::getline(csv, header);
   EXPECT_EQ(header.rfind("t,q_m1,", 0), 0u) << header;
   for (const char* column : {"x_m_x", "x_v_z", "F_h_x", "F_v_y", "lambda_v1", "lambda_m2", "phi", "psi1", "energy",
-                             "mode,axial_force_N,layer"})
+                             "mode,axial_force_N,layer,hand_work_J,world_stored_J"})
     EXPECT_NE(header.find(column), std::string::npos) << column;
   long rows = 0;
   while (std::getline(csv, line)) ++rows;

@@ -38,7 +38,7 @@ int run_bench_feel(ArgList& args) {
   }
 
   BenchTable table({"scenario", "law", "phase", "seconds", "free_force_rest_N", "force_band_rms_N", "force_hf_rms_N",
-                    "max_lateral_speed_mps", "tracking_rms_m", "run_s", "faults"});
+                    "max_lateral_speed_mps", "tracking_rms_m", "run_s", "faults", "hand_work_min_J", "world_dissipated_min_J"});
   for (const std::string& path : paths) {
     haptics::Scenario scenario = haptics::load_scenario(path);
     for (haptics::ControlLaw law : laws) {
@@ -52,7 +52,8 @@ int run_bench_feel(ArgList& args) {
         const bool free = p.phase == haptics::FeelPhase::Free;
         table.add_row({scenario.name, haptics::control_law_name(law), haptics::feel_phase_name(p.phase), p.seconds,
                        free ? nlohmann::json(rest) : nlohmann::json(nullptr), p.force_band_rms_N, p.force_hf_rms_N,
-                       number_or_null(p.max_lateral_speed_mps), p.tracking_rms_m, run_s, faults});
+                       number_or_null(p.max_lateral_speed_mps), p.tracking_rms_m, run_s, faults, run.summary.hand_work_min_J,
+                       run.summary.world_dissipated_min_J});
       }
     }
   }
@@ -70,7 +71,9 @@ const CommandRegistrar reg{{"bench feel",
                             "  --json FILE      also write the rows as JSON (its folder must exist)\n"
                             "  per scenario, law and phase (free, rigid contact, tissue): free_force_rest_N,\n"
                             "  force_band_rms_N (3-50 Hz), force_hf_rms_N (> 50 Hz), max_lateral_speed_mps, tracking_rms_m,\n"
-                            "  run_s (wall time of the closed-loop run)",
+                            "  run_s (wall time of the closed-loop run); per run: hand_work_min_J (least work of the hand on the\n"
+                            "  stylus), world_dissipated_min_J (least of that work minus the change of the energy the world\n"
+                            "  stores: < 0 means the world gave the hand energy it had not stored, docs/CONTROLLER.md)",
                             run_bench_feel}};
 
 }  // namespace

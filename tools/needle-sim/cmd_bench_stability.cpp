@@ -23,10 +23,16 @@ int run_bench_stability(ArgList& args) {
   const auto dir = asset_dir() / "scenarios";
   const haptics::Scenario h = haptics::load_scenario((dir / "holonomic_sphere.json").string());
   const haptics::Scenario nh = haptics::load_scenario((dir / "nonholonomic_needle.json").string());
+  std::vector<haptics::StressCase> cases = haptics::stress_cases(h, nh, sustained);
+  for (const char* name : {"tissue_block_layers", "lumbar_epidural", "liver_biopsy"}) {
+    std::vector<haptics::StressCase> layered = haptics::layered_stress_cases(haptics::load_scenario((dir / (std::string(name) + ".json")).string()));
+    cases.insert(cases.end(), std::make_move_iterator(layered.begin()), std::make_move_iterator(layered.end()));
+  }
 
   BenchTable table({"sweep", "value", "outcome", "simulated_s", "max_abs_energy_J", "energy_error_J", "position_max_contact_m",
-                    "force_max_N", "max_penetration_m", "max_lateral_speed_mps", "wall_s"});
-  for (const haptics::StressCase& c : haptics::stress_cases(h, nh, sustained)) {
+                    "force_max_N", "max_penetration_m", "max_lateral_speed_mps", "wall_s", "punctures", "tissue_work_J",
+                    "world_dissipated_min_J"});
+  for (const haptics::StressCase& c : cases) {
     double max_energy = 0;
     const auto t0 = std::chrono::steady_clock::now();
     const haptics::SimResult r = haptics::run_closed_loop(c.scenario, false, [&](const haptics::TickRecord& t) {
@@ -35,7 +41,8 @@ int run_bench_stability(ArgList& args) {
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const haptics::SimSummary& s = r.summary;
     table.add_row({c.name, c.value, s.faults.empty() ? std::string("bounded") : s.faults.front(), r.simulated_s, max_energy,
-                   s.energy_error_J, s.position_max_contact_m, s.force_max_N, s.max_penetration_m, s.max_lateral_speed_mps, wall});
+                   s.energy_error_J, s.position_max_contact_m, s.force_max_N, s.max_penetration_m, s.max_lateral_speed_mps, wall,
+                   s.punctures.size(), s.tissue_work_J, s.world_dissipated_min_J});
   }
   table.emit("closed-loop stress (energy bound " + std::to_string(h.energy_bound_J) + " J, divergence bound " +
                  std::to_string(h.divergence_bound_m) + " m; K_crit = 2b/T = " +
@@ -49,7 +56,9 @@ const CommandRegistrar reg{{"bench stability",
                             "  --sustained S  length of the sustained-contact run (default 3600 s: about two minutes of wall time)\n"
                             "  --json FILE    also write the rows as JSON\n"
                             "  sweeps: gains x0.1..x100, period x1..x8, singular poses, 2x force-limit push, sustained contact,\n"
-                            "  penalty stiffness across K_crit = 2(b - |B|)/T",
+                            "  penalty stiffness across K_crit = 2(b - |B|)/T; in the layered scenarios (tissue_block_layers,\n"
+                            "  lumbar_epidural, liver_biopsy): puncture force, friction and stiffness x0.1..x10, period x1..x8,\n"
+                            "  a push onto bone at 2x the force limit (where the tissue has bone)",
                             run_bench_stability}};
 
 }  // namespace

@@ -11,7 +11,7 @@ namespace {
 
 int run_review(ArgList& args) {
   app::ReviewOptions options;
-  options.db = args.value("--db").value_or(app::default_db().string());
+  options.db = app::db_location(args.value("--db"));
   options.size = parse_size(args.value("--size").value_or("1600x900"), "--size");
   if (auto id = args.value("--session")) options.session = parse_whole(*id, "--session", 1, 9000000000000000);
   if (auto frames = args.value("--frames")) options.frames = long(parse_whole(*frames, "--frames", 1, 1000000000));
@@ -23,8 +23,9 @@ int run_review(ArgList& args) {
 
 const CommandRegistrar reg{
     {"review",
-     "needle-sim review [--db FILE] [--session ID] [--size WxH] [--frames N] [--screenshot FILE]\n"
-     "  --db FILE          session database (default: $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)\n"
+     "needle-sim review [--db FILE|URI] [--session ID] [--size WxH] [--frames N] [--screenshot FILE]\n"
+     "  --db FILE|URI      session database, an SQLite file or postgresql://... (default: $NEEDLE_DB, else\n"
+     "                    $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)\n"
      "  --session ID       the session to open first\n"
      "  --size WxH         window size (default 1600x900)\n"
      "  --frames N         close after N frames\n"

@@ -42,7 +42,9 @@ int run_run(ArgList& args) {
   options.task.rig.firmware = args.value("--firmware").value_or("");
   if (auto rate = args.value("--rate")) options.task.rig.rate_hz = parse_number(*rate, "--rate");
   options.task.trainee = args.value("--trainee").value_or(default_trainee());
-  options.task.db = args.value("--db").value_or(app::default_db().string());
+  options.task.db = app::db_location(args.value("--db"));
+  options.task.station = app::station_name(args.value("--station"));
+  if (auto local = args.value("--local")) options.task.local_db = *local;
   options.out_dir = args.value("--out").value_or("out/run");
   options.task.out_dir = options.out_dir;
   const std::optional<std::string> operator_spec = args.value("--operator");
@@ -97,7 +99,7 @@ int run_run(ArgList& args) {
 const CommandRegistrar reg{
     {"run",
      "needle-sim run [--task FILE | --scene FILE] [--device sim|mouse|keyboard|gamepad[:N]|falcon[:N]|replay:FILE]\n"
-     "               [--trainee NAME] [--db FILE] [--out DIR] [--headless] [--operator good|sloppy|FILE] [--rate HZ] [--firmware FILE]\n"
+     "               [--trainee NAME] [--db FILE|URI] [--station NAME] [--local FILE] [--out DIR] [--headless] [--operator good|sloppy|FILE] [--rate HZ] [--firmware FILE]\n"
      "               [--size WxH] [--msaa N] [--frames N] [--screenshot FILE] [--no-hud] [--section cut|translucent]\n"
      "  --task FILE        guided task (default: assets/tasks/penetrable_sphere.json)\n"
      "  --scene FILE       show a scene instead, a scripted needle inserting into its first deformable tissue\n"
@@ -105,7 +107,11 @@ const CommandRegistrar reg{
      "                     gamepad[:N] or falcon[:N]: the trainee's own device, in the window; replay:FILE: a\n"
      "                     recorded session played back with its own task (needle-sim devices lists them)\n"
      "  --trainee NAME     whose session it is (default: $USER)\n"
-     "  --db FILE          session database (default: $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)\n"
+     "  --db FILE|URI      session database: an SQLite file or postgresql://USER@HOST/DBNAME[?sslmode=...]\n"
+     "                     (default: $NEEDLE_DB, else $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)\n"
+     "  --station NAME     the station the session ran on (default: the host name)\n"
+     "  --local FILE       with a server: this station's own file, where a session is kept when the server is\n"
+     "                     lost (default: $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db); needle-sim sync\n"
      "  --out DIR          where score.json, the scenario that ran and the pictures go (default out/run)\n"
      "  --headless         run offscreen even when a display is available\n"
      "  --operator SCRIPT  sim: the scripted operator, good, sloppy (the task's own) or a script file (default good)\n"

@@ -1,9 +1,8 @@
 #include "training/sessions/session_export.hpp"
 
-#include <cmath>
-#include <sstream>
 
 #include "io/file_write.hpp"
+#include "training/sessions/export_format.hpp"
 #include "training/scoring/metric_fields.hpp"
 
 namespace needle::training {
@@ -12,13 +11,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-json number(double x) { return std::isnan(x) ? json(nullptr) : json(x); }
-
 json metrics_json(const Metrics& m) {
   json out = json::object();
   for_each_metric(m, [&](const char* name, const auto& value) {
     if constexpr (std::is_floating_point_v<std::decay_t<decltype(value)>>)
-      out[name] = number(value);
+      out[name] = json_number(value);
     else
       out[name] = value;
   });
@@ -30,8 +27,8 @@ json steps_json(const std::vector<StepResult>& steps) {
   for (const StepResult& s : steps)
     out.push_back({{"id", s.id},
                    {"outcome", step_outcome_name(s.record.outcome)},
-                   {"start_s", number(s.record.start_s)},
-                   {"end_s", number(s.record.end_s)},
+                   {"start_s", json_number(s.record.start_s)},
+                   {"end_s", json_number(s.record.end_s)},
                    {"failure", s.failure},
                    {"metrics", metrics_json(s.metrics)}});
   return out;
@@ -49,22 +46,6 @@ json components_json(const std::vector<ScoreComponent>& components) {
   for (const ScoreComponent& c : components)
     out.push_back({{"name", c.name}, {"value", c.value}, {"weight", c.weight}, {"points", c.points()}});
   return out;
-}
-
-// A CSV field: quoted when it holds a comma, a quote or a line break.
-std::string field(const std::string& text) {
-  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
-
-std::string csv_number(double x) {
-  if (std::isnan(x)) return "";
-  std::ostringstream out;
-  out.precision(17);
-  out << x;
-  return out.str();
 }
 
 }  // namespace
@@ -90,7 +71,9 @@ json session_json(const StoredSession& s) {
             {"ended_at", i.ended_at},
             {"complete", i.complete},
             {"duration_s", i.duration_s},
-            {"recording_path", i.recording_path}}},
+            {"recording_path", i.recording_path},
+            {"station", i.station},
+            {"uid", i.uid}}},
           {"score", i.score},
           {"passed", i.passed},
           {"components", components_json(s.components)},
@@ -108,7 +91,7 @@ std::string session_csv(const StoredSession& s) {
   };
   for (size_t k = 0; k < s.steps.size(); ++k) {
     const StepResult& step = s.steps[k];
-    rows(id + "," + std::to_string(k) + "," + field(step.id) + "," + step_outcome_name(step.record.outcome) + "," +
+    rows(id + "," + std::to_string(k) + "," + csv_field(step.id) + "," + step_outcome_name(step.record.outcome) + "," +
              csv_number(step.record.start_s) + "," + csv_number(step.record.end_s) + ",",
          step.metrics);
   }

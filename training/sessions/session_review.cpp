@@ -1,6 +1,7 @@
 #include "training/sessions/session_review.hpp"
 
 #include "haptics/recording/session_format.hpp"
+#include "io/file_write.hpp"
 
 namespace needle::training {
 namespace fs = std::filesystem;
@@ -11,6 +12,15 @@ fs::path resolve_recording(const fs::path& db_file, const std::string& recording
   const fs::path beside_db = fs::absolute(db_file).parent_path() / given;
   if (!fs::exists(beside_db) && fs::exists(given)) return fs::absolute(given);
   return beside_db;
+}
+
+fs::path fetch_stored_recording(const SessionStore& store, const SessionInfo& info) {
+  const std::optional<std::string> bytes = store.recording(info.id);
+  if (!bytes) return {};
+  const std::string uid = info.uid.empty() ? std::to_string(info.id) : info.uid;
+  const fs::path file = fs::temp_directory_path() / ("needle-sim-recording-" + uid + ".nrec");
+  io::write_file(file, *bytes);
+  return file;
 }
 
 SessionReview load_session_review(const SessionStore& store, const fs::path& db_file, int64_t id) {
@@ -30,8 +40,11 @@ SessionReview load_session_review(const SessionStore& store, const fs::path& db_
   if (info.recording_path.empty()) {
     r.recording_problem = "no recording (the session was stored without one)";
   } else {
-    r.recording_file = resolve_recording(db_file, info.recording_path);
+    fs::path fetched;  // the server's copy, read then removed: the review keeps the samples
     try {
+      // A server's session carries its recording; a file's names it beside the file.
+      if (store.engine() == SqlEngine::kPostgres) r.recording_file = fetched = fetch_stored_recording(store, info);
+      if (r.recording_file.empty()) r.recording_file = resolve_recording(db_file, info.recording_path);
       haptics::Session session = haptics::read_session(r.recording_file.string());
       samples = std::move(session.records);
       r.recording_end = session.end;
@@ -40,8 +53,10 @@ SessionReview load_session_review(const SessionStore& store, const fs::path& db_
       if (samples.empty()) r.recording_problem = r.recording_file.string() + ": the recording has no samples";
     } catch (const std::exception& e) {
       r.recording_problem = e.what();
-      if (!fs::exists(r.recording_file)) r.recording_problem = r.recording_file.string() + ": recording not found";
+      if (!r.recording_file.empty() && !fs::exists(r.recording_file)) r.recording_problem = r.recording_file.string() + ": recording not found";
     }
+    std::error_code ignored;
+    if (!fetched.empty()) fs::remove(fetched, ignored);
   }
   r.plots = session_plots(samples, r.task ? &*r.task : nullptr);
   if (!r.has_recording()) {

@@ -37,7 +37,14 @@ struct SessionReview {
 // database's folder (where runs keep recordings/), else to the current folder when only it exists.
 std::filesystem::path resolve_recording(const std::filesystem::path& db_file, const std::string& recording_path);
 
-// Loads session `id` (SessionStoreError when there is none) with its task and recording.
+// The recording a session keeps in the database (PostgreSQL), every chunk checked, written to a
+// file of the temporary folder named by its uid, for the recording's own reader to check and read;
+// an empty path when the database holds none. Throws SessionStoreError for a damaged chunk.
+std::filesystem::path fetch_stored_recording(const SessionStore& store, const SessionInfo& info);
+
+// Loads session `id` (SessionStoreError when there is none) with its task and recording: from the
+// database when it holds the recording (PostgreSQL; the fetched file is removed once read), else
+// the file the session names.
 SessionReview load_session_review(const SessionStore& store, const std::filesystem::path& db_file, int64_t id);
 
 }  // namespace needle::training

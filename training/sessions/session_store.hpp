@@ -1,30 +1,22 @@
-// The session store (docs/SESSIONS.md): an SQLite file of trainees, tasks, sessions, per-step
-// results, metrics, score breakdowns and the path of each session's recording. Versioned schema
-// migrated on open; WAL journal, so a review window can read while a trainee's run writes.
-// A session is inserted `incomplete` when it starts and made `complete`, with everything it
-// scored, in one transaction when it ends: a run that dies leaves an incomplete session and a
-// readable file. One SessionStore per thread (each is one connection).
+// The session store (docs/SESSIONS.md): trainees, tasks, sessions, per-step results, metrics,
+// score breakdowns, each session's station and recording, in an SQLite file or on a PostgreSQL
+// server (`location`: a file, or postgresql://...). Same schema and migrations on both, applied
+// on open. A session is inserted `incomplete` when it starts and made `complete`, with everything
+// it scored, in one transaction when it ends: a run that dies leaves an incomplete session and a
+// readable database. One SessionStore per thread (each is one connection).
 #pragma once
 
 #include <cstdint>
-#include <filesystem>
+#include <memory>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "training/scoring/session_scorer.hpp"
-
-struct sqlite3;
+#include "training/sessions/session_schema.hpp"
+#include "training/sessions/sql_connection.hpp"
 
 namespace needle::training {
-
-// "FILE: what failed: SQLite's message".
-struct SessionStoreError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-inline constexpr int kSessionSchemaVersion = 2;
 
 struct SessionInfo {
   int64_t id = 0;
@@ -40,6 +32,8 @@ struct SessionInfo {
   bool passed = false;
   double duration_s = 0.0;
   std::string recording_path;  // "" when none
+  std::string station;         // "" for sessions from schema 1-2
+  std::string uid;             // the id its station made (sync), "" for sessions from schema 1-2
 };
 
 struct StoredSession {
@@ -49,6 +43,17 @@ struct StoredSession {
   std::vector<ScoreComponent> components;  // empty for sessions from schema 1
 };
 
+// What a new session is. `uid` empty: one is made; `started_at` empty: now.
+struct NewSession {
+  std::string trainee;
+  std::string task, task_title, task_source;
+  std::string device;
+  std::string recording_path;
+  std::string station;
+  std::string uid;
+  std::string started_at;
+};
+
 // Opens an existing store for reading only (review, report): nothing is created, migrated or
 // written, so a database in a read-only folder or on a read-only disk can be reviewed.
 struct ReadOnly {};
@@ -56,34 +61,56 @@ inline constexpr ReadOnly kReadOnly{};
 
 class SessionStore {
  public:
-  // Opens or creates `file` and migrates it to `schema_version` (tests pass an older one to
-  // make an old file). Both constructors check the file first (PRAGMA quick_check) and refuse a
-  // damaged one, untouched. Throws SessionStoreError naming the file.
-  explicit SessionStore(const std::filesystem::path& file, int schema_version = kSessionSchemaVersion);
-  SessionStore(const std::filesystem::path& file, ReadOnly);
+  // Opens or creates the database at `location` and migrates it to `schema_version` (tests pass
+  // an older one to make an old database). An SQLite file is checked first (PRAGMA quick_check)
+  // and a damaged one refused, untouched. Throws SessionStoreError naming the database.
+  explicit SessionStore(const std::string& location, int schema_version = kSessionSchemaVersion);
+  SessionStore(const std::string& location, ReadOnly);
   ~SessionStore();
   SessionStore(const SessionStore&) = delete;
   SessionStore& operator=(const SessionStore&) = delete;
 
+  SqlEngine engine() const { return db_->engine(); }
+  const std::string& name() const { return db_->name(); }  // never with a password
   int schema_version() const;
-  std::string journal_mode() const;  // "wal"
 
   // Inserts an incomplete session (and its trainee and task when new) and commits it at once.
+  int64_t begin_session(const NewSession& session);
   int64_t begin_session(const std::string& trainee, const Task& task, const std::string& device,
-                        const std::string& recording_path);
+                        const std::string& recording_path, const std::string& station = "");
   // Writes the steps, metrics and score and marks the session complete, in one transaction.
-  void finish_session(int64_t id, const SessionResult& result);
+  // `ended_at` empty: now.
+  void finish_session(int64_t id, const SessionResult& result, const std::string& ended_at = "");
 
   std::vector<SessionInfo> sessions() const;  // newest first
   StoredSession load(int64_t id) const;       // throws if there is no such session
+  std::optional<SessionInfo> find_uid(const std::string& uid) const;
+
+  // The recording kept in the database (PostgreSQL): appended chunk by chunk as it is written,
+  // each with its CRC-32. `offset` must be where the stored bytes end (recording_bytes()).
+  void append_recording(int64_t id, int64_t offset, const std::string& bytes);
+  int64_t recording_bytes(int64_t id) const;
+  // The stored bytes, every chunk checked (its CRC, and that it starts where the one before ended);
+  // nullopt when the session has none. Throws SessionStoreError naming the session and the offset.
+  std::optional<std::string> recording(int64_t id) const;
+
+  // The outbox: sessions this station kept for the server `server` (shown form) it could not reach.
+  void keep_for_server(int64_t id, const std::string& server);
+  std::vector<int64_t> outbox() const;
+  void sent(int64_t id);
 
  private:
-  void exec(const char* sql, const std::string& what = "") const;  // what failed, for the error
-  void open(int flags, const std::string& name);  // name: the file, or an SQLite URI for it
-  void check_integrity() const;
-
-  std::string file_;
-  sqlite3* db_ = nullptr;
+  std::unique_ptr<SqlConnection> db_;
 };
+
+// The result a stored session holds (steps, metrics, score and its breakdown; no reasons), to
+// store it again elsewhere (sync).
+SessionResult stored_result(const StoredSession& stored);
+
+// Now, as the store writes times: ISO 8601 UTC to the second, "2026-11-21T12:00:00Z".
+std::string utc_timestamp();
+
+// A session id no other station makes: 128 random bits from the system's generator, in hex.
+std::string new_session_uid();
 
 }  // namespace needle::training

@@ -1,0 +1,112 @@
+// PostgreSQL's security as docs/SESSIONS.md gives it: the roles of tools/postgres-roles.sql (a
+// station reads and finishes only its own sessions, an instructor reads all and writes nothing),
+// TLS settings passed to libpq as written, a URI's password never in a message.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+
+#include "tests/support/stored_sessions.hpp"
+#include "tests/support/test_paths.hpp"
+#include "tests/support/test_postgres.hpp"
+#include "training/sessions/store_location.hpp"
+
+namespace needle::training {
+namespace {
+using test::a_result;
+using test::small_task;
+
+std::string roles_sql() {
+  std::ifstream in(test::source_dir() / "tools" / "postgres-roles.sql");
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string message_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(PostgresRoles, AStationCannotSeeOrAlterAnotherStationsSessions) {
+  const std::string owner_uri = test::fresh_postgres_database("t_roles");
+  { SessionStore owner(owner_uri); }  // the owner's first open makes the schema
+  const std::string roles = roles_sql();
+  ASSERT_GT(roles.size(), 100u);
+  test::postgres_admin(roles, "t_roles");
+  test::postgres_admin(roles, "t_roles");  // idempotent
+  test::postgres_admin(
+      "DROP ROLE IF EXISTS \"station-a\"; DROP ROLE IF EXISTS \"station-b\"; DROP ROLE IF EXISTS \"dr-lee\";"
+      "CREATE ROLE \"station-a\" LOGIN IN ROLE needle_station; CREATE ROLE \"station-b\" LOGIN IN ROLE needle_station;"
+      "CREATE ROLE \"dr-lee\" LOGIN IN ROLE needle_instructor;");
+  const std::string a_uri = test::postgres_uri("t_roles", "station-a");
+  const std::string b_uri = test::postgres_uri("t_roles", "station-b");
+
+  SessionStore a(a_uri), b(b_uri);
+  const int64_t a_done = a.begin_session("ana", small_task(), "sim", "", "station-a");
+  a.append_recording(a_done, 0, "abc");
+  a.finish_session(a_done, a_result());
+  const int64_t a_open = a.begin_session("ana", small_task(), "sim", "", "station-a");
+  const int64_t b_own = b.begin_session("ben", small_task(), "sim", "", "station-b");
+  b.finish_session(b_own, a_result());
+
+  // Station b sees its own session only, cannot finish a's, nor add to its results or recording.
+  ASSERT_EQ(b.sessions().size(), 1u);
+  EXPECT_EQ(b.sessions()[0].id, b_own);
+  EXPECT_NE(message_of([&] { b.finish_session(a_open, a_result()); }).find("no incomplete session with that id"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { b.append_recording(a_open, 0, "forged"); }), "");
+  EXPECT_NE(message_of([&] { b.load(a_done); }).find("no such session"), std::string::npos);
+  PostgresConnection b_raw(b_uri, false);
+  EXPECT_EQ(b_raw.query("UPDATE sessions SET score = 100 WHERE id = ?", {a_done}, "").changes, 0);
+  EXPECT_NE(message_of([&] { b_raw.query("DELETE FROM sessions WHERE id = ?", {a_done}, ""); }).find("permission denied"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { b_raw.query("INSERT INTO metrics VALUES (?, -1, 'forged', 1)", {a_done}, ""); })
+                .find("row-level security"),
+            std::string::npos);
+  // Nor insert a session in another station's name.
+  EXPECT_NE(message_of([&] { b.begin_session("ben", small_task(), "sim", "", "station-a"); }).find("row-level security"),
+            std::string::npos);
+
+  // a's sessions are as a left them; the instructor reads everything and can write nothing.
+  SessionStore instructor(test::postgres_uri("t_roles", "dr-lee"), kReadOnly);
+  ASSERT_EQ(instructor.sessions().size(), 3u);
+  EXPECT_DOUBLE_EQ(instructor.load(a_done).info.score, a_result().score.total);
+  EXPECT_EQ(instructor.load(a_done).steps.size(), 2u);
+  EXPECT_EQ(instructor.recording(a_done), "abc");
+  EXPECT_FALSE(instructor.load(a_open).info.complete);
+  PostgresConnection lee(test::postgres_uri("t_roles", "dr-lee"), false);
+  EXPECT_NE(message_of([&] { lee.query("UPDATE sessions SET score = 0", {}, ""); }).find("permission denied"), std::string::npos);
+}
+
+TEST(PostgresConnection, TlsSettingsArePassedToLibpqAsWritten) {
+  // An sslmode libpq does not know is refused by libpq itself: the value reached it unchanged.
+  const std::string error =
+      message_of([] { PostgresConnection c(test::postgres_uri("postgres") + "&sslmode=bogus", false); });
+  EXPECT_NE(error.find("sslmode"), std::string::npos) << error;
+  EXPECT_NE(error.find("bogus"), std::string::npos) << error;
+  // sslmode=disable over the socket connects (TLS is for TCP; libpq ignores it on a Unix socket).
+  EXPECT_EQ(message_of([] { PostgresConnection c(test::postgres_uri("postgres") + "&sslmode=disable", false); }), "");
+}
+
+TEST(StoreLocation, APasswordIsNeverShown) {
+  EXPECT_EQ(shown_location("postgresql://station:pw@db.lab/needle?sslmode=verify-full"),
+            "postgresql://station:***@db.lab/needle?sslmode=verify-full");
+  EXPECT_EQ(shown_location("postgres://u:p%40ss@h:5432/d"), "postgres://u:***@h:5432/d");
+  EXPECT_EQ(shown_location("postgresql:///needle?host=/run/pg&password=hunter2&user=x"),
+            "postgresql:///needle?host=/run/pg&password=***&user=x");
+  EXPECT_EQ(shown_location("postgresql://u@h/d?password=x"), "postgresql://u@h/d?password=***");
+  EXPECT_EQ(shown_location("postgresql://h/d"), "postgresql://h/d");
+  EXPECT_EQ(shown_location("/home/ana/sessions:db@x.db"), "/home/ana/sessions:db@x.db");  // a file is a file
+  // A message of a failed connection names the server without the password.
+  const std::string error = message_of([] {
+    SessionStore s("postgresql://needle:hunter2@/no_such_database?host=" + test::postgres_dir());
+  });
+  EXPECT_NE(error.find("postgresql://needle:***@/no_such_database"), std::string::npos) << error;
+  EXPECT_EQ(error.find("hunter2"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace needle::training
