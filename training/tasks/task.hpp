@@ -125,6 +125,7 @@ struct ScoringSpec {
 // its title at most kMaxTitleBytes.
 inline constexpr size_t kMaxNameBytes = 64;
 inline constexpr size_t kMaxTitleBytes = 200;
+inline constexpr int kMaxTaskOrder = 1000000;
 
 // The section view's plane a task fixes (docs/TASKS.md, "Section"), instead of the default one
 // through the needle: through `point`, `normal` unit, pointing to the side cut away (the viewer's).
@@ -138,6 +139,9 @@ struct Task {
   std::string name;
   std::string title;
   std::string description;         // one line for the start screen; may be empty
+  // The task's place in the start screen's list (docs/TASKS.md, "Top level"): tasks with an order
+  // come first, lowest first; those without follow in file-name order.
+  std::optional<int> order;
   std::string source;              // the file it came from
   std::filesystem::path scene;     // scene file (docs/SCENE_FORMAT.md), resolved
   std::filesystem::path scenario;  // haptics scenario (assets/scenarios), resolved; may be empty

@@ -24,7 +24,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
 
   Task task(const json& root) {
     object(root, "", {"name", "title", "description", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps", "scoring",
-                      "ultrasound", "section", "hide_layer_names"});
+                      "ultrasound", "section", "hide_layer_names", "order"});
     Task t;
     t.name = name(member(root, "", "name"), "/name");
     t.title = root.contains("title") ? string(root["title"], "/title") : t.name;
@@ -38,6 +38,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       t.scenario = existing_file(root["scenario"], "/scenario", folder_);
       t.layers = layers(t.scenario);
     }
+    if (root.contains("order")) t.order = static_cast<int>(whole(root["order"], "/order", 0, kMaxTaskOrder));
     if (root.contains("hide_layer_names")) t.hide_layer_names = boolean(root["hide_layer_names"], "/hide_layer_names");
     if (root.contains("normal_marker_spacing_m"))
       t.normal_marker_spacing_m = positive(root["normal_marker_spacing_m"], "/normal_marker_spacing_m");
