@@ -193,7 +193,7 @@ int run_review_window(const ReviewOptions& options) {
         if (ui::draw_session_detail(*a.review, detail, below)) {
           const fs::path dir = local_folder(options.db.string()) / "exports";
           try {
-            detail.export_message = "wrote " + training::export_session(a.review->stored, dir).string() + " and the .csv";
+            detail.export_message = "wrote " + training::export_session(a.review->stored, dir, a.review->punctures()).string() + " and the .csv";
           } catch (const std::exception& e) {
             detail.export_message = e.what();
           }

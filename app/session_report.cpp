@@ -40,7 +40,7 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
                         {review.start_s(), review.end_s()});
     std::printf("plots from %.3f to %.3f s\n", plots.lo, plots.hi);
   }
-  const fs::path json = training::export_session(review.stored, out);
+  const fs::path json = training::export_session(review.stored, out, review.punctures());
   std::printf("wrote %s and %s\n", json.c_str(), fs::path(json).replace_extension(".csv").c_str());
   if (!info.complete) {
     std::printf("session %lld is incomplete (its run ended before the task did, or is still going): exported what is "
@@ -52,7 +52,9 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
   ui::SessionTableState table;
   table.selected = id;
   const std::vector<training::SessionInfo> sessions = store->sessions();
-  const engine::Extent table_size{960, 360}, detail_size{820, 1380}, plot_size{900, 320}, replay_size{1280, 720};
+  // A layered session's detail has six more metric rows and the force–depth plot.
+  const engine::Extent table_size{960, 360}, detail_size{820, review.layered() ? 1640u : 1380u}, plot_size{900, 320},
+      replay_size{1280, 720};
   write_picture(out / "review_table.png", ui::panel_picture(device, table_size, [&] {
                   ui::draw_session_table(sessions, table, whole(table_size));
                 }));
@@ -81,6 +83,15 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
     write_picture(out / names[k], ui::panel_picture(device, plot_size, [&] {
                     ui::draw_plot_window(review, *all[k], whole(plot_size), plots);
                   }));
+  }
+  if (review.layered()) {
+    if (review.force_depth.plot.lines.empty())
+      std::printf("no plot_force_depth.png: %s\n", review.force_depth.plot.missing.c_str());
+    else
+      write_picture(out / "plot_force_depth.png", ui::panel_picture(device, plot_size, [&] {
+                      ui::draw_force_depth_window(review.force_depth, nullptr, whole(plot_size));
+                    }));
+    std::printf("%zu puncture(s)\n", review.force_depth.puncture_list.size());
   }
   if (!review.task) {
     std::printf("no replay picture: %s\n", review.task_problem.c_str());

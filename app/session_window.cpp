@@ -85,8 +85,14 @@ void SessionWindow::frames(engine::GpuScene& scene, const Show& show, const std:
 TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices) {
   std::optional<DeskInput> desk;
   if (haptics::DeskDevice* device = session.desk()) desk.emplace(*device);
-  if (const std::optional<Eigen::Vector3d> start = session.tool_start(); desk && start)
+  if (const std::optional<Eigen::Vector3d> start = session.tool_start(); desk && start) {
     desk->place_cursor(window.window(), session.scene().camera, glm::vec3(start->x(), start->y(), start->z()));
+    // The loop maps the device's first reading onto the tool's start (TaskSpaceStep): the device
+    // has the placed cursor before it starts, even when ImGui still holds the pointer for the
+    // screen before (the start screen's panel under it), which would skip the first frame's input
+    // and move the needle by the cursor's offset once the panel lets go.
+    desk->frame(window.window(), {}, false);
+  }
   engine::GpuScene scene(window.renderer(), session.scene());
   std::optional<TaskEnd> end;
   const char* controls = desk ? DeskInput::help(session.desk()->capabilities().name) : nullptr;

@@ -270,6 +270,7 @@ void TaskSession::draw_panel(std::optional<size_t> step, const char* controls, c
     const double* f = last.environment_force_n;
     view.force_N = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
     if (last.contact == haptics::ContactState::kTissue) view.lateral_N = training::lateral_load_N(last);
+    if (task_.layers.size() > 1) view.tissue = last.tissue;
     const haptics::LoopStatsSummary stats = loop_->stats();
     view.loop_rate_hz = loop_->running() ? stats.rate_hz : rig_->rate_hz();
     if (last.fault != 0) view.fault = haptics::fault_cause_name(static_cast<haptics::FaultCause>(last.fault));

@@ -14,12 +14,12 @@ fuzz_seconds=${FUZZ_SECONDS:-20}
 # The closed-loop simulations and the sessions run end to end: the sanitized tick is 50 to 300
 # times slower (Eigen's small matrices, no longer inlined), a session of minutes.
 suites='BenchPrecision|BenchStability|PenaltyOnRobot|ControllerLoop|DeviceSim|RealtimeLoop|RealtimeTaskSpace'
-suites+='|SimHolonomic|SimNonholonomic|SimFeel|SimHandPassivity|TissueInsertion|RealtimeNoAlloc'
-suites+='|SessionLimits|SessionReviewTest|SessionStoreFailure|ShippedTasks/ScriptedSessions|ReviewPanels'
-suites+='|CliBench[A-Za-z]*|CliHapticsBench|CliHapticsSimulate|CliRecordings|CliReport|CliRunDevices|CliRunTask|CliWrites|Tasks/RunReplay'
+suites+='|SimHolonomic|SimNonholonomic|SimFeel|SimHandPassivity|TissueInsertion|TissueSnapshot|RealtimeNoAlloc'
+suites+='|SessionLimits|SessionReviewTest|SessionStoreFailure|ShippedTasks/ScriptedSessions|LayeredSessions|ReviewPanels|ReviewPanelsLayered'
+suites+='|CliBench[A-Za-z]*|CliHapticsBench|CliHapticsSimulate|CliRecordings|CliReport|CliReportLayered|CliRunDevices|CliRunTask|CliWrites|Tasks/RunReplay'
 suites+='|CliPostgres'
 tests='BenchTickAllocations\.(NonholonomicContact|LayeredTissue)TickAllocatesNothing|RecordingReplay\.ControllerReplayIsBitForBit'
-tests+='|SimComponents\.DeviceEnergyBalancesTheWorkDoneOnIt|CliStartScreen\.(ATraineeStarts|TheKeyboards|TheScorePanels)[A-Za-z]*'
+tests+='|SimComponents\.DeviceEnergyBalancesTheWorkDoneOnIt|CliStartScreen\.(ATraineeStarts|ATraineeDoes|TheKeyboards|TheScorePanels)[A-Za-z]*'
 skip=${SANITIZE_SKIP-"^((ShaderBuild|Layout|$suites)\\.|($tests)\$)"}
 
 phase_start=$SECONDS

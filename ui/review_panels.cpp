@@ -31,6 +31,19 @@ const MetricDisplay kMetrics[] = {
     {"rigid_contacts", "rigid contacts", "count", 1.0}, {"faults", "safety faults", "count", 1.0},
     {"first_fault", "first fault", "cause", 1.0},
 };
+// Shown for a session on a layered tissue (issue 14) after those above.
+const MetricDisplay kLayeredMetrics[] = {
+    {"punctures", "punctures", "count", 1.0},         {"overshoot_m", "overshoot", "mm", 1000.0},
+    {"bone_contacts", "bone contacts", "count", 1.0}, {"bone_peak_force_N", "bone peak force", "N", 1.0},
+    {"redirections", "redirections", "count", 1.0},   {"forbidden_punctures", "forbidden punctures", "count", 1.0},
+};
+
+// The metrics a session's tables show: the layered ones too on a layered tissue.
+std::vector<MetricDisplay> shown_metrics(bool layered) {
+  std::vector<MetricDisplay> out(std::begin(kMetrics), std::end(kMetrics));
+  if (layered) out.insert(out.end(), std::begin(kLayeredMetrics), std::end(kLayeredMetrics));
+  return out;
+}
 
 // The value of metric `name` in display units; NaN when it does not apply.
 double shown_value(const training::Metrics& m, const MetricDisplay& d) {
@@ -76,7 +89,7 @@ void breakdown_table(const std::vector<training::ScoreComponent>& components) {
   ImGui::EndTable();
 }
 
-void steps_table(const training::StoredSession& s) {
+void steps_table(const training::StoredSession& s, bool layered) {
   const int columns = int(s.steps.size()) + 2;
   if (s.steps.empty()) {
     ImGui::TextColored(kDim, "no step results stored");
@@ -84,7 +97,8 @@ void steps_table(const training::StoredSession& s) {
   }
   const ImGuiTableFlags flags =
       ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX;
-  if (!ImGui::BeginTable("steps", columns, flags, ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * 19.5f))) return;
+  const float rows = 19.5f + (layered ? float(std::size(kLayeredMetrics)) : 0.0f);
+  if (!ImGui::BeginTable("steps", columns, flags, ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * rows))) return;
   ImGui::TableSetupColumn("metric");
   for (const training::StepResult& step : s.steps) ImGui::TableSetupColumn(step.id.c_str());
   ImGui::TableSetupColumn("session");
@@ -107,7 +121,7 @@ void steps_table(const training::StoredSession& s) {
     value_cell(step.record.start_s);
   }
   ImGui::TableNextColumn();
-  for (const MetricDisplay& d : kMetrics) {
+  for (const MetricDisplay& d : shown_metrics(layered)) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::Text("%s (%s)", d.label, d.unit);
@@ -256,7 +270,7 @@ bool draw_session_detail(const training::SessionReview& r, const DetailOptions& 
     ImGui::Separator();
     breakdown_table(r.stored.components);
     ImGui::Separator();
-    steps_table(r.stored);
+    steps_table(r.stored, r.layered());
     ImGui::Separator();
     recording_line(r);
     PlotOptions plot;
@@ -266,6 +280,7 @@ bool draw_session_detail(const training::SessionReview& r, const DetailOptions& 
     if (r.has_recording()) {  // else the recording line says why there are none
       if (o.span) span_row(r, *o.span);
       for (const training::Plot* p : r.plots.all()) draw_plot(*p, plot);
+      if (r.layered()) draw_force_depth_plot(r.force_depth, nullptr, 140.0f);
     }
   }
   ImGui::End();
@@ -318,7 +333,7 @@ void draw_comparison(const training::SessionReview& a, const training::SessionRe
         value_cell(vb - va);
       };
       row("score", ia.complete ? ia.score : training::kNotApplicable, ib.complete ? ib.score : training::kNotApplicable);
-      for (const MetricDisplay& d : kMetrics) {
+      for (const MetricDisplay& d : shown_metrics(a.layered())) {
         const std::string label = std::string(d.label) + " (" + d.unit + ")";
         row(label.c_str(), shown_value(a.stored.overall, d), shown_value(b.stored.overall, d));
       }
@@ -339,7 +354,14 @@ void draw_comparison(const training::SessionReview& a, const training::SessionRe
         draw_plot(*pb[k], o);
       }
     }
+    if (a.layered()) draw_force_depth_plot(a.force_depth, &b.force_depth, 120.0f);
   }
+  ImGui::End();
+}
+
+void draw_force_depth_window(const training::ForceDepth& a, const training::ForceDepth* b, const PanelRect& at) {
+  if (begin_panel(a.plot.title.c_str(), at))
+    draw_force_depth_plot(a, b, std::max(80.0f, ImGui::GetContentRegionAvail().y - 2.0f * ImGui::GetTextLineHeightWithSpacing()));
   ImGui::End();
 }
 

@@ -11,6 +11,7 @@
 
 #include "training/sessions/session_review.hpp"
 #include "training/sessions/session_table.hpp"
+#include "ui/force_depth_plot.hpp"
 #include "ui/time_span.hpp"
 
 namespace needle::ui {
@@ -63,5 +64,11 @@ inline void draw_plot_window(const training::SessionReview& review, const traini
                              TimeSpan span = {}) {
   draw_plot_window(plot, &review.stored.steps, at, span);
 }
+
+// The force–depth plot filling a window (the report's picture), B's over A's when `b` is given.
+void draw_force_depth_window(const training::ForceDepth& a, const training::ForceDepth* b, const PanelRect& at);
+
+// Whether the session's task runs on a layered tissue: its review has the force–depth plot.
+inline bool layered(const training::SessionReview& r) { return r.task && r.task->layers.size() > 1; }
 
 }  // namespace needle::ui

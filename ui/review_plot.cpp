@@ -4,22 +4,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <string>
+
+#include "ui/plot_frame.hpp"
 
 namespace needle::ui {
 namespace {
 
-// Session A's lines in blues and greens, session B's in oranges, in the order of Plot::lines.
-const ImU32 kLinesA[] = {IM_COL32(110, 190, 255, 255), IM_COL32(120, 220, 140, 255)};
-const ImU32 kLinesB[] = {IM_COL32(255, 160, 70, 255), IM_COL32(240, 90, 120, 255)};
 // Learning curves: eight hues far enough apart to tell trainees apart on the dark plot.
 const ImU32 kTrainees[] = {IM_COL32(110, 190, 255, 255), IM_COL32(255, 160, 70, 255), IM_COL32(120, 220, 140, 255),
                            IM_COL32(240, 90, 120, 255),  IM_COL32(200, 150, 255, 255), IM_COL32(240, 230, 90, 255),
                            IM_COL32(90, 220, 220, 255),  IM_COL32(200, 200, 200, 255)};
-const ImU32 kAxis = IM_COL32(150, 150, 160, 255), kGrid = IM_COL32(70, 70, 80, 255), kText = IM_COL32(200, 200, 205, 255);
-const ImU32 kGuide = IM_COL32(255, 220, 80, 200), kStep = IM_COL32(120, 120, 135, 255), kCursor = IM_COL32(255, 255, 255, 230);
+const ImU32 kCursor = IM_COL32(255, 255, 255, 230);
 
 struct Range {
   double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
@@ -29,12 +26,6 @@ struct Range {
     hi = std::max(hi, v);
   }
 };
-
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", std::abs(v) < 1e-12 ? 0.0 : v);
-  return text;
-}
 
 // The samples of `s` inside [span.lo, span.hi], with one more on either side so that the line
 // runs to the plot's edges.
@@ -66,10 +57,6 @@ void zoom_and_pan(const training::Plot& plot, TimeSpan& span, const TimeSpan& sh
   ImGui::SetCursorScreenPos(back);
 }
 
-void dashed_vertical(ImDrawList* draw, float x, float top, float bottom, ImU32 colour) {
-  for (float y = top; y < bottom; y += 6.0f) draw->AddLine(ImVec2(x, y), ImVec2(x, std::min(y + 3.0f, bottom)), colour);
-}
-
 }  // namespace
 
 void draw_plot(const training::Plot& plot, const PlotOptions& o) {
@@ -82,9 +69,9 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
   }
   std::vector<std::pair<const training::Series*, ImU32>> lines;
   for (size_t i = 0; i < plot.lines.size(); ++i)
-    lines.push_back({&plot.lines[i], o.marked_points ? kTrainees[i % std::size(kTrainees)] : kLinesA[i % 2]});
+    lines.push_back({&plot.lines[i], o.marked_points ? kTrainees[i % std::size(kTrainees)] : kPlotLinesA[i % 2]});
   if (o.other) {
-    for (size_t i = 0; i < o.other->lines.size(); ++i) lines.push_back({&o.other->lines[i], kLinesB[i % 2]});
+    for (size_t i = 0; i < o.other->lines.size(); ++i) lines.push_back({&o.other->lines[i], kPlotLinesB[i % 2]});
   }
   Range x, y;
   for (const auto& [series, colour] : lines) {
@@ -108,72 +95,45 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
   if (shown.width() >= whole.width()) {
     for (const training::Guide& g : plot.guides) y.add(g.value);
   }
-  if (!(y.hi > y.lo)) y.hi = y.lo + 1.0;
-  const double pad = 0.05 * (y.hi - y.lo);
-  y.lo -= y.lo < 0.0 ? pad : 0.0;
-  y.hi += pad;
-
-  const float left = 52.0f, bottom = 18.0f, right = 8.0f;
-  const ImVec2 origin = ImGui::GetCursorScreenPos();
-  const float width = ImGui::GetContentRegionAvail().x;
-  const ImVec2 p0(origin.x + left, origin.y + 4.0f), p1(origin.x + width - right, origin.y + o.height - bottom);
-  auto sx = [&](double t) { return float(p0.x + (t - x.lo) / (x.hi - x.lo) * (p1.x - p0.x)); };
-  auto sy = [&](double v) { return float(p1.y - (v - y.lo) / (y.hi - y.lo) * (p1.y - p0.y)); };
+  const PlotFrame f = plot_frame(x.lo, x.hi, y.lo, y.hi, o.height);
+  const ImVec2 p0 = f.p0, p1 = f.p1;
   if (o.span) zoom_and_pan(plot, *o.span, shown, whole, p0, p1);
   ImDrawList* draw = ImGui::GetWindowDrawList();
-  draw->AddRectFilled(p0, p1, IM_COL32(22, 22, 28, 255));
-  for (double v : training::axis_ticks(y.lo, y.hi, 4)) {
-    draw->AddLine(ImVec2(p0.x, sy(v)), ImVec2(p1.x, sy(v)), kGrid);
-    const std::string label = number(v);
-    draw->AddText(ImVec2(p0.x - 6.0f - ImGui::CalcTextSize(label.c_str()).x, sy(v) - 7.0f), kText, label.c_str());
-  }
-  for (double t : training::axis_ticks(x.lo, x.hi, 8)) {
-    if (o.marked_points && t != std::round(t)) continue;  // attempts are whole numbers
-    draw->AddLine(ImVec2(sx(t), p1.y), ImVec2(sx(t), p1.y + 4.0f), kAxis);
-    const std::string label = number(t);
-    draw->AddText(ImVec2(sx(t) - 0.5f * ImGui::CalcTextSize(label.c_str()).x, p1.y + 3.0f), kText, label.c_str());
-  }
-  draw->AddText(ImVec2(origin.x + 4.0f, p1.y + 3.0f), kText, plot.x_label.c_str());
+  draw_plot_frame(draw, f, plot.x_label, o.marked_points);  // attempts are whole numbers
   draw->PushClipRect(p0, p1, true);
   if (o.steps) {
     for (size_t k = 0; k < o.steps->size(); ++k) {
       const double start = (*o.steps)[k].record.start_s;
       if (!std::isfinite(start)) continue;
-      dashed_vertical(draw, sx(start), p0.y, p1.y, kStep);
-      draw->AddText(ImVec2(sx(start) + 2.0f, p0.y), kStep, std::to_string(k + 1).c_str());
+      dashed_vertical(draw, f.sx(start), p0.y, p1.y, kPlotStep);
+      draw->AddText(ImVec2(f.sx(start) + 2.0f, p0.y), kPlotStep, std::to_string(k + 1).c_str());
     }
   }
   for (const training::Guide& g : plot.guides) {
-    draw->AddLine(ImVec2(p0.x, sy(g.value)), ImVec2(p1.x, sy(g.value)), kGuide);
+    draw->AddLine(ImVec2(p0.x, f.sy(g.value)), ImVec2(p1.x, f.sy(g.value)), kPlotGuide);
     const ImVec2 size = ImGui::CalcTextSize(g.label.c_str());
-    const float above = sy(g.value) - size.y;  // below the line when it runs along the top
-    draw->AddText(ImVec2(p1.x - size.x - 2.0f, above < p0.y ? sy(g.value) + 1.0f : above), kGuide, g.label.c_str());
+    const float above = f.sy(g.value) - size.y;  // below the line when it runs along the top
+    draw->AddText(ImVec2(p1.x - size.x - 2.0f, above < p0.y ? f.sy(g.value) + 1.0f : above), kPlotGuide, g.label.c_str());
   }
   std::vector<ImVec2> points;
   for (const auto& [series, colour] : in_span) {
     const training::Series drawn = decimate(series, size_t(std::max(1.0f, p1.x - p0.x)));
     points.clear();
     for (size_t i = 0; i < drawn.t.size(); ++i) {
-      if (std::isfinite(drawn.v[i])) points.push_back(ImVec2(sx(drawn.t[i]), sy(drawn.v[i])));
+      if (std::isfinite(drawn.v[i])) points.push_back(ImVec2(f.sx(drawn.t[i]), f.sy(drawn.v[i])));
     }
     if (points.size() > 1) draw->AddPolyline(points.data(), int(points.size()), colour, 0, 1.5f);
     if (o.marked_points)
       for (const ImVec2& p : points) draw->AddCircleFilled(p, 3.5f, colour);
   }
-  if (o.cursor_s) draw->AddLine(ImVec2(sx(*o.cursor_s), p0.y), ImVec2(sx(*o.cursor_s), p1.y), kCursor, 1.5f);
+  if (o.cursor_s) draw->AddLine(ImVec2(f.sx(*o.cursor_s), p0.y), ImVec2(f.sx(*o.cursor_s), p1.y), kCursor, 1.5f);
   draw->PopClipRect();
-  draw->AddRect(p0, p1, kAxis);
-  ImGui::Dummy(ImVec2(width, o.height));
-  // Legend: one swatch and name per line; session B's marked as such.
+  std::vector<std::pair<std::string, ImU32>> legend;
   for (size_t i = 0; i < lines.size(); ++i) {
-    if (i > 0) ImGui::SameLine();
-    const ImVec2 at = ImGui::GetCursorScreenPos();
-    draw->AddRectFilled(ImVec2(at.x, at.y + 4.0f), ImVec2(at.x + 10.0f, at.y + 12.0f), lines[i].second);
-    ImGui::Dummy(ImVec2(12.0f, 12.0f));
-    ImGui::SameLine();
     const bool b = i >= plot.lines.size();
-    ImGui::Text("%s%s", lines[i].first->name.c_str(), b ? " (B)" : o.other ? " (A)" : "");
+    legend.push_back({lines[i].first->name + (b ? " (B)" : o.other ? " (A)" : ""), lines[i].second});
   }
+  draw_plot_legend(f, legend);
 }
 
 }  // namespace needle::ui

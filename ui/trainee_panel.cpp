@@ -40,6 +40,29 @@ void metric_line(const char* name, double value, const char* unit, double scale 
   }
 }
 
+// A layer as the trainee may see it: its name, or its number when the task hides the names.
+std::string layer_label(const training::Task& task, int layer) {
+  if (task.hide_layer_names || layer < 0 || size_t(layer) >= task.layers.size()) return "layer " + std::to_string(layer + 1);
+  return task.layers[size_t(layer)].name;
+}
+
+// The layer holding the tip and the membranes punctured on the track so far.
+void tissue_lines(const training::Task& task, const haptics::TissueSnapshot& t) {
+  if (t.tip_layer >= 0)
+    ImGui::Text("tip in: %s", layer_label(task, t.tip_layer).c_str());
+  else
+    ImGui::TextColored(kDim, "tip in: -");
+  std::string punctured;
+  int count = 0;
+  for (size_t i = 0; i < task.layers.size() && i < 32; ++i)
+    if (task.layers[i].puncture_force_N > 0.0 && haptics::punctured(t, int(i))) {
+      ++count;
+      if (!task.hide_layer_names) punctured += (punctured.empty() ? "" : ", ") + task.layers[i].name;
+    }
+  ImGui::TextWrapped("punctures: %d%s%s%s", count, punctured.empty() ? "" : " (", punctured.c_str(), punctured.empty() ? "" : ")");
+  if (t.bone_layer >= 0) ImGui::TextColored(kBad, "on bone: %s", layer_label(task, t.bone_layer).c_str());
+}
+
 void draw_running(const TraineeView& v) {
   const training::Task& task = *v.task;
   const size_t shown = std::min(v.step.value_or(v.progress->current_step()), task.steps.size() - 1);
@@ -53,13 +76,16 @@ void draw_running(const TraineeView& v) {
     if (step.time_limit_s > 0.0) ImGui::TextColored(kDim, "time limit %.0f s", step.time_limit_s);
     if (v.progress->condition_met()) ImGui::TextColored(kGood, "holding... %.1f s", v.progress->held_s());
   } else {
-    ImGui::TextColored(outcome == training::StepOutcome::kCompleted ? kGood : kBad, "%s", step_outcome_name(outcome));
+    const std::string why = training::step_failure_reason(task, v.progress->records()[shown]);
+    ImGui::TextColored(outcome == training::StepOutcome::kCompleted ? kGood : kBad, "%s%s%s", step_outcome_name(outcome),
+                       why.empty() ? "" : ": ", why.c_str());
   }
   ImGui::Separator();
   const bool force_band = step.condition.type == training::ConditionType::kForceHeld;
   force_gauge(v.force_N, task.scoring.safe_force_N, force_band ? step.condition.min : 0.0,
               force_band ? step.condition.max : 0.0);
   if (v.lateral_N) ImGui::Text("in tissue: lateral load %.2f N", *v.lateral_N);
+  if (v.tissue) tissue_lines(task, *v.tissue);
   ImGui::Separator();
   const training::Metrics& m = v.step_metrics;
   metric_line("tip to target", m.tip_error_m, "mm", 1000.0);
@@ -109,6 +135,9 @@ std::vector<std::string> what_to_improve(const training::Score& score) {
       {"smoothness", "Move more smoothly"},
       {"time", "Work a little faster"},
       {"retries", "Avoid withdrawing and re-inserting"},
+      {"overshoot", "Stop as soon as the resistance gives way"},
+      {"bone_contacts", "Keep to the planned axis: do not meet the bone"},
+      {"redirections", "Aim before you go in: avoid pulling back and redirecting"},
   };
   std::vector<const training::ScoreComponent*> lost;
   for (const training::ScoreComponent& c : score.components) {

@@ -26,6 +26,9 @@ struct TraineeView {
   // |lambda| now while the needle is in tissue, where the environment force is zero and the
   // load is the tissue's sideways reaction; nullopt outside tissue.
   std::optional<double> lateral_N;
+  // The layered tissue at the needle now (issue 14), in a task with layers: the panel shows the
+  // layer holding the tip and the punctures so far (names hidden when the task says so).
+  std::optional<haptics::TissueSnapshot> tissue;
   double loop_rate_hz = 0.0;   // measured rate of the haptic loop
   const char* fault = nullptr; // latched safety fault, nullptr when none
   std::function<void()> reset_fault;  // when set, a latched fault shows a button that calls it

@@ -57,6 +57,7 @@ void VirtualWorld::sense(double step) {
   const bool was_in_tissue = report_.tissue;
   report_.mode = ContactMode::Free;
   report_.rigid = report_.tissue = false;
+  report_.bone_layer = -1;
   report_.phi = std::numeric_limits<double>::infinity();
   if (!scene_.tissue.empty()) {
     if (step > 0.0) {
@@ -81,6 +82,7 @@ void VirtualWorld::sense(double step) {
     report_.normal = rigid_sample_.gradient;
     report_.phi = rigid_sample_.phi;
     report_.rigid = true;
+    report_.bone_layer = tissue_.out.surface_layer;
   }
   if (report_.rigid) report_.mode = ContactMode::Holonomic;
   report_.axial = axial_mechanics_ && tissue_.on_track && !report_.rigid;

@@ -40,6 +40,7 @@ struct ContactReport {
   ContactMode mode = ContactMode::Free;  // Holonomic when `rigid`, else Nonholonomic when `tissue`
   bool rigid = false;   // a rigid surface holds the tip: the scene's, or a rigid layer (bone) of the tissue
   bool tissue = false;  // the needle is in the tissue: (3.22)-(3.23) hold it (also while on bone)
+  int bone_layer = -1;  // the tissue's rigid layer holding the tip (`rigid` through bone), −1 when none
   bool axial = false;   // the tissue's axial force acts: the tip on its track, pressing a surface or in
                         // a layer, with axial mechanics (the thesis's sphere has none), not on bone
   double phi = 0.0;                                      // of the surface that decides the mode

@@ -17,6 +17,22 @@ enum class ContactState : uint32_t {
 inline constexpr int kMaxSnapshotJoints = 8;
 inline constexpr int kMaxMultipliers = 4;
 
+// The layered tissue at the needle (issue 14), as the last sub-step of the tick left it: what the
+// task layer needs to say "the tip is in layer L", "layer L was punctured", "bone was touched",
+// and what the renderer needs for the dimple. Layers are the scenario tissue's indices (outside
+// in); recorded from payload version 2 on (haptics/recording/session_format.hpp).
+struct TissueSnapshot {
+  int32_t tip_layer = -1;         // the layer holding the tip, -1 outside the tissue (or still tenting the first surface)
+  uint32_t punctured_layers = 0;  // bit i: the current track has passed into layer i (its surface punctured, or
+                                  // entered where it has none); a full withdrawal clears it
+  int32_t surface_layer = -1;     // the layer whose surface the tip presses (tents), -1 when none
+  int32_t bone_layer = -1;        // the rigid layer (bone) holding the tip against its surface, -1 when none
+  double axial_force_N = 0.0;     // needle on tissue along the needle axis, > 0 while it resists the advance
+  double bone_force_n[3] = {0.0, 0.0, 0.0};     // tool on bone (F_v of thesis eq. 3.16) while bone_layer >= 0
+  double deflection_m = 0.0;                    // the pressed surface's deflection along the needle (the dimple's depth)
+  double surface_point_m[3] = {0.0, 0.0, 0.0};  // where the tip met that surface, at rest, world frame
+};
+
 struct ToolSnapshot {
   uint64_t tick = 0;
   double time_s = 0.0;
@@ -34,7 +50,13 @@ struct ToolSnapshot {
   double device_force_n[3] = {0.0, 0.0, 0.0};       // what the device was commanded
   uint32_t fault = 0;  // haptics::FaultCause, 0 when none
   uint32_t reserved = 0;
+  TissueSnapshot tissue;
 };
+
+// Whether `layer` (a tissue layer's index) is in the snapshot's punctured set.
+inline bool punctured(const TissueSnapshot& t, int layer) {
+  return layer >= 0 && layer < 32 && (t.punctured_layers >> layer & 1u) != 0;
+}
 
 // The needle axis x5 in the world: the unit quaternion (w, x, y, z) applied to the body x axis
 // (the needle has its tip at the origin, pointing along +x).

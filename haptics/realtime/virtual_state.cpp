@@ -43,6 +43,20 @@ void publish_virtual_state(const VirtualWorld& world, const Eigen::Vector3d& bas
   state.multiplier_count = rigid ? 1 : tissue ? 2 : 0;
   state.multipliers[0] = rigid ? c.lambda_rigid : tissue ? c.lambda_tissue[0] : 0.0;
   state.multipliers[1] = tissue ? c.lambda_tissue[1] : 0.0;
+
+  const TissueState& track = world.tissue();
+  TissueSnapshot& t = state.tissue;
+  t.tip_layer = track.on_track ? track.out.holding_layer : -1;
+  t.punctured_layers = passed_layers(track);
+  t.surface_layer = track.on_track ? track.out.surface_layer : -1;
+  t.bone_layer = c.bone_layer;
+  t.axial_force_N = c.axial_force_N;
+  t.deflection_m = t.surface_layer >= 0 ? track.out.deflection_m : 0.0;
+  const Eigen::Vector3d met = track.out.contact_point + base_in_world;
+  for (int i = 0; i < 3; ++i) {
+    t.bone_force_n[i] = c.bone_layer >= 0 ? c.force_rigid[i] : 0.0;
+    t.surface_point_m[i] = t.surface_layer >= 0 ? met[i] : 0.0;
+  }
 }
 
 }  // namespace needle::haptics

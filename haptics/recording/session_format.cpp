@@ -29,7 +29,6 @@ constexpr std::size_t kFixedHeaderBytes = 8 + 4 + 4 + 4 + 4 + 8 + 8;
 // `if (version >= N)`.
 template <typename Visitor>
 void visit_record(Visitor& v, TickSample& s, uint32_t version) {
-  (void)version;  // every field below is in payload version 1
   v(s.tick), v(s.time_ns), v(s.period_ns), v(s.compute_ns);
   DeviceReading& r = s.reading;
   v(r.sequence), v(r.connected), v(r.joint_count), v(r.buttons), v(r.has_sensed_force), v(r.has_joint_velocity);
@@ -40,6 +39,11 @@ void visit_record(Visitor& v, TickSample& s, uint32_t version) {
   v(t.tick), v(t.time_s), v(t.needle_tip_m), v(t.needle_orientation), v(t.virtual_q), v(t.virtual_dq);
   v(t.joint_count), v(t.contact), v(t.active_constraint), v(t.multiplier_count), v(t.multipliers);
   v(t.operator_force_n), v(t.environment_force_n), v(t.device_force_n), v(t.fault), v(t.reserved);
+  if (version >= 2) {  // the layered tissue at the needle (issue 14)
+    TissueSnapshot& l = t.tissue;
+    v(l.tip_layer), v(l.punctured_layers), v(l.surface_layer), v(l.bone_layer), v(l.axial_force_N), v(l.bone_force_n);
+    v(l.deflection_m), v(l.surface_point_m);
+  }
 }
 
 struct Sizer {
@@ -104,8 +108,8 @@ std::vector<uint8_t> encode_header(const SessionHeader& header) {
   std::vector<uint8_t> out(kMagic, kMagic + sizeof kMagic);
   put(out, kSessionFormatVersion);
   put(out, uint32_t{0});  // header_bytes, filled in below
-  put(out, kPayloadVersion);
-  put(out, static_cast<uint32_t>(session_record_bytes()));
+  put(out, header.payload_version);
+  put(out, static_cast<uint32_t>(session_record_bytes(header.payload_version)));
   put(out, header.rate_hz);
   put(out, header.unix_time_s);
   put(out, static_cast<uint32_t>(header.device.size()));
@@ -117,13 +121,13 @@ std::vector<uint8_t> encode_header(const SessionHeader& header) {
   return out;
 }
 
-void encode_record(const TickSample& sample, std::vector<uint8_t>& out) {
+void encode_record(const TickSample& sample, std::vector<uint8_t>& out, uint32_t payload_version) {
   Writer writer{out};
-  visit_record(writer, const_cast<TickSample&>(sample), kPayloadVersion);
+  visit_record(writer, const_cast<TickSample&>(sample), payload_version);
 }
 
-void encode_block_header(uint8_t* at, uint64_t first_record, uint32_t count) {
-  const std::size_t records = std::size_t(count) * session_record_bytes();
+void encode_block_header(uint8_t* at, uint64_t first_record, uint32_t count, uint32_t payload_version) {
+  const std::size_t records = std::size_t(count) * session_record_bytes(payload_version);
   std::memcpy(at, kBlockMagic, 4);
   put_at(at + 4, first_record);
   put_at(at + 12, count);

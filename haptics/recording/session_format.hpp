@@ -35,7 +35,9 @@ inline constexpr uint32_t kSessionFormatVersion = 3;
 // The layout of one record. A new field of TickSample is appended to visit_record() behind
 // `if (version >= N)` with N the next payload version: recordings of older payloads then still
 // read, the new field at its default.
-inline constexpr uint32_t kPayloadVersion = 1;
+// Payload 1: the tick, device reading and command, tool state. Payload 2 (issue 14) adds the
+// layered tissue at the needle (ToolSnapshot::tissue).
+inline constexpr uint32_t kPayloadVersion = 2;
 // The recorder writes at most this many records in a block; a reader refuses more.
 inline constexpr uint32_t kMaxBlockRecords = 4096;
 
@@ -57,15 +59,16 @@ struct RecordingError : std::runtime_error {
 // Size of one encoded record of `payload_version` in bytes.
 std::size_t session_record_bytes(uint32_t payload_version = kPayloadVersion);
 
-// The header, with its checksum (version 3 only: older versions are not written).
+// The header, with its checksum (version 3 only: older versions are not written). The recorder
+// writes kPayloadVersion; an older payload_version is for tests of what older builds wrote.
 std::vector<uint8_t> encode_header(const SessionHeader& header);
 // Appends one record to `out` (reserved by the caller; no allocation when capacity allows).
-void encode_record(const TickSample& sample, std::vector<uint8_t>& out);
+void encode_record(const TickSample& sample, std::vector<uint8_t>& out, uint32_t payload_version = kPayloadVersion);
 
 inline constexpr std::size_t kBlockHeaderBytes = 24;
 inline constexpr std::size_t kEndBytes = 20;
 // Fills the kBlockHeaderBytes at `at` for the `count` records that follow them.
-void encode_block_header(uint8_t* at, uint64_t first_record, uint32_t count);
+void encode_block_header(uint8_t* at, uint64_t first_record, uint32_t count, uint32_t payload_version = kPayloadVersion);
 std::vector<uint8_t> encode_end(uint64_t record_total, bool ran_to_end);
 
 // What a reader found besides the records.

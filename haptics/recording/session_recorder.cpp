@@ -12,7 +12,9 @@ SessionRecorder::SessionRecorder(const std::string& path, const SessionHeader& h
     : path_(path), samples_(samples), sink_(std::move(sink)) {
   file_ = std::fopen(path.c_str(), "wb");
   if (file_ == nullptr) throw RecordingError(path + ": cannot be created: " + std::strerror(errno));
-  const std::vector<uint8_t> head = encode_header(header);
+  SessionHeader written = header;
+  written.payload_version = kPayloadVersion;  // the records below are this build's, whatever the header came from
+  const std::vector<uint8_t> head = encode_header(written);
   if (std::fwrite(head.data(), 1, head.size(), file_) != head.size() || std::fflush(file_) != 0) {
     const int error = errno;
     std::fclose(file_);

@@ -100,6 +100,15 @@ double press_surface(const TissueModel& model, TissueState& st, const Eigen::Vec
 
 }  // namespace
 
+uint32_t passed_layers(const TissueState& st) {
+  static_assert(TissueModel::kMaxLayers <= 32, "one bit per layer");
+  uint32_t mask = 0;
+  if (!st.on_track) return mask;
+  for (int k = 0; k < st.stretch_count; ++k)
+    if (st.stretches[size_t(k)].layer >= 0) mask |= 1u << st.stretches[size_t(k)].layer;
+  return mask;
+}
+
 const TissueOutput& step_tissue(const TissueModel& model, TissueState& st, const Eigen::Vector3d& tip,
                                 const Eigen::Vector3d& axis, double dt) {
   TissueOutput& out = st.out;

@@ -54,6 +54,10 @@ struct TissueState {
   TissueOutput out;
 };
 
+// (state) => bit i set for every layer i the current track has passed into (its surface punctured,
+// or entered where it has none); 0 off the track. Rigid layers are never passed into.
+uint32_t passed_layers(const TissueState& state);
+
 // (model, state, tip, unit axis, dt > 0) => (state.track, state.grip_force_N, state.tissue_work_J, state.out)
 //   ds = (x − x_prev)·u, ṡ = ds/dt; the track coordinate s += ds.
 //   Surface pressed:  F_s = k₁d + k₂d², d = s − s_met; gives way (pops) once F_s ≥ F_p.

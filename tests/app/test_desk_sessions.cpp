@@ -3,8 +3,9 @@
 // as cursor motion, wheel notches and right-button turns through the mouse mapping, and as stick
 // and trigger deflections through the gamepad's rate control, into the
 // rig `needle-sim run --device keyboard|mouse|gamepad` builds, through the haptic loop, scored. Every step
-// completes, the pivot about the tip included. (The window's own mouse, driven by xdotool, is in
-// tests/tools/test_cli_start_screen.cpp.)
+// completes, the pivot about the tip included. The layered target too, with the mouse. (The window's
+// own mouse, driven by xdotool, is in tests/tools/test_cli_start_screen.cpp and
+// tests/tools/test_cli_run_devices.cpp.)
 #include <gtest/gtest.h>
 
 #include <iostream>
@@ -40,10 +41,11 @@ std::string steps_of(const training::SessionResult& r) {
 
 // Runs the task on `device` (keyboard or mouse); `input(t, desk)` is called every `input_ticks`
 // ticks with the time into the session and sets the device's pose through its mapping.
+// `task_name`: a task of assets/tasks/.
 template <typename Input>
-DeskRun run_desk(const std::string& device, uint64_t input_ticks, Input input) {
-  const fs::path dir = process_folder(output_dir() / "desk_sessions" / device);
-  const training::Task task = training::load_task(source_dir() / "assets/tasks/penetrable_sphere.json");
+DeskRun run_desk(const std::string& device, uint64_t input_ticks, Input input, const std::string& task_name = "penetrable_sphere") {
+  const fs::path dir = process_folder(output_dir() / "desk_sessions" / (device + "_" + task_name));
+  const training::Task task = training::load_task(source_dir() / "assets/tasks" / (task_name + ".json"));
   app::RigOptions options;
   options.device = device;
   options.camera = engine::load_scene(task.scene).camera;
@@ -75,9 +77,9 @@ DeskRun run_desk(const std::string& device, uint64_t input_ticks, Input input) {
   return run;
 }
 
-DeskStart planning_start(const std::string& device) {
-  return desk_start(source_dir() / "assets/tasks/penetrable_sphere.json", device,
-                    process_folder(output_dir() / "desk_sessions" / (device + "_plan")));
+DeskStart planning_start(const std::string& device, const std::string& task_name = "penetrable_sphere") {
+  return desk_start(source_dir() / "assets/tasks" / (task_name + ".json"), device,
+                    process_folder(output_dir() / "desk_sessions" / (device + "_" + task_name + "_plan")));
 }
 
 void expect_every_step_completed(const DeskRun& run) {
@@ -120,24 +122,44 @@ TEST(DeskSessions, PenetrableSphereWithTheKeyboard) {
   std::cout << presses << " key presses\n";
 }
 
-TEST(DeskSessions, PenetrableSphereWithTheMouse) {
-  const training::Task task = training::load_task(source_dir() / "assets/tasks/penetrable_sphere.json");
-  const DeskStart start = planning_start("mouse");
-  // The app puts the cursor on the tool's start in a 1280x720 window.
+// The task `task_name` played with the mouse: the app puts the cursor on the tool's start in a
+// 1280x720 window, the plan `make_plan` makes from there is played 50 frames a second. `mouse`
+// keeps the player for the caller to look at.
+template <typename MakePlan>
+DeskRun run_with_the_mouse(const std::string& task_name, MakePlan make_plan, std::optional<MousePlayer>& mouse) {
+  const training::Task task = training::load_task(source_dir() / "assets/tasks" / (task_name + ".json"));
+  const DeskStart start = planning_start("mouse", task_name);
   const Eigen::Vector2d cursor = mouse_cursor_start(task, start, {1280, 720});
   const Eigen::Vector3d device_start(cursor.x() * 0.1, cursor.y() * 0.1, 0.1);
-  MousePlayer mouse(penetrable_plan(task, start, device_start), device_start, cursor);
-  // 50 frames a second.
-  const DeskRun run = run_desk("mouse", 20, [&](double t, haptics::DeskDevice& desk) {
-    mouse.step(t);
-    desk.set_pose(mouse.pose());
-  });
+  mouse.emplace(make_plan(task, start, device_start), device_start, cursor);
+  return run_desk("mouse", 20, [&](double t, haptics::DeskDevice& desk) {
+    mouse->step(t);
+    desk.set_pose(mouse->pose());
+  }, task_name);
+}
+
+// The layered target (issue 14) with the mouse: above the entry, turned onto the vertical axis,
+// the wheel pushing the needle in through skin, fat and muscle to the target, held, withdrawn.
+TEST(DeskSessions, LayeredTargetWithTheMouse) {
+  std::optional<MousePlayer> mouse;
+  const DeskRun run = run_with_the_mouse("layered_target", [](const auto& task, const auto& start, const auto& device_start) {
+    return layered_target_plan(task, start, device_start);
+  }, mouse);
   expect_every_step_completed(run);
-  std::cout << "cursor from (" << mouse.lowest().transpose() << ") to (" << mouse.highest().transpose() << ")\n";
-  EXPECT_GT(mouse.lowest().x(), -1280.0 / 720.0) << "the plan stays inside the window";
-  EXPECT_LT(mouse.highest().x(), 1280.0 / 720.0);
-  EXPECT_GT(mouse.lowest().y(), -1.0);
-  EXPECT_LT(mouse.highest().y(), 1.0);
+  EXPECT_EQ(run.result.overall.bone_contacts, 0u) << steps_of(run.result);
+  ASSERT_FALSE(run.result.punctures.empty()) << steps_of(run.result);
+  EXPECT_EQ(run.result.punctures[0].layer, "skin");
+}
+
+TEST(DeskSessions, PenetrableSphereWithTheMouse) {
+  std::optional<MousePlayer> mouse;
+  const DeskRun run = run_with_the_mouse("penetrable_sphere", penetrable_plan, mouse);
+  expect_every_step_completed(run);
+  std::cout << "cursor from (" << mouse->lowest().transpose() << ") to (" << mouse->highest().transpose() << ")\n";
+  EXPECT_GT(mouse->lowest().x(), -1280.0 / 720.0) << "the plan stays inside the window";
+  EXPECT_LT(mouse->highest().x(), 1280.0 / 720.0);
+  EXPECT_GT(mouse->lowest().y(), -1.0);
+  EXPECT_LT(mouse->highest().y(), 1.0);
 }
 
 TEST(DeskSessions, PenetrableSphereWithAGamepad) {

@@ -280,7 +280,7 @@ std::vector<uint8_t> old_header(uint32_t version, const std::string& device, con
     const auto* p = reinterpret_cast<const uint8_t*>(&value);
     out.insert(out.end(), p, p + sizeof value);
   };
-  put(version), put(static_cast<uint32_t>(session_record_bytes())), put(500.0), put(int64_t{7});
+  put(version), put(static_cast<uint32_t>(session_record_bytes(1))), put(500.0), put(int64_t{7});
   put(static_cast<uint32_t>(device.size()));
   out.insert(out.end(), device.begin(), device.end());
   if (context) {
@@ -304,7 +304,7 @@ TEST(RecordingIntegrity, ARefusedFileIsClosed) {
 TEST(RecordingIntegrity, OlderVersionsStillReadAndSayTheyHaveNoChecksums) {
   const std::string path = temp_path("old.nrec");
   std::vector<uint8_t> v1 = old_header(1, "sim", nullptr);
-  encode_record(sample(9), v1);
+  encode_record(sample(9), v1, 1);
   write_bytes(path, v1);
   Session s = read_session(path);
   EXPECT_EQ(s.header.version, 1u);
@@ -318,7 +318,7 @@ TEST(RecordingIntegrity, OlderVersionsStillReadAndSayTheyHaveNoChecksums) {
 
   const std::string context = R"({"task": "t.json", "bytes": "\u00e9\n"})";
   std::vector<uint8_t> v2 = old_header(2, "sim", &context);
-  for (uint64_t k = 0; k < 300; ++k) encode_record(sample(k), v2);
+  for (uint64_t k = 0; k < 300; ++k) encode_record(sample(k), v2, 1);
   v2.resize(v2.size() - 7);  // a kill mid-record: the whole records read, the partial one is said
   write_bytes(path, v2);
   s = read_session(path);
@@ -326,9 +326,9 @@ TEST(RecordingIntegrity, OlderVersionsStillReadAndSayTheyHaveNoChecksums) {
   EXPECT_EQ(s.header.context, context);
   ASSERT_EQ(s.records.size(), 299u);
   EXPECT_EQ(s.records[298].reading.position_m[0], sample(298).reading.position_m[0]);
-  EXPECT_EQ(s.end.trailing_bytes, session_record_bytes() - 7);
+  EXPECT_EQ(s.end.trailing_bytes, session_record_bytes(1) - 7);
   EXPECT_EQ(recording_notes(path, s.end, 299).back(),
-            path + ": " + std::to_string(session_record_bytes() - 7) + " bytes of a last record cut short, dropped");
+            path + ": " + std::to_string(session_record_bytes(1) - 7) + " bytes of a last record cut short, dropped");
 
   std::vector<uint8_t> huge = old_header(2, "sim", &context);  // a length that would allocate 4 GB
   const uint32_t length = 0xFFFFFFF0u;
@@ -363,7 +363,96 @@ TEST(RecordingIntegrity, TheRecordSizeIsTheHeadersNotTheFramings) {
   const uint32_t bigger = uint32_t(session_record_bytes() + 8);
   write_bytes(path, header_with(20, bigger));
   EXPECT_EQ(error_of(path), path + ": header: record size " + std::to_string(bigger) + " bytes, expected " +
-                                std::to_string(session_record_bytes()) + " for payload version 1");
+                                std::to_string(session_record_bytes()) + " for payload version " +
+                                std::to_string(kPayloadVersion));
+  fs::remove(path);
+}
+
+// A tick in layered tissue: every field of the tissue snapshot set to a value of its own.
+TickSample layered_sample(uint64_t k) {
+  TickSample s = sample(k);
+  TissueSnapshot& t = s.state.tissue;
+  t.tip_layer = int32_t(k % 5);
+  t.punctured_layers = 0b10110u + uint32_t(k);
+  t.surface_layer = 3;
+  t.bone_layer = int32_t(k % 2) - 1;
+  t.axial_force_N = 1.25 + 1e-3 * double(k);
+  t.bone_force_n[0] = -0.5, t.bone_force_n[1] = 0.1, t.bone_force_n[2] = std::nextafter(2.0, 3.0);
+  t.deflection_m = 3.5e-3;
+  t.surface_point_m[0] = 0.01, t.surface_point_m[1] = -0.02, t.surface_point_m[2] = 1.0 / 3.0;
+  return s;
+}
+
+bool same_bits(const TissueSnapshot& a, const TissueSnapshot& b) {
+  static_assert(std::has_unique_object_representations_v<int32_t>);
+  auto bits = [](const TissueSnapshot& t) {
+    std::vector<uint8_t> out;
+    auto put = [&out](const auto& value) {
+      const auto* p = reinterpret_cast<const uint8_t*>(&value);
+      out.insert(out.end(), p, p + sizeof value);
+    };
+    put(t.tip_layer), put(t.punctured_layers), put(t.surface_layer), put(t.bone_layer), put(t.axial_force_N);
+    put(t.bone_force_n), put(t.deflection_m), put(t.surface_point_m);
+    return out;
+  };
+  return bits(a) == bits(b);
+}
+
+// Payload 2 keeps the layered tissue at the needle, bit for bit, through the checked blocks.
+TEST(RecordingIntegrity, TheLayeredTissueStateIsRecordedBitForBit) {
+  const std::string path = temp_path("layered.nrec");
+  {
+    SpscRing<TickSample> ring(4096);
+    SessionRecorder recorder(path, kHeader, ring);
+    for (uint64_t k = 0; k < 300; ++k) ring.push(layered_sample(k));
+    recorder.drain();
+    recorder.stop(true);
+    ASSERT_EQ(recorder.error(), "");
+  }
+  const Session s = read_session(path);
+  EXPECT_EQ(s.header.payload_version, 2u);
+  ASSERT_EQ(s.records.size(), 300u);
+  for (uint64_t k = 0; k < 300; ++k) {
+    EXPECT_TRUE(same_bits(s.records[k].state.tissue, layered_sample(k).state.tissue)) << "tick " << k;
+    EXPECT_EQ(s.records[k].reading.position_m[0], sample(k).reading.position_m[0]);
+  }
+  fs::remove(path);
+}
+
+// A version-3 recording of payload 1 (what the builds before issue 14 wrote) reads exactly as it
+// did: the same record size, every field of payload 1 as written, the tissue at its defaults.
+TEST(RecordingIntegrity, PayloadOneRecordingsStillReadExactlyAsBefore) {
+  EXPECT_EQ(session_record_bytes(1), 684u);  // payload 1: the record_bytes of recordings made before issue 14
+  EXPECT_EQ(session_record_bytes(2), 684u + 4 * 4 + 8 + 24 + 8 + 24);
+  SessionHeader old = kHeader;
+  old.payload_version = 1;
+  std::vector<uint8_t> bytes = encode_header(old);
+  const size_t block = bytes.size();
+  bytes.resize(block + kBlockHeaderBytes);
+  for (uint64_t k = 0; k < 40; ++k) encode_record(layered_sample(k), bytes, 1);
+  encode_block_header(bytes.data() + block, 0, 40, 1);
+  const std::vector<uint8_t> end = encode_end(40, true);
+  bytes.insert(bytes.end(), end.begin(), end.end());
+  const std::string path = temp_path("payload1.nrec");
+  write_bytes(path, bytes);
+
+  const Session s = read_session(path);
+  EXPECT_EQ(s.header.payload_version, 1u);
+  EXPECT_TRUE(s.end.checksummed && s.end.closed && s.end.ran_to_end);
+  ASSERT_EQ(s.records.size(), 40u);
+  for (uint64_t k = 0; k < 40; ++k) {
+    const TickSample expected = sample(k);
+    EXPECT_EQ(s.records[k].tick, expected.tick);
+    EXPECT_EQ(s.records[k].time_ns, expected.time_ns);
+    EXPECT_EQ(s.records[k].reading.sequence, expected.reading.sequence);
+    EXPECT_EQ(s.records[k].reading.position_m[0], expected.reading.position_m[0]);
+    EXPECT_EQ(s.records[k].state.time_s, expected.state.time_s);
+    EXPECT_TRUE(same_bits(s.records[k].state.tissue, TissueSnapshot{})) << "tick " << k;  // not in payload 1
+  }
+  // The payload-1 records re-encoded are the file's bytes: nothing was read from past a record.
+  std::vector<uint8_t> again;
+  for (const TickSample& r : s.records) encode_record(r, again, 1);
+  EXPECT_TRUE(std::equal(again.begin(), again.end(), bytes.begin() + long(block + kBlockHeaderBytes)));
   fs::remove(path);
 }
 

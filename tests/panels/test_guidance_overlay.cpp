@@ -1,7 +1,8 @@
 // A step's guidance drawn over the task's scene headless, against goldens: the penetrable task's
 // insertion (planned axis and depth gauge with its band, the tip 28 mm deep) and the rigid task's
 // touch (entry and target rings, the three normal markers along the normal nearest the tip). The
-// tip and needle are placed by hand, so the pictures depend on nothing but the drawing.
+// tip and needle are placed by hand, so the pictures depend on nothing but the drawing. Also the
+// layered tasks' (issue 14): the layered target's step to the target, the epidural's approach.
 #include <gtest/gtest.h>
 
 #include "app/needle_tracker.hpp"
@@ -48,6 +49,19 @@ TEST_F(GuidanceOverlay, TouchShowsTheEntryTargetAndNormalMarkers) {
   const training::Vec3 entry = task.markers[0].position;
   const training::Vec3 tip{entry[0] - 0.01, entry[1], entry[2] + 0.02};
   EXPECT_TRUE(matches_golden(draw("rigid_sphere", 0, tip, {0.0, 0.0, -1.0}), "guidance_touch"));
+}
+
+// The layered target's step to the target (issue 14): the vertical planned axis, the target 35 mm
+// deep and the depth gauge with its 31-38 mm band, the tip 20 mm in.
+TEST_F(GuidanceOverlay, LayeredTargetShowsTheAxisTheTargetAndTheDepthGauge) {
+  const training::Vec3 tip{0.33, 0.0, 0.07 - 0.020};
+  EXPECT_TRUE(matches_golden(draw("layered_target", 2, tip, {0.0, 0.0, -1.0}), "guidance_layered_target"));
+}
+
+// The epidural's approach: the entry ring on the midline and the axis, the tip 15 mm above the skin.
+TEST_F(GuidanceOverlay, EpiduralApproachShowsTheEntryAndTheMidlineAxis) {
+  const training::Vec3 tip{0.33, 0.0, 0.07 + 0.015};
+  EXPECT_TRUE(matches_golden(draw("epidural", 0, tip, {0.0, 0.0, -1.0}), "guidance_epidural_approach"));
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // The instructor's review panels drawn headless, against goldens: the session table, a
 // session's detail with its plots, a single plot, two sessions compared, and a replay frame of
 // the recorded session in the 3D view. The sessions are recorded closed-loop runs of the
-// penetrable task (good and sloppy operators) with their dates fixed, so the pictures are too.
+// penetrable task (good and sloppy operators) with their dates fixed, so the pictures are too; and
+// the layered tasks' force–depth plot (issue 14) of their recorded runs.
 #include <gtest/gtest.h>
 
 #include "tests/app/recorded_session.hpp"
@@ -114,6 +115,55 @@ TEST_F(ReviewPanels, ReplayFrameMatchesGolden) {
   EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] {
     ui::draw_replay_bar(r, t, false, {ImVec2(0, 300), ImVec2(640, 60)});
   }, &scene, 4), "panel_review_replay"));
+}
+
+// The layered tasks' force–depth plot (issue 14), from recorded closed-loop runs: the layered
+// target's good run alone (its boundaries skin, fat, muscle and its punctures), and the epidural's
+// good run (A) against its sloppy one (B).
+class ReviewPanelsLayered : public VulkanTest {
+ protected:
+  static void SetUpTestSuite() {
+    VulkanTest::SetUpTestSuite();
+    dir_ = process_folder(test::output_dir() / "review_panels_layered");
+    db_ = dir_ / "sessions.db";
+    target_ = record_session(db_, {"layered_target", "good", "ana", true});
+    epidural_good_ = record_session(db_, {"epidural", "good", "ana", true});
+    epidural_sloppy_ = record_session(db_, {"epidural", "sloppy", "bo", true});
+  }
+  static training::SessionReview review(int64_t id) {
+    training::SessionStore store(db_);
+    return training::load_session_review(store, db_, id);
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(dir_);
+    VulkanTest::TearDownTestSuite();
+  }
+  static inline fs::path dir_, db_;
+  static inline RecordedSession target_, epidural_good_, epidural_sloppy_;
+};
+
+TEST_F(ReviewPanelsLayered, ForceDepthOfTheLayeredTargetMatchesGolden) {
+  const training::SessionReview r = review(target_.id);
+  ASSERT_TRUE(r.layered());
+  ASSERT_FALSE(r.force_depth.plot.lines.empty()) << r.force_depth.plot.missing;
+  // The punctures are the ones the run scored, in order.
+  ASSERT_EQ(r.force_depth.puncture_list.size(), target_.result.punctures.size());
+  for (size_t k = 0; k < r.force_depth.puncture_list.size(); ++k) {
+    EXPECT_EQ(r.force_depth.puncture_list[k].layer, target_.result.punctures[k].layer);
+    EXPECT_DOUBLE_EQ(r.force_depth.puncture_list[k].peak_force_N, target_.result.punctures[k].peak_force_N);
+  }
+  const engine::Extent size{900, 320};
+  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] { ui::draw_force_depth_window(r.force_depth, nullptr, whole(size)); }),
+                             "panel_force_depth_layered_target"));
+}
+
+TEST_F(ReviewPanelsLayered, ForceDepthOfTwoEpiduralSessionsComparedMatchesGolden) {
+  const training::SessionReview a = review(epidural_good_.id), b = review(epidural_sloppy_.id);
+  const engine::Extent size{900, 320};
+  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] {
+                               ui::draw_force_depth_window(a.force_depth, &b.force_depth, whole(size));
+                             }),
+                             "panel_force_depth_compare_epidural"));
 }
 
 }  // namespace

@@ -29,6 +29,14 @@ training::SessionResult result_of(double total, bool passed, const double (&frac
   return result;
 }
 
+// A state with the tip on the task's entry marker (the approach step's condition).
+haptics::ToolSnapshot at_entry(const training::Task& task) {
+  haptics::ToolSnapshot s;
+  const training::Vec3 entry = task.markers[size_t(task.marker_index("entry"))].position;
+  for (int i = 0; i < 3; ++i) s.needle_tip_m[i] = entry[i];
+  return s;
+}
+
 class TraineePanel : public VulkanTest {
  protected:
   engine::RgbaImage draw(const ui::TraineeView& view, engine::Extent extent = {480, 420}) {
@@ -88,6 +96,70 @@ TEST_F(TraineePanel, ResultWithTheStartScreensChoicesAt1920x1080MatchesGolden) {
   view.controls = "cursor: move   wheel or Up/Down: in and out   right button held: turn about the tip";
   view.choices = {{"Retry (R)", [] {}}, {"Next task (N)", [] {}}, {"Back (Esc)", [] {}}};
   EXPECT_TRUE(matches_golden(draw(view, {1920, 1080}), "panel_trainee_result_choices_1920x1080"));
+}
+
+// The layered target mid-task (issue 14): step 3 (to the target), the tip in the muscle with the
+// skin punctured; the panel names the layer and the punctures.
+TEST_F(TraineePanel, LayeredTargetShowsTheLayerAndThePuncturesMatchesGolden) {
+  const training::Task task = training::load_task(test::source_dir() / "assets/tasks/layered_target.json");
+  training::TaskProgress progress(task);
+  haptics::ToolSnapshot s = at_entry(task);
+  progress.feed(s);  // the approach done
+  s.needle_tip_m[2] -= 0.02;  // 20 mm deep, in the muscle
+  s.contact = haptics::ContactState::kTissue;
+  s.tissue.tip_layer = task.layer_index("muscle");
+  s.tissue.punctured_layers = (1u << task.layer_index("skin")) | (1u << task.layer_index("fat")) | (1u << task.layer_index("muscle"));
+  s.tissue.axial_force_N = 0.8;
+  for (const double t : {0.1, 0.4, 0.5}) {  // through_skin held 0.2 s, then to_target begun
+    s.time_s = t;
+    progress.feed(s);
+  }
+  ASSERT_EQ(progress.current_step(), 2u);
+  ui::TraineeView view{&task, &progress};
+  view.tissue = s.tissue;
+  view.step_metrics.tip_error_m = 0.0142;
+  view.step_metrics.axis_deviation_deg = 3.1;
+  view.force_N = 0.0;
+  view.lateral_N = 0.12;
+  view.loop_rate_hz = 1000.0;
+  EXPECT_TRUE(matches_golden(draw(view), "panel_trainee_layered_target"));
+}
+
+// The epidural with the layer names hidden (an assessment run): the dura punctured in the loss of
+// resistance step ends it with the reason, the layers shown by number, the punctures counted.
+TEST_F(TraineePanel, EpiduralDuralPunctureWithTheNamesHiddenMatchesGolden) {
+  training::Task task = training::load_task(test::source_dir() / "assets/tasks/epidural.json");
+  task.hide_layer_names = true;
+  training::TaskProgress progress(task);
+  haptics::ToolSnapshot s = at_entry(task);
+  progress.feed(s);  // the approach done
+  s.contact = haptics::ContactState::kTissue;
+  uint32_t passed = 0;
+  for (const char* layer : {"skin", "subcutaneous fat", "supraspinous ligament", "interspinous ligament"})
+    passed |= 1u << task.layer_index(layer);
+  s.tissue.punctured_layers = passed;
+  s.tissue.tip_layer = task.layer_index("interspinous ligament");
+  for (const double t : {0.1, 0.4}) {  // in the interspinous ligament 0.3 s: the ligaments step done
+    s.time_s = t;
+    progress.feed(s);
+  }
+  passed |= 1u << task.layer_index("ligamentum flavum") | 1u << task.layer_index("epidural space");
+  s.tissue.punctured_layers = passed;
+  s.tissue.tip_layer = task.layer_index("epidural space");
+  s.time_s = 0.6;
+  progress.feed(s);
+  ASSERT_EQ(progress.current_step(), 2u);
+  s.time_s = 0.7;
+  s.tissue.punctured_layers = passed | 1u << task.layer_index("dura");
+  s.tissue.tip_layer = task.layer_index("dura");
+  progress.feed(s);  // through the dura: the step ends forbidden_puncture
+  ASSERT_EQ(progress.records()[2].outcome, training::StepOutcome::kForbiddenPuncture);
+  ui::TraineeView view{&task, &progress};
+  view.step = 2;  // the failed step, as the panel shows it for a moment
+  view.tissue = s.tissue;
+  view.lateral_N = 0.05;
+  view.loop_rate_hz = 1000.0;
+  EXPECT_TRUE(matches_golden(draw(view), "panel_trainee_epidural_hidden_names"));
 }
 
 TEST(WhatToImprove, TheTwoCostliestComponentsFirst) {

@@ -1,4 +1,4 @@
-// A trainee's plan for the penetrable-sphere task (assets/tasks/penetrable_sphere.json) on a desk
+// A trainee's plans for the penetrable-sphere task and the layered target (assets/tasks/) on a desk
 // device, in the device's own terms: where its handle and wrist go and how fast. The app's tests
 // play it through the keyboard and mouse mappings; the command-line tests through xdotool.
 #pragma once
@@ -69,26 +69,35 @@ inline DeskStart desk_start(const std::filesystem::path& task_file, const std::s
   return desk_start(rig);
 }
 
+// A task's marker by name (std::logic_error when it has none) and its point or axis origin and direction.
+inline const training::Marker& plan_marker(const training::Task& task, const char* name) {
+  for (const training::Marker& m : task.markers)
+    if (m.name == name) return m;
+  throw std::logic_error(std::string("no marker ") + name);
+}
+inline Eigen::Vector3d marker_point(const training::Task& task, const char* name) {
+  const training::Marker& m = plan_marker(task, name);
+  return {m.position[0], m.position[1], m.position[2]};
+}
+inline Eigen::Vector3d marker_direction(const training::Task& task, const char* name) {
+  const training::Marker& m = plan_marker(task, name);
+  return {m.direction[0], m.direction[1], m.direction[2]};
+}
+
+// The handle's position (device frame) that puts the tip at `tip` (world), the handle having
+// started at `device_start` with the tip at start.tip.
+inline Eigen::Vector3d device_for(const DeskStart& start, const Eigen::Vector3d& device_start, const Eigen::Vector3d& tip) {
+  return device_start + start.device_to_scene.transpose() * (tip - start.tip);
+}
+
 // Come to 15 mm above the entry and turn onto the insertion axis; insert 3 cm along the axis;
 // pivot 45° to vertical about the tip; advance 2 cm to the target; withdraw 8.5 cm straight up.
 // The handle starts at `device_start`, the wrist at zero.
 inline std::vector<DeskWaypoint> penetrable_plan(const training::Task& task, const DeskStart& start,
                                                  const Eigen::Vector3d& device_start) {
-  auto marker = [&task](const char* name) -> const training::Marker& {
-    for (const training::Marker& m : task.markers)
-      if (m.name == name) return m;
-    throw std::logic_error(std::string("no marker ") + name);
-  };
-  const training::Marker& insertion = marker("insertion_axis");
-  const training::Marker& pivot = marker("pivot_axis");
-  const Eigen::Vector3d entry(insertion.position[0], insertion.position[1], insertion.position[2]);
-  const Eigen::Vector3d axis(insertion.direction[0], insertion.direction[1], insertion.direction[2]);
-  const Eigen::Vector3d down(pivot.direction[0], pivot.direction[1], pivot.direction[2]);
-  const training::Marker& target_marker = marker("target");
-  const Eigen::Vector3d target(target_marker.position[0], target_marker.position[1], target_marker.position[2]);
-  auto device = [&](const Eigen::Vector3d& tip) -> Eigen::Vector3d {
-    return device_start + start.device_to_scene.transpose() * (tip - start.tip);
-  };
+  const Eigen::Vector3d entry = marker_point(task, "insertion_axis"), axis = marker_direction(task, "insertion_axis");
+  const Eigen::Vector3d down = marker_direction(task, "pivot_axis"), target = marker_point(task, "target");
+  auto device = [&](const Eigen::Vector3d& tip) { return device_for(start, device_start, tip); };
   double swing_in = 0, tilt_in = 0, swing_down = 0, tilt_down = 0;
   wrist_for(start.device_to_scene, start.direction, axis, swing_in, tilt_in);
   wrist_for(start.device_to_scene, start.direction, down, swing_down, tilt_down);
@@ -104,6 +113,28 @@ inline std::vector<DeskWaypoint> penetrable_plan(const training::Task& task, con
       {device(target), swing_down, tilt_down, 1.5},               // hold there
       {device(target - 0.085 * down), swing_down, tilt_down, 4.0},  // withdraw
       {device(target - 0.085 * down), swing_down, tilt_down, 1.0},
+  };
+}
+
+// The layered target (assets/tasks/layered_target.json): come to 15 mm above the entry and turn
+// onto the planned axis; insert slowly through skin, fat and muscle with the handle to `depth_m`
+// along it; hold 2.5 s (the step holds 1.5 s in its 31 to 38 mm band); withdraw 4 cm above the
+// entry. The tip lags the handle by the tissue's resistance over the coupling's stiffness (about
+// 1 N in the muscle: 3.4 mm, measured with the mouse at 34 mm), so the handle
+// goes 37 mm deep and the tip stops 33.0 mm deep (DeskSessions.LayeredTargetWithTheMouse).
+inline std::vector<DeskWaypoint> layered_target_plan(const training::Task& task, const DeskStart& start,
+                                                     const Eigen::Vector3d& device_start, double depth_m = 0.037) {
+  const Eigen::Vector3d entry = marker_point(task, "planned_axis"), axis = marker_direction(task, "planned_axis");
+  auto device = [&](const Eigen::Vector3d& tip) { return device_for(start, device_start, tip); };
+  double swing = 0, tilt = 0;
+  wrist_for(start.device_to_scene, start.direction, axis, swing, tilt);
+  return {
+      {device(entry - 0.015 * axis), 0.0, 0.0, 3.0},            // above the entry
+      {device(entry - 0.015 * axis), swing, tilt, 2.0},         // turned onto the axis
+      {device(entry + depth_m * axis), swing, tilt, 10.0},      // insert (5.2 cm of travel, 5 mm/s)
+      {device(entry + depth_m * axis), swing, tilt, 2.5},       // hold at the target
+      {device(entry - 0.04 * axis), swing, tilt, 6.0},          // withdraw
+      {device(entry - 0.04 * axis), swing, tilt, 1.0},
   };
 }
 

@@ -262,11 +262,11 @@ TEST(CliRecordings, WhatIsNotARecordingIsRefusedAtOnce) {
     v2.insert(v2.end(), p, p + sizeof value);
   };
   const std::string context = R"({"version": 1, "task": "t.json", "scenario": {}, "safety_limits": {}})";
-  put(uint32_t{2}), put(uint32_t(haptics::session_record_bytes())), put(500.0), put(int64_t{0}), put(uint32_t{3});
+  put(uint32_t{2}), put(uint32_t(haptics::session_record_bytes(1))), put(500.0), put(int64_t{0}), put(uint32_t{3});
   v2.insert(v2.end(), {'s', 'i', 'm'});
   put(uint32_t(context.size()));
   v2.insert(v2.end(), context.begin(), context.end());
-  haptics::encode_record(haptics::TickSample{}, v2);
+  haptics::encode_record(haptics::TickSample{}, v2, 1);
   const fs::path old = dir / "old.nrec";
   write_bytes(old, v2);
   r = replay(old, dir / "old", dir / "sessions.db");

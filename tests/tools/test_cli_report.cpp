@@ -94,6 +94,40 @@ TEST_F(CliReport, PlotsOfATimeRange) {
   EXPECT_NE(backwards.output.find("--to must be later than --from"), std::string::npos) << backwards.output;
 }
 
+// A layered task's session (issue 14, the epidural's good run): the report adds the force–depth
+// plot and the punctures, made again from the recording, equal to those the run scored live.
+TEST(CliReportLayered, TheForceDepthPlotAndThePuncturesTheRunScored) {
+  const fs::path dir = process_folder(test_output_dir("cli_report") / "layered");
+  const fs::path db = dir / "sessions.db";
+  const RecordedSession run = record_session(db, {"epidural", "good", "ana", true});
+  ASSERT_FALSE(run.result.punctures.empty());
+  const fs::path out = dir / "out";
+  const ProcessResult r = run_needle_sim("report --session " + std::to_string(run.id) + " --db " + quoted(db) + " --out " + quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  const engine::RgbaImage plot = engine::read_png(out / "plot_force_depth.png");
+  EXPECT_EQ(plot.width, 900u);
+  EXPECT_EQ(plot.height, 320u);
+  const std::string stem = "session_" + std::to_string(run.id);
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(out / (stem + ".json")));
+  ASSERT_EQ(j["punctures"].size(), run.result.punctures.size()) << j["punctures"].dump();
+  std::ifstream csv(out / (stem + "_punctures.csv"));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "session_id,index,layer,t_s,depth_m,peak_force_N");
+  for (size_t k = 0; k < run.result.punctures.size(); ++k) {
+    const training::PunctureResult& p = run.result.punctures[k];
+    EXPECT_EQ(j["punctures"][k]["layer"], p.layer) << k;
+    EXPECT_DOUBLE_EQ(j["punctures"][k]["t_s"].get<double>(), p.t_s) << k;
+    EXPECT_DOUBLE_EQ(j["punctures"][k]["depth_m"].get<double>(), p.depth_m) << k;
+    EXPECT_DOUBLE_EQ(j["punctures"][k]["peak_force_N"].get<double>(), p.peak_force_N) << k;
+    ASSERT_TRUE(std::getline(csv, line)) << k;
+    EXPECT_EQ(line.rfind(std::to_string(run.id) + "," + std::to_string(k) + "," + p.layer + ",", 0), 0u) << line;
+  }
+  EXPECT_FALSE(std::getline(csv, line)) << "one row a puncture: " << line;
+  EXPECT_NE(r.output.find(std::to_string(run.result.punctures.size()) + " puncture(s)"), std::string::npos) << r.output;
+}
+
 TEST_F(CliReport, IncompleteSessionExportsWhatIsStoredAndSaysSo) {
   const fs::path out = dir_ / "died";
   const ProcessResult r = report(died_.id, out);

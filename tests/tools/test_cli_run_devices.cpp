@@ -4,6 +4,8 @@
 // recording is an error naming the file.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -51,6 +53,22 @@ TEST_P(RunReplay, ReplayingARecordedRunReproducesItsStateAndScore) {
   const std::string task = (test::source_dir() / "assets/tasks" / (std::string(GetParam().task) + ".json")).string();
   const RunOutput live = run_headless("--task " + quoted(fs::path(task)) + " --operator " + GetParam().operator_spec, dir / "live", db);
   ASSERT_TRUE(live.score.contains("recording"));
+  // score.json's layered-tissue keys (issue 14): the punctures in order, the metrics, each step's failure.
+  ASSERT_TRUE(live.score.contains("punctures")) << live.score.dump();
+  for (const char* key : {"punctures", "overshoot_m", "bone_contacts", "bone_peak_force_N", "redirections", "forbidden_punctures"})
+    EXPECT_TRUE(live.score["metrics"].contains(key)) << key;
+  for (const nlohmann::json& step : live.score["steps"]) EXPECT_TRUE(step.contains("failure")) << step.dump();
+  if (std::string(GetParam().task) == "epidural") {
+    ASSERT_FALSE(live.score["punctures"].empty());
+    for (const char* key : {"layer", "t_s", "depth_m", "peak_force_N"}) EXPECT_TRUE(live.score["punctures"][0].contains(key)) << key;
+    EXPECT_EQ(live.score["punctures"][0]["layer"], "skin");
+    EXPECT_GE(live.score["metrics"]["punctures"].get<int>(), 3);  // skin and the ligaments at least
+  }
+  if (std::string(GetParam().task) == "epidural" && std::string(GetParam().operator_spec) == "sloppy") {
+    EXPECT_FALSE(live.score["passed"].get<bool>());
+    EXPECT_GE(live.score["metrics"]["bone_contacts"].get<int>(), 1) << "the upper lamina, named in the metrics";
+    EXPECT_GT(live.score["metrics"]["bone_peak_force_N"].get<double>(), 0.0);
+  }
   const fs::path recording = live.score["recording"].get<std::string>();
   EXPECT_EQ(recording.parent_path(), fs::absolute(dir / "recordings"));
 
@@ -85,7 +103,9 @@ TEST_P(RunReplay, ReplayingARecordedRunReproducesItsStateAndScore) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Tasks, RunReplay,
-                         testing::Values(ReplayCase{"penetrable_sphere", "good"}, ReplayCase{"rigid_sphere", "sloppy"}),
+                         testing::Values(ReplayCase{"penetrable_sphere", "good"}, ReplayCase{"rigid_sphere", "sloppy"},
+                                         ReplayCase{"layered_target", "good"}, ReplayCase{"epidural", "good"},
+                                         ReplayCase{"epidural", "sloppy"}),
                          [](const auto& info) { return std::string(info.param.task) + "_" + info.param.operator_spec; });
 
 // `needle-sim run --device mouse` in a window without panels, its session and recording in `dir`.

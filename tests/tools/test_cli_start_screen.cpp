@@ -1,12 +1,13 @@
 // `needle-sim` with no arguments, as a trainee meets it: under Xvfb the start screen opens,
-// xdotool types the trainee's name, chooses the penetrable-sphere task and the mouse with the keys
-// and starts, plays a trainee's plan (tests/support/desk_plan.hpp) with the cursor, the right
-// button for the turns (the pivot about the tip included) and the wheel, then goes Back and quits;
+// xdotool types the trainee's name, chooses the penetrable-sphere task (or the layered target) and
+// the mouse with the keys and starts, plays a trainee's plan (tests/support/desk_plan.hpp) with the
+// cursor, the right button for the turns (the pivot about the tip included) and the wheel, then goes Back and quits;
 // the session is in the store, complete, every step completed, and the settings remember the
 // trainee and the device. Also: the keyboard in the task's window, the score panel's choices, the
 // desktop launcher, a missing tasks folder, and no display (`run` is what to use there).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -43,17 +44,29 @@ struct UserFolders {
   }
 };
 
-// An xdotool script (one command a line, run by one xdotool) that plays the penetrable-sphere
-// plan with the mouse in the window WID, from where the app puts the cursor when the session starts.
-std::string mouse_plan_script() {
-  const fs::path task_file = source_dir() / "assets/tasks/penetrable_sphere.json";
+// An xdotool script (one command a line, run by one xdotool) that plays a plan for the task
+// `name` (assets/tasks/<name>.json) with the mouse in the window WID, from where the app puts the
+// cursor when the session starts; and the handle's position there (the recording's first reading).
+struct MouseScript {
+  std::string lines;
+  Eigen::Vector3d device_start;
+};
+
+using PlanMaker = std::vector<DeskWaypoint> (*)(const training::Task&, const DeskStart&, const Eigen::Vector3d&);
+
+MouseScript mouse_plan_script(const std::string& name, PlanMaker make_plan) {
+  const fs::path task_file = source_dir() / "assets/tasks" / (name + ".json");
   const training::Task task = training::load_task(task_file);
-  const fs::path plan_dir = test_output_dir("cli_start_screen") / ("plan_" + std::to_string(::getpid()));
+  const fs::path plan_dir = test_output_dir("cli_start_screen") / ("plan_" + name + "_" + std::to_string(::getpid()));
   const DeskStart start = desk_start(task_file, "mouse", plan_dir);
   fs::remove_all(plan_dir);
-  const Eigen::Vector2d cursor = mouse_cursor_start(task, start, kWindow);
+  // The window stands at the virtual screen's top left (no window manager): a cursor put above or
+  // left of it stops at its edge. The layered target's tool starts above the view at 960x540.
+  Eigen::Vector2d cursor = mouse_cursor_start(task, start, kWindow);
+  cursor.x() = std::max(cursor.x(), -double(kWindow.width) / kWindow.height);
+  cursor.y() = std::min(cursor.y(), 1.0);
   const Eigen::Vector3d device_start(cursor.x() * 0.1, cursor.y() * 0.1, 0.1);
-  const std::vector<DeskWaypoint> plan = penetrable_plan(task, start, device_start);
+  const std::vector<DeskWaypoint> plan = make_plan(task, start, device_start);
   const double half = 0.5 * kWindow.height;
   MousePlayer mouse(plan, device_start, cursor, 1.0 / half);
   std::ostringstream lines;
@@ -70,7 +83,7 @@ std::string mouse_plan_script() {
       lines << "click --repeat " << std::lround(std::abs(input.notches)) << " --delay 5 " << (input.notches > 0 ? 4 : 5) << "\n";
     lines << "sleep " << kPlanStep_s << "\n";
   }
-  return lines.str();
+  return {lines.str(), device_start};
 }
 
 // Waits (up to `seconds`) until `pattern` is in `count` lines of the app's output, else stops the
@@ -108,18 +121,35 @@ std::vector<training::SessionInfo> sessions_of(const UserFolders& user) {
   return training::SessionStore(user.db()).sessions();
 }
 
-TEST(CliStartScreen, ATraineeStartsTheTaskWithTheMouseAndFinishesItPivotIncluded) {
-  const UserFolders user(test_output_dir("cli_start_screen") / "mouse");
+// The loop maps the device's first reading onto the tool's start: it must be the cursor the app
+// placed there (within a pixel), not the mouse's default at the window's centre. (It was the
+// default when the start screen's panel lay under the pointer as the task began: ImGui still held
+// the pointer, the first frame's input was skipped and the needle later jumped by the cursor's
+// offset, 8 cm, and the plan missed every step.)
+void expect_the_first_reading_is_the_placed_cursor(const training::SessionInfo& session, const MouseScript& script) {
+  const haptics::Session recording = haptics::read_session(session.recording_path);
+  ASSERT_FALSE(recording.records.empty());
+  const double pixel_m = 0.1 / (0.5 * kWindow.height);
+  for (int i = 0; i < 2; ++i)
+    EXPECT_NEAR(recording.records.front().reading.position_m[i], script.device_start[i], pixel_m) << "axis " << i;
+}
+
+// The start screen with the keyboard remembered and no trainee: `choose` (xdotool lines) picks
+// the task and the mouse, Return starts it, the plan plays, then Back and Quit. The one session:
+// its trainee, task, device, recording (its first reading where the app put the cursor) and
+// score.json with every step completed; the settings remember the trainee and the mouse.
+void start_and_finish_with_the_mouse(const std::string& folder, const std::string& task, const std::string& choose,
+                                     const MouseScript& script, size_t steps) {
+  const UserFolders user(test_output_dir("cli_start_screen") / folder);
   {  // the window's size and the keyboard, remembered from an earlier run; no trainee yet
     std::ofstream(user.settings()) << R"({"version": 1, "device": "keyboard", "window": {"width": 960, "height": 540}})";
   }
   const fs::path plan = user.root / "plan.xdo";
-  std::ofstream(plan) << mouse_plan_script();
+  std::ofstream(plan) << script.lines;
   const ProcessResult r = drive(user, open_start_screen(user)
-                                          // The name field has the keyboard: type, Esc leaves it; Down and Up
-                                          // come back to the first task, Left from the keyboard to the mouse.
+                                          // The name field has the keyboard: type, Esc leaves it.
                                           + "xdotool type --delay 50 'ana b'; sleep 0.5; xdotool key Escape; sleep 0.5\n" +
-                                          "xdotool key --delay 300 Down Up Left; sleep 0.5; xdotool key Return\n" +
+                                          choose + "sleep 0.5; xdotool key Return\n" +
                                           wait_for("^real-time: ", 60, "the task did not start") + "sleep 1\n" +
                                           "sed \"s/WID/$id/\" " + quoted(plan) + " | xdotool -\n" +
                                           wait_for("^score ", 30, "the task did not end") +
@@ -129,17 +159,18 @@ TEST(CliStartScreen, ATraineeStartsTheTaskWithTheMouseAndFinishesItPivotIncluded
   ASSERT_EQ(sessions.size(), 1u) << r.output;
   const training::SessionInfo& session = sessions[0];
   EXPECT_EQ(session.trainee, "ana b");
-  EXPECT_EQ(session.task, "penetrable_sphere");
+  EXPECT_EQ(session.task, task);
   EXPECT_EQ(session.device, "mouse");
   EXPECT_TRUE(session.complete);
   EXPECT_TRUE(fs::is_regular_file(session.recording_path)) << session.recording_path;
+  expect_the_first_reading_is_the_placed_cursor(session, script);
 
-  const fs::path score_file = user.data / "needle-sim" / "runs" / "penetrable_sphere" / "score.json";
+  const fs::path score_file = user.data / "needle-sim" / "runs" / task / "score.json";
   ASSERT_TRUE(fs::is_regular_file(score_file));
   const nlohmann::json score = nlohmann::json::parse(std::ifstream(score_file));
   std::string outcomes;
   for (const nlohmann::json& step : score["steps"]) outcomes += step.dump() + "\n";
-  ASSERT_EQ(score["steps"].size(), 5u);
+  ASSERT_EQ(score["steps"].size(), steps);
   for (const nlohmann::json& step : score["steps"])
     EXPECT_EQ(step["outcome"], "completed") << step["id"] << "\n" << outcomes << r.output;
   EXPECT_DOUBLE_EQ(score["score"].get<double>(), session.score);
@@ -148,6 +179,24 @@ TEST(CliStartScreen, ATraineeStartsTheTaskWithTheMouseAndFinishesItPivotIncluded
   EXPECT_EQ(settings["trainee"], "ana b");
   EXPECT_EQ(settings["device"], "mouse");
   EXPECT_EQ(settings["window"], (nlohmann::json{{"width", 960}, {"height", 540}}));
+}
+
+// Down and Up come back to the first task (the penetrable sphere), Left from the keyboard to the mouse.
+TEST(CliStartScreen, ATraineeStartsTheTaskWithTheMouseAndFinishesItPivotIncluded) {
+  start_and_finish_with_the_mouse("mouse", "penetrable_sphere", "xdotool key --delay 300 Down Up Left; ",
+                                  mouse_plan_script("penetrable_sphere", penetrable_plan), 5);
+}
+
+// The layered target (issue 14), fourth in the list: three Downs (one key a call, each seen on its
+// own frame), Left to the mouse; the wheel pushes the needle through skin, fat and muscle.
+TEST(CliStartScreen, ATraineeDoesTheLayeredTargetWithTheMouse) {
+  const PlanMaker plan = [](const training::Task& t, const DeskStart& s, const Eigen::Vector3d& d) {
+    return layered_target_plan(t, s, d);
+  };
+  start_and_finish_with_the_mouse("mouse_layered", "layered_target",
+                                  "xdotool key Down; sleep 0.7; xdotool key Down; sleep 0.7; xdotool key Down; sleep 0.7; "
+                                  "xdotool key Left; ",
+                                  mouse_plan_script("layered_target", plan), 4);
 }
 
 // The keyboard chosen with Right on the start screen, then its keys in the task's window: each

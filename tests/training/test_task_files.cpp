@@ -205,6 +205,64 @@ TEST(TaskFiles, ErrorsNameTheFileAndThePointer) {
   expect_error(j, "bad_contact", "/steps/0/condition/contact", "expected any, free, rigid or tissue");
 }
 
+// A task on the layered block's scenario: its layers come from the scenario, in its order, and the
+// layer conditions and forbidden layers name them (issue 14).
+json layered_task() {
+  json j = valid_task();
+  j["scenario"] = (kTasks / "../scenarios/tissue_block_layers.json").string();
+  j["steps"][0]["condition"] = {{"type", "tip_in_layer"}, {"layer", "muscle"}, {"hold_s", 0.5}};
+  j["steps"][0]["forbidden"] = {{"punctured", {"fat"}}, {"touched", {"bone"}}};
+  j["steps"][1]["condition"] = {{"type", "punctured"}, {"layer", "skin"}};
+  j["steps"][1].erase("guidance");
+  return j;
+}
+
+TEST(TaskFiles, LayerConditionsAndForbiddenLayersNameTheScenariosLayers) {
+  const Task t = load_task(write_task(layered_task(), "layered"));
+  ASSERT_EQ(t.layers.size(), 4u);
+  EXPECT_EQ(t.layers[0].name, "skin");
+  EXPECT_EQ(t.layers[2].name, "muscle");
+  EXPECT_FALSE(t.layers[2].rigid);
+  EXPECT_TRUE(t.layers[3].rigid);
+  EXPECT_EQ(t.steps[0].condition.type, ConditionType::kTipInLayer);
+  EXPECT_EQ(t.steps[0].condition.layer, 2);
+  EXPECT_EQ(t.steps[0].forbidden_punctures, 1u << 1);
+  EXPECT_EQ(t.steps[0].forbidden_touches, 1u << 3);
+  EXPECT_EQ(t.steps[1].condition.type, ConditionType::kPunctured);
+  EXPECT_EQ(t.steps[1].condition.layer, 0);
+  EXPECT_FALSE(t.hide_layer_names);
+
+  json j = layered_task();
+  j["steps"][0]["condition"]["layer"] = "musle";
+  expect_error(j, "unknown_layer", "/steps/0/condition/layer",
+               "no layer named \"musle\" in the scenario's tissue (its layers: \"skin\", \"fat\", \"muscle\", \"bone\")");
+  j = layered_task();
+  j["steps"][0]["condition"]["layer"] = "bone";
+  expect_error(j, "bone_holds_no_tip", "/steps/0/condition/layer", "layer \"bone\" is rigid");
+  j = layered_task();
+  j["steps"][0]["forbidden"]["touched"] = {"fat"};
+  expect_error(j, "touch_soft", "/steps/0/forbidden/touched/0", "layer \"fat\" is not rigid");
+  j = layered_task();
+  j["steps"][0]["forbidden"]["punctured"] = json::array();
+  expect_error(j, "empty_forbidden", "/steps/0/forbidden/punctured", "non-empty array of layer names");
+  j = layered_task();
+  j["steps"][0]["forbidden"]["cut"] = {"fat"};
+  expect_error(j, "forbidden_key", "/steps/0/forbidden/cut", "unknown key");
+  j = layered_task();
+  j["steps"][0]["condition"]["marker"] = "p";
+  expect_error(j, "layer_with_marker", "/steps/0/condition/marker", "unknown key");
+  j = layered_task();
+  j["hide_layer_names"] = "yes";
+  expect_error(j, "hide_not_bool", "/hide_layer_names", "expected true or false");
+  j = layered_task();
+  j.erase("scenario");
+  expect_error(j, "no_layers", "/steps/0/condition/layer", "the task has no layered tissue");
+  j = layered_task();
+  j["scenario"] = (test::output_dir() / "tasks/not_a_scenario.json").string();
+  std::ofstream(test::output_dir() / "tasks/not_a_scenario.json") << R"({"name": 3})";
+  expect_error(j, "broken_scenario", "/scenario", "not_a_scenario.json: /name: expected a non-empty string");
+}
+
 // Names become file names and keys: a path, a NUL or 300 characters are refused; so are weights
 // whose sum overflows (all 1e308: a stored score of 0) and time limits past the longest session.
 TEST(TaskFiles, NamesWeightsAndLimitsThatWouldRunAwayAreErrors) {

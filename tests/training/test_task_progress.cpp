@@ -169,7 +169,89 @@ TEST(TaskProgress, MovingTheTipInAFixedTipStepFailsIt) {
   EXPECT_EQ(p.current_step(), 1u);
 }
 
+// Layers as the scenario lists them: skin 0, fat 1, dura 2, bone 3.
+Task layered_steps() {
+  Task t;
+  t.name = "layers";
+  t.layers = {{"skin", false}, {"fat", false}, {"dura", false}, {"bone", true}};
+  Step in_fat;
+  in_fat.id = "in_fat";
+  in_fat.condition.type = ConditionType::kTipInLayer;
+  in_fat.condition.layer = 1;
+  in_fat.condition.hold_s = 1.0;
+  in_fat.forbidden_punctures = 1u << 2;
+  in_fat.forbidden_touches = 1u << 3;
+  Step skin_done = in_fat;
+  skin_done.id = "skin_done";
+  skin_done.condition.type = ConditionType::kPunctured;
+  skin_done.condition.layer = 0;
+  skin_done.condition.hold_s = 0.0;
+  t.steps = {in_fat, skin_done};
+  return t;
+}
+
+haptics::ToolSnapshot in_layer(double t, int layer, uint32_t punctured, int bone = -1) {
+  haptics::ToolSnapshot s = state(t, {0, 0, 0}, 0.0, ContactState::kTissue);
+  s.tissue.tip_layer = layer;
+  s.tissue.punctured_layers = punctured;
+  s.tissue.bone_layer = bone;
+  return s;
+}
+
+TEST(Conditions, TipInLayerAndPuncturedReadTheTissueSnapshot) {
+  const Task t = layered_steps();
+  const Condition& in_fat = t.steps[0].condition;
+  const Condition& skin = t.steps[1].condition;
+  EXPECT_FALSE(condition_holds(t, in_fat, in_layer(0, -1, 0)));
+  EXPECT_FALSE(condition_holds(t, in_fat, in_layer(0, 0, 0b1)));
+  EXPECT_TRUE(condition_holds(t, in_fat, in_layer(0, 1, 0b11)));
+  EXPECT_FALSE(condition_holds(t, in_fat, in_layer(0, 2, 0b111)));
+  EXPECT_FALSE(condition_holds(t, skin, in_layer(0, -1, 0)));
+  EXPECT_TRUE(condition_holds(t, skin, in_layer(0, 0, 0b1)));
+  EXPECT_TRUE(condition_holds(t, skin, in_layer(0, -1, 0b1)));  // pulled back out of it, on the same track
+}
+
+TEST(TaskProgress, AForbiddenPunctureEndsTheStepWithTheLayerNamed) {
+  const Task t = layered_steps();
+  TaskProgress p(t);
+  p.feed(in_layer(0.0, 0, 0b1));
+  p.feed(in_layer(0.5, 1, 0b11));
+  p.feed(in_layer(1.0, 2, 0b111));  // through the dura before the hold in the fat was over
+  EXPECT_EQ(p.records()[0].outcome, StepOutcome::kForbiddenPuncture);
+  EXPECT_EQ(p.records()[0].layer, 2);
+  EXPECT_DOUBLE_EQ(p.records()[0].end_s, 1.0);
+  EXPECT_EQ(step_failure_reason(t, p.records()[0]), "dura punctured (forbidden)");
+  // The next step forbids the dura too, but it was punctured already: that is not a new fault;
+  // the skin is punctured, so the step completes.
+  p.feed(in_layer(1.5, 2, 0b111));
+  EXPECT_EQ(p.records()[1].outcome, StepOutcome::kCompleted);
+}
+
+TEST(TaskProgress, TouchingAForbiddenRigidLayerEndsTheStep) {
+  const Task t = layered_steps();
+  TaskProgress p(t);
+  p.feed(in_layer(0.0, 1, 0b11));
+  p.feed(in_layer(0.5, 1, 0b11, 3));  // on bone, in the fat
+  EXPECT_EQ(p.records()[0].outcome, StepOutcome::kRigidTouched);
+  EXPECT_EQ(p.records()[0].layer, 3);
+  EXPECT_EQ(step_failure_reason(t, p.records()[0]), "bone touched (forbidden)");
+  p.feed(in_layer(0.55, 1, 0b11));     // off the bone for 50 ms and on it again: the penalty's chatter,
+  p.feed(in_layer(0.6, 1, 0b11, 3));  // the same touch, no new fault; the skin is punctured
+  EXPECT_EQ(p.records()[1].outcome, StepOutcome::kCompleted);
+  // A completed step has no failure reason; a forbidden fault wins over success on the same state.
+  EXPECT_EQ(step_failure_reason(t, p.records()[1]), "");
+  TaskProgress q(t);
+  q.feed(in_layer(0.0, 1, 0b11));
+  q.feed(in_layer(1.0, 1, 0b111));  // the hold is over and the dura punctured on the same state
+  EXPECT_EQ(q.records()[0].outcome, StepOutcome::kForbiddenPuncture);
+}
+
 TEST(TaskProgress, OutcomesHaveNames) {
+  EXPECT_STREQ(step_outcome_name(StepOutcome::kForbiddenPuncture), "forbidden_puncture");
+  EXPECT_STREQ(step_outcome_name(StepOutcome::kRigidTouched), "rigid_touched");
+  StepOutcome o{};
+  EXPECT_TRUE(step_outcome_from_name("rigid_touched", o));
+  EXPECT_EQ(o, StepOutcome::kRigidTouched);
   EXPECT_STREQ(step_outcome_name(StepOutcome::kTimedOut), "timed_out");
   EXPECT_STREQ(step_outcome_name(StepOutcome::kTipMoved), "tip_moved");
   EXPECT_STREQ(step_outcome_name(StepOutcome::kCompleted), "completed");

@@ -2,7 +2,10 @@
 // listed with its error) and a trainee's past per task, from sessions written by hand.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <optional>
 
 #include "tests/support/process_folder.hpp"
 #include "tests/support/test_paths.hpp"
@@ -42,15 +45,46 @@ TEST(TraineeHistory, TraineesMostRecentFirstAndTheLastAndBestScorePerTask) {
 
 TEST(TaskCatalog, TheShippedTasksWithTheirTitlesAndDescriptionsAndNoScripts) {
   const std::vector<TaskEntry> tasks = find_tasks(test::source_dir() / "assets/tasks");
-  ASSERT_EQ(tasks.size(), 3u);
+  // The thesis's tasks keep their place at the top, in their files' `order` (not the file names').
+  ASSERT_EQ(tasks.size(), 5u);
   EXPECT_EQ(tasks[0].name, "penetrable_sphere");
   EXPECT_EQ(tasks[1].name, "rigid_sphere");
   EXPECT_EQ(tasks[2].name, "sphere_ultrasound");
+  EXPECT_EQ(tasks[3].name, "layered_target");
+  EXPECT_EQ(tasks[4].name, "epidural");
   for (const TaskEntry& t : tasks) {
     EXPECT_TRUE(t.error.empty()) << t.error;
     EXPECT_FALSE(t.title.empty());
     EXPECT_FALSE(t.description.empty()) << t.name << ": the start screen shows a line about each shipped task";
   }
+}
+
+// A task file with `order`, at `dir / file`, on the penetrable sphere's scene.
+void write_task(const fs::path& file, const std::string& name, std::optional<int> order) {
+  nlohmann::json task = {{"name", name},
+                         {"scene", (test::source_dir() / "assets/scenes/penetrable_sphere.json").string()},
+                         {"markers", {{{"name", "p"}, {"point", {0.4, 0.0, 0.0}}}}},
+                         {"steps", {{{"id", "s"}, {"instruction", "x"}, {"condition", {{"type", "tip_near"}, {"marker", "p"}, {"within_m", 0.01}}}}}}};
+  if (order) task["order"] = *order;
+  std::ofstream(file) << task.dump();
+}
+
+TEST(TaskCatalog, TasksWithAnOrderComeFirstLowestFirstThenTheRestByFileName) {
+  const fs::path dir = test::process_folder(test::output_dir() / "task_catalog_order");
+  write_task(dir / "a.json", "a", std::nullopt);
+  write_task(dir / "b.json", "b", 7);
+  write_task(dir / "c.json", "c", 2);
+  write_task(dir / "d.json", "d", 7);
+  write_task(dir / "e.json", "e", std::nullopt);
+  std::ofstream(dir / "0_broken.json") << "{\"name\": \"x\", \"order\": 1, \"colour\": 1}";
+  std::vector<std::string> names;
+  for (const TaskEntry& t : find_tasks(dir)) names.push_back(t.error.empty() ? t.name : "error");
+  EXPECT_EQ(names, (std::vector<std::string>{"c", "b", "d", "error", "a", "e"}));
+  write_task(dir / "f.json", "f", -1);
+  const std::vector<TaskEntry> tasks = find_tasks(dir);
+  const auto f = std::find_if(tasks.begin(), tasks.end(), [&](const TaskEntry& t) { return t.file == dir / "f.json"; });
+  ASSERT_NE(f, tasks.end());
+  EXPECT_NE(f->error.find("f.json: /order: expected a whole number from 0"), std::string::npos) << f->error;
 }
 
 TEST(TaskCatalog, ABrokenTaskIsListedWithItsErrorAndAMissingFolderIsAnError) {

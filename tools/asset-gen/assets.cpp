@@ -77,6 +77,36 @@ tinygltf::Model make_tissue_block() {
   return b.take();
 }
 
+tinygltf::Model make_lumbar_section() {
+  constexpr float half = 0.05f;    // m: a 10 cm square section
+  constexpr float window = 0.006f;  // half the interlaminar window along x (the spine's axis)
+  GltfBuilder b("lumbar_section.bin");
+  struct Part {
+    const char* name;
+    glm::vec3 min, max;
+    glm::vec4 color;
+    float roughness;
+  };
+  const glm::vec4 ligament{0.86f, 0.84f, 0.74f, 1.0f}, bone{0.93f, 0.91f, 0.83f, 1.0f};
+  const Part parts[] = {
+      {"skin", {-half, -half, -0.003f}, {half, half, 0.0f}, {0.93f, 0.76f, 0.66f, 1.0f}, 0.6f},
+      {"subcutaneous fat", {-half, -half, -0.015f}, {half, half, -0.003f}, {0.98f, 0.88f, 0.55f, 1.0f}, 0.5f},
+      {"supraspinous ligament", {-half, -half, -0.021f}, {half, half, -0.015f}, ligament, 0.45f},
+      {"interspinous ligament", {-window, -half, -0.043f}, {window, half, -0.021f}, ligament * 0.9f + glm::vec4(0, 0, 0, 0.1f), 0.45f},
+      {"upper lamina", {-half, -half, -0.043f}, {-window, half, -0.021f}, bone, 0.7f},
+      {"lower lamina", {window, -half, -0.043f}, {half, half, -0.021f}, bone, 0.7f},
+      {"ligamentum flavum", {-half, -half, -0.048f}, {half, half, -0.043f}, {0.95f, 0.82f, 0.35f, 1.0f}, 0.4f},
+      {"epidural space", {-half, -half, -0.053f}, {half, half, -0.048f}, {0.99f, 0.93f, 0.70f, 1.0f}, 0.5f},
+      {"dura", {-half, -half, -0.0535f}, {half, half, -0.053f}, {0.70f, 0.78f, 0.92f, 1.0f}, 0.35f},
+      {"cerebrospinal fluid", {-half, -half, -0.0685f}, {half, half, -0.0535f}, {0.55f, 0.75f, 0.95f, 1.0f}, 0.2f},
+      {"vertebral body", {-half, -half, -0.0985f}, {half, half, -0.0685f}, bone, 0.7f}};
+  for (const Part& part : parts) {
+    const int material = b.add_material(part.name, part.color, 0.0f, part.roughness);
+    b.add_root_node(part.name, b.add_mesh(part.name, box_mesh(part.min, part.max), material));
+  }
+  return b.take();
+}
+
 tinygltf::Model make_marker() {
   GltfBuilder b("marker.bin");
   const int green = b.add_material("marker", {0.1f, 0.85f, 0.2f, 1.0f}, 0.0f, 0.4f);
@@ -90,6 +120,7 @@ std::vector<GeneratedAsset> committed_assets() {
   assets.push_back({"needle.gltf", make_needle()});
   assets.push_back({"tissue_block.gltf", make_tissue_block()});
   assets.push_back({"marker.gltf", make_marker()});
+  assets.push_back({"lumbar_section.gltf", make_lumbar_section()});
   return assets;
 }
 

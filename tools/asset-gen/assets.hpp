@@ -25,6 +25,13 @@ tinygltf::Model make_needle();
 // Tissue block 0.1 x 0.1 m, top (skin) at z = 0: skin (textured), fat, muscle, bone plate.
 tinygltf::Model make_tissue_block();
 
+// Midline section of the lower back for the epidural task, 0.1 x 0.1 m, skin at z = 0, the spine
+// along x: skin 3 mm, subcutaneous fat 12 mm, supraspinous ligament 6 mm, the interspinous
+// ligament 22 mm in a 12 mm window between the laminae above (x < 0) and below, ligamentum flavum
+// 5 mm, epidural space 5 mm, dura 0.5 mm, cerebrospinal fluid 15 mm, vertebral body 30 mm; one
+// mesh and material per part (the layers of assets/scenarios/epidural.json).
+tinygltf::Model make_lumbar_section();
+
 // Guidance marker: a 3 mm sphere at the origin.
 tinygltf::Model make_marker();
 

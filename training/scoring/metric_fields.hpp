@@ -25,6 +25,12 @@ void for_each_metric(M& m, F&& f) {
   f("rigid_contacts", m.rigid_contacts);
   f("faults", m.faults);
   f("first_fault", m.first_fault);
+  f("punctures", m.punctures);
+  f("overshoot_m", m.overshoot_m);
+  f("bone_contacts", m.bone_contacts);
+  f("bone_peak_force_N", m.bone_peak_force_N);
+  f("redirections", m.redirections);
+  f("forbidden_punctures", m.forbidden_punctures);
 }
 
 }  // namespace needle::training

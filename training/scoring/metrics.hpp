@@ -26,6 +26,13 @@ struct Metrics {
   uint32_t rigid_contacts = 0;                 // entries into a rigid surface the step did not ask for
   uint32_t faults = 0;                         // safety faults latched
   uint32_t first_fault = 0;                    // haptics::FaultCause of the first, 0 when none
+  // Layered tissue (issue 14; zero or not applicable without it).
+  uint32_t punctures = 0;                  // membranes punctured (layers with a puncture force passed into)
+  double overshoot_m = kNotApplicable;     // the tip's travel along the needle after the last puncture until it stopped
+  uint32_t bone_contacts = 0;              // the tip meeting a rigid layer (bone), chatter within 0.25 s one contact
+  double bone_peak_force_N = 0.0;          // peak |force of the tool on bone|
+  uint32_t redirections = 0;               // withdrawals to a shallower layer followed by a re-advance deeper
+  uint32_t forbidden_punctures = 0;        // layers the step forbids punctured (the dura)
 };
 
 }  // namespace needle::training

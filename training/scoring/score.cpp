@@ -53,6 +53,12 @@ Metrics combine_metrics(const std::vector<StepResult>& steps) {
     m.withdrawals += x.withdrawals;
     m.reinsertions += x.reinsertions;
     m.rigid_contacts += x.rigid_contacts;
+    m.punctures += x.punctures;
+    if (!std::isnan(x.overshoot_m)) m.overshoot_m = x.overshoot_m;  // the last step's that had one
+    m.bone_contacts += x.bone_contacts;
+    m.bone_peak_force_N = std::max(m.bone_peak_force_N, x.bone_peak_force_N);
+    m.redirections += x.redirections;
+    m.forbidden_punctures += x.forbidden_punctures;
     if (m.faults == 0) m.first_fault = x.first_fault;
     m.faults += x.faults;
   }
@@ -87,11 +93,19 @@ Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& step
   if (w.needle_visibility > 0.0)
     score.components.push_back({"needle_visibility", std::isnan(m.needle_visibility) ? 1.0 : m.needle_visibility,
                                 w.needle_visibility});
+  // Only a task on a layered tissue weighs the technique through its layers (docs/SCORING.md).
+  if (w.overshoot > 0.0) score.components.push_back({"overshoot", falling(m.overshoot_m, r.overshoot_m), w.overshoot});
+  if (w.bone_contacts > 0.0) score.components.push_back({"bone_contacts", 1.0 / (1.0 + m.bone_contacts), w.bone_contacts});
+  if (w.redirections > 0.0) score.components.push_back({"redirections", 1.0 / (1.0 + m.redirections), w.redirections});
   for (const ScoreComponent& c : score.components) score.total += c.points();
   if (score.total < spec.pass_score)
     score.reasons_failed.push_back("score " + format(score.total) + " below the pass mark " + format(spec.pass_score));
   if (completed < long(steps.size()))
     score.reasons_failed.push_back(std::to_string(steps.size() - completed) + " step(s) not completed");
+  // A forbidden layer (the dura) or bone touched fails the task whatever the rest (issue 14).
+  for (const StepResult& s : steps)
+    if (s.record.outcome == StepOutcome::kForbiddenPuncture || s.record.outcome == StepOutcome::kRigidTouched)
+      score.reasons_failed.push_back("step " + s.id + ": " + (s.failure.empty() ? step_outcome_name(s.record.outcome) : s.failure));
   if (m.faults > 0) score.reasons_failed.push_back(std::to_string(m.faults) + " safety fault(s)");
   if (peak > safe)
     score.reasons_failed.push_back("peak force " + format(peak) + " N above the safe limit " + format(safe) + " N");

@@ -29,6 +29,7 @@ struct StepResult {
   std::string id;
   StepRecord record;
   Metrics metrics;
+  std::string failure = {};  // step_failure_reason of a step that did not complete, when scored live
 };
 
 // `overall` is the session's metrics (combine_metrics of the steps).

@@ -2,7 +2,7 @@
 
 namespace needle::training {
 
-SessionScorer::SessionScorer(const Task& task) : task_(task), progress_(task) {
+SessionScorer::SessionScorer(const Task& task) : task_(task), progress_(task), layers_(task) {
   steps_.reserve(task.steps.size());
   for (const Step& step : task.steps) steps_.emplace_back(task, step);
 }
@@ -48,7 +48,8 @@ ContactEvents SessionScorer::contact_events(const haptics::ToolSnapshot& s) {
 void SessionScorer::feed(const haptics::TickSample& sample) {
   if (progress_.finished()) return;
   const haptics::ToolSnapshot& s = sample.state;
-  const ContactEvents events = contact_events(s);
+  ContactEvents events = contact_events(s);
+  events.layers = &layers_.feed(s, events.entry);
   const size_t step = progress_.current_step();
   steps_[step].add(s, events);
   progress_.feed(s);
@@ -59,10 +60,13 @@ void SessionScorer::feed(const haptics::TickSample& sample) {
 SessionResult SessionScorer::result() const {
   SessionResult r;
   for (size_t i = 0; i < steps_.size(); ++i)
-    r.steps.push_back({task_.steps[i].id, progress_.records()[i], steps_[i].result()});
+    r.steps.push_back({task_.steps[i].id, progress_.records()[i], steps_[i].result(),
+                       step_failure_reason(task_, progress_.records()[i])});
   r.overall = combine_metrics(r.steps);
   r.score = score_session(task_.scoring, r.steps, r.overall);
   r.finished = progress_.finished();
+  for (const PunctureRecord& p : layers_.punctures())
+    r.punctures.push_back({task_.layers[size_t(p.layer)].name, p.t_s, p.depth_m, p.peak_force_N});
   return r;
 }
 

@@ -12,11 +12,18 @@
 
 namespace needle::training {
 
+// A puncture as score.json lists it: the layer by name.
+struct PunctureResult {
+  std::string layer;
+  double t_s = 0.0, depth_m = 0.0, peak_force_N = 0.0;
+};
+
 struct SessionResult {
   std::vector<StepResult> steps;
   Metrics overall;
   Score score;
   bool finished = false;  // every step ended (completed or not)
+  std::vector<PunctureResult> punctures;  // in order (layered tissue; at most LayerEventTracker::kMaxPunctures)
 };
 
 class SessionScorer {
@@ -36,6 +43,7 @@ class SessionScorer {
   const Task& task_;
   TaskProgress progress_;
   std::vector<StepMetricsAccumulator> steps_;
+  LayerEventTracker layers_;
   ContactEvents contact_events(const haptics::ToolSnapshot& s);
 
   bool started_ = false;

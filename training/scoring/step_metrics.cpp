@@ -1,6 +1,7 @@
 #include "training/scoring/step_metrics.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numbers>
 
@@ -58,6 +59,14 @@ void StepMetricsAccumulator::add(const haptics::ToolSnapshot& state, const Conta
   m_.withdrawals += events.withdrawal;
   m_.reinsertions += events.reinsertion;
   m_.rigid_contacts += events.rigid_entry && !planned_rigid_;
+  if (const LayerEvents* l = events.layers) {
+    m_.punctures += uint32_t(std::popcount(l->punctured));
+    m_.forbidden_punctures += uint32_t(std::popcount(l->passed & step_.forbidden_punctures));
+    m_.bone_contacts += l->bone_entry;
+    m_.redirections += l->redirection;
+    if (l->punctured || run_m_ >= 0.0) run_m_ = l->run_m;  // a run that began in this step or before, still followed
+  }
+  if (state.tissue.bone_layer >= 0) m_.bone_peak_force_N = std::max(m_.bone_peak_force_N, norm(vec3(state.tissue.bone_force_n)));
   if (events.fault) {
     if (m_.faults++ == 0) m_.first_fault = state.fault;
   }
@@ -79,6 +88,7 @@ Metrics StepMetricsAccumulator::result() const {
   }
   if (force_n_ > 0) m.force_sd_N = std::sqrt(force_m2_ / double(force_n_));
   if (tissue_time_s_ > 0.0) m.needle_visibility = visible_integral_s_ / tissue_time_s_;
+  if (run_m_ >= 0.0) m.overshoot_m = run_m_;
   return m;
 }
 

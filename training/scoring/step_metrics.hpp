@@ -2,6 +2,7 @@
 #pragma once
 
 #include "haptics/realtime/tool_snapshot.hpp"
+#include "training/scoring/layer_events.hpp"
 #include "training/scoring/metrics.hpp"
 #include "training/scoring/trajectory_metrics.hpp"
 #include "training/tasks/task.hpp"
@@ -19,6 +20,7 @@ struct ContactEvents {
   bool rigid_entry = false;  // -> rigid surface
   bool fault = false;        // a fault latched on this state
   const Vec3* entry = nullptr;  // while in tissue: where the needle entered it
+  const LayerEvents* layers = nullptr;  // the layered tissue's events on this state, when tracked
 };
 
 class StepMetricsAccumulator {
@@ -46,6 +48,7 @@ class StepMetricsAccumulator {
   // The needle's share in the ultrasound slice, integrated over the time in tissue.
   double visible_integral_s_ = 0.0, tissue_time_s_ = 0.0, visible_prev_ = 0.0;
   bool in_tissue_prev_ = false;
+  double run_m_ = LayerEvents::kNotApplicableRun;  // the last run after a puncture seen in this step
   Metrics m_;
   PathAccumulator path_;
 };

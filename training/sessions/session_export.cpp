@@ -29,7 +29,15 @@ json steps_json(const std::vector<StepResult>& steps) {
                    {"outcome", step_outcome_name(s.record.outcome)},
                    {"start_s", json_number(s.record.start_s)},
                    {"end_s", json_number(s.record.end_s)},
+                   {"failure", s.failure},
                    {"metrics", metrics_json(s.metrics)}});
+  return out;
+}
+
+json punctures_json(const std::vector<PunctureResult>& punctures) {
+  json out = json::array();
+  for (const PunctureResult& p : punctures)
+    out.push_back({{"layer", p.layer}, {"t_s", p.t_s}, {"depth_m", p.depth_m}, {"peak_force_N", p.peak_force_N}});
   return out;
 }
 
@@ -48,6 +56,7 @@ json result_json(const SessionResult& result) {
           {"reasons_failed", result.score.reasons_failed},
           {"components", components_json(result.score.components)},
           {"metrics", metrics_json(result.overall)},
+          {"punctures", punctures_json(result.punctures)},
           {"steps", steps_json(result.steps)}};
 }
 
@@ -90,14 +99,27 @@ std::string session_csv(const StoredSession& s) {
   return out;
 }
 
-fs::path export_session(const StoredSession& session, const fs::path& dir) {
+std::string punctures_csv(int64_t session_id, const std::vector<PunctureResult>& punctures) {
+  std::string out = "session_id,index,layer,t_s,depth_m,peak_force_N\n";
+  for (size_t k = 0; k < punctures.size(); ++k) {
+    const PunctureResult& p = punctures[k];
+    out += std::to_string(session_id) + "," + std::to_string(k) + "," + csv_field(p.layer) + "," + csv_number(p.t_s) + "," +
+           csv_number(p.depth_m) + "," + csv_number(p.peak_force_N) + "\n";
+  }
+  return out;
+}
+
+fs::path export_session(const StoredSession& session, const fs::path& dir, const std::vector<PunctureResult>* punctures) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw std::runtime_error(dir.string() + ": cannot create the folder: " + ec.message());
   const std::string stem = "session_" + std::to_string(session.info.id);
   const fs::path json_file = dir / (stem + ".json");
-  io::write_file(json_file, session_json(session).dump(2) + "\n");
+  json j = session_json(session);
+  if (punctures) j["punctures"] = punctures_json(*punctures);
+  io::write_file(json_file, j.dump(2) + "\n");
   io::write_file(dir / (stem + ".csv"), session_csv(session));
+  if (punctures) io::write_file(dir / (stem + "_punctures.csv"), punctures_csv(session.info.id, *punctures));
   return json_file;
 }
 

@@ -64,6 +64,8 @@ SessionReview load_session_review(const SessionStore& store, const fs::path& db_
   } else if (!r.task) {
     r.plots.depth.missing = r.task_problem;
   }
+  r.force_depth = force_depth(samples, r.task ? &*r.task : nullptr);
+  if (!r.has_recording()) r.force_depth.plot.missing = r.recording_problem;
   r.states.reserve(samples.size());
   for (const haptics::TickSample& s : samples) r.states.push_back(s.state);
   return r;

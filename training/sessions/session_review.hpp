@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "haptics/recording/session_format.hpp"
+#include "training/sessions/force_depth.hpp"
 #include "training/sessions/loop_health.hpp"
 #include "training/sessions/session_series.hpp"
 #include "training/sessions/session_store.hpp"
@@ -27,8 +28,16 @@ struct SessionReview {
   std::vector<std::string> recording_notes;    // what to tell the reader about it (haptics::recording_notes)
   LoopHealth loop;                             // how the haptic loop kept time while it recorded
   SessionPlots plots;
+  ForceDepth force_depth;  // a layered task's axial force against depth and its punctures (docs/REVIEW.md)
 
   bool has_recording() const { return recording_problem.empty(); }
+  // Whether the task runs on a layered tissue: the review has the force–depth plot.
+  bool layered() const { return task && task->layers.size() > 1; }
+  // A layered session's punctures, from its recording (the store does not keep them), for the
+  // export; null for any other session.
+  const std::vector<PunctureResult>* punctures() const {
+    return layered() && has_recording() ? &force_depth.puncture_list : nullptr;
+  }
   double start_s() const { return states.empty() ? 0.0 : states.front().time_s; }
   double end_s() const { return states.empty() ? 0.0 : states.back().time_s; }
 };

@@ -34,6 +34,10 @@ bool condition_holds(const Task& task, const Condition& c, const haptics::ToolSn
       const double depth = depth_along(task.markers[c.marker], tip);
       return depth >= c.min && depth <= c.max;
     }
+    case ConditionType::kTipInLayer:
+      return state.tissue.tip_layer == c.layer;
+    case ConditionType::kPunctured:
+      return haptics::punctured(state.tissue, c.layer);
     case ConditionType::kForceHeld: {
       const double force = norm(vec3(state.environment_force_n));
       return force >= c.min && force <= c.max;

@@ -22,6 +22,12 @@ int Task::marker_index(const std::string& marker_name) const {
   return -1;
 }
 
+int Task::layer_index(const std::string& layer_name) const {
+  for (size_t i = 0; i < layers.size(); ++i)
+    if (layers[i].name == layer_name) return static_cast<int>(i);
+  return -1;
+}
+
 namespace {
 
 // Outward unit normal of the marker's sphere at the surface point nearest `tip` (the tip at the

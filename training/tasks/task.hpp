@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -40,6 +41,8 @@ enum class ConditionType {
   kForceHeld,      // |environment force| in [min, max] N, held for hold_s
   kTargetReached,  // tip within `within_m` of a point marker while inside tissue
   kWithdrawn,      // no contact and the tip farther than `within_m` from a point marker
+  kTipInLayer,     // the layered tissue's layer `layer` holds the tip (ToolSnapshot::tissue.tip_layer)
+  kPunctured,      // the needle's track has passed into layer `layer` (ToolSnapshot::tissue.punctured_layers)
 };
 
 enum class ContactRequirement { kAny, kFree, kRigidSurface, kTissue };
@@ -52,6 +55,7 @@ struct Condition {
   double min = 0.0, max = 0.0;  // depth (m) or force (N) band
   double hold_s = 0.0;          // the condition must hold this long without a break
   ContactRequirement contact = ContactRequirement::kAny;
+  int layer = -1;               // tip_in_layer, punctured: index in Task::layers
 };
 
 // What the panels draw during a step; marker indices, -1 when absent.
@@ -72,16 +76,31 @@ struct Step {
   // 0: no rule; else the step fails when the tip, in tissue, stays out of the ultrasound probe's
   // imaged slice this long (the in-plane technique keeps it in view).
   double tip_out_of_plane_max_s = 0.0;
+  // Faults that end the step at once (issue 14), a bit per index in Task::layers: the track passing
+  // into one of `forbidden_punctures` (the dura), the tip meeting one of `forbidden_touches` (bone).
+  uint32_t forbidden_punctures = 0;
+  uint32_t forbidden_touches = 0;
   Guidance guidance;
+};
+
+// A layer of the scenario's tissue as the task sees it: its name and whether it is rigid (bone).
+struct TaskLayer {
+  std::string name;
+  bool rigid = false;
+  double puncture_force_N = 0.0;  // > 0: a membrane, whose puncture is a pop (scene newtons)
 };
 
 // Component weights of the overall score (docs/SCORING.md); normalized to 100 on load.
 // needle_visibility counts only in tasks with an ultrasound probe: 10 by default there, before
 // the weights are normalized; 0 without one.
+// overshoot, bone_contacts and redirections count only in tasks on a layered tissue (Task::layers):
+// 10, 10 and 5 by default there, before the weights are normalized; 0 without layers.
 struct ScoreWeights {
   double completion = 30, tip_error = 15, axis_deviation = 10, lateral_load = 10, peak_force = 10, force_steadiness = 5,
-         path_efficiency = 5, smoothness = 5, time = 5, retries = 5, needle_visibility = 0;
+         path_efficiency = 5, smoothness = 5, time = 5, retries = 5, needle_visibility = 0, overshoot = 0,
+         bone_contacts = 0, redirections = 0;
   static constexpr double kDefaultNeedleVisibility = 10;
+  static constexpr double kDefaultOvershoot = 10, kDefaultBoneContacts = 10, kDefaultRedirections = 5;
 };
 
 // References at which a component's score reaches 0 (or, for time, starts to drop).
@@ -92,6 +111,7 @@ struct ScoreReferences {
   double force_sd_N = 0.5;
   double normalized_jerk = 1e6;  // log scale, from sqrt(360)
   double time_s = 60.0;
+  double overshoot_m = 0.01;  // design value: twice the epidural space's 5 mm depth
 };
 
 struct ScoringSpec {
@@ -105,6 +125,7 @@ struct ScoringSpec {
 // its title at most kMaxTitleBytes.
 inline constexpr size_t kMaxNameBytes = 64;
 inline constexpr size_t kMaxTitleBytes = 200;
+inline constexpr int kMaxTaskOrder = 1000000;
 
 // The section view's plane a task fixes (docs/TASKS.md, "Section"), instead of the default one
 // through the needle: through `point`, `normal` unit, pointing to the side cut away (the viewer's).
@@ -118,6 +139,9 @@ struct Task {
   std::string name;
   std::string title;
   std::string description;         // one line for the start screen; may be empty
+  // The task's place in the start screen's list (docs/TASKS.md, "Top level"): tasks with an order
+  // come first, lowest first; those without follow in file-name order.
+  std::optional<int> order;
   std::string source;              // the file it came from
   std::filesystem::path scene;     // scene file (docs/SCENE_FORMAT.md), resolved
   std::filesystem::path scenario;  // haptics scenario (assets/scenarios), resolved; may be empty
@@ -126,9 +150,15 @@ struct Task {
   std::vector<Step> steps;
   ScoringSpec scoring;
   std::optional<UltrasoundProbeSpec> ultrasound_probe;  // the task's probe, when it has one
+  // The scenario's tissue layers in its order (the indices of ToolSnapshot::tissue); empty without
+  // a scenario. The thesis's single-surface tissue is one layer, "tissue".
+  std::vector<TaskLayer> layers;
+  // Hide the layer names from the trainee's panel (assessment runs): it shows "layer 3" instead.
+  bool hide_layer_names = false;
   std::optional<SectionPlaneSpec> section_plane;        // the section view's plane, when the task fixes it
 
   int marker_index(const std::string& name) const;  // -1 when absent
+  int layer_index(const std::string& name) const;   // -1 when absent
 };
 
 Task load_task(const std::filesystem::path& file);

@@ -27,11 +27,16 @@ std::vector<TaskEntry> find_tasks(const fs::path& folder) {
       entry.name = task.name;
       entry.title = task.title;
       entry.description = task.description;
+      entry.order = task.order;
     } catch (const TaskError& e) {
       entry.error = e.what();
     }
     entries.push_back(std::move(entry));
   }
+  // Ordered tasks before the rest; stable, so equal orders and the rest keep file-name order.
+  std::stable_sort(entries.begin(), entries.end(), [](const TaskEntry& a, const TaskEntry& b) {
+    return a.order.value_or(kMaxTaskOrder + 1) < b.order.value_or(kMaxTaskOrder + 1);
+  });
   return entries;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,10 +16,12 @@ struct TaskEntry {
   std::filesystem::path file;
   std::string name, title, description;  // empty when the file does not load
   std::string error;                     // "FILE: /pointer: what is wrong" when it does not
+  std::optional<int> order;              // the task's `order`, when it has one
 };
 
-// Every *.json in `folder` in file-name order but the operator scripts (a top-level "hand": the
-// <task>_good.json and <task>_sloppy.json beside each task). Throws TaskError naming the folder
+// Every *.json in `folder` but the operator scripts (a top-level "hand": the <task>_good.json and
+// <task>_sloppy.json beside each task): the tasks with an `order` first, lowest first, then the
+// others (and the files that do not load) in file-name order. Throws TaskError naming the folder
 // when it cannot be read.
 std::vector<TaskEntry> find_tasks(const std::filesystem::path& folder);
 

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <set>
 
+#include "haptics/sim/scenario.hpp"
 #include "io/input_limits.hpp"
 #include "io/strict_json.hpp"
 #include "training/tasks/task.hpp"
@@ -23,7 +24,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
 
   Task task(const json& root) {
     object(root, "", {"name", "title", "description", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps", "scoring",
-                      "ultrasound", "section"});
+                      "ultrasound", "section", "hide_layer_names", "order"});
     Task t;
     t.name = name(member(root, "", "name"), "/name");
     t.title = root.contains("title") ? string(root["title"], "/title") : t.name;
@@ -33,7 +34,12 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       if (t.description.find('\n') != std::string::npos) fail("/description", "must be one line");
     }
     t.scene = existing_file(member(root, "", "scene"), "/scene", folder_);
-    if (root.contains("scenario")) t.scenario = existing_file(root["scenario"], "/scenario", folder_);
+    if (root.contains("scenario")) {
+      t.scenario = existing_file(root["scenario"], "/scenario", folder_);
+      t.layers = layers(t.scenario);
+    }
+    if (root.contains("order")) t.order = static_cast<int>(whole(root["order"], "/order", 0, kMaxTaskOrder));
+    if (root.contains("hide_layer_names")) t.hide_layer_names = boolean(root["hide_layer_names"], "/hide_layer_names");
     if (root.contains("normal_marker_spacing_m"))
       t.normal_marker_spacing_m = positive(root["normal_marker_spacing_m"], "/normal_marker_spacing_m");
     const json& markers = member(root, "", "markers");
@@ -55,7 +61,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       t.steps.push_back(step(t, steps[i], at));
       if (!ids.insert(t.steps.back().id).second) fail(at + "/id", "\"" + t.steps.back().id + "\" is used twice");
     }
-    t.scoring = scoring(root.contains("scoring") ? root["scoring"] : json::object(), "/scoring", t.ultrasound_probe.has_value());
+    t.scoring = scoring(root.contains("scoring") ? root["scoring"] : json::object(), "/scoring", t.ultrasound_probe.has_value(),
+                        !t.layers.empty() && t.layers.size() > 1);
     return t;
   }
 
@@ -70,6 +77,52 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       fail(at, "\"" + (n.size() > 80 ? n.substr(0, 80) + "..." : n) + "\": a task name is 1 to " +
                    std::to_string(kMaxNameBytes) + " letters, digits, '_' or '-'");
     return n;
+  }
+
+  // The scenario's tissue layers, names and rigidity (the scenario read as a run reads it).
+  std::vector<TaskLayer> layers(const fs::path& scenario) const {
+    std::vector<TaskLayer> out;
+    try {
+      const haptics::Scenario s = haptics::load_scenario(scenario.string());
+      for (const haptics::TissueLayer& l : s.scene.tissue.layers()) out.push_back({l.name, l.mechanics.rigid, l.mechanics.puncture_force_N});
+    } catch (const haptics::ScenarioError& e) {
+      fail("/scenario", e.what());
+    }
+    return out;
+  }
+
+  bool boolean(const json& value, const std::string& at) const {
+    if (!value.is_boolean()) fail(at, "expected true or false, got " + std::string(value.type_name()));
+    return value.get<bool>();
+  }
+
+  // A layer of the scenario's tissue by its name; `rigid` says whether it must be rigid (bone) or not.
+  int layer_ref(const Task& t, const json& value, const std::string& at, bool rigid) const {
+    const std::string name = string(value, at);
+    if (t.layers.empty()) fail(at, "the task has no layered tissue (its /scenario has no tissue layers)");
+    const int index = t.layer_index(name);
+    if (index < 0) {
+      std::string names;
+      for (const TaskLayer& l : t.layers) names += (names.empty() ? "\"" : ", \"") + l.name + "\"";
+      fail(at, "no layer named \"" + name + "\" in the scenario's tissue (its layers: " + names + ")");
+    }
+    if (t.layers[size_t(index)].rigid != rigid)
+      fail(at, "layer \"" + name + "\" is " + (rigid ? "not rigid (expected a rigid layer, bone)" : "rigid (bone is never punctured nor holds the tip)"));
+    return index;
+  }
+
+  // {"punctured": [layer, ...], "touched": [rigid layer, ...]}: a bit per layer.
+  void forbidden(const Task& t, Step& s, const json& value, const std::string& at) const {
+    object(value, at, {"punctured", "touched"});
+    const std::pair<const char*, uint32_t*> lists[] = {{"punctured", &s.forbidden_punctures}, {"touched", &s.forbidden_touches}};
+    for (const auto& [key, mask] : lists) {
+      if (!value.contains(key)) continue;
+      const json& list = value[key];
+      const std::string where = at + "/" + key;
+      if (!list.is_array() || list.empty()) fail(where, "expected a non-empty array of layer names");
+      for (size_t i = 0; i < list.size(); ++i)
+        *mask |= 1u << layer_ref(t, list[i], where + "/" + std::to_string(i), std::string(key) == "touched");
+    }
   }
 
   Vec3 vector(const json& value, const std::string& at) const {
@@ -161,10 +214,15 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       c.type = ConditionType::kForceHeld;
       band(c, value, at);
       if (!value.contains("hold_s")) fail(at + "/hold_s", "missing (a held force needs a time)");
+    } else if (type == "tip_in_layer" || type == "punctured") {
+      object(value, at, {"type", "layer", "hold_s", "contact"});
+      c.type = type == "tip_in_layer" ? ConditionType::kTipInLayer : ConditionType::kPunctured;
+      c.layer = layer_ref(t, member(value, at, "layer"), at + "/layer", false);
     } else {
       fail(at + "/type",
            "unknown step type \"" + type +
-               "\" (expected tip_near, axis_aligned, depth_in_band, force_held, target_reached or withdrawn)");
+               "\" (expected tip_near, axis_aligned, depth_in_band, force_held, target_reached, withdrawn, "
+               "tip_in_layer or punctured)");
     }
     if (value.contains("hold_s")) c.hold_s = non_negative(value["hold_s"], at + "/hold_s");
     if (c.type == ConditionType::kForceHeld && c.hold_s <= 0.0) fail(at + "/hold_s", "must be > 0 for force_held");
@@ -236,7 +294,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
 
   Step step(const Task& t, const json& value, const std::string& at) const {
     object(value, at, {"id", "instruction", "condition", "time_limit_s", "tip_fixed_within_m", "tip_out_of_plane_max_s",
-                       "guidance"});
+                       "forbidden", "guidance"});
     Step s;
     s.id = string(member(value, at, "id"), at + "/id");
     s.instruction = string(member(value, at, "instruction"), at + "/instruction");
@@ -250,14 +308,20 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       if (!t.ultrasound_probe) fail(at + "/tip_out_of_plane_max_s", "needs the task's ultrasound probe (/ultrasound)");
       s.tip_out_of_plane_max_s = positive(value["tip_out_of_plane_max_s"], at + "/tip_out_of_plane_max_s");
     }
+    if (value.contains("forbidden")) forbidden(t, s, value["forbidden"], at + "/forbidden");
     if (value.contains("guidance")) s.guidance = guidance(t, s, value["guidance"], at + "/guidance");
     return s;
   }
 
-  ScoringSpec scoring(const json& value, const std::string& at, bool has_probe) const {
+  ScoringSpec scoring(const json& value, const std::string& at, bool has_probe, bool layered) const {
     object(value, at, {"safe_force_N", "pass_score", "weights", "references"});
     ScoringSpec s;
     if (has_probe) s.weights.needle_visibility = ScoreWeights::kDefaultNeedleVisibility;
+    if (layered) {
+      s.weights.overshoot = ScoreWeights::kDefaultOvershoot;
+      s.weights.bone_contacts = ScoreWeights::kDefaultBoneContacts;
+      s.weights.redirections = ScoreWeights::kDefaultRedirections;
+    }
     if (value.contains("safe_force_N")) s.safe_force_N = positive(value["safe_force_N"], at + "/safe_force_N");
     if (value.contains("pass_score")) {
       s.pass_score = number(value["pass_score"], at + "/pass_score");
@@ -272,9 +336,12 @@ class TaskReader : io::StrictJsonReader<TaskError> {
   ScoreWeights weights(const json& value, const std::string& at, ScoreWeights w) const {
     object(value, at,
            {"completion", "tip_error", "axis_deviation", "lateral_load", "peak_force", "force_steadiness",
-            "path_efficiency", "smoothness", "time", "retries", "needle_visibility"});
+            "path_efficiency", "smoothness", "time", "retries", "needle_visibility", "overshoot", "bone_contacts", "redirections"});
     if (value.contains("needle_visibility") && w.needle_visibility == 0.0)
       fail(at + "/needle_visibility", "needs the task's ultrasound probe (/ultrasound)");
+    for (const char* key : {"overshoot", "bone_contacts", "redirections"})
+      if (value.contains(key) && w.overshoot == 0.0)
+        fail(at + "/" + key, "needs a layered tissue (the /scenario's tissue layers)");
     const std::pair<const char*, double*> fields[] = {{"completion", &w.completion},
                                                       {"tip_error", &w.tip_error},
                                                       {"axis_deviation", &w.axis_deviation},
@@ -285,7 +352,10 @@ class TaskReader : io::StrictJsonReader<TaskError> {
                                                       {"smoothness", &w.smoothness},
                                                       {"time", &w.time},
                                                       {"retries", &w.retries},
-                                                      {"needle_visibility", &w.needle_visibility}};
+                                                      {"needle_visibility", &w.needle_visibility},
+                                                      {"overshoot", &w.overshoot},
+                                                      {"bone_contacts", &w.bone_contacts},
+                                                      {"redirections", &w.redirections}};
     double total = 0.0;
     for (const auto& [key, field] : fields) {
       if (value.contains(key)) *field = non_negative(value[key], at + "/" + key);
@@ -299,12 +369,13 @@ class TaskReader : io::StrictJsonReader<TaskError> {
 
   ScoreReferences references(const json& value, const std::string& at) const {
     object(value, at,
-           {"tip_error_m", "axis_deviation_deg", "lateral_load_Ns", "force_sd_N", "normalized_jerk", "time_s"});
+           {"tip_error_m", "axis_deviation_deg", "lateral_load_Ns", "force_sd_N", "normalized_jerk", "time_s", "overshoot_m"});
     ScoreReferences r;
     const std::pair<const char*, double*> fields[] = {
         {"tip_error_m", &r.tip_error_m},         {"axis_deviation_deg", &r.axis_deviation_deg},
         {"lateral_load_Ns", &r.lateral_load_Ns}, {"force_sd_N", &r.force_sd_N},
-        {"normalized_jerk", &r.normalized_jerk}, {"time_s", &r.time_s}};
+        {"normalized_jerk", &r.normalized_jerk}, {"time_s", &r.time_s},
+        {"overshoot_m", &r.overshoot_m}};
     for (const auto& [key, field] : fields)
       if (value.contains(key)) *field = positive(value[key], at + "/" + key);
     if (r.normalized_jerk <= std::sqrt(360.0))

@@ -1,5 +1,6 @@
 #include "training/tasks/task_progress.hpp"
 
+#include <bit>
 #include <cmath>
 
 #include "training/tasks/condition.hpp"
@@ -20,13 +21,18 @@ const char* step_outcome_name(StepOutcome outcome) {
       return "tip_moved";
     case StepOutcome::kTipLost:
       return "tip_lost";
+    case StepOutcome::kForbiddenPuncture:
+      return "forbidden_puncture";
+    case StepOutcome::kRigidTouched:
+      return "rigid_touched";
   }
   return "unknown";
 }
 
 bool step_outcome_from_name(const std::string& name, StepOutcome& outcome) {
   for (const StepOutcome o : {StepOutcome::kPending, StepOutcome::kActive, StepOutcome::kCompleted,
-                              StepOutcome::kTimedOut, StepOutcome::kTipMoved, StepOutcome::kTipLost})
+                              StepOutcome::kTimedOut, StepOutcome::kTipMoved, StepOutcome::kTipLost,
+                              StepOutcome::kForbiddenPuncture, StepOutcome::kRigidTouched})
     if (name == step_outcome_name(o)) {
       outcome = o;
       return true;
@@ -34,11 +40,36 @@ bool step_outcome_from_name(const std::string& name, StepOutcome& outcome) {
   return false;
 }
 
+std::string step_failure_reason(const Task& task, const StepRecord& record) {
+  const auto layer = [&] {
+    return record.layer >= 0 && size_t(record.layer) < task.layers.size() ? task.layers[size_t(record.layer)].name
+                                                                           : "layer " + std::to_string(record.layer);
+  };
+  switch (record.outcome) {
+    case StepOutcome::kPending:
+    case StepOutcome::kActive:
+    case StepOutcome::kCompleted:
+      return "";
+    case StepOutcome::kTimedOut:
+      return "time limit passed";
+    case StepOutcome::kTipMoved:
+      return "the tip moved";
+    case StepOutcome::kTipLost:
+      return "the tip left the ultrasound slice";
+    case StepOutcome::kForbiddenPuncture:
+      return layer() + " punctured (forbidden)";
+    case StepOutcome::kRigidTouched:
+      return layer() + " touched (forbidden)";
+  }
+  return "";
+}
+
 TaskProgress::TaskProgress(const Task& task) : task_(task), records_(task.steps.size()) {}
 
-void TaskProgress::end_step(StepOutcome outcome, const haptics::ToolSnapshot& state) {
+void TaskProgress::end_step(StepOutcome outcome, const haptics::ToolSnapshot& state, int layer) {
   records_[current_].outcome = outcome;
   records_[current_].end_s = state.time_s;
+  records_[current_].layer = layer;
   held_since_s_ = std::numeric_limits<double>::quiet_NaN();
   out_of_plane_since_s_ = std::numeric_limits<double>::quiet_NaN();
   if (++current_ < records_.size()) {
@@ -69,8 +100,24 @@ void TaskProgress::feed(const haptics::ToolSnapshot& state) {
     out_of_plane_since_s_ = std::numeric_limits<double>::quiet_NaN();
   else if (std::isnan(out_of_plane_since_s_))
     out_of_plane_since_s_ = state.time_s;
-  // Order of precedence on one state: success, then the tip rules, then the clock.
-  if (condition_met() && state.time_s - held_since_s_ >= step.condition.hold_s)
+  // A forbidden layer passed into or a forbidden rigid layer met on this state (not one the track
+  // or the tip was already in: the fault is the event).
+  const uint32_t passed_now = state.tissue.punctured_layers & ~punctured_before_ & step.forbidden_punctures;
+  // A touch is the tip meeting bone it was not on; leaving and meeting it again within the
+  // contact debounce is the penalty's chatter (docs/SCORING.md), the same touch.
+  const int bone = state.tissue.bone_layer;
+  const bool new_touch = bone != bone_before_ && !(bone_before_ < 0 && bone_left_s_ >= 0.0 &&
+                                                   state.time_s - bone_left_s_ < kBoneDebounce_s);
+  const bool touched_now = bone >= 0 && bone < 32 && new_touch && (step.forbidden_touches >> bone & 1u);
+  if (bone < 0 && bone_before_ >= 0) bone_left_s_ = state.time_s;
+  punctured_before_ = state.tissue.punctured_layers;
+  bone_before_ = bone;
+  // Order of precedence on one state: a forbidden layer, success, then the tip rules, then the clock.
+  if (passed_now != 0)
+    end_step(StepOutcome::kForbiddenPuncture, state, std::countr_zero(passed_now));
+  else if (touched_now)
+    end_step(StepOutcome::kRigidTouched, state, bone);
+  else if (condition_met() && state.time_s - held_since_s_ >= step.condition.hold_s)
     end_step(StepOutcome::kCompleted, state);
   else if (step.tip_fixed_within_m > 0.0 && distance(vec3(state.needle_tip_m), tip_at_start_) > step.tip_fixed_within_m)
     end_step(StepOutcome::kTipMoved, state);

@@ -19,6 +19,8 @@ enum class StepOutcome {
   kTimedOut,   // its time limit passed first
   kTipMoved,   // the tip drifted beyond tip_fixed_within_m first
   kTipLost,    // the tip, in tissue, stayed out of the ultrasound slice for tip_out_of_plane_max_s first
+  kForbiddenPuncture,  // the track passed into one of the step's forbidden_punctures (StepRecord::layer)
+  kRigidTouched,       // the tip met one of the step's forbidden_touches, a rigid layer (StepRecord::layer)
 };
 
 const char* step_outcome_name(StepOutcome outcome);                          // "pending", "completed", ...
@@ -28,10 +30,18 @@ struct StepRecord {
   StepOutcome outcome = StepOutcome::kPending;
   double start_s = std::numeric_limits<double>::quiet_NaN();
   double end_s = std::numeric_limits<double>::quiet_NaN();
+  int layer = -1;  // forbidden_puncture, rigid_touched: the layer (Task::layers index)
 };
+
+// Why a step ended as it did, for the trainee and the score, e.g. "dura punctured (forbidden)"; empty
+// for a completed, pending or active step.
+std::string step_failure_reason(const Task& task, const StepRecord& record);
 
 class TaskProgress {
  public:
+  // Bone left and met again within this time is one touch (the penalty contact chatters on release).
+  static constexpr double kBoneDebounce_s = 0.25;
+
   explicit TaskProgress(const Task& task);  // keeps a reference: the task must outlive it
 
   // Takes the next state (time_s non-decreasing). The first state starts step 0; a step that
@@ -45,7 +55,7 @@ class TaskProgress {
   double held_s() const { return condition_met() ? last_s_ - held_since_s_ : 0.0; }
 
  private:
-  void end_step(StepOutcome outcome, const haptics::ToolSnapshot& state);
+  void end_step(StepOutcome outcome, const haptics::ToolSnapshot& state, int layer = -1);
 
   const Task& task_;
   std::vector<StepRecord> records_;
@@ -54,6 +64,9 @@ class TaskProgress {
   double last_s_ = 0.0;
   Vec3 tip_at_start_{};
   double out_of_plane_since_s_ = std::numeric_limits<double>::quiet_NaN();  // the tip in tissue, out of the slice
+  uint32_t punctured_before_ = 0;  // the previous state's punctured layers
+  int bone_before_ = -1;           // and the rigid layer it touched
+  double bone_left_s_ = -1.0;      // when the tip last left a rigid layer (-1: never on one)
 };
 
 }  // namespace needle::training

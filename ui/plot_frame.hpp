@@ -1,0 +1,45 @@
+// What every plot of the review draws alike with ImGui's draw list (Debian's ImGui has no implot):
+// the rectangle at the cursor, the data-to-pixel mapping, the grid with y and x ticks and their
+// labels, and the legend below. Used by the time plots (ui/review_plot.hpp) and the force–depth
+// plot (ui/force_depth_plot.hpp).
+#pragma once
+
+#include <imgui.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace needle::ui {
+
+// Session A's lines in blues and greens, session B's in oranges, in the order of their lines.
+inline const ImU32 kPlotLinesA[] = {IM_COL32(110, 190, 255, 255), IM_COL32(120, 220, 140, 255)};
+inline const ImU32 kPlotLinesB[] = {IM_COL32(255, 160, 70, 255), IM_COL32(240, 90, 120, 255)};
+inline const ImU32 kPlotAxis = IM_COL32(150, 150, 160, 255), kPlotGrid = IM_COL32(70, 70, 80, 255),
+                   kPlotText = IM_COL32(200, 200, 205, 255), kPlotGuide = IM_COL32(255, 220, 80, 200),
+                   kPlotStep = IM_COL32(120, 120, 135, 255);
+
+struct PlotFrame {
+  ImVec2 origin;  // the cursor where the plot began
+  ImVec2 p0, p1;  // the data rectangle, top left and bottom right
+  float width = 0.0f, height = 0.0f;
+  double x_lo = 0.0, x_hi = 1.0, y_lo = 0.0, y_hi = 1.0;
+  float sx(double x) const { return float(p0.x + (x - x_lo) / (x_hi - x_lo) * (p1.x - p0.x)); }
+  float sy(double y) const { return float(p1.y - (y - y_lo) / (y_hi - y_lo) * (p1.y - p0.y)); }
+};
+
+// (x range, y range of the data, the plot's height) => the frame at the cursor, the full width
+// available; y gets 5 % of its span above (and below when it goes negative), an empty range 1.
+PlotFrame plot_frame(double x_lo, double x_hi, double y_lo, double y_hi, float height);
+
+// The background, the grid with the y ticks and labels, the x ticks and labels (whole numbers only
+// when `whole_x`) and `x_label`.
+void draw_plot_frame(ImDrawList* draw, const PlotFrame& frame, const std::string& x_label, bool whole_x = false);
+
+// A dashed vertical line from top to bottom at x (pixels).
+void dashed_vertical(ImDrawList* draw, float x, float top, float bottom, ImU32 colour);
+
+// Ends the plot (its space taken) and draws one swatch and name per line below it.
+void draw_plot_legend(const PlotFrame& frame, const std::vector<std::pair<std::string, ImU32>>& entries);
+
+}  // namespace needle::ui
