@@ -176,9 +176,13 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
     notes_ = replay_notes(path, *replay, context, complete_);
     try {
       scenario_json = context.at("scenario");
-      // Recorded before issue 13's tool law existed: replayed with the law it was recorded with.
-      if (scenario_json.contains("gains") && !scenario_json["gains"].contains("law"))
-        scenario_json["gains"]["law"] = haptics::control_law_name(haptics::ControlLaw::Thesis);
+      if (scenario_json.contains("gains")) {
+        json& gains = scenario_json["gains"];
+        // Recorded before issue 13's tool law existed: replayed with the law it was recorded with.
+        if (!gains.contains("law")) gains["law"] = haptics::control_law_name(haptics::ControlLaw::Thesis);
+        // Recorded before the tool law's lateral spring (issue 12): replayed without it.
+        if (!gains.contains("lateral_stiffness_N_per_m")) gains["lateral_stiffness_N_per_m"] = 0.0;
+      }
       coupling = context.value("coupling", json(nullptr));
       limits_ = limits_from(context.at("safety_limits"));
       scenario_ = std::make_unique<haptics::Scenario>(training::write_scenario(scenario_json, scenario_file));
@@ -221,9 +225,14 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
   if (!is_replay(spec)) limits_ = haptics::safety_limits_for(device_->capabilities());
   if (spec == "sim") device_->open();
 
-  // The law is part of what the recording replays with (the default may change again).
-  if (scenario_json.contains("gains") && !scenario_json["gains"].contains("law"))
-    scenario_json["gains"]["law"] = haptics::control_law_name(haptics::TeleoperationGains{}.law);
+  // The law and the tool law's lateral spring are part of what the recording replays with (their
+  // defaults may change again).
+  if (scenario_json.contains("gains")) {
+    json& gains = scenario_json["gains"];
+    const haptics::TeleoperationGains defaults;
+    if (!gains.contains("law")) gains["law"] = haptics::control_law_name(defaults.law);
+    if (!gains.contains("lateral_stiffness_N_per_m")) gains["lateral_stiffness_N_per_m"] = defaults.lateral_stiffness_N_per_m;
+  }
   const std::string recorded_device = is_replay(spec) ? description_ : spec;
   context_ = json{{"version", kContextVersion},
                   {"task", fs::absolute(task.source).string()},

@@ -63,6 +63,17 @@ struct TeleoperationGains {
   // of the lateral force reflection is gone (band 3-50 Hz of F_h 0.038 -> 0.009 N rms in the thesis's
   // insertion) while the hand moves sideways at most millimetres a second in tissue (0.01 N felt).
   double lateral_damping_Ns_per_m = 10.0;
+  // ControlLaw::Tool: stiffness of the spring holding the master tip to the virtual needle's line
+  // while it is in tissue, N/m at the hand; above 0 it and the lateral damper replace (3.27)'s
+  // reflected multipliers at the master (docs/CONTROLLER.md, "Passivity at the hand"). 0 (the
+  // default): the reflection. The layered scenarios set 300 N/m (design value): with the reflection
+  // the master drifted up to 7 cm across a needle the tissue held and the world did net work on the
+  // hand (-0.22 J in liver_biopsy); with the spring none does and tracking in tissue is under 1 mm
+  // RMS; a 1 cm push across the needle is felt as 3 N (the Omni's peak); its sample-and-hold activity
+  // K T / 2 = 0.3 N·s/m at T = 2 ms is a twentieth of the hand's damping (6.45 N·s/m). Not the default
+  // yet: in the thesis's penetrable-sphere task it threw the virtual needle 5 cm out of the sphere at
+  // withdrawal (the sliding integral σ wound up while the constraint held the needle).
+  double lateral_stiffness_N_per_m = 0.0;
   // ControlLaw::Tool: damping of the master tip's motion along the needle while the tissue's axial
   // force acts (layers with friction, cutting or a surface), N·s/m at the hand (docs/CONTROLLER.md,
   // "The tissue along the needle"). Design value: the axial loop (hand push -> virtual needle ->

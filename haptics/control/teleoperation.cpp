@@ -96,11 +96,21 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
   if (blend_.tissue > 0.0) {
     operator_multiplier(contact.A, master_data_.J, wrench_scene_, multiplier_scratch_, out_.lambda_m);
     tissue_force_error(out_.lambda_m, contact.lambda_tissue, blend_.tissue, T, integrals_);
-    tissue_force_torques(contact.A, out_.lambda_m, contact.lambda_tissue, integrals_, gv.Kf, gm.Kf, scale,
-                         blend_.tissue, out_.tau_v, out_.tau_m);
-    if (tool)
-      lateral_damping_torque(world_.data().tip.linear(), master_data_.J, in.dq_m, gains_.lateral_damping_Ns_per_m,
-                             blend_.tissue, out_.tau_m);
+    tissue_force_torque_virtual(contact.A, out_.lambda_m, integrals_, gv.Kf, blend_.tissue, out_.tau_v);
+    // The tool law with its lateral spring renders the needle's lateral hold at the hand with the spring
+    // and the damper to the virtual needle's line instead of (3.27)'s reflected multipliers, which
+    // did net work on the hand (docs/CONTROLLER.md, "Passivity at the hand").
+    const bool spring = tool && gains_.lateral_stiffness_N_per_m > 0.0;
+    if (!spring)
+      tissue_force_torque_master(contact.A, contact.lambda_tissue, integrals_, gm.Kf, scale, blend_.tissue, out_.tau_m);
+    if (tool) {
+      const Eigen::Isometry3d& tip_v = world_.data().tip;
+      lateral_damping_torque(tip_v.linear(), master_data_.J, in.dq_m, gains_.lateral_damping_Ns_per_m, blend_.tissue,
+                             out_.tau_m);
+      if (spring)
+        lateral_spring_torque(tip_v.linear(), master_data_.tip.translation(), tip_v.translation(), master_data_.J,
+                              gains_.lateral_stiffness_N_per_m, blend_.tissue, out_.tau_m);
+    }
   }
   if (blend_.axial > 0.0) {
     axial_damping_torque(contact.axis, master_data_.J, in.dq_m, gains_.axial_damping_Ns_per_m, blend_.axial, out_.tau_m);

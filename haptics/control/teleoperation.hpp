@@ -45,6 +45,7 @@ class Teleoperation {
 
   const VirtualWorld& world() const { return world_; }
   const RobotData& master_data() const { return master_data_; }
+  const ContactBlend& blend() const { return blend_; }  // the weights of the last step
   const TeleoperationGains& gains() const { return gains_; }
   double period() const { return period_; }
 

@@ -139,12 +139,17 @@ inline void tissue_force_error(const VecK& lambda_m, const VecK& lambda_v, doubl
   integrals.lambda += T * w * (lambda_m + lambda_v);
 }
 
-// (A, λ_m, λ_v, E, K_fv, K_fm, s, w; τ) => (τ_v += w Aᵀ(λ_m + K_fv E), τ_m += w s Aᵀ(λ_v + K_fm E))
-// the force terms of (3.28) and (3.27), multipliers in the scene's newtons, s the force scale.
-inline void tissue_force_torques(const MatKN& A, const VecK& lambda_m, const VecK& lambda_v,
-                                 const ForceErrorIntegrals& integrals, double Kf_v, double Kf_m, double scale, double w,
-                                 VecN& tau_v, VecN& tau_m) {
+// (A, λ_m, E, K_fv, w; τ_v) => (τ_v += w Aᵀ(λ_m + K_fv E))   the force term of (3.28), the hand's
+// push along the constraints driving the virtual needle; multipliers in the scene's newtons.
+inline void tissue_force_torque_virtual(const MatKN& A, const VecK& lambda_m, const ForceErrorIntegrals& integrals,
+                                        double Kf_v, double w, VecN& tau_v) {
   tau_v += w * (A.transpose() * (lambda_m + Kf_v * integrals.lambda));
+}
+
+// (A, λ_v, E, K_fm, s, w; τ_m) => (τ_m += w s Aᵀ(λ_v + K_fm E))   the force term of (3.27), the
+// constraint's multipliers reflected to the master (thesis law); s the force scale (hand per scene).
+inline void tissue_force_torque_master(const MatKN& A, const VecK& lambda_v, const ForceErrorIntegrals& integrals,
+                                       double Kf_m, double scale, double w, VecN& tau_m) {
   tau_m += (w * scale) * (A.transpose() * (lambda_v + Kf_m * integrals.lambda));
 }
 
@@ -157,6 +162,26 @@ inline void lateral_damping_torque(const Eigen::Matrix3d& needle_frame, const Ma
   const Eigen::Vector3d v = J_m.topRows<3>() * dq_m;
   const Eigen::Vector3d y = needle_frame.col(1), z = needle_frame.col(2);
   const Eigen::Vector3d force = -(w * b) * (y * y.dot(v) + z * z.dot(v));
+  tau_m.noalias() += J_m.topRows<3>().transpose() * force;
+}
+
+// (needle frame [x₅ y₅ z₅] of the virtual tip, x_m, x_v) => (P (x_m − x_v), P = y₅y₅ᵀ + z₅z₅ᵀ)   the
+// master tip's offset across the virtual needle's line.
+inline Eigen::Vector3d lateral_offset(const Eigen::Matrix3d& needle_frame, const Eigen::Vector3d& x_m,
+                                      const Eigen::Vector3d& x_v) {
+  const Eigen::Vector3d d = x_m - x_v;
+  const Eigen::Vector3d y = needle_frame.col(1), z = needle_frame.col(2);
+  return y * y.dot(d) + z * z.dot(d);
+}
+
+// (needle frame of the virtual tip, x_m, x_v, J_m, K, w; τ_m) => (τ_m −= w K J_mᵀ P (x_m − x_v))   the
+// master tip held to the virtual needle's line while the needle is in tissue, in place of (3.27)'s
+// reflection (tool law, not in the thesis: docs/CONTROLLER.md, "Passivity at the hand"). The
+// constraint holds the virtual tip still across the needle, so this is a spring to a line pivoting
+// about a still point, storing ½ w K |P (x_m − x_v)|².
+inline void lateral_spring_torque(const Eigen::Matrix3d& needle_frame, const Eigen::Vector3d& x_m,
+                                  const Eigen::Vector3d& x_v, const Mat6N& J_m, double K, double w, VecN& tau_m) {
+  const Eigen::Vector3d force = -(w * K) * lateral_offset(needle_frame, x_m, x_v);
   tau_m.noalias() += J_m.topRows<3>().transpose() * force;
 }
 

@@ -46,7 +46,7 @@ SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::functi
   plant.reset(sc.q0, VecN::Zero(n));
   sensor.reset(Wrench::Zero());
   const double e0 = plant.energy() + tele.world().energy();
-  const double stored0 = world_stored_energy(sc, plant, tele.world());
+  const double stored0 = world_stored_energy(sc, plant, tele);
 
   SimResult result;
   ErrorStats free_pos, contact_pos, force;
@@ -86,7 +86,7 @@ SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::functi
     rec.axial_force_N = world.tissue().out.axial_force_N;
     rec.layer = world.tissue().out.holding_layer;
     rec.hand_work_J = plant.hand_port_work();
-    rec.world_stored_J = world_stored_energy(sc, plant, world) - stored0;
+    rec.world_stored_J = world_stored_energy(sc, plant, tele) - stored0;
     rec.position_error = (rec.x_m - rec.x_v).norm();
     rec.force_error = 0.0;
 

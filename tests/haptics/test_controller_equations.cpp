@@ -242,14 +242,16 @@ TEST(ControllerEquations, TissueForceTorquesAre327And328ForceTerms) {
   lambda_m << 1, 0;
   lambda_v << -1, 0;
   VecN tau_v = VecN::Zero(3), tau_m = VecN::Zero(3);
-  tissue_force_torques(two_rows(), lambda_m, lambda_v, e, 2.0, 4.0, 1.0, 0.5, tau_v, tau_m);
+  tissue_force_torque_virtual(two_rows(), lambda_m, e, 2.0, 0.5, tau_v);
+  tissue_force_torque_master(two_rows(), lambda_v, e, 4.0, 1.0, 0.5, tau_m);
   // τ_v += 0.5 Aᵀ (λ_m + 2E) = 0.5 Aᵀ (2, 1) = 0.5 (2, 3, 1) = (1, 1.5, 0.5).
   // τ_m += 0.5 Aᵀ (λ_v + 4E) = 0.5 Aᵀ (1, 2) = 0.5 (1, 3, 2) = (0.5, 1.5, 1).
   EXPECT_TRUE(tau_v.isApprox(vec({1, 1.5, 0.5}), 1e-15));
   EXPECT_TRUE(tau_m.isApprox(vec({0.5, 1.5, 1}), 1e-15));
   // Force scale 0.4 on the master's term only.
   tau_v.setZero(), tau_m.setZero();
-  tissue_force_torques(two_rows(), lambda_m, lambda_v, e, 2.0, 4.0, 0.4, 0.5, tau_v, tau_m);
+  tissue_force_torque_virtual(two_rows(), lambda_m, e, 2.0, 0.5, tau_v);
+  tissue_force_torque_master(two_rows(), lambda_v, e, 4.0, 0.4, 0.5, tau_m);
   EXPECT_TRUE(tau_v.isApprox(vec({1, 1.5, 0.5}), 1e-15));
   EXPECT_TRUE(tau_m.isApprox(vec({0.2, 0.6, 0.4}), 1e-15));
 }
@@ -292,6 +294,35 @@ TEST(ControllerEquations, AxialAndLateralDampingOpposeTheMastersMotionAlongAndAc
   lateral_damping_torque(frame, J_m, dq, 10.0, 0.5, tau);
   EXPECT_TRUE(tau.isApprox(vec({-1.6, -0.6}), 1e-14));
   EXPECT_LT(tau.dot(dq), 0.0);
+}
+
+// The lateral spring's torque is the gradient of its energy U(q) = ½ w K |P (x_m(q) − x_v)|² with
+// the needle's line held still: τ = −∂U/∂q, checked by central differences on the planar arm.
+TEST(ControllerEquations, LateralSpringTorqueIsTheGradientOfItsEnergyAcrossTheNeedle) {
+  const RobotModel model = test::planar::arm();
+  RobotData data(model);
+  Eigen::Matrix3d frame;  // needle along (0.6, 0, −0.8)
+  frame.col(0) = Eigen::Vector3d(0.6, 0, -0.8);
+  frame.col(1) = Eigen::Vector3d(0.8, 0, 0.6);
+  frame.col(2) = Eigen::Vector3d(0, 1, 0);
+  const Eigen::Vector3d x_v(0.05, 0.02, -0.01);
+  const double K = 300.0, w = 0.7;
+  auto energy = [&](const VecN& q) {
+    update_kinematics(model, data, q, VecN::Zero(2));
+    return 0.5 * w * K * lateral_offset(frame, data.tip.translation(), x_v).squaredNorm();
+  };
+  const VecN q = vec({0.3, -0.5});
+  update_kinematics(model, data, q, VecN::Zero(2));
+  VecN tau = vec({0, 0});
+  lateral_spring_torque(frame, data.tip.translation(), x_v, data.J, K, w, tau);
+  const double h = 1e-6;
+  for (int i = 0; i < 2; ++i) {
+    VecN plus = q, minus = q;
+    plus[i] += h, minus[i] -= h;
+    EXPECT_NEAR(tau[i], -(energy(plus) - energy(minus)) / (2 * h), 1e-6 * (1.0 + std::abs(tau[i]))) << "joint " << i;
+  }
+  // Along the needle the spring is slack: P x₅ = 0.
+  EXPECT_NEAR(lateral_offset(frame, x_v + 0.03 * frame.col(0), x_v).norm(), 0.0, 1e-15);
 }
 
 TEST(ControllerEquations, TaskSpaceCouplingIsASpringOnTheTipAndOneOnTheDirection) {

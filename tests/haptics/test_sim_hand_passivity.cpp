@@ -62,11 +62,11 @@ TEST(SimHandPassivity, TheThesisScenariosNeverGiveTheHandMoreThanItPutIn) {
   }
 }
 
-// DISABLED: fails today, and is the open part of issue 12's passivity item (docs/CONTROLLER.md,
-// "Passivity at the hand"): the world gives the hand energy it never stored (−0.0006 to −0.011 J in
-// the block and the lumbar approach, −0.25 J in the liver), the lateral force reflection (3.27)
-// pushing the master away from a needle the tissue holds. Enable it with the fix.
-TEST(SimHandPassivity, DISABLED_TheWorldNeverGivesTheHandMoreThanItTookInRandomisedLayeredCycles) {
+// Randomised insert–hold–withdraw cycles through the layered scenarios (issue 12's passivity test).
+// Before the master's lateral spring to the needle's line (gains.lateral_stiffness_N_per_m) the
+// world gave the hand energy it never stored: −0.0006 to −0.011 J in the block and the lumbar
+// approach, −0.25 J in the liver (docs/CONTROLLER.md, "Passivity at the hand"); with it at 0 this fails.
+TEST(SimHandPassivity, TheWorldNeverGivesTheHandMoreThanItTookInRandomisedLayeredCycles) {
   const struct {
     const char* name;
     double deepest;

@@ -5,12 +5,14 @@
 // refused at once. Offsets come from the format's layout (haptics/recording/session_format.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "cli_process.hpp"
@@ -205,42 +207,102 @@ void rewrite_gains(const fs::path& from, const fs::path& to, const std::function
   ASSERT_EQ(recorder.error(), "");
 }
 
+// A recording of a live run of the shipped task `task` (its good script) whose scenario's gains are
+// edited by `edit` first, and the run's score without its "recording" key.
+struct LiveRecording {
+  fs::path recording;
+  nlohmann::json score;
+};
+
+LiveRecording record_under_gains(const fs::path& dir, const std::string& task_name,
+                                 const std::function<void(nlohmann::json&)>& edit) {
+  nlohmann::json task = nlohmann::json::parse(std::ifstream(source_dir() / "assets/tasks" / (task_name + ".json")));
+  const fs::path scenario_file = (source_dir() / "assets/tasks" / task["scenario"].get<std::string>()).lexically_normal();
+  nlohmann::json scenario = nlohmann::json::parse(std::ifstream(scenario_file));
+  for (const char* key : {"master_urdf", "virtual_urdf"})
+    scenario[key] = (scenario_file.parent_path() / scenario[key].get<std::string>()).lexically_normal().string();
+  edit(scenario["gains"]);
+  std::ofstream(dir / "scenario.json") << scenario.dump(2);
+  task["scene"] = (source_dir() / "assets/tasks" / task["scene"].get<std::string>()).lexically_normal().string();
+  task["scenario"] = (dir / "scenario.json").string();
+  const fs::path task_file = dir / "task.json";
+  std::ofstream(task_file) << task.dump(2);
+  fs::copy_file(source_dir() / "assets/tasks" / (task_name + "_good.json"), dir / "good.json",
+                fs::copy_options::overwrite_existing);
+  LiveRecording out;
+  out.recording = live_run(dir, task_file.string(), (dir / "good.json").string());
+  if (out.recording.empty()) return out;
+  out.score = nlohmann::json::parse(std::ifstream(dir / "live" / "score.json"));
+  out.score.erase("recording");
+  return out;
+}
+
+// The replay of `recording` with `edit` applied to its context's gains.
+RunOutput replay_with_gains(const fs::path& dir, const fs::path& recording, const std::string& name,
+                            const std::function<void(nlohmann::json&)>& edit) {
+  rewrite_gains(recording, dir / (name + ".rec"), edit);
+  const RunOutput r = replay(dir / (name + ".rec"), dir / name, dir / "sessions.db");
+  EXPECT_EQ(r.process.exit_code, 0) << r.process.output;
+  return r;
+}
+
+nlohmann::json without_recording(const std::optional<nlohmann::json>& score) {
+  if (!score) return nullptr;
+  nlohmann::json s = *score;
+  s.erase("recording");
+  return s;
+}
+
+// Whether two recordings sent the device the same command at every tick.
+bool same_commands(const fs::path& a, const fs::path& b) {
+  const haptics::Session x = haptics::read_session(a.string()), y = haptics::read_session(b.string());
+  if (x.records.size() != y.records.size()) return false;
+  for (size_t i = 0; i < x.records.size(); ++i) {
+    const haptics::DeviceCommand &p = x.records[i].command, &q = y.records[i].command;
+    if (!std::equal(std::begin(p.torque_nm), std::end(p.torque_nm), std::begin(q.torque_nm)) ||
+        !std::equal(std::begin(p.force_n), std::end(p.force_n), std::begin(q.force_n)))
+      return false;
+  }
+  return true;
+}
+
 // A recording made before issue 13's tool law has no "law" in its context's gains: it replays
 // under the thesis law it was made with and scores as it did then. Made here as such a recording
 // was: a run under the thesis law whose context then loses the key. The control: the same
 // recording naming the tool law scores otherwise, so the replay does depend on the law.
 TEST(CliRecordings, ARecordingMadeBeforeTheToolLawReplaysUnderTheThesisLaw) {
   const fs::path dir = process_folder(test_output_dir("cli_recordings") / "old_law");
-  nlohmann::json scenario = nlohmann::json::parse(std::ifstream(source_dir() / "assets/scenarios/holonomic_sphere.json"));
-  for (const char* key : {"master_urdf", "virtual_urdf"})
-    scenario[key] = (source_dir() / "assets/scenarios" / scenario[key].get<std::string>()).lexically_normal().string();
-  scenario["gains"]["law"] = "thesis";
-  std::ofstream(dir / "thesis_scenario.json") << scenario.dump(2);
-  nlohmann::json task = nlohmann::json::parse(std::ifstream(source_dir() / "assets/tasks/rigid_sphere.json"));
-  task["scene"] = (source_dir() / "assets/tasks" / task["scene"].get<std::string>()).lexically_normal().string();
-  task["scenario"] = (dir / "thesis_scenario.json").string();
-  const fs::path task_file = dir / "rigid_thesis.json";
-  std::ofstream(task_file) << task.dump(2);
-  fs::copy_file(source_dir() / "assets/tasks/rigid_sphere_good.json", dir / "good.json", fs::copy_options::overwrite_existing);
-  const fs::path recording = live_run(dir, task_file.string(), (dir / "good.json").string());
-  ASSERT_FALSE(recording.empty());
-  nlohmann::json live = nlohmann::json::parse(std::ifstream(dir / "live" / "score.json"));
-  live.erase("recording");
+  const LiveRecording live = record_under_gains(dir, "rigid_sphere", [](nlohmann::json& g) { g["law"] = "thesis"; });
+  ASSERT_FALSE(live.recording.empty());
+  const RunOutput old = replay_with_gains(dir, live.recording, "before_the_tool_law", [](nlohmann::json& g) { g.erase("law"); });
+  EXPECT_EQ(without_recording(old.score), live.score);
+  const RunOutput tool = replay_with_gains(dir, live.recording, "named_tool", [](nlohmann::json& g) { g["law"] = "tool"; });
+  EXPECT_NE(without_recording(tool.score)["metrics"], live.score["metrics"]);
+}
 
-  rewrite_gains(recording, dir / "before_the_tool_law.rec", [](nlohmann::json& gains) { gains.erase("law"); });
-  rewrite_gains(recording, dir / "named_tool.rec", [](nlohmann::json& gains) { gains["law"] = "tool"; });
-  const RunOutput old = replay(dir / "before_the_tool_law.rec", dir / "old", dir / "sessions.db");
-  ASSERT_EQ(old.process.exit_code, 0) << old.process.output;
+// A tool-law recording made before the master's lateral spring (issue 12) names no
+// lateral_stiffness_N_per_m: it replays without the spring, i.e. the replay commands the device as the
+// run did, tick for tick, and scores as it did. Made here as such a recording was: a run with the
+// spring at 0 whose context then loses the key. The control: the same recording naming today's
+// 300 N/m commands the device otherwise (the needle is in the sphere's tissue). The spring acts on the
+// master only, so the score, made from the recorded hand and the replayed virtual needle, is the same.
+TEST(CliRecordings, AToolLawRecordingMadeBeforeTheLateralSpringReplaysWithoutIt) {
+  const fs::path dir = process_folder(test_output_dir("cli_recordings") / "old_spring");
+  const LiveRecording live = record_under_gains(dir, "penetrable_sphere", [](nlohmann::json& g) {
+    g["law"] = "tool";
+    g["lateral_stiffness_N_per_m"] = 0.0;
+  });
+  ASSERT_FALSE(live.recording.empty());
+  const RunOutput old = replay_with_gains(dir, live.recording, "before_the_spring",
+                                          [](nlohmann::json& g) { g.erase("lateral_stiffness_N_per_m"); });
   ASSERT_TRUE(old.score);
-  nlohmann::json replayed = *old.score;
-  replayed.erase("recording");
-  EXPECT_EQ(replayed, live);
-  const RunOutput tool = replay(dir / "named_tool.rec", dir / "tool", dir / "sessions.db");
-  ASSERT_EQ(tool.process.exit_code, 0) << tool.process.output;
-  ASSERT_TRUE(tool.score);
-  nlohmann::json other = *tool.score;
-  other.erase("recording");
-  EXPECT_NE(other["metrics"], live["metrics"]);
+  EXPECT_EQ(without_recording(old.score), live.score);
+  EXPECT_TRUE(same_commands(live.recording, (*old.score)["recording"].get<std::string>()));
+  const RunOutput spring = replay_with_gains(dir, live.recording, "named_spring",
+                                             [](nlohmann::json& g) { g["lateral_stiffness_N_per_m"] = 300.0; });
+  ASSERT_TRUE(spring.score);
+  EXPECT_EQ(without_recording(spring.score)["metrics"], live.score["metrics"]);
+  EXPECT_FALSE(same_commands(live.recording, (*spring.score)["recording"].get<std::string>()));
 }
 
 TEST(CliRecordings, WhatIsNotARecordingIsRefusedAtOnce) {
