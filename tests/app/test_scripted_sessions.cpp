@@ -33,7 +33,9 @@ TEST_P(ScriptedSessions, GoodPassesAndOutscoresSloppyWhichFails) {
   std::cout << GetParam() << " good: " << report(good.result) << "\n" << GetParam() << " sloppy: " << report(sloppy.result) << "\n";
 }
 
-INSTANTIATE_TEST_SUITE_P(ShippedTasks, ScriptedSessions, testing::Values("rigid_sphere", "penetrable_sphere", "sphere_ultrasound"));
+// The epidural is not here: its good run does not pass yet (docs/TASKS.md, "Layered tasks").
+INSTANTIATE_TEST_SUITE_P(ShippedTasks, ScriptedSessions,
+                         testing::Values("rigid_sphere", "penetrable_sphere", "sphere_ultrasound", "layered_target"));
 
 }  // namespace
 }  // namespace needle::test

@@ -22,7 +22,9 @@ constexpr Slab kBlock[] = {{0.068, 0.070}, {0.058, 0.068}, {0.030, 0.058}, {0.02
 constexpr int kBone = 3;
 constexpr double kTrack = 2e-3;
 
-// The shipped scenario with its hand going on to 10 mm below the bone's top, held, withdrawn.
+// The shipped scenario with its hand going on to 18 mm below the bone's top, held, withdrawn (with the
+// master held on the needle by the lateral spring the tip no longer runs ahead of the hand: 10 mm
+// below did not reach the bone through the muscle's friction).
 Scenario down_to_bone() {
   Scenario s = load_scenario(test::source_dir().string() + "/assets/scenarios/tissue_block_layers.json");
   const nlohmann::json hand = nlohmann::json::parse(R"({
@@ -31,8 +33,8 @@ Scenario down_to_bone() {
       {"t": 0.0, "p": [0.3476, 0.024, 0.1328], "dir": [0.724, 0.479, -0.496]},
       {"t": 3.0, "p": [0.33, 0.0, 0.08], "dir": [0.0, 0.0, -1.0]},
       {"t": 5.0, "p": [0.33, 0.0, 0.07], "dir": [0.0, 0.0, -1.0]},
-      {"t": 22.0, "p": [0.33, 0.0, 0.02], "dir": [0.0, 0.0, -1.0]},
-      {"t": 25.0, "p": [0.33, 0.0, 0.02], "dir": [0.0, 0.0, -1.0]},
+      {"t": 22.0, "p": [0.33, 0.0, 0.012], "dir": [0.0, 0.0, -1.0]},
+      {"t": 25.0, "p": [0.33, 0.0, 0.012], "dir": [0.0, 0.0, -1.0]},
       {"t": 35.0, "p": [0.33, 0.0, 0.09], "dir": [0.0, 0.0, -1.0]}]})");
   const OperatorHand read = read_hand(hand, "test", "/hand", s.base_in_world);
   s.hand = read.impedance;
@@ -94,7 +96,7 @@ TEST(TissueSnapshot, TheScriptedHandThroughTheLayeredBlockDownToBone) {
     if (t.bone_layer >= 0) {
       ++bone_ticks;
       EXPECT_EQ(t.bone_layer, kBone) << at();
-      EXPECT_NEAR(z, kBlock[kBone].top_z, 2e-3) << at();
+      EXPECT_NEAR(z, kBlock[kBone].top_z, 3e-3) << at();  // the penalty (3.15) is 800 N/m: 2.4 N presses 3 mm
       EXPECT_LE(t.bone_force_n[2], 0.0) << at();  // the tool presses the bone down (or, touching, not yet)
       bone_push = std::min(bone_push, t.bone_force_n[2]);
       for (int i = 0; i < 3; ++i) EXPECT_EQ(t.bone_force_n[i], s.environment_force_n[i]) << at();
@@ -111,7 +113,7 @@ TEST(TissueSnapshot, TheScriptedHandThroughTheLayeredBlockDownToBone) {
   std::printf("tip above its layer's top by at most %.2f mm\n", 1e3 * worst_above);
   EXPECT_EQ(deepest, 2);  // the muscle, then the bone's surface
   EXPECT_GT(bone_ticks, 500);  // pressed on it for more than a second
-  EXPECT_LT(bone_push, -0.5);  // the hand's spring, 10 mm below the bone's top: about 1.35 N
+  EXPECT_LT(bone_push, -0.5);  // the hand's spring, 18 mm below the bone's top, less the muscle's friction
   ASSERT_GT(advance_ticks, 0);
   ASSERT_GT(withdraw_ticks, 0);
   EXPECT_GT(advance_force / advance_ticks, 0.1);    // the muscle resists the advance
