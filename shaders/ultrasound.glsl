@@ -21,8 +21,8 @@ layout(set = 0, binding = 0, std140) uniform Echo {
   vec4 lateral;      // xyz: along the array
   vec4 elevation;    // xyz: direction × lateral
   vec4 image;        // x depth, y width, z sample spacing, w line spacing (m)
-  uvec4 counts;      // x lines, y samples, z layers, w loads
-  uvec4 kernel;      // x axial radius (samples), y lateral radius (lines), z speckle (0/1)
+  uvec4 counts;      // x lines, y samples, z layers, w loads (the shaders' LOADS)
+  uvec4 kernel;      // x axial radius (samples), y lateral radius (lines) (AXIAL_RADIUS, LATERAL_RADIUS), z speckle (0/1)
   vec4 beam;         // x Np/m per dB/(cm MHz) at the probe's frequency, y time gain (Np/m, one way), z backscatter level, w specular width (rad)
   vec4 media;        // x gel impedance, y needle impedance, z reverberation ratio, w shadow level
   vec4 needle_tip;   // xyz, w: 1 when there is a needle
@@ -157,14 +157,24 @@ int layer_at(vec3 x) {
   return -1;
 }
 
+// Specialization constants: engine/ultrasound/ultrasound_pass.cpp makes a pipeline for each value
+// an image needs. Lavapipe (Mesa 22.3) runs both sides of every branch under a mask and a loop's
+// body at least once, and reads a uniform block lane by lane, with a bounds check, wherever the
+// offset comes from a loop counter that is not a constant (gallivm's emit_load_ubo); with these
+// constant the loops unroll, their uniforms are read once for all lanes, and an image of a tissue
+// at rest has no Kelvinlet in it (docs/BENCHMARKS.md, "Third round").
+layout(constant_id = 0) const uint LOADS = 0u;        // the tissue's loads (echo.loads), 0 at rest
+layout(constant_id = 1) const int AXIAL_RADIUS = 0;   // the point spread function's, samples
+layout(constant_id = 2) const int LATERAL_RADIUS = 0; // lines
+
 // The rest position whose displaced position is x (echo_model.hpp, kRestIterations steps).
 vec3 rest_position(vec3 x) {
   vec3 rest = x;
-  if (echo.counts.w == 0u) return rest;
+  if (LOADS == 0u) return rest;
   for (int i = 0; i < 4; ++i) {
     vec3 u = vec3(0.0);
     mat3 unused = mat3(0.0);
-    for (uint k = 0; k < echo.counts.w; ++k) add_kelvinlet(echo.loads[k], rest, echo.material.x, echo.material.y, false, u, unused);
+    for (uint k = 0; k < LOADS; ++k) add_kelvinlet(echo.loads[k], rest, echo.material.x, echo.material.y, false, u, unused);
     rest = x - u;
   }
   return rest;

@@ -11,7 +11,7 @@ void main() {
   int samples = int(echo.counts.y);
   int j = int(gl_GlobalInvocationID.x);
   if (j >= samples) return;
-  int radius = int(echo.kernel.x);
+  const int radius = AXIAL_RADIUS;
   int first = int(gl_WorkGroupID.y) * LINES_PER_ITEM;
   for (int line = first; line < min(first + LINES_PER_ITEM, int(echo.counts.x)); ++line) {
     vec2 sum = imageLoad(echoes, ivec2(j, line)).xy * axial_weight(0);

@@ -13,7 +13,7 @@ void main() {
   int line_count = int(echo.counts.x);
   uint j = gl_GlobalInvocationID.x;
   if (j >= samples) return;
-  int radius = int(echo.kernel.y);
+  const int radius = LATERAL_RADIUS;
   int first = int(gl_WorkGroupID.y) * LINES_PER_ITEM;
   for (int line = first; line < min(first + LINES_PER_ITEM, line_count); ++line) {
     vec2 sum = imageLoad(axial, ivec2(j, line)).xy * lateral_weight(0);

@@ -54,7 +54,7 @@ vec2 needle_hit(vec3 origin) {
 // position moves up to twice as fast as the point for a displacement gradient up to 0.5, a design
 // value; docs/RENDERING.md, "How the passes find the layers").
 int layer_and_clearance(vec3 x, vec3 beam, out float clearance) {
-  bool at_rest = echo.counts.w == 0u;
+  bool at_rest = LOADS == 0u;
   int found = -1;
   clearance = 1e30;
   for (int k = int(echo.counts.z) - 1; k >= 0; --k) {

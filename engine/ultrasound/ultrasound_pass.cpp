@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -154,10 +155,6 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
   }
   set_layout_ = descriptor_set_layout(device_, {bindings.begin(), bindings.end()});
   pipeline_layout_ = single_set_pipeline_layout(device_, set_layout_);
-  pipelines_ = {compute_pipeline(device_, pipeline_layout_, ultrasound_lines_comp_spv, sizeof(ultrasound_lines_comp_spv)),
-                compute_pipeline(device_, pipeline_layout_, ultrasound_echoes_comp_spv, sizeof(ultrasound_echoes_comp_spv)),
-                compute_pipeline(device_, pipeline_layout_, ultrasound_axial_comp_spv, sizeof(ultrasound_axial_comp_spv)),
-                compute_pipeline(device_, pipeline_layout_, ultrasound_image_comp_spv, sizeof(ultrasound_image_comp_spv))};
 
   const LayersGpu packed = pack_layers(scene_);
   layers_ = GpuBuffer::device_local_with_data(context_, &packed, sizeof packed, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
@@ -218,8 +215,7 @@ UltrasoundPass::~UltrasoundPass() {
   vkDeviceWaitIdle(device_);
   if (timestamps_) vkDestroyQueryPool(device_, timestamps_, nullptr);
   if (pool_) vkDestroyDescriptorPool(device_, pool_, nullptr);
-  for (VkPipeline p : pipelines_)
-    if (p) vkDestroyPipeline(device_, p, nullptr);
+  for (const auto& [key, p] : pipelines_) vkDestroyPipeline(device_, p, nullptr);
   if (pipeline_layout_) vkDestroyPipelineLayout(device_, pipeline_layout_, nullptr);
   if (set_layout_) vkDestroyDescriptorSetLayout(device_, set_layout_, nullptr);
 }
@@ -243,6 +239,19 @@ std::optional<std::array<double, UltrasoundPass::kPasses>> UltrasoundPass::read_
   std::array<double, kPasses> ms{};
   for (size_t p = 0; p < kPasses; ++p) ms[p] = double((ticks[p + 1] - ticks[p]) & mask) * context_.timestamp_period_ns() * 1e-6;
   return ms;
+}
+
+VkPipeline UltrasoundPass::pipeline(size_t pass, uint32_t constant) {
+  const auto key = std::pair{pass, constant};
+  if (const auto found = pipelines_.find(key); found != pipelines_.end()) return found->second;
+  static constexpr std::array<std::pair<const uint32_t*, size_t>, kPasses> kCode{{
+      {ultrasound_lines_comp_spv, sizeof(ultrasound_lines_comp_spv)},
+      {ultrasound_echoes_comp_spv, sizeof(ultrasound_echoes_comp_spv)},
+      {ultrasound_axial_comp_spv, sizeof(ultrasound_axial_comp_spv)},
+      {ultrasound_image_comp_spv, sizeof(ultrasound_image_comp_spv)}}};
+  const VkSpecializationMapEntry entry{kConstantId[pass], 0, sizeof constant};
+  const VkSpecializationInfo info{1, &entry, sizeof constant, &constant};
+  return pipelines_[key] = compute_pipeline(device_, pipeline_layout_, kCode[pass].first, kCode[pass].second, &info);
 }
 
 std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProbe& probe, const NeedleLoad* needle, bool unless_shown) {
@@ -286,10 +295,13 @@ std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProb
   auto bytes = std::make_shared<std::vector<uint8_t>>(sizeof u);
   std::memcpy(bytes->data(), &u, sizeof u);
   if (unless_shown && has_image() && *bytes == recorded_) return {};
-  return [this, bytes](VkCommandBuffer cmd) { record(cmd, *bytes); };
+  const std::array<uint32_t, kPasses> constants{u.counts.w, u.counts.w, u.kernel.x, u.kernel.y};
+  std::array<VkPipeline, kPasses> pipelines{};
+  for (size_t p = 0; p < kPasses; ++p) pipelines[p] = pipeline(p, constants[p]);
+  return [this, bytes, pipelines](VkCommandBuffer cmd) { record(cmd, *bytes, pipelines); };
 }
 
-void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms) {
+void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms, const std::array<VkPipeline, kPasses>& pipelines) {
   const size_t slot = ring_;
   ring_ = (ring_ + 1) % kRing;
   std::memcpy(uniforms_[slot].mapped(), uniforms.data(), uniforms.size());
@@ -338,11 +350,11 @@ void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uni
                                                 {(samples + kWorkgroup[1] - 1) / kWorkgroup[1], line_groups},
                                                 {(samples + kWorkgroup[2] - 1) / kWorkgroup[2], line_groups},
                                                 {(samples + kWorkgroup[3] - 1) / kWorkgroup[3], line_groups}}};
-  for (size_t p = 0; p < pipelines_.size(); ++p) {
+  for (size_t p = 0; p < kPasses; ++p) {
     if (p > 0)
       compute_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                       VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[p]);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines[p]);
     vkCmdDispatch(cmd, groups[p].width, groups[p].height, 1);
     if (timed_) {
       vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0, nullptr, 0,

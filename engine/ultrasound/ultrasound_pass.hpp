@@ -10,6 +10,7 @@
 
 #include <array>
 #include <functional>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -54,7 +55,12 @@ class UltrasoundPass {
  private:
   static constexpr size_t kRing = 3;  // more than the renderer's frames in flight
 
-  void record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms);
+  // The pipeline of pass `pass` (kPassNames) with its specialization constant (ultrasound.glsl:
+  // LOADS for the line and echo passes, AXIAL_RADIUS, LATERAL_RADIUS for the convolutions) set to
+  // `constant`, made the first time an image needs it.
+  static constexpr std::array<uint32_t, kPasses> kConstantId{0, 0, 1, 2};
+  VkPipeline pipeline(size_t pass, uint32_t constant);
+  void record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms, const std::array<VkPipeline, kPasses>& pipelines);
 
   const VulkanContext& context_;
   VkDevice device_;
@@ -62,7 +68,7 @@ class UltrasoundPass {
   UltrasoundSettings settings_;
   VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
   VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
-  std::array<VkPipeline, kPasses> pipelines_{};  // kPassNames
+  std::map<std::pair<size_t, uint32_t>, VkPipeline> pipelines_;  // (pass, constant) -> pipeline
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   std::array<VkDescriptorSet, kRing> sets_{};
   std::array<GpuBuffer, kRing> uniforms_;

@@ -15,8 +15,10 @@ VkShaderModule shader_module(VkDevice device, const uint32_t* code, size_t bytes
 VkDescriptorSetLayout descriptor_set_layout(VkDevice device, const std::vector<VkDescriptorSetLayoutBinding>& bindings);
 // One set, no push constants.
 VkPipelineLayout single_set_pipeline_layout(VkDevice device, VkDescriptorSetLayout set_layout);
-// The compute shader `code` with `layout` (its module destroyed once the pipeline is made).
-VkPipeline compute_pipeline(VkDevice device, VkPipelineLayout layout, const uint32_t* code, size_t bytes);
+// The compute shader `code` with `layout` and its specialization constants, if any (its module
+// destroyed once the pipeline is made).
+VkPipeline compute_pipeline(VkDevice device, VkPipelineLayout layout, const uint32_t* code, size_t bytes,
+                            const VkSpecializationInfo* specialization = nullptr);
 
 struct GraphicsPipelineStates {
   std::vector<VkPipelineShaderStageCreateInfo> stages;

@@ -1,7 +1,9 @@
 // needle-sim bench ultrasound: the ultrasound image's compute passes through the layered tissue
 // block and the lumbar epidural section with the needle in plane, at 256 x 512 and 512 x 1024:
 // time per image (submitted and waited for) against the scan-line model's double-precision CPU
-// reference over the same lines, and the largest depth difference between the two.
+// reference over the same lines, and the largest depth difference between the two. A third scene,
+// the penetrable sphere of the sphere_ultrasound task, images a tissue the needle deforms (the
+// passes undo its displacement at every sample), as bench frame --views ultrasound draws it.
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -33,13 +35,18 @@ double process_cpu_ms() {
   return ms(usage.ru_utime) + ms(usage.ru_stime);
 }
 
-// A scene of the bench: the scenario's layers, a probe on its skin and a needle in the probe's plane.
+// A scene of the bench: the layers of a scenario (at rest) or of a task (with its scene's
+// deformable tissue), a probe on its skin and a needle in the probe's plane.
 struct Case {
   const char* name;
-  const char* scenario;
+  engine::EchoScene scene;
   engine::UltrasoundProbe probe;
   engine::NeedleLoad needle;
 };
+
+engine::EchoScene scenario_layers(const char* scenario) {
+  return app::echo_scene(haptics::load_scenario((asset_dir() / scenario).string()), engine::Scene{});
+}
 
 engine::NeedleLoad needle_in_plane(glm::dvec3 entry, double angle_rad, double depth_m) {
   engine::NeedleLoad n;
@@ -57,8 +64,18 @@ std::vector<Case> cases() {
   epidural.depth_m = 0.08;
   epidural.width_m = 0.05;
   epidural.frequency_MHz = 5.0;
-  return {{"block", "scenarios/tissue_block_layers.json", block, needle_in_plane({0.315, 0.0, 0.07}, 0.5236, 0.035)},
-          {"epidural", "scenarios/lumbar_epidural.json", epidural, needle_in_plane({0.31, 0.0, 0.07}, 0.7854, 0.06)}};
+  // The sphere_ultrasound task's probe and sphere, the needle 35 mm in from its entry marker at 30°
+  // with the step's lateral push (0.5 N) and its entry point dragged 1 mm: three Kelvinlets (two
+  // along the shaft, one at the entry) displace every sample of the image.
+  const training::Task sphere_task = training::load_task(asset_dir() / "tasks/sphere_ultrasound.json");
+  engine::EchoScene sphere = app::echo_scene(sphere_task);
+  engine::NeedleLoad pushed = needle_in_plane({0.37, 0.0, 0.09539}, 0.5236, 0.035);
+  pushed.surface_point.z -= 0.001;
+  pushed.lateral_force_on_tissue_N = {0.0, 0.5, 0.0};
+  const engine::UltrasoundProbe sphere_probe = app::task_probe(sphere_task, sphere).probe;
+  return {{"block", scenario_layers("scenarios/tissue_block_layers.json"), block, needle_in_plane({0.315, 0.0, 0.07}, 0.5236, 0.035)},
+          {"epidural", scenario_layers("scenarios/lumbar_epidural.json"), epidural, needle_in_plane({0.31, 0.0, 0.07}, 0.7854, 0.06)},
+          {"sphere_deformed", std::move(sphere), sphere_probe, pushed}};
 }
 
 // The largest depth difference between the GPU's and the reference's interfaces and needle walls.
@@ -85,8 +102,7 @@ int run_bench_ultrasound(ArgList& args) {
   BenchTable table({"scene", "lines", "samples", "gpu_ms", "gpu_ms_p95", "gpu_cpu_time_ms", "cpu_ms", "max_depth_error_m",
                     "lines_ms", "echoes_ms", "axial_ms", "image_ms"});
   for (const Case& c : cases()) {
-    const haptics::Scenario scenario = haptics::load_scenario((asset_dir() / c.scenario).string());
-    const engine::EchoScene scene = app::echo_scene(scenario, engine::Scene{});
+    const engine::EchoScene& scene = c.scene;
     for (const auto& [lines, samples] : {std::pair{256u, 512u}, std::pair{512u, 1024u}}) {
       engine::UltrasoundView view(device, scene, {lines, samples});
       view.render(c.probe, &c.needle);  // pipelines warmed, memory touched
