@@ -124,5 +124,71 @@ TEST_F(SectionView, AFixedPlaneCutsTheBlockWithTheNeedleCrossingIt) {
   EXPECT_GT(pixel(cut, *beside).x, 150);  // muscle's red in the cut face, no needle there
 }
 
+
+// The section view of the two layered tasks' scenes (issue 15's acceptance): the layered target's
+// block (assets/scenes/tissue_block_task.json) and the epidural task's lumbar section
+// (lumbar_section.json), both with their top at z = 0.07 over (0.33, 0) as the tasks' markers put
+// them. In plane: the needle on the task's planned axis (straight down through the entry marker)
+// to the task's goal, the layered target's 35 mm target and the epidural space 50 mm down, cut
+// through the needle. Out of plane: the needle entering in front of the plane y = 0 through the
+// planned axis at 45 degrees and crossing it, cut by that plane fixed as a task fixes it.
+struct TaskSection {
+  const char* scene;
+  const char* golden;
+  bool in_plane;
+  double entry_y;  // out of plane: where the needle enters, in front of y = 0 (m)
+  double depth;    // along the needle from the entry (m)
+};
+void PrintTo(const TaskSection& c, std::ostream* os) { *os << c.golden; }
+
+class TaskSectionView : public VulkanTest, public ::testing::WithParamInterface<TaskSection> {};
+
+TEST_P(TaskSectionView, TheNeedleShowsInTheCutOfTheTasksLayers) {
+  const TaskSection& c = GetParam();
+  engine::HeadlessTarget target(device(), kSize);
+  engine::SceneRenderer renderer(device(), target);
+  engine::GpuScene scene(renderer, engine::load_scene(test::source_dir() / "assets/scenes" / c.scene));
+  engine::NeedleLoad needle;
+  needle.contact = engine::NeedleContact::Inserted;
+  needle.surface_point = {0.33, c.in_plane ? 0.0 : c.entry_y, 0.07};
+  needle.axis = c.in_plane ? glm::dvec3(0.0, 0.0, -1.0) : glm::dvec3(0.0, 0.70710678, -0.70710678);
+  needle.tip = needle.surface_point + c.depth * needle.axis;
+  engine::FrameParams params = scene.frame_params(&needle);
+  engine::RgbaImage plain, cut;
+  ASSERT_TRUE(renderer.draw(target, params, &plain));
+  engine::Section section;
+  if (c.in_plane) {
+    section = engine::section_through_needle(params.camera, &needle);
+  } else {
+    section.point = glm::vec3(0.33f, 0.0f, 0.07f);
+    section.normal = glm::vec3(0.0f, params.camera.position.y > params.camera.target.y ? 1.0f : -1.0f, 0.0f);
+  }
+  params.section = section;
+  ASSERT_TRUE(renderer.draw(target, params, &cut));
+  EXPECT_TRUE(matches_golden(cut, c.golden));
+  // In plane, 10 mm above the tip; out of plane, where the shaft crosses the plane: inside the
+  // tissue, so hidden in the plain view and dark (the needle) in the cut.
+  const glm::dvec3 shown = c.in_plane ? needle.tip - 0.01 * needle.axis
+                                      : needle.surface_point + (-c.entry_y / needle.axis.y) * needle.axis;
+  const std::optional<glm::vec2> at = engine::project_to_screen(params.camera, kSize, glm::vec3(shown));
+  ASSERT_TRUE(at);
+  EXPECT_GT(darkest_red(plain, *at), 120);
+  EXPECT_LT(darkest_red(cut, *at), 100);
+  // A point of the cut 15 mm beside the needle at the same depth shows a layer, not the needle.
+  const glm::vec3 beside = glm::vec3(shown) + glm::vec3(0.015f, 0.0f, 0.0f);
+  const glm::vec3 on_plane = beside - glm::dot(beside - section.point, section.normal) * section.normal;
+  const std::optional<glm::vec2> there = engine::project_to_screen(params.camera, kSize, on_plane);
+  ASSERT_TRUE(there);
+  EXPECT_GT(darkest_red(cut, *there), 120);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Tasks, TaskSectionView,
+    ::testing::Values(TaskSection{"tissue_block_task.json", "section_layered_target_in_plane", true, 0.0, 0.034},
+                      TaskSection{"tissue_block_task.json", "section_layered_target_out_of_plane", false, -0.02, 0.035},
+                      TaskSection{"lumbar_section.json", "section_epidural_in_plane", true, 0.0, 0.05},
+                      TaskSection{"lumbar_section.json", "section_epidural_out_of_plane", false, -0.03, 0.05}),
+    [](const ::testing::TestParamInfo<TaskSection>& info) { return std::string(info.param.golden).substr(8); });
+
 }  // namespace
 }  // namespace needle::test
