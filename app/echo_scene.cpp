@@ -54,6 +54,13 @@ engine::EchoScene echo_scene(const training::Task& task) {
   return echo_scene(haptics::load_scenario(task.scenario.string()), scene);
 }
 
+bool layers_have_acoustics(const training::Task& task) {
+  if (task.scenario.empty()) return false;
+  const haptics::Scenario scenario = haptics::load_scenario(task.scenario.string());
+  const auto& layers = scenario.scene.tissue.layers();
+  return std::any_of(layers.begin(), layers.end(), [](const haptics::TissueLayer& l) { return l.acoustics.has_value(); });
+}
+
 engine::UltrasoundProbe to_engine(const training::UltrasoundProbeSpec& p) {
   engine::UltrasoundProbe out;
   out.position = glm_of(p.position);

@@ -17,6 +17,11 @@ engine::EchoScene echo_scene(const haptics::Scenario& scenario, const engine::Sc
 // The task's scenario and scene (no layers when the task names no scenario). Throws their loaders' errors.
 engine::EchoScene echo_scene(const training::Task& task);
 
+// Whether the task's tissue layers carry their own ultrasound parameters (their tissue files'
+// `ultrasound` blocks, docs/TISSUE.md): a task made to be imaged even without a probe of its own,
+// as the layered tasks are. Throws the scenario loader's errors.
+bool layers_have_acoustics(const training::Task& task);
+
 engine::UltrasoundProbe to_engine(const training::UltrasoundProbeSpec& probe);
 
 struct ProbePlan {

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "app/default_db.hpp"
+#include "app/echo_scene.hpp"
 #include "app/replay_cursor.hpp"
 #include "app/ultrasound_window.hpp"
 #include "app/window_frames.hpp"
@@ -102,7 +103,8 @@ int run_review_window(const ReviewOptions& options) {
   engine::GpuScene empty_scene(renderer, engine::Model{}, engine::Scene{});  // behind the Class tab
   fs::path scene_file;
   std::string scene_error;
-  // The recorded task's ultrasound image at the scrubbed time, in a task with a probe.
+  // The recorded task's ultrasound image at the scrubbed time, in a task with a probe or with
+  // layers made to be imaged (the layered tasks: a probe following the needle, as the window's).
   std::unique_ptr<UltrasoundWindow> ultrasound;
   engine::UiPass ui_pass(renderer, &window);
   ui::FrameClock clock;
@@ -140,9 +142,10 @@ int run_review_window(const ReviewOptions& options) {
       t = a.review ? a.review->end_s() : 0.0;
       renderer.wait_idle();  // the old ultrasound view's image may still be drawn in flight
       ultrasound.reset();
-      if (a.review && a.review->task && a.review->task->ultrasound_probe) {
+      if (a.review && a.review->task) {
         try {
-          ultrasound = std::make_unique<UltrasoundWindow>(vw.device, *a.review->task);
+          const training::Task& task = *a.review->task;
+          if (task.ultrasound_probe || layers_have_acoustics(task)) ultrasound = std::make_unique<UltrasoundWindow>(vw.device, task);
         } catch (const std::exception& e) {
           std::fprintf(stderr, "no ultrasound replay: %s\n", e.what());
         }

@@ -86,6 +86,26 @@ TEST(CliRunTask, AnUltrasoundTaskWritesTheProbesImageAtEachStep) {
   EXPECT_GT(speckle_share(review, 1200 - 300, 100, 1200 - 40, 300), 0.3);
 }
 
+// A layered task has no probe of its own, but its layers carry ultrasound parameters: the
+// instructor's review replays its session with the image of a probe following the needle (the
+// window's, as the trainee's U key opens it), at the scrubbed time (the end), top right.
+TEST(CliRunTask, TheReviewOfALayeredTaskShowsTheUltrasoundImage) {
+  const fs::path dir = test_output_dir("cli_run_task") / "layered_review";
+  fs::remove_all(dir);
+  ProcessResult r = run_needle_sim("run --headless --size 320x240 --task " + quoted(source_dir() / "assets/tasks/layered_target.json") +
+                                   " --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const fs::path shot = dir / "review.png";
+  r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1280x800x24' " + test::needle_sim_exe().string() +
+                  " review --size 1200x700 --frames 4 --screenshot " + quoted(shot) + " --session 1 --db " +
+                  quoted(dir / "sessions.db"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  const engine::RgbaImage review = engine::read_png(shot);
+  // The image: 0.45 of the height, 60 mm deep by 40 mm wide (210 px), from the right edge.
+  EXPECT_GT(speckle_share(review, 1200 - 200, 100, 1200 - 40, 300), 0.3);
+}
+
 // In the window, a task with a probe opens the ultrasound window beside the 3D view: its image
 // (grey speckle, R = G = B) fills the room the window keeps on the left; validation-clean.
 TEST(CliRunTask, TheWindowShowsTheUltrasoundImageBesideTheView) {
