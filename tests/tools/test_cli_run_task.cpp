@@ -56,6 +56,18 @@ double speckle_share(const engine::RgbaImage& image, uint32_t x0, uint32_t y0, u
   return double(speckle) / double(pixels);
 }
 
+// The review window (1200 x 700, under Xvfb and the validation layer) of session 1 of the database
+// in `dir`, at its end; no picture when it fails or validation speaks.
+engine::RgbaImage review_screenshot(const fs::path& dir) {
+  const fs::path shot = dir / "review.png";
+  const ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1280x800x24' " + test::needle_sim_exe().string() +
+                                      " review --size 1200x700 --frames 4 --screenshot " + quoted(shot) + " --session 1 --db " +
+                                      quoted(dir / "sessions.db"));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  return r.exit_code == 0 ? engine::read_png(shot) : engine::RgbaImage{};
+}
+
 // A task with an ultrasound probe writes the probe's image beside each step's picture, at the
 // probe's proportions: in the insert step the needle lies in the image plane, a bright line. The
 // instructor's review replays the session with the image at the scrubbed time (the end: the
@@ -75,13 +87,8 @@ TEST(CliRunTask, AnUltrasoundTaskWritesTheProbesImageAtEachStep) {
   EXPECT_EQ(insert.width, 512u);
   EXPECT_TRUE(matches_golden(insert, "ultrasound_sphere_task_insert"));
 
-  const fs::path shot = dir / "review.png";
-  r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1280x800x24' " + test::needle_sim_exe().string() +
-                  " review --size 1200x700 --frames 4 --screenshot " + quoted(shot) + " --session 1 --db " +
-                  quoted(dir / "sessions.db"));
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
-  const engine::RgbaImage review = engine::read_png(shot);
+  const engine::RgbaImage review = review_screenshot(dir);
+  ASSERT_EQ(review.width, 1200u);
   // The image: 0.45 of the height (315 px square) under the window's title, from the right edge.
   EXPECT_GT(speckle_share(review, 1200 - 300, 100, 1200 - 40, 300), 0.3);
 }
@@ -95,13 +102,8 @@ TEST(CliRunTask, TheReviewOfALayeredTaskShowsTheUltrasoundImage) {
   ProcessResult r = run_needle_sim("run --headless --size 320x240 --task " + quoted(source_dir() / "assets/tasks/layered_target.json") +
                                    " --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const fs::path shot = dir / "review.png";
-  r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1280x800x24' " + test::needle_sim_exe().string() +
-                  " review --size 1200x700 --frames 4 --screenshot " + quoted(shot) + " --session 1 --db " +
-                  quoted(dir / "sessions.db"));
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
-  const engine::RgbaImage review = engine::read_png(shot);
+  const engine::RgbaImage review = review_screenshot(dir);
+  ASSERT_EQ(review.width, 1200u);
   // The image: 0.45 of the height, 60 mm deep by 40 mm wide (210 px), from the right edge.
   EXPECT_GT(speckle_share(review, 1200 - 200, 100, 1200 - 40, 300), 0.3);
 }
