@@ -56,7 +56,7 @@ class Painter {
     }
   }
   // A tick across the screen image of the line a-b, at a, `half` pixels to each side, its label
-  // from the tick's end at a + across, or left of the tick's end that lies to the left on screen.
+  // beyond the tick's end on the right of the screen, or on the left.
   void tick(const training::Vec3& a, const training::Vec3& b, ImU32 colour, const char* label, float half = 9.0f,
             bool label_left = false) {
     const auto pa = to_screen(a), pb = to_screen(b);
@@ -65,12 +65,12 @@ class Painter {
     if (length < 1e-3f) return;
     const ImVec2 across(-dy / length * half, dx / length * half);
     list_->AddLine(ImVec2(pa->x - across.x, pa->y - across.y), ImVec2(pa->x + across.x, pa->y + across.y), colour, 2.0f);
+    const float side = (across.x >= 0.0f) == label_left ? -1.0f : 1.0f;  // the tick's end on the label's side
+    const ImVec2 end(pa->x + side * across.x, pa->y + side * across.y);
     if (!label_left) {
-      text(ImVec2(pa->x + across.x + 4.0f, pa->y + across.y - 7.0f), colour, label);
+      text(ImVec2(end.x + 4.0f, end.y - 7.0f), colour, label);
       return;
     }
-    const float side = across.x >= 0.0f ? -1.0f : 1.0f;  // the tick's end to the left on screen
-    const ImVec2 end(pa->x + side * across.x, pa->y + side * across.y);
     // Marks a few pixels apart (skin 2 mm thick) would print over each other: each left label
     // goes at least a line below the one before (the marks come in order of depth).
     const float y = std::max(end.y - 7.0f, left_label_next_y_);
