@@ -1,5 +1,6 @@
 #include "ui/guidance_overlay.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -20,6 +21,7 @@ const ImU32 kTarget = IM_COL32(255, 90, 70, 255);
 const ImU32 kBand = IM_COL32(30, 190, 70, 255);
 const ImU32 kNow = IM_COL32(255, 255, 255, 255);
 const ImU32 kNormal = IM_COL32(230, 110, 255, 255);
+const ImU32 kLayerStart = IM_COL32(215, 235, 255, 255);
 
 // How far the planned axis is drawn behind its origin and ahead along its direction.
 constexpr double kAxisBehind_m = 0.03;
@@ -53,15 +55,27 @@ class Painter {
       list_->AddLine(ImVec2(s->x - half, s->y + half), ImVec2(s->x + half, s->y - half), colour, 2.0f);
     }
   }
-  // A tick across the screen image of the line a-b, at a, with a label.
-  void tick(const training::Vec3& a, const training::Vec3& b, ImU32 colour, const char* label) {
+  // A tick across the screen image of the line a-b, at a, `half` pixels to each side, its label
+  // beyond the tick's end on the right of the screen, or on the left.
+  void tick(const training::Vec3& a, const training::Vec3& b, ImU32 colour, const char* label, float half = 9.0f,
+            bool label_left = false) {
     const auto pa = to_screen(a), pb = to_screen(b);
     if (!pa || !pb) return;
     const float dx = pb->x - pa->x, dy = pb->y - pa->y, length = std::hypot(dx, dy);
     if (length < 1e-3f) return;
-    const ImVec2 across(-dy / length * 9.0f, dx / length * 9.0f);
+    const ImVec2 across(-dy / length * half, dx / length * half);
     list_->AddLine(ImVec2(pa->x - across.x, pa->y - across.y), ImVec2(pa->x + across.x, pa->y + across.y), colour, 2.0f);
-    text(ImVec2(pa->x + across.x + 4.0f, pa->y + across.y - 7.0f), colour, label);
+    const float side = (across.x >= 0.0f) == label_left ? -1.0f : 1.0f;  // the tick's end on the label's side
+    const ImVec2 end(pa->x + side * across.x, pa->y + side * across.y);
+    if (!label_left) {
+      text(ImVec2(end.x + 4.0f, end.y - 7.0f), colour, label);
+      return;
+    }
+    // Marks a few pixels apart (skin 2 mm thick) would print over each other: each left label
+    // goes at least a line below the one before (the marks come in order of depth).
+    const float y = std::max(end.y - 7.0f, left_label_next_y_);
+    left_label_next_y_ = y + ImGui::GetTextLineHeight();
+    text(ImVec2(end.x - 4.0f - ImGui::CalcTextSize(label).x, y), colour, label);
   }
 
  private:
@@ -79,6 +93,7 @@ class Painter {
   const engine::Camera& camera_;
   engine::Extent extent_;
   ImDrawList* list_;
+  float left_label_next_y_ = -1e9f;
 };
 
 void draw_axis(Painter& paint, const training::Task& task, const training::Marker& marker, const training::Vec3& tip) {
@@ -92,12 +107,27 @@ void draw_axis(Painter& paint, const training::Task& task, const training::Marke
   paint.line(out[0] - (out[1] - out[0]), out[2], kAxis, 2.0f);
 }
 
-void draw_depth_gauge(Painter& paint, const training::Marker& axis, const training::Condition& band, const training::Vec3& tip) {
+// The gauge along its axis: the condition's band, where each layer begins (its name unless the task
+// hides them: the marks stay, unnamed), the tip's depth.
+void draw_depth_gauge(Painter& paint, const training::Task& task, int marker, const training::Condition& band,
+                      const training::Vec3& tip) {
+  const training::Marker& axis = task.markers[size_t(marker)];
   paint.line(axis.position + band.min * axis.direction, axis.position + band.max * axis.direction, kBand, 7.0f);
+  const auto at = [&](double depth) { return axis.position + depth * axis.direction; };
+  char label[96];
+  static const std::vector<training::LayerStart> kNone;  // a task built in code may leave layer_starts empty
+  for (const training::LayerStart& s : size_t(marker) < task.layer_starts.size() ? task.layer_starts[size_t(marker)] : kNone) {
+    if (s.layer < 0 || s.depth_m < -kAxisBehind_m || s.depth_m > kAxisAhead_m) continue;  // out of the tissue, off the drawn axis
+    const double mm = std::abs(s.depth_m) < 5e-4 ? 0.0 : s.depth_m * 1e3;  // no "-0 mm" at the skin
+    if (task.hide_layer_names)
+      std::snprintf(label, sizeof label, "%.0f mm", mm);
+    else
+      std::snprintf(label, sizeof label, "%s %.0f mm", task.layers[size_t(s.layer)].name.c_str(), mm);
+    paint.tick(at(s.depth_m), at(s.depth_m + 0.01), kLayerStart, label, 6.0f, true);
+  }
   const double depth = depth_along(axis, tip);
-  char label[48];
   std::snprintf(label, sizeof label, "depth %.0f mm (%.0f-%.0f)", depth * 1e3, band.min * 1e3, band.max * 1e3);
-  paint.tick(axis.position + depth * axis.direction, axis.position + (depth + 0.01) * axis.direction, kNow, label);
+  paint.tick(at(depth), at(depth + 0.01), kNow, label);
 }
 
 }  // namespace
@@ -108,12 +138,16 @@ void draw_guidance(const GuidanceView& view) {
   const training::Guidance& g = step.guidance;
   Painter paint(view);
   if (g.axis >= 0) draw_axis(paint, task, task.markers[g.axis], view.tip);
-  if (g.depth_gauge >= 0 && step.condition.type == training::ConditionType::kDepthInBand)
-    draw_depth_gauge(paint, task.markers[g.depth_gauge], step.condition, view.tip);
+  const bool gauge = g.depth_gauge >= 0 && step.condition.type == training::ConditionType::kDepthInBand;
+  if (gauge) draw_depth_gauge(paint, task, g.depth_gauge, step.condition, view.tip);
   if (g.entry >= 0) paint.ring(task.markers[g.entry].position, kEntry, 9.0f, "entry", true);
   if (g.target >= 0) {
-    paint.ring(task.markers[g.target].position, kTarget, 9.0f, "target");
-    paint.cross(task.markers[g.target].position, kTarget, 4.0f);
+    // With a gauge, the target's label gives its depth along the gauge's axis.
+    const training::Vec3& target = task.markers[g.target].position;
+    char label[48] = "target";
+    if (gauge) std::snprintf(label, sizeof label, "target %.0f mm", depth_along(task.markers[g.depth_gauge], target) * 1e3);
+    paint.ring(target, kTarget, 9.0f, label);
+    paint.cross(target, kTarget, 4.0f);
   }
   if (g.normal_markers >= 0) {
     for (const training::Vec3& p : normal_marker_positions(task, task.markers[g.normal_markers], view.tip)) paint.dot(p, kNormal, 5.0f);

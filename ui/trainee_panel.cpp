@@ -109,6 +109,13 @@ void draw_result(const training::SessionResult& r) {
     }
     ImGui::EndTable();
   }
+  // A layered task's faults by name (issue 14's acceptance: the sloppy epidural's bone contact or
+  // dural puncture is named in the panel, not only as a component's lost points).
+  const training::Metrics& m = r.overall;
+  if (m.bone_contacts > 0 || m.forbidden_punctures > 0 || m.redirections > 0) ImGui::Separator();
+  if (m.bone_contacts > 0) ImGui::TextColored(kBad, "bone contacts: %u (peak %.1f N on the bone)", m.bone_contacts, m.bone_peak_force_N);
+  if (m.forbidden_punctures > 0) ImGui::TextColored(kBad, "forbidden punctures: %u", m.forbidden_punctures);
+  if (m.redirections > 0) ImGui::TextColored(kBad, "redirections: %u", m.redirections);
   std::vector<std::string> advice = what_to_improve(r.score);
   for (const std::string& why : r.score.reasons_failed) advice.push_back(why);
   if (!advice.empty()) {

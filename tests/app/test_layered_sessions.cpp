@@ -7,7 +7,10 @@
 #include <algorithm>
 #include <iostream>
 
+#include "haptics/sim/closed_loop.hpp"
 #include "recorded_session.hpp"
+#include "training/sessions/session_review.hpp"
+#include "training/tasks/scripted_operator.hpp"
 
 namespace needle::test {
 namespace {
@@ -68,6 +71,51 @@ TEST(LayeredSessions, EpiduralGoodReachesTheLossOfResistanceSloppyMeetsTheLamina
   // the master), so the good run ends its loss_of_resistance step forbidden_puncture: said, not hidden.
   if (good.result.score.passed) std::cout << "epidural good passes\n";
   else EXPECT_TRUE(says(good.result, "dura punctured (forbidden)")) << report(good.result);
+}
+
+}  // namespace
+}  // namespace needle::test
+
+namespace needle::test {
+namespace {
+
+// The punctures are kept once, in the recording (docs/SCORING.md, "Punctures: where they are
+// kept"): the review reads them back from the stored session's recording through the same scorer
+// and gets the live run's exactly; and they are the tissue model's own, the surfaces that gave way
+// in the closed loop run on the same scenario and script (haptics::run_closed_loop's summary): the
+// same layers in the same order, at the same depth (the scorer's tip distance from where the skin
+// gave way, plus the skin's tent, against the track coordinate: 1 mm) and peak (the scorer's
+// largest axial force since the last puncture against the force when the surface gave way: 5%).
+TEST(LayeredSessions, TheReviewsPuncturesAreTheRunsAndTheTissueModels) {
+  const std::filesystem::path dir = process_folder(output_dir() / "layered_sessions" / "punctures");
+  const RecordedSession run = record_session(dir / "sessions.db", {"layered_target", "good", "ana", true});
+  const std::vector<training::PunctureResult>& live = run.result.punctures;
+  ASSERT_GE(live.size(), 2u) << report(run.result);
+
+  training::SessionStore store(dir / "sessions.db");
+  const training::SessionReview review = training::load_session_review(store, dir / "sessions.db", run.id);
+  ASSERT_NE(review.punctures(), nullptr) << review.recording_problem;
+  const std::vector<training::PunctureResult>& stored = *review.punctures();
+  ASSERT_EQ(stored.size(), live.size());
+  for (size_t k = 0; k < live.size(); ++k) {
+    EXPECT_EQ(stored[k].layer, live[k].layer) << k;
+    EXPECT_EQ(stored[k].t_s, live[k].t_s) << k;
+    EXPECT_EQ(stored[k].depth_m, live[k].depth_m) << k;
+    EXPECT_EQ(stored[k].peak_force_N, live[k].peak_force_N) << k;
+  }
+
+  const training::Task task = training::load_task(source_dir() / "assets/tasks/layered_target.json");
+  const haptics::Scenario scenario =
+      training::scenario_with_operator(task, training::operator_script_path(task, "good"), dir / "scenario.json");
+  const haptics::SimSummary sim = haptics::run_closed_loop(scenario, false).summary;
+  ASSERT_EQ(sim.punctures.size(), live.size()) << report(run.result);
+  for (size_t k = 0; k < live.size(); ++k) {
+    EXPECT_EQ(live[k].layer, sim.punctures[k].layer) << k;
+    // The scorer measures from where the skin gave way (the tissue contact begins there), the
+    // tissue model from where the tip met the skin: they differ by the skin's tent.
+    EXPECT_NEAR(live[k].depth_m + sim.punctures[0].depth_m, sim.punctures[k].depth_m, 1e-3) << live[k].layer;
+    EXPECT_NEAR(live[k].peak_force_N, sim.punctures[k].peak_force_N, 0.05 * sim.punctures[k].peak_force_N) << live[k].layer;
+  }
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "engine/gltf_loader.hpp"
 #include "engine/scene.hpp"
+#include "engine/screen_projection.hpp"
 #include "test_gltf_fixtures.hpp"
 #include "tests/support/test_paths.hpp"
 
@@ -224,6 +225,39 @@ TEST_F(SceneFaults, AtMostFourDirectionalLights) {
   scene["lights"] = {{"directional", nlohmann::json::array()}};
   for (int i = 0; i < 5; ++i) scene["lights"]["directional"].push_back({{"direction", {0, 0, -1}}});
   expect_error(scene, {"/lights/directional", "at most 4"});
+}
+
+}  // namespace
+}  // namespace needle::engine
+
+namespace needle::engine {
+namespace {
+
+// The layered tasks' scenes (issue 14) at the start screen's and headless picture size, 960x540:
+// the tool where it starts (the tip and 20 mm of its shaft, the needle's body -x) and the tissue's
+// top centre lie inside the picture, 20 px from its edges (before, the tool started above it).
+TEST(SceneFraming, TheLayeredScenesShowTheToolWhereItStartsAt960x540) {
+  const Extent extent{960, 540};
+  for (const char* name : {"tissue_block_task.json", "lumbar_section.json"}) {
+    const Scene scene = load_scene(test::source_dir() / "assets/scenes" / name);
+    std::vector<glm::vec3> points;
+    for (const SceneAsset& a : scene.assets) {
+      if (a.role == AssetRole::Tool) {
+        points.push_back(a.translation);
+        points.push_back(a.translation + a.rotation * glm::vec3(-0.02f, 0.0f, 0.0f));
+      }
+      if (a.role == AssetRole::Tissue) points.push_back(a.translation);
+    }
+    ASSERT_EQ(points.size(), 3u) << name;
+    for (const glm::vec3& p : points) {
+      const std::optional<glm::vec2> s = project_to_screen(scene.camera, extent, p);
+      ASSERT_TRUE(s.has_value()) << name;
+      EXPECT_GE(s->x, 20.0f) << name;
+      EXPECT_LE(s->x, 940.0f) << name;
+      EXPECT_GE(s->y, 20.0f) << name << " at (" << p.x << ", " << p.y << ", " << p.z << ")";
+      EXPECT_LE(s->y, 520.0f) << name;
+    }
+  }
 }
 
 }  // namespace

@@ -19,8 +19,10 @@ namespace fs = std::filesystem;
 
 class GuidanceOverlay : public VulkanTest {
  protected:
-  engine::RgbaImage draw(const std::string& task_name, size_t step, const training::Vec3& tip, const training::Vec3& axis) {
-    const training::Task task = training::load_task(test::source_dir() / "assets/tasks" / (task_name + ".json"));
+  engine::RgbaImage draw(const std::string& task_name, size_t step, const training::Vec3& tip, const training::Vec3& axis,
+                         bool hide_layer_names = false) {
+    training::Task task = training::load_task(test::source_dir() / "assets/tasks" / (task_name + ".json"));
+    task.hide_layer_names = hide_layer_names;
     ui::PictureScene scene{engine::load_scene(task.scene), std::nullopt};
     haptics::ToolSnapshot state;
     for (int i = 0; i < 3; ++i) state.needle_tip_m[i] = tip[i];
@@ -52,10 +54,17 @@ TEST_F(GuidanceOverlay, TouchShowsTheEntryTargetAndNormalMarkers) {
 }
 
 // The layered target's step to the target (issue 14): the vertical planned axis, the target 35 mm
-// deep and the depth gauge with its 31-38 mm band, the tip 20 mm in.
-TEST_F(GuidanceOverlay, LayeredTargetShowsTheAxisTheTargetAndTheDepthGauge) {
+// deep and the depth gauge with its 31-38 mm band, the layers' starts marked on it (skin 0, fat 2,
+// muscle 12, bone 40 mm: the block's boxes), the tip 20 mm in.
+TEST_F(GuidanceOverlay, LayeredTargetShowsTheAxisTheTargetAndTheDepthGaugeWithTheLayers) {
   const training::Vec3 tip{0.33, 0.0, 0.07 - 0.020};
   EXPECT_TRUE(matches_golden(draw("layered_target", 2, tip, {0.0, 0.0, -1.0}), "guidance_layered_target"));
+}
+
+// An assessment run (the task hides the layer names): the same marks, their depths but no names.
+TEST_F(GuidanceOverlay, LayeredTargetWithHiddenNamesKeepsTheMarksUnnamed) {
+  const training::Vec3 tip{0.33, 0.0, 0.07 - 0.020};
+  EXPECT_TRUE(matches_golden(draw("layered_target", 2, tip, {0.0, 0.0, -1.0}, true), "guidance_layered_target_hidden_names"));
 }
 
 // The epidural's approach: the entry ring on the midline and the axis, the tip 15 mm above the skin.

@@ -162,6 +162,37 @@ TEST_F(TraineePanel, EpiduralDuralPunctureWithTheNamesHiddenMatchesGolden) {
   EXPECT_TRUE(matches_golden(draw(view), "panel_trainee_epidural_hidden_names"));
 }
 
+// The sloppy epidural's result (issue 14's acceptance): its faults named in the panel, the bone
+// contacts with their peak and the redirection, beside the failed reasons (the run's numbers:
+// `needle-sim run --headless --task assets/tasks/epidural.json --operator sloppy`).
+TEST_F(TraineePanel, EpiduralSloppyResultNamesTheBoneContactsAndRedirection) {
+  const training::Task task = training::load_task(test::source_dir() / "assets/tasks/epidural.json");
+  training::TaskProgress progress(task);
+  training::SessionResult result = result_of(37.4, false, {0.5, 1.0, 0.0, 0.0, 0.0, 0.8});
+  result.overall.bone_contacts = 4;
+  result.overall.bone_peak_force_N = 23.7;
+  result.overall.redirections = 1;
+  result.score.reasons_failed = {"score 37.4 below the pass mark 70", "2 step(s) not completed",
+                                 "peak force 23.7 N above the safe limit 3.3 N"};
+  ui::TraineeView view{&task, &progress};
+  view.result = &result;
+  view.loop_rate_hz = 500.0;
+  EXPECT_TRUE(matches_golden(draw(view, {480, 480}), "panel_trainee_epidural_sloppy_result"));
+}
+
+// A dural puncture is named too: the count and the step's reason.
+TEST_F(TraineePanel, EpiduralDuralPunctureResultNamesIt) {
+  const training::Task task = training::load_task(test::source_dir() / "assets/tasks/epidural.json");
+  training::TaskProgress progress(task);
+  training::SessionResult result = result_of(50.0, false, {0.75, 1.0, 0.5, 0.0, 0.0, 0.8});
+  result.overall.forbidden_punctures = 1;
+  result.score.reasons_failed = {"step loss_of_resistance: dura punctured (forbidden)"};
+  ui::TraineeView view{&task, &progress};
+  view.result = &result;
+  view.loop_rate_hz = 500.0;
+  EXPECT_TRUE(matches_golden(draw(view, {480, 420}), "panel_trainee_epidural_dural_puncture_result"));
+}
+
 TEST(WhatToImprove, TheTwoCostliestComponentsFirst) {
   training::Score score;
   score.components = {{"completion", 1.0, 30}, {"tip_error", 0.4, 15}, {"axis_deviation", 0.2, 10}, {"time", 0.95, 5}};

@@ -61,7 +61,7 @@ MouseScript mouse_plan_script(const std::string& name, PlanMaker make_plan) {
   const DeskStart start = desk_start(task_file, "mouse", plan_dir);
   fs::remove_all(plan_dir);
   // The window stands at the virtual screen's top left (no window manager): a cursor put above or
-  // left of it stops at its edge. The layered target's tool starts above the view at 960x540.
+  // left of it stops at its edge (the layered scenes show the tool where it starts since their camera moved back).
   Eigen::Vector2d cursor = mouse_cursor_start(task, start, kWindow);
   cursor.x() = std::max(cursor.x(), -double(kWindow.width) / kWindow.height);
   cursor.y() = std::min(cursor.y(), 1.0);

@@ -92,6 +92,36 @@ TEST_F(CohortViewTest, CurvesFirstPassTimeToTargetFailedStepsAndPercentiles) {
   EXPECT_TRUE(std::isnan(percentile({}, 50)));
 }
 
+// The layered tissue's metrics are listed for a task whose sessions punctured something (a layered
+// task: 2 and 4 punctures, one bone contact between them) and not for the others (pivot_drill,
+// rigid_sphere: zeros, no rows).
+TEST_F(CohortViewTest, LayeredMetricsOnlyForTasksThatPunctured) {
+  for (const uint32_t punctures : {2u, 4u}) {
+    SessionResult r = scored(60, false, true);
+    r.overall.punctures = punctures;
+    r.overall.bone_contacts = punctures == 4u ? 1u : 0u;
+    add("dan", "layered_target", "st-1", punctures == 2u ? "2026-11-06T09:00:00Z" : "2026-11-07T09:00:00Z", r);
+  }
+  const CohortView v = cohort_view(*store_, {});
+  const auto n_of = [&](const std::string& task, const std::string& metric) {
+    for (const Percentiles& p : v.percentiles)
+      if (p.task == task && p.metric == metric) return p.n;
+    return size_t(99);
+  };
+  for (const char* metric : {"punctures", "overshoot_m", "bone_contacts", "bone_peak_force_N", "redirections", "forbidden_punctures"}) {
+    EXPECT_EQ(n_of("pivot_drill", metric), 0u) << metric;
+    EXPECT_EQ(n_of("rigid_sphere", metric), 0u) << metric;
+  }
+  EXPECT_EQ(n_of("layered_target", "punctures"), 2u);
+  EXPECT_EQ(n_of("layered_target", "bone_contacts"), 2u);
+  EXPECT_EQ(n_of("pivot_drill", "withdrawals"), 3u);  // the other metrics stay
+  for (const Percentiles& p : v.percentiles)
+    if (p.task == "layered_target" && p.metric == "punctures") {
+      EXPECT_DOUBLE_EQ(p.p10, 2.2);  // R-7 on {2, 4}
+      EXPECT_DOUBLE_EQ(p.p90, 3.8);
+    }
+}
+
 TEST_F(CohortViewTest, FiltersByTaskTraineeStationAndDates) {
   EXPECT_EQ(cohort_view(*store_, {"rigid_sphere", "", "", "", ""}).sessions, 1u);
   EXPECT_EQ(cohort_view(*store_, {"", "ana", "", "", ""}).sessions, 2u);

@@ -111,6 +111,15 @@ CohortView cohort_view(const SessionStore& store, const CohortFilter& filter) {
   std::vector<std::string> tasks;
   for (const LearningCurve& c : view.curves)
     if (tasks.empty() || tasks.back() != c.task) tasks.push_back(c.task);
+  // The layered tissue's metrics (issue 14) apply to a task on layers: there every insertion
+  // punctures the skin. A task none of whose sessions punctured anything (the thesis's spheres)
+  // gets no rows for them rather than rows of zeros.
+  for (const std::string& task : tasks) {
+    const std::vector<double>& p = values[{task, "punctures"}];
+    if (std::any_of(p.begin(), p.end(), [](double v) { return v > 0.0; })) continue;
+    for (const char* metric : {"punctures", "overshoot_m", "bone_contacts", "bone_peak_force_N", "redirections", "forbidden_punctures"})
+      values[{task, metric}].clear();
+  }
   for (const std::string& task : tasks)
     for (const std::string& metric : metric_order) {
       const std::vector<double>& v = values[{task, metric}];

@@ -26,6 +26,13 @@ enum class MarkerKind {
   kSurfaceNormal,  // the inward normal of a sphere at the point nearest the tip (thesis 4.3)
 };
 
+// A layer an axis enters and the depth (m, from the axis origin along its direction) it enters at;
+// layer −1 (an index in Task::layers) is the axis leaving the tissue.
+struct LayerStart {
+  int layer = -1;
+  double depth_m = 0.0;
+};
+
 struct Marker {
   std::string name;
   MarkerKind kind = MarkerKind::kPoint;
@@ -155,6 +162,10 @@ struct Task {
   std::vector<TaskLayer> layers;
   // Hide the layer names from the trainee's panel (assessment runs): it shows "layer 3" instead.
   bool hide_layer_names = false;
+  // Per marker (as `markers`): for an axis on a layered tissue, where along it each layer begins,
+  // from the scenario's geometry at rest (training/tasks/layer_starts.hpp), computed once on load
+  // for the depth gauge; empty otherwise.
+  std::vector<std::vector<LayerStart>> layer_starts;
   std::optional<SectionPlaneSpec> section_plane;        // the section view's plane, when the task fixes it
 
   int marker_index(const std::string& name) const;  // -1 when absent

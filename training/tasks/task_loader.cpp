@@ -10,6 +10,7 @@
 #include "haptics/sim/scenario.hpp"
 #include "io/input_limits.hpp"
 #include "io/strict_json.hpp"
+#include "training/tasks/layer_starts.hpp"
 #include "training/tasks/task.hpp"
 
 namespace needle::training {
@@ -26,6 +27,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     object(root, "", {"name", "title", "description", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps", "scoring",
                       "ultrasound", "section", "hide_layer_names", "order"});
     Task t;
+    ScenarioTissue tissue;
     t.name = name(member(root, "", "name"), "/name");
     t.title = root.contains("title") ? string(root["title"], "/title") : t.name;
     if (t.title.size() > kMaxTitleBytes) fail("/title", "longer than " + std::to_string(kMaxTitleBytes) + " bytes");
@@ -36,7 +38,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     t.scene = existing_file(member(root, "", "scene"), "/scene", folder_);
     if (root.contains("scenario")) {
       t.scenario = existing_file(root["scenario"], "/scenario", folder_);
-      t.layers = layers(t.scenario);
+      tissue = scenario_tissue(t.scenario);
+      for (const haptics::TissueLayer& l : tissue.tissue.layers()) t.layers.push_back({l.name, l.mechanics.rigid, l.mechanics.puncture_force_N});
     }
     if (root.contains("order")) t.order = static_cast<int>(whole(root["order"], "/order", 0, kMaxTaskOrder));
     if (root.contains("hide_layer_names")) t.hide_layer_names = boolean(root["hide_layer_names"], "/hide_layer_names");
@@ -50,6 +53,10 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       if (std::count_if(t.markers.begin(), t.markers.end(),
                         [&](const Marker& m) { return m.name == t.markers.back().name; }) > 1)
         fail(at + "/name", "\"" + t.markers.back().name + "\" is used twice");
+      const Marker& m = t.markers.back();
+      t.layer_starts.push_back(m.kind == MarkerKind::kAxis && t.layers.size() > 1
+                                   ? layer_starts_along(tissue.tissue, tissue.frame_in_world, m.position, m.direction)
+                                   : std::vector<LayerStart>{});
     }
     if (root.contains("ultrasound")) t.ultrasound_probe = ultrasound(root["ultrasound"], "/ultrasound");
     if (root.contains("section")) t.section_plane = section(root["section"], "/section");
@@ -79,16 +86,18 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     return n;
   }
 
-  // The scenario's tissue layers, names and rigidity (the scenario read as a run reads it).
-  std::vector<TaskLayer> layers(const fs::path& scenario) const {
-    std::vector<TaskLayer> out;
+  // The scenario's tissue (the scenario read as a run reads it) and the frame it is in.
+  struct ScenarioTissue {
+    haptics::TissueModel tissue;
+    Vec3 frame_in_world{};
+  };
+  ScenarioTissue scenario_tissue(const fs::path& scenario) const {
     try {
       const haptics::Scenario s = haptics::load_scenario(scenario.string());
-      for (const haptics::TissueLayer& l : s.scene.tissue.layers()) out.push_back({l.name, l.mechanics.rigid, l.mechanics.puncture_force_N});
+      return {s.scene.tissue, {s.base_in_world.x(), s.base_in_world.y(), s.base_in_world.z()}};
     } catch (const haptics::ScenarioError& e) {
       fail("/scenario", e.what());
     }
-    return out;
   }
 
   bool boolean(const json& value, const std::string& at) const {
