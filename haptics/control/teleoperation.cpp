@@ -114,8 +114,15 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
   }
   if (blend_.axial > 0.0) {
     axial_damping_torque(contact.axis, master_data_.J, in.dq_m, gains_.axial_damping_Ns_per_m, blend_.axial, out_.tau_m);
-    out_.push_axial_N = axial_force_torques(contact.axis, wrench_scene_, contact.axial_force_N, world_.data().J,
-                                            master_data_.J, scale, blend_.axial, out_.tau_v, out_.tau_m);
+    if (gains_.axial_stiffness_N_per_m > 0.0) {
+      out_.push_axial_N = contact.axis.dot(wrench_scene_.head<3>());
+      axial_spring_torques(contact.axis, master_data_.tip.translation(), world_.data().tip.translation(),
+                           world_.data().J, master_data_.J, gains_.axial_stiffness_N_per_m, scale, blend_.axial,
+                           out_.tau_v, out_.tau_m);
+    } else {
+      out_.push_axial_N = axial_force_torques(contact.axis, wrench_scene_, contact.axial_force_N, world_.data().J,
+                                              master_data_.J, scale, blend_.axial, out_.tau_v, out_.tau_m);
+    }
   }
 
   // (2.21) with the contact's constraint, then report the whole virtual torque.

@@ -207,4 +207,19 @@ inline double axial_force_torques(const Eigen::Vector3d& axis, const Wrench& wre
   return push;
 }
 
+// (x₅, x_m, x_v, J_v, J_m, K, s, w; τ) => (F = w K x₅ᵀ(x_m − x_v); τ_v += J_vᵀ x₅ F, τ_m −= s J_mᵀ x₅ F)
+// the needle along the hand (tool law, not in the thesis: docs/CONTROLLER.md, "The needle along the
+// hand"): a spring along the needle between the master tip and the virtual tip in place of
+// axial_force_torques' force-force channel, storing ½ w K (x₅ᵀ(x_m − x_v))². The virtual needle follows
+// the hand's position, so when a membrane gives way it runs ahead by the spring's stretch F/K, not
+// by as far as the hand's push carries it unresisted. Returns F, scene newtons.
+inline double axial_spring_torques(const Eigen::Vector3d& axis, const Eigen::Vector3d& x_m, const Eigen::Vector3d& x_v,
+                                   const Mat6N& J_v, const Mat6N& J_m, double K, double scale, double w, VecN& tau_v,
+                                   VecN& tau_m) {
+  const double force = w * K * axis.dot(x_m - x_v);
+  tau_v.noalias() += force * (J_v.topRows<3>().transpose() * axis);
+  tau_m.noalias() -= (scale * force) * (J_m.topRows<3>().transpose() * axis);
+  return force;
+}
+
 }  // namespace needle::haptics
