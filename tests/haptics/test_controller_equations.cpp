@@ -366,6 +366,30 @@ TEST(ControllerEquations, AxialSpringTorquesAreTheGradientsOfItsEnergyAlongTheNe
               0.0, 1e-12);
 }
 
+// The spring along the needle is held at half the explicit limit of the virtual tip's mass along it,
+// 2 / (T² x₅ᵀ J (H + hB)⁻¹ Jᵀ x₅): closed form for two joints each moving the tip along one axis.
+TEST(ControllerEquations, AxialSpringStiffnessIsHeldUnderTheTicksLimit) {
+  Mat6N J = Mat6N::Zero(6, 2);
+  J(0, 0) = 2.0;  // joint 1 moves the tip along x at 2 m/rad
+  J(1, 1) = 1.0;  // joint 2 along y
+  MatN H = MatN::Zero(2, 2);
+  H.diagonal() << 0.2, 0.5;
+  const VecN B = vec({0.4, 0.0});
+  const double h = 0.001;
+  AxialSpringScratch scratch;
+  // Along x the tip's mass is (0.2 + 0.001 * 0.4) / 2² = 0.0501 kg.
+  const double m = (0.2 + h * 0.4) / 4.0;
+  EXPECT_NEAR(axial_spring_stiffness(1e6, H, B, h, J, Eigen::Vector3d::UnitX(), 0.016, scratch), 2.0 * m / (0.016 * 0.016), 1e-9);
+  EXPECT_EQ(axial_spring_stiffness(3000.0, H, B, h, J, Eigen::Vector3d::UnitX(), 0.002, scratch), 3000.0);  // limit 25050
+  // Along y: 0.5 kg; along (x + y)/√2 the inverse masses add: (1/m_x + 1/m_y) / 2.
+  EXPECT_NEAR(axial_spring_stiffness(1e6, H, B, h, J, Eigen::Vector3d::UnitY(), 0.016, scratch), 2.0 * 0.5 / (0.016 * 0.016), 1e-9);
+  const double inverse_mass = (1.0 / m + 1.0 / 0.5) / 2.0;
+  EXPECT_NEAR(axial_spring_stiffness(1e6, H, B, h, J, Eigen::Vector3d(1, 1, 0).normalized(), 0.016, scratch),
+              2.0 / (0.016 * 0.016 * inverse_mass), 1e-6);
+  // A tip that cannot move along the axis bounds nothing.
+  EXPECT_EQ(axial_spring_stiffness(3000.0, H, B, h, J, Eigen::Vector3d::UnitZ(), 0.016, scratch), 3000.0);
+}
+
 TEST(ControllerEquations, TaskSpaceCouplingIsASpringOnTheTipAndOneOnTheDirection) {
   const RobotModel model = test::planar::arm();
   RobotData data(model);
