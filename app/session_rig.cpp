@@ -25,6 +25,16 @@ constexpr const char* kReplayPrefix = "replay:";
 // text as the session ran it.
 constexpr int kContextVersion = 2;
 
+// The tool law's springs (issue 12), each added after recordings had been made without it: a
+// recording that names one was made with it, one that does not replays without it.
+struct ToolLawSpring {
+  const char* key;
+  double haptics::TeleoperationGains::*gain;
+};
+constexpr ToolLawSpring kToolLawSprings[] = {
+    {"lateral_stiffness_N_per_m", &haptics::TeleoperationGains::lateral_stiffness_N_per_m},
+    {"axial_stiffness_N_per_m", &haptics::TeleoperationGains::axial_stiffness_N_per_m}};
+
 bool is_replay(const std::string& device) { return device.rfind(kReplayPrefix, 0) == 0; }
 
 // The trainee moves a task-space device in the plane of the screen and pushes into it: device x
@@ -180,8 +190,9 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
         json& gains = scenario_json["gains"];
         // Recorded before issue 13's tool law existed: replayed with the law it was recorded with.
         if (!gains.contains("law")) gains["law"] = haptics::control_law_name(haptics::ControlLaw::Thesis);
-        // Recorded before the tool law's lateral spring (issue 12): replayed without it.
-        if (!gains.contains("lateral_stiffness_N_per_m")) gains["lateral_stiffness_N_per_m"] = 0.0;
+        // Recorded before a tool law's spring (issue 12): replayed without it.
+        for (const ToolLawSpring& spring : kToolLawSprings)
+          if (!gains.contains(spring.key)) gains[spring.key] = 0.0;
       }
       coupling = context.value("coupling", json(nullptr));
       limits_ = limits_from(context.at("safety_limits"));
@@ -225,13 +236,14 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
   if (!is_replay(spec)) limits_ = haptics::safety_limits_for(device_->capabilities());
   if (spec == "sim") device_->open();
 
-  // The law and the tool law's lateral spring are part of what the recording replays with (their
+  // The law and the tool law's springs are part of what the recording replays with (their
   // defaults may change again).
   if (scenario_json.contains("gains")) {
     json& gains = scenario_json["gains"];
     const haptics::TeleoperationGains defaults;
     if (!gains.contains("law")) gains["law"] = haptics::control_law_name(defaults.law);
-    if (!gains.contains("lateral_stiffness_N_per_m")) gains["lateral_stiffness_N_per_m"] = defaults.lateral_stiffness_N_per_m;
+    for (const ToolLawSpring& spring : kToolLawSprings)
+      if (!gains.contains(spring.key)) gains[spring.key] = defaults.*spring.gain;
   }
   const std::string recorded_device = is_replay(spec) ? description_ : spec;
   context_ = json{{"version", kContextVersion},

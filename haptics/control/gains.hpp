@@ -81,6 +81,14 @@ struct TeleoperationGains {
   // 3-50 Hz of F_h in tissue_block_layers 0.34 N at 0, 0.24 at 15, 0.08 at 20, 0.015 at 30 N·s/m.
   // An insertion at 5 mm/s feels 0.15 N of it.
   double axial_damping_Ns_per_m = 30.0;
+  // ControlLaw::Tool: stiffness of the spring along the needle between the master tip and the virtual
+  // tip while the tissue's axial force acts, scene N/m; above 0 it replaces the force-force axial
+  // channel (the hand's push driving the virtual needle, the tissue's force reflected): the virtual
+  // needle is pulled along its axis by K x₅ᵀ(x_m − x_v), the master held back by s K x₅ᵀ(x_m − x_v)
+  // (docs/CONTROLLER.md, "The needle along the hand"). 0 (the default): the force-force channel, under
+  // which the virtual needle ran ahead of the hand by the tissue's stored force when a membrane gave
+  // way (10 mm through the epidural space and the dura in 50 ms). The epidural scenario sets it.
+  double axial_stiffness_N_per_m = 0.0;
 };
 
 // Section 4.3 (holonomic experiment, law (3.20)-(3.21)) and 4.4 (nonholonomic, (3.27)-(3.28)),

@@ -88,6 +88,7 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
   out_.force_h_normal.setZero();
   out_.lambda_m.setZero(2);
   out_.push_axial_N = 0.0;
+  out_.axial_stiffness_N_per_m = 0.0;
   if (blend_.rigid > 0.0) {
     rigid_force_errors(contact.normal, wrench_scene_, contact.force_rigid, blend_.rigid, T, out_.force_h_normal, integrals_);
     rigid_force_torques(world_.data().J, master_data_.J, out_.force_h_normal, contact.force_rigid, integrals_, gv.Kf,
@@ -114,8 +115,17 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
   }
   if (blend_.axial > 0.0) {
     axial_damping_torque(contact.axis, master_data_.J, in.dq_m, gains_.axial_damping_Ns_per_m, blend_.axial, out_.tau_m);
-    out_.push_axial_N = axial_force_torques(contact.axis, wrench_scene_, contact.axial_force_N, world_.data().J,
-                                            master_data_.J, scale, blend_.axial, out_.tau_v, out_.tau_m);
+    if (gains_.axial_stiffness_N_per_m > 0.0) {
+      out_.push_axial_N = contact.axis.dot(wrench_scene_.head<3>());
+      const RobotData& v = world_.data();
+      out_.axial_stiffness_N_per_m = axial_spring_stiffness(gains_.axial_stiffness_N_per_m, v.H, velocity_gain_v_,
+                                                            T / substeps_, v.J, contact.axis, T, axial_spring_scratch_);
+      axial_spring_torques(contact.axis, master_data_.tip.translation(), v.tip.translation(), v.J, master_data_.J,
+                           out_.axial_stiffness_N_per_m, scale, blend_.axial, out_.tau_v, out_.tau_m);
+    } else {
+      out_.push_axial_N = axial_force_torques(contact.axis, wrench_scene_, contact.axial_force_N, world_.data().J,
+                                              master_data_.J, scale, blend_.axial, out_.tau_v, out_.tau_m);
+    }
   }
 
   // (2.21) with the contact's constraint, then report the whole virtual torque.

@@ -28,6 +28,7 @@ struct TickOutput {
   Eigen::Vector3d force_h_normal = Eigen::Vector3d::Zero();  // F_h along the rigid normal, scene newtons
   VecK lambda_m;                 // (3.24), hand's push along the needle constraints, scene newtons
   double push_axial_N = 0.0;     // F_h,a: the hand's push along the needle, scene newtons (tool law, in tissue)
+  double axial_stiffness_N_per_m = 0.0;  // the spring along the needle as applied (gains', held under the tick's limit)
 };
 
 class Teleoperation {
@@ -46,6 +47,7 @@ class Teleoperation {
   const VirtualWorld& world() const { return world_; }
   const RobotData& master_data() const { return master_data_; }
   const ContactBlend& blend() const { return blend_; }  // the weights of the last step
+  const TickOutput& output() const { return out_; }      // of the last step
   const TeleoperationGains& gains() const { return gains_; }
   double period() const { return period_; }
 
@@ -63,6 +65,7 @@ class Teleoperation {
   ForceErrorIntegrals integrals_;
   VecN velocity_gain_v_;  // B of τ_v = τ_v0 − B q̇_v
   OperatorMultiplierScratch multiplier_scratch_;
+  AxialSpringScratch axial_spring_scratch_;
   Wrench wrench_filtered_ = Wrench::Zero();
   Wrench wrench_scene_ = Wrench::Zero();  // filtered, net of the tool's weight (tool law), divided by the force scale
   TickOutput out_;

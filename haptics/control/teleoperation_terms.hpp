@@ -207,4 +207,45 @@ inline double axial_force_torques(const Eigen::Vector3d& axis, const Wrench& wre
   return push;
 }
 
+// Scratch of axial_spring_stiffness, kept by the caller so the tick allocates nothing.
+struct AxialSpringScratch {
+  MatN m;
+  VecN v, w;
+  SmallCholesky<kMaxDof> llt;
+};
+
+// (K, H_v, B, h, J_v, x₅, T) => min(K, 2 / (T² x₅ᵀ J_v (H_v + h B)⁻¹ J_vᵀ x₅))   the spring along the
+// needle held at half the explicit limit of the virtual tip's mass along it: the spring acts on the
+// virtual robot once per tick T, and a spring K on a mass m held for T is stable for K T² / m < 4
+// (docs/CONTROLLER.md, "The needle along the hand"). H_v + h B is the matrix the virtual world's
+// semi-implicit sub-step h solves with; the mass along x₅ without the needle's constraint is the
+// smaller one, so the bound holds with it.
+inline double axial_spring_stiffness(double K, const MatN& H_v, const VecN& B, double h, const Mat6N& J_v,
+                                     const Eigen::Vector3d& axis, double T, AxialSpringScratch& scratch) {
+  scratch.m = H_v;
+  scratch.m.diagonal() += h * B;
+  scratch.llt.compute(scratch.m);
+  scratch.v.noalias() = J_v.topRows<3>().transpose() * axis;
+  scratch.w = scratch.v;
+  scratch.llt.solveInPlace(scratch.w);
+  const double inverse_mass = scratch.v.dot(scratch.w);
+  if (!(inverse_mass > 0.0)) return K;  // the tip cannot move along x₅: nothing to bound
+  return std::min(K, 2.0 / (T * T * inverse_mass));
+}
+
+// (x₅, x_m, x_v, J_v, J_m, K, s, w; τ) => (F = w K x₅ᵀ(x_m − x_v); τ_v += J_vᵀ x₅ F, τ_m −= s J_mᵀ x₅ F)
+// the needle along the hand (tool law, not in the thesis: docs/CONTROLLER.md, "The needle along the
+// hand"): a spring along the needle between the master tip and the virtual tip in place of
+// axial_force_torques' force-force channel, storing ½ w K (x₅ᵀ(x_m − x_v))². The virtual needle follows
+// the hand's position, so when a membrane gives way it runs ahead by the spring's stretch F/K, not
+// by as far as the hand's push carries it unresisted. Returns F, scene newtons.
+inline double axial_spring_torques(const Eigen::Vector3d& axis, const Eigen::Vector3d& x_m, const Eigen::Vector3d& x_v,
+                                   const Mat6N& J_v, const Mat6N& J_m, double K, double scale, double w, VecN& tau_v,
+                                   VecN& tau_m) {
+  const double force = w * K * axis.dot(x_m - x_v);
+  tau_v.noalias() += force * (J_v.topRows<3>().transpose() * axis);
+  tau_m.noalias() -= (scale * force) * (J_m.topRows<3>().transpose() * axis);
+  return force;
+}
+
 }  // namespace needle::haptics

@@ -14,6 +14,8 @@ double world_stored_energy(const Scenario& sc, const MasterPlant& plant, const T
     const Eigen::Isometry3d& tip_v = world.data().tip;
     const Eigen::Vector3d offset = lateral_offset(tip_v.linear(), plant.data().tip.translation(), tip_v.translation());
     e += 0.5 * tele.blend().tissue * sc.gains.lateral_stiffness_N_per_m * offset.squaredNorm();
+    const double along = tele.world().report().axis.dot(plant.data().tip.translation() - tip_v.translation());
+    e += 0.5 * tele.blend().axial * tele.output().axial_stiffness_N_per_m * along * along;
   } else {
     e += potential_energy(sc.master, plant.data());
   }

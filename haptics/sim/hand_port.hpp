@@ -16,7 +16,8 @@ namespace needle::haptics {
 //   −m gᵀx_m                      the rendered tool's weight (tool law);
 //   ½q̇_vᵀH_vq̇_v + V_v             the virtual robot (weightless under the tool law);
 //   k₁d²/2 + k₂d³/3 + F_g²/2k_g   the tissue's tented surface and stick (tissue_stored_energy);
-//   ½ w K |P (x_m − x_v)|²        the master's lateral spring to the needle's line (tool law).
+//   ½ w K |P (x_m − x_v)|²        the master's lateral spring to the needle's line (tool law);
+//   ½ w K_a (x₅ᵀ(x_m − x_v))²      the spring along the needle between the tips (tool law).
 double world_stored_energy(const Scenario& scenario, const MasterPlant& plant, const Teleoperation& tele);
 
 }  // namespace needle::haptics

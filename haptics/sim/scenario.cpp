@@ -170,7 +170,8 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
 
   void gains(const json& g, const std::string& at, int n, TeleoperationGains& out) const {
     object(g, at, {"preset", "law", "gpm", "nonholonomic", "switch_time_s", "force_scale",
-                   "lateral_damping_Ns_per_m", "lateral_stiffness_N_per_m", "axial_damping_Ns_per_m"});
+                   "lateral_damping_Ns_per_m", "lateral_stiffness_N_per_m", "axial_damping_Ns_per_m",
+                   "axial_stiffness_N_per_m"});
     const std::string preset = string(member(g, at, "preset"), at + "/preset");
     if (preset == "thesis_holonomic") out = thesis_holonomic_gains(n);
     else if (preset == "thesis_nonholonomic") out = thesis_nonholonomic_gains(n);
@@ -203,6 +204,8 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
       out.lateral_damping_Ns_per_m = non_negative(g["lateral_damping_Ns_per_m"], at + "/lateral_damping_Ns_per_m");
     if (g.contains("lateral_stiffness_N_per_m"))
       out.lateral_stiffness_N_per_m = non_negative(g["lateral_stiffness_N_per_m"], at + "/lateral_stiffness_N_per_m");
+    if (g.contains("axial_stiffness_N_per_m"))
+      out.axial_stiffness_N_per_m = non_negative(g["axial_stiffness_N_per_m"], at + "/axial_stiffness_N_per_m");
   }
 
   void tool(const json& t, const std::string& at, Tool& out) const {

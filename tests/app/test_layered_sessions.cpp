@@ -1,7 +1,7 @@
 // The layered-tissue tasks (issue 14) done by their scripted operators as `needle-sim run
 // --headless` does them (TaskSession: the simulated device through the haptic loop, recorded,
 // scored, stored): the faults the sloppy operators make are named in the metrics and the reasons;
-// the good runs show what holds today (docs/TASKS.md, "Layered tasks: what the closed loop does").
+// the good runs complete every step (docs/TASKS.md, "Layered tasks: what the closed loop does").
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -39,8 +39,7 @@ TEST(LayeredSessions, LayeredTargetGoodCompletesEveryStepSloppyTouchesTheBoneAnd
   const RecordedSession good = record_session(dir / "sessions.db", {"layered_target", "good", "ana", true});
   const RecordedSession sloppy = record_session(dir / "sessions.db", {"layered_target", "sloppy", "bo", true});
   std::cout << "layered_target good: " << report(good.result) << "\nlayered_target sloppy: " << report(sloppy.result) << "\n";
-  // Every step completed; the score is below the pass mark for now: the closed loop tilts the
-  // needle about 25 degrees in the muscle (axis deviation and lateral load, docs/TASKS.md).
+  // Every step completed, no bone touched.
   for (const training::StepResult& s : good.result.steps) EXPECT_EQ(s.record.outcome, training::StepOutcome::kCompleted) << s.id;
   ASSERT_GE(good.result.punctures.size(), 2u);
   EXPECT_EQ(good.result.punctures[0].layer, "skin");
@@ -51,26 +50,27 @@ TEST(LayeredSessions, LayeredTargetGoodCompletesEveryStepSloppyTouchesTheBoneAnd
   EXPECT_GT(good.result.score.total, sloppy.result.score.total) << report(good.result) << "\n" << report(sloppy.result);
 }
 
-TEST(LayeredSessions, EpiduralGoodReachesTheLossOfResistanceSloppyMeetsTheLamina) {
+TEST(LayeredSessions, EpiduralGoodStopsInTheEpiduralSpaceSloppyMeetsTheLamina) {
   const std::filesystem::path dir = process_folder(output_dir() / "layered_sessions" / "epidural");
   const RecordedSession good = record_session(dir / "sessions.db", {"epidural", "good", "ana", true});
   const RecordedSession sloppy = record_session(dir / "sessions.db", {"epidural", "sloppy", "bo", true});
   std::cout << "epidural good: " << report(good.result) << "\nepidural sloppy: " << report(sloppy.result) << "\n";
   // The good run reaches the loss of resistance: the flavum's puncture is the largest peak of the
-  // approach (the dura, past it, aside).
+  // approach.
   const auto& p = good.result.punctures;
   const auto flavum = std::find_if(p.begin(), p.end(), [](const auto& x) { return x.layer == "ligamentum flavum"; });
   ASSERT_NE(flavum, p.end()) << report(good.result);
   for (const training::PunctureResult& other : p)
-    if (other.layer != "dura") EXPECT_LE(other.peak_force_N, flavum->peak_force_N) << other.layer;
+    EXPECT_LE(other.peak_force_N, flavum->peak_force_N) << other.layer;
   EXPECT_FALSE(sloppy.result.score.passed) << report(sloppy.result);
   EXPECT_GE(sloppy.result.overall.bone_contacts, 1u) << report(sloppy.result);  // the upper lamina
   EXPECT_GT(good.result.score.total, sloppy.result.score.total) << report(good.result) << "\n" << report(sloppy.result);
-  // Known gap (docs/TASKS.md): after the loss of resistance the virtual needle runs on through the
-  // dura (the hand's push along the needle drives it and the axial tracking does not hold it to
-  // the master), so the good run ends its loss_of_resistance step forbidden_puncture: said, not hidden.
-  if (good.result.score.passed) std::cout << "epidural good passes\n";
-  else EXPECT_TRUE(says(good.result, "dura punctured (forbidden)")) << report(good.result);
+  // The good run stops in the epidural space: every step completed, the dura whole (the spring along
+  // the needle holds the virtual needle to the hand when the flavum gives way, docs/CONTROLLER.md).
+  EXPECT_TRUE(good.result.score.passed) << report(good.result);
+  for (const training::StepResult& s : good.result.steps) EXPECT_EQ(s.record.outcome, training::StepOutcome::kCompleted) << s.id;
+  EXPECT_EQ(good.result.overall.forbidden_punctures, 0u) << report(good.result);
+  EXPECT_TRUE(std::none_of(p.begin(), p.end(), [](const auto& x) { return x.layer == "dura"; })) << report(good.result);
 }
 
 }  // namespace

@@ -33,9 +33,9 @@ TEST_P(ScriptedSessions, GoodPassesAndOutscoresSloppyWhichFails) {
   std::cout << GetParam() << " good: " << report(good.result) << "\n" << GetParam() << " sloppy: " << report(sloppy.result) << "\n";
 }
 
-// The epidural is not here: its good run does not pass yet (docs/TASKS.md, "Layered tasks").
 INSTANTIATE_TEST_SUITE_P(ShippedTasks, ScriptedSessions,
-                         testing::Values("rigid_sphere", "penetrable_sphere", "sphere_ultrasound", "layered_target"));
+                         testing::Values("rigid_sphere", "penetrable_sphere", "sphere_ultrasound", "layered_target",
+                                         "epidural"));
 
 }  // namespace
 }  // namespace needle::test

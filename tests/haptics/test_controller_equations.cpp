@@ -325,6 +325,71 @@ TEST(ControllerEquations, LateralSpringTorqueIsTheGradientOfItsEnergyAcrossTheNe
   EXPECT_NEAR(lateral_offset(frame, x_v + 0.03 * frame.col(0), x_v).norm(), 0.0, 1e-15);
 }
 
+// The spring along the needle between the two tips: the virtual robot's torque is minus the gradient
+// of E = ½ w K (x₅ᵀ(x_m − x_v))² in its joints, the master's s times minus the gradient in its own
+// (the hand feels the scene's force scaled), both by central differences; across the needle it is slack.
+TEST(ControllerEquations, AxialSpringTorquesAreTheGradientsOfItsEnergyAlongTheNeedle) {
+  const RobotModel model = test::planar::arm();
+  RobotData master(model), virt(model);
+  const Eigen::Vector3d axis(0.6, 0.8, 0.0);  // in the arm's plane
+  const double K = 3000.0, s = 0.35, w = 0.7;
+  const VecN q_m = vec({0.3, -0.5}), q_v = vec({0.1, -0.1});
+  auto energy = [&](const VecN& qm, const VecN& qv) {
+    update_kinematics(model, master, qm, VecN::Zero(2));
+    update_kinematics(model, virt, qv, VecN::Zero(2));
+    const double along = axis.dot(master.tip.translation() - virt.tip.translation());
+    return 0.5 * w * K * along * along;
+  };
+  update_kinematics(model, master, q_m, VecN::Zero(2));
+  update_kinematics(model, virt, q_v, VecN::Zero(2));
+  VecN tau_m = vec({0, 0}), tau_v = vec({0, 0});
+  const double force = axial_spring_torques(axis, master.tip.translation(), virt.tip.translation(), virt.J, master.J, K, s,
+                                            w, tau_v, tau_m);
+  EXPECT_NEAR(force, w * K * axis.dot(master.tip.translation() - virt.tip.translation()), 1e-12);
+  EXPECT_GT(std::abs(force), 1.0);  // the configuration stretches the spring
+  const double h = 1e-6;
+  for (int i = 0; i < 2; ++i) {
+    VecN plus = q_m, minus = q_m;
+    plus[i] += h, minus[i] -= h;
+    EXPECT_NEAR(tau_m[i], -s * (energy(plus, q_v) - energy(minus, q_v)) / (2 * h), 1e-6 * (1.0 + std::abs(tau_m[i])))
+        << "master joint " << i;
+    plus = q_v, minus = q_v;
+    plus[i] += h, minus[i] -= h;
+    EXPECT_NEAR(tau_v[i], -(energy(q_m, plus) - energy(q_m, minus)) / (2 * h), 1e-6 * (1.0 + std::abs(tau_v[i])))
+        << "virtual joint " << i;
+  }
+  // Across the needle it is slack: tips apart only across x₅ pull nothing.
+  VecN none_m = vec({0, 0}), none_v = vec({0, 0});
+  const Eigen::Vector3d across(0.8, -0.6, 0.0);
+  EXPECT_NEAR(axial_spring_torques(axis, virt.tip.translation() + 0.02 * across, virt.tip.translation(), virt.J, master.J, K,
+                                   s, w, none_v, none_m),
+              0.0, 1e-12);
+}
+
+// The spring along the needle is held at half the explicit limit of the virtual tip's mass along it,
+// 2 / (T² x₅ᵀ J (H + hB)⁻¹ Jᵀ x₅): closed form for two joints each moving the tip along one axis.
+TEST(ControllerEquations, AxialSpringStiffnessIsHeldUnderTheTicksLimit) {
+  Mat6N J = Mat6N::Zero(6, 2);
+  J(0, 0) = 2.0;  // joint 1 moves the tip along x at 2 m/rad
+  J(1, 1) = 1.0;  // joint 2 along y
+  MatN H = MatN::Zero(2, 2);
+  H.diagonal() << 0.2, 0.5;
+  const VecN B = vec({0.4, 0.0});
+  const double h = 0.001;
+  AxialSpringScratch scratch;
+  // Along x the tip's mass is (0.2 + 0.001 * 0.4) / 2² = 0.0501 kg.
+  const double m = (0.2 + h * 0.4) / 4.0;
+  EXPECT_NEAR(axial_spring_stiffness(1e6, H, B, h, J, Eigen::Vector3d::UnitX(), 0.016, scratch), 2.0 * m / (0.016 * 0.016), 1e-9);
+  EXPECT_EQ(axial_spring_stiffness(3000.0, H, B, h, J, Eigen::Vector3d::UnitX(), 0.002, scratch), 3000.0);  // limit 25050
+  // Along y: 0.5 kg; along (x + y)/√2 the inverse masses add: (1/m_x + 1/m_y) / 2.
+  EXPECT_NEAR(axial_spring_stiffness(1e6, H, B, h, J, Eigen::Vector3d::UnitY(), 0.016, scratch), 2.0 * 0.5 / (0.016 * 0.016), 1e-9);
+  const double inverse_mass = (1.0 / m + 1.0 / 0.5) / 2.0;
+  EXPECT_NEAR(axial_spring_stiffness(1e6, H, B, h, J, Eigen::Vector3d(1, 1, 0).normalized(), 0.016, scratch),
+              2.0 / (0.016 * 0.016 * inverse_mass), 1e-6);
+  // A tip that cannot move along the axis bounds nothing.
+  EXPECT_EQ(axial_spring_stiffness(3000.0, H, B, h, J, Eigen::Vector3d::UnitZ(), 0.016, scratch), 3000.0);
+}
+
 TEST(ControllerEquations, TaskSpaceCouplingIsASpringOnTheTipAndOneOnTheDirection) {
   const RobotModel model = test::planar::arm();
   RobotData data(model);

@@ -144,5 +144,40 @@ TEST(SimFeel, InLayeredTissueTheMasterStaysOnTheVirtualNeedle) {
   EXPECT_EQ(test::scenario_run("liver_biopsy").summary.punctures.size(), 3u);
 }
 
+// The loss of resistance with the spring along the needle (gains.axial_stiffness_N_per_m): when the
+// ligamentum flavum gives way the virtual needle runs ahead of the master tip by at most the spring's
+// stretch at the flavum's peak, F_p / K (and 0.5 mm for the tick's motion), and the scripted hand,
+// whose target stops 1 mm above the dura, leaves the tip in the epidural space with the dura whole. The control:
+// with the force-force axial channel in its place the needle ran on through the dura (10 mm in 50 ms).
+TEST(SimFeel, AtTheLossOfResistanceTheNeedleStaysWithTheHand) {
+  const Scenario& epidural = test::scenario("epidural");
+  ASSERT_GT(epidural.gains.axial_stiffness_N_per_m, 0.0);
+  auto layer_named = [&](const std::string& name) {
+    for (int i = 0; i < epidural.scene.tissue.layer_count(); ++i)
+      if (epidural.scene.tissue.layer(i).name == name) return i;
+    ADD_FAILURE() << "no layer " << name;
+    return -1;
+  };
+  auto punctured = [](const SimResult& run, const std::string& layer) -> const SimPuncture* {
+    for (const SimPuncture& p : run.summary.punctures)
+      if (p.layer == layer) return &p;
+    return nullptr;
+  };
+  const SimResult& run = test::scenario_run("epidural");
+  const SimPuncture* flavum = punctured(run, "ligamentum flavum");
+  ASSERT_NE(flavum, nullptr);
+  EXPECT_EQ(punctured(run, "dura"), nullptr);
+  EXPECT_TRUE(run.summary.faults.empty());
+  double ahead = -1.0;  // the virtual tip's lead on the master tip along the needle after the pop
+  for (const TickRecord& r : run.ticks)
+    if (r.t >= flavum->t) ahead = std::max(ahead, r.needle_v.dot(r.x_v - r.x_m));
+  EXPECT_LT(ahead, flavum->peak_force_N / epidural.gains.axial_stiffness_N_per_m + 5e-4);
+  EXPECT_EQ(run.ticks.back().layer, layer_named("epidural space"));
+
+  Scenario force_force = epidural;
+  force_force.gains.axial_stiffness_N_per_m = 0.0;
+  EXPECT_NE(punctured(run_closed_loop(force_force, false), "dura"), nullptr);
+}
+
 }  // namespace
 }  // namespace needle::haptics

@@ -70,7 +70,7 @@ TEST(SimHandPassivity, TheWorldNeverGivesTheHandMoreThanItTookInRandomisedLayere
   const struct {
     const char* name;
     double deepest;
-  } cases[] = {{"tissue_block_layers", 0.045}, {"lumbar_epidural", 0.05}, {"liver_biopsy", 0.06}};
+  } cases[] = {{"tissue_block_layers", 0.045}, {"lumbar_epidural", 0.05}, {"liver_biopsy", 0.06}, {"epidural", 0.06}};
   for (const auto& c : cases) {
     for (unsigned seed : {1u, 2u}) {
       const Scenario s = random_cycles(test::scenario(c.name), seed, c.deepest, 8);

@@ -221,6 +221,10 @@ LiveRecording record_under_gains(const fs::path& dir, const std::string& task_na
   nlohmann::json scenario = nlohmann::json::parse(std::ifstream(scenario_file));
   for (const char* key : {"master_urdf", "virtual_urdf"})
     scenario[key] = (scenario_file.parent_path() / scenario[key].get<std::string>()).lexically_normal().string();
+  if (scenario.contains("tissue") && scenario["tissue"].contains("layers"))  // parameter files, from the scenario's folder
+    for (nlohmann::json& layer : scenario["tissue"]["layers"])
+      if (layer.contains("parameters") && layer["parameters"].is_string())
+        layer["parameters"] = (scenario_file.parent_path() / layer["parameters"].get<std::string>()).lexically_normal().string();
   edit(scenario["gains"]);
   std::ofstream(dir / "scenario.json") << scenario.dump(2);
   task["scene"] = (source_dir() / "assets/tasks" / task["scene"].get<std::string>()).lexically_normal().string();
@@ -280,29 +284,56 @@ TEST(CliRecordings, ARecordingMadeBeforeTheToolLawReplaysUnderTheThesisLaw) {
   EXPECT_NE(without_recording(tool.score)["metrics"], live.score["metrics"]);
 }
 
-// A tool-law recording made before the master's lateral spring (issue 12) names no
-// lateral_stiffness_N_per_m: it replays without the spring, i.e. the replay commands the device as the
-// run did, tick for tick, and scores as it did. Made here as such a recording was: a run with the
-// spring at 0 whose context then loses the key. The control: the same recording naming today's
-// 300 N/m commands the device otherwise (the needle is in the sphere's tissue). The spring acts on the
-// master only, so the score, made from the recorded hand and the replayed virtual needle, is the same.
-TEST(CliRecordings, AToolLawRecordingMadeBeforeTheLateralSpringReplaysWithoutIt) {
-  const fs::path dir = process_folder(test_output_dir("cli_recordings") / "old_spring");
-  const LiveRecording live = record_under_gains(dir, "penetrable_sphere", [](nlohmann::json& g) {
+// A tool-law recording made before one of the tool law's springs (issue 12) names no `key` in its
+// gains: it replays without the spring, i.e. the replay commands the device as the run did, tick for
+// tick, and scores as it did. Made here as such a recording was: a run of `task` with the spring at 0
+// whose context then loses the key. The control: the same recording naming `stiffness` commands the
+// device otherwise. Returns the control's score.
+nlohmann::json expect_replayed_without_the_spring(const std::string& folder, const std::string& task,
+                                                  const std::string& key, double stiffness, LiveRecording& live) {
+  const fs::path dir = process_folder(test_output_dir("cli_recordings") / folder);
+  live = record_under_gains(dir, task, [&](nlohmann::json& g) {
     g["law"] = "tool";
-    g["lateral_stiffness_N_per_m"] = 0.0;
+    g[key] = 0.0;
   });
-  ASSERT_FALSE(live.recording.empty());
-  const RunOutput old = replay_with_gains(dir, live.recording, "before_the_spring",
-                                          [](nlohmann::json& g) { g.erase("lateral_stiffness_N_per_m"); });
-  ASSERT_TRUE(old.score);
-  EXPECT_EQ(without_recording(old.score), live.score);
-  EXPECT_TRUE(same_commands(live.recording, (*old.score)["recording"].get<std::string>()));
-  const RunOutput spring = replay_with_gains(dir, live.recording, "named_spring",
-                                             [](nlohmann::json& g) { g["lateral_stiffness_N_per_m"] = 300.0; });
-  ASSERT_TRUE(spring.score);
-  EXPECT_EQ(without_recording(spring.score)["metrics"], live.score["metrics"]);
-  EXPECT_FALSE(same_commands(live.recording, (*spring.score)["recording"].get<std::string>()));
+  if (live.recording.empty()) {
+    ADD_FAILURE() << task << ": no recording";
+    return nullptr;
+  }
+  const RunOutput old = replay_with_gains(dir, live.recording, "before_the_spring", [&](nlohmann::json& g) { g.erase(key); });
+  if (!old.score) {
+    ADD_FAILURE() << task << ": the replay without " << key << " scored nothing";
+    return nullptr;
+  }
+  EXPECT_EQ(without_recording(old.score), live.score) << key;
+  EXPECT_TRUE(same_commands(live.recording, (*old.score)["recording"].get<std::string>())) << key;
+  const RunOutput spring = replay_with_gains(dir, live.recording, "named_spring", [&](nlohmann::json& g) { g[key] = stiffness; });
+  if (!spring.score) {
+    ADD_FAILURE() << task << ": the replay with " << key << " scored nothing";
+    return nullptr;
+  }
+  EXPECT_FALSE(same_commands(live.recording, (*spring.score)["recording"].get<std::string>())) << key;
+  return without_recording(spring.score);
+}
+
+// The master's lateral spring, in the sphere's tissue: it acts on the master only, so the score, made
+// from the recorded hand and the replayed virtual needle, is the same with it.
+TEST(CliRecordings, AToolLawRecordingMadeBeforeTheLateralSpringReplaysWithoutIt) {
+  LiveRecording live;
+  const nlohmann::json spring =
+      expect_replayed_without_the_spring("old_spring", "penetrable_sphere", "lateral_stiffness_N_per_m", 300.0, live);
+  ASSERT_FALSE(spring.is_null());
+  EXPECT_EQ(spring["metrics"], live.score["metrics"]);
+}
+
+// The spring along the needle, through the layered block's skin, fat and muscle (the sphere's tissue
+// has no axial mechanics): it pulls the virtual needle too, so the replay's needle moves otherwise.
+TEST(CliRecordings, AToolLawRecordingMadeBeforeTheAxialSpringReplaysWithoutIt) {
+  LiveRecording live;
+  const nlohmann::json spring =
+      expect_replayed_without_the_spring("old_axial_spring", "layered_target", "axial_stiffness_N_per_m", 3000.0, live);
+  ASSERT_FALSE(spring.is_null());
+  EXPECT_NE(spring["metrics"], live.score["metrics"]);
 }
 
 TEST(CliRecordings, WhatIsNotARecordingIsRefusedAtOnce) {
