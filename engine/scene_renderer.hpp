@@ -128,6 +128,10 @@ class SceneRenderer {
   float render_scale() const;
   // RendererSettings::cull_cut_away from the next frame on (for `bench frame --variants`).
   void set_cull_cut_away(bool on);
+  // Each draw uses the mesh shader specialized to what it needs (the default: no discards for
+  // opaque unsectioned draws, no texture fetch for untextured materials); off, every draw uses
+  // the general one, as before (for `bench frame --variants`). The same picture either way.
+  void set_specialized_pipelines(bool on);
   // Why a render scale below 1 cannot be used with `target`, empty when it can.
   std::string render_scale_unsupported(const RenderTarget& target) const;
   // Timestamp queries around each pass from the next frame on (FrameCost's device times), where

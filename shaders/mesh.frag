@@ -12,12 +12,18 @@ layout(location = 4) flat in int in_sectioned;
 
 layout(location = 0) out vec4 out_color;
 
+// Specialized per draw (scene_pass.cpp, "pipeline_index"): a CPU device (llvmpipe) runs both
+// sides of every branch with the lanes masked, so code a draw cannot need is compiled out. Without
+// discards it also writes depth before shading, not after (Mesa's lp_state_fs.c).
+layout(constant_id = 0) const bool kMayDiscard = true;  // false: opaque, unmasked, unsectioned
+layout(constant_id = 1) const bool kTextured = true;    // false: no base colour texture
+
 // Blinn-Phong with the metallic-roughness parameters mapped onto it: enough shading for a
 // trainee to judge depth and curvature, cheap enough for lavapipe at 1280x720.
 void main() {
   vec4 base = material.base_color * in_color;
-  if (material.params.w > 0.5) base *= texture(base_color_texture, in_uv);  // sRGB decoded by the sampler
-  if (material.params.x >= 0.0 && base.a < material.params.x) discard;
+  if (kTextured && material.params.w > 0.5) base *= texture(base_color_texture, in_uv);  // sRGB decoded by the sampler
+  if (kMayDiscard && material.params.x >= 0.0 && base.a < material.params.x) discard;
 
   vec3 n = normalize(in_world_normal);
   if (!gl_FrontFacing) n = -n;  // double-sided materials light their back faces too
@@ -25,10 +31,10 @@ void main() {
   // the opening the surface's inside (its back faces) shows, filled with its own colour and lit
   // as the plane would be: the cap. Translucent: a fixed 4x4 ordered dither keeps a third of the
   // fragments (screen-door transparency: no sorting, the needle shows through).
-  if (in_sectioned != 0 && frame.section.x == 1) {
+  if (kMayDiscard && in_sectioned != 0 && frame.section.x == 1) {
     if (dot(frame.section_plane.xyz, in_world_position) + frame.section_plane.w > 0.0) discard;
     if (!gl_FrontFacing) n = frame.section_plane.xyz;
-  } else if (in_sectioned != 0 && frame.section.x == 2) {
+  } else if (kMayDiscard && in_sectioned != 0 && frame.section.x == 2) {
     const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
     ivec2 p = ivec2(gl_FragCoord.xy) & 3;
     if ((bayer[p.y * 4 + p.x] + 0.5) / 16.0 > 0.34) discard;

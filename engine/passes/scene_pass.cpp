@@ -38,6 +38,11 @@ glm::vec4 section_plane(const Section& section) {
   return glm::vec4(n, -glm::dot(n, section.point));
 }
 
+// Where ScenePass::pipelines_ keeps the pipeline for a draw.
+size_t pipeline_index(bool double_sided, bool blended, bool may_discard, bool textured) {
+  return (double_sided ? 1 : 0) | (blended ? 2 : 0) | (may_discard ? 4 : 0) | (textured ? 8 : 0);
+}
+
 using Clock = std::chrono::steady_clock;
 
 // Milliseconds since `since`, which moves on to now.
@@ -113,9 +118,8 @@ ScenePass::~ScenePass() {
   }
   if (frame_pool_) vkDestroyDescriptorPool(device_, frame_pool_, nullptr);
   if (timestamps_) vkDestroyQueryPool(device_, timestamps_, nullptr);
-  for (auto& row : pipelines_)
-    for (VkPipeline p : row)
-      if (p) vkDestroyPipeline(device_, p, nullptr);
+  for (VkPipeline p : pipelines_)
+    if (p) vkDestroyPipeline(device_, p, nullptr);
   if (pipeline_layout_) vkDestroyPipelineLayout(device_, pipeline_layout_, nullptr);
   if (material_layout_) vkDestroyDescriptorSetLayout(device_, material_layout_, nullptr);
   if (frame_layout_) vkDestroyDescriptorSetLayout(device_, frame_layout_, nullptr);
@@ -276,26 +280,30 @@ void ScenePass::create_pipelines() {
   VkPipelineColorBlendAttachmentState blend_attachment{};
   blend_attachment.colorWriteMask =
       VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-  const GraphicsPipelineStates states{{stages.begin(), stages.end()}, &vertex_input, &assembly, &raster, &multisample,
-                                      &depth, &blend_attachment, pipeline_layout_, render_pass_};
+  GraphicsPipelineStates states{{stages.begin(), stages.end()}, &vertex_input, &assembly, &raster, &multisample,
+                                &depth, &blend_attachment, pipeline_layout_, render_pass_};
 
-  for (int blended = 0; blended < 2; ++blended) {
-    for (int double_sided = 0; double_sided < 2; ++double_sided) {
-      raster.cullMode = double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-      depth.depthWriteEnable = blended ? VK_FALSE : VK_TRUE;  // blended surfaces do not hide what lies behind
-      blend_attachment.blendEnable = blended ? VK_TRUE : VK_FALSE;
-      blend_attachment.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
-      blend_attachment.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-      blend_attachment.colorBlendOp = VK_BLEND_OP_ADD;
-      blend_attachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-      blend_attachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-      blend_attachment.alphaBlendOp = VK_BLEND_OP_ADD;
-      VkResult r = create_graphics_pipeline(device_, states, &pipelines_[blended][double_sided]);
-      if (r != VK_SUCCESS) {
-        vkDestroyShaderModule(device_, vert, nullptr);
-        vkDestroyShaderModule(device_, frag, nullptr);
-        vk_check(r, "vkCreateGraphicsPipelines");
-      }
+  // mesh.frag's specialization constants kMayDiscard (constant_id 0) and kTextured (1).
+  const std::array<VkSpecializationMapEntry, 2> entries{{{0, 0, sizeof(VkBool32)}, {1, sizeof(VkBool32), sizeof(VkBool32)}}};
+  for (size_t index = 0; index < pipelines_.size(); ++index) {
+    const bool double_sided = index & 1, blended = index & 2;
+    const std::array<VkBool32, 2> constants{(index & 4) ? VK_TRUE : VK_FALSE, (index & 8) ? VK_TRUE : VK_FALSE};
+    const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(), sizeof constants, constants.data()};
+    states.stages[1].pSpecializationInfo = &specialization;
+    raster.cullMode = double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+    depth.depthWriteEnable = blended ? VK_FALSE : VK_TRUE;  // blended surfaces do not hide what lies behind
+    blend_attachment.blendEnable = blended ? VK_TRUE : VK_FALSE;
+    blend_attachment.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+    blend_attachment.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+    blend_attachment.colorBlendOp = VK_BLEND_OP_ADD;
+    blend_attachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+    blend_attachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+    blend_attachment.alphaBlendOp = VK_BLEND_OP_ADD;
+    VkResult r = create_graphics_pipeline(device_, states, &pipelines_[index]);
+    if (r != VK_SUCCESS) {
+      vkDestroyShaderModule(device_, vert, nullptr);
+      vkDestroyShaderModule(device_, frag, nullptr);
+      vk_check(r, "vkCreateGraphicsPipelines");
     }
   }
   vkDestroyShaderModule(device_, vert, nullptr);
@@ -603,11 +611,14 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
 
   VkPipeline bound = VK_NULL_HANDLE;
   triangles_drawn_ = 0;
-  auto draw_list = [&](const std::vector<Draw>& draws, int blend) {
+  auto draw_list = [&](const std::vector<Draw>& draws, bool blend) {
     for (const Draw& d : draws) {
       const GpuPrimitive& p = d.model->primitives()[d.primitive];
       const Material& m = d.model->material_of(d.primitive);
-      VkPipeline pipeline = pipelines_[blend][m.double_sided || (cut && d.sectioned) ? 1 : 0];
+      // Only masked materials and sectioned items discard fragments (mesh.frag).
+      const bool may_discard = !specialized_ || m.alpha_mode == AlphaMode::Mask || d.sectioned;
+      const bool textured = !specialized_ || m.base_color_texture >= 0;
+      VkPipeline pipeline = pipelines_[pipeline_index(m.double_sided || (cut && d.sectioned), blend, may_discard, textured)];
       if (pipeline != bound) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
         bound = pipeline;
@@ -631,8 +642,8 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
       }
     }
   };
-  draw_list(opaque, 0);
-  draw_list(blended, 1);
+  draw_list(opaque, false);
+  draw_list(blended, true);
   cost_.scene.record_ms = lap_ms(t);
   if (scaled) {
     vkCmdEndRenderPass(cmd);

@@ -48,6 +48,7 @@ class ScenePass {
   void set_render_scale(const TargetImages& target, float scale);
   float render_scale() const { return render_scale_; }
   void set_cull_cut_away(bool on) { cull_cut_away_ = on; }
+  void set_specialized_pipelines(bool on) { specialized_ = on; }
   const VulkanContext& context() const { return context_; }
   // For passes drawn inside the scene's render pass (the UI pass).
   VkRenderPass render_pass() const { return render_pass_; }
@@ -99,8 +100,9 @@ class ScenePass {
   VkDescriptorSetLayout frame_layout_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout material_layout_ = VK_NULL_HANDLE;
   VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
-  // [blended][double sided]
-  std::array<std::array<VkPipeline, 2>, 2> pipelines_{};
+  // By pipeline_index(double sided, blended, may discard, textured): mesh.frag specialised.
+  std::array<VkPipeline, 16> pipelines_{};
+  bool specialized_ = true;  // set_specialized_pipelines
   VkSampler sampler_ = VK_NULL_HANDLE;
   GpuImage white_texture_;
   VkDescriptorPool frame_pool_ = VK_NULL_HANDLE;

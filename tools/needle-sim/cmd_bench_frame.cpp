@@ -77,6 +77,7 @@ struct Variant {
   std::string name;            // as given, "default" for the product's own settings
   std::optional<float> scale;  // scale=S: a fixed render scale
   bool cut_culling = true;     // cut_culling=off: the section's cut-away chunks drawn (to measure the culling)
+  bool specialized = true;     // specialized=off: every draw with the general mesh shader (to measure the specializing)
   engine::WindowTarget::Presentation presentation = engine::WindowTarget::Presentation::Fifo;  // present=...
 };
 
@@ -101,9 +102,11 @@ std::vector<Variant> parse_variants(const std::string& list) {
         v.presentation = setting == "present=mailbox" ? P::Mailbox : setting == "present=immediate" ? P::Immediate : P::Fifo;
       } else if (setting == "cut_culling=off") {
         v.cut_culling = false;
+      } else if (setting == "specialized=off") {
+        v.specialized = false;
       } else {
         throw UsageError("--variants: unknown setting '" + setting +
-                         "' (default, scale=S, cut_culling=off, present=fifo|mailbox|immediate)");
+                         "' (default, scale=S, cut_culling=off, specialized=off, present=fifo|mailbox|immediate)");
       }
     }
     variants.push_back(std::move(v));
@@ -171,6 +174,7 @@ std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget&
     frame.renderer().set_device_timings(timed);
     frame.set_fixed_render_scale(options.variants[variant].scale ? options.variants[variant].scale : product_scale);
     frame.renderer().set_cull_cut_away(options.variants[variant].cut_culling);
+    frame.renderer().set_specialized_pipelines(options.variants[variant].specialized);
     if (window_target && !window_target->set_presentation(options.variants[variant].presentation))
       throw std::runtime_error("--variants " + options.variants[variant].name + ": the window's surface does not offer it");
     const Clock::time_point now = Clock::now();
@@ -342,6 +346,8 @@ const CommandRegistrar reg{
      "  --variants LIST  settings compared within each row, block by block in turn, ';' between variants and\n"
      "                   ',' between the settings of one: default (the frame's own), scale=S (a fixed render scale),\n"
      "                   cut_culling=off (the section's cut-away chunks drawn, as before they were culled),\n"
+     "                   specialized=off (every draw with the general mesh shader, its discards and texture\n"
+     "                   fetch run masked, as before),\n"
      "                   present=fifo|mailbox|immediate (the window's present mode; default fifo)",
      run_bench_frame}};
 
