@@ -56,9 +56,10 @@ tinygltf::Model make_needle() {
 
 tinygltf::Model make_tissue_block() {
   constexpr float half = 0.05f;  // m: a 10 cm square block
-  // The soft layers dimple under the needle (docs/DEFORMATION.md): quads of at most 2 mm, so that a
-  // dimple of a few millimetres has vertices; the bone plate is rigid and stays four per face.
-  constexpr float soft_cell = 0.002f;
+  // The layers dimple under the needle (docs/DEFORMATION.md): quads of at most 2 mm, so that a
+  // dimple of a few millimetres has vertices. The bone plate too, although rigid: faces that touch
+  // must be triangulated alike, or the section view's caps fight in depth where they meet.
+  constexpr float cell = 0.002f;
   GltfBuilder b("tissue_block.bin");
   const int skin_texture = b.add_texture("tissue_block_skin.png", 64, 64, skin_texels(64));
   struct Layer {
@@ -67,16 +68,15 @@ tinygltf::Model make_tissue_block() {
     glm::vec4 color;
     float roughness;
     int texture;
-    float cell;
   };
-  const Layer layers[] = {{"skin", 0.0f, -0.002f, {1.0f, 1.0f, 1.0f, 1.0f}, 0.6f, skin_texture, soft_cell},
-                          {"fat", -0.002f, -0.012f, {0.98f, 0.88f, 0.55f, 1.0f}, 0.5f, -1, soft_cell},
-                          {"muscle", -0.012f, -0.040f, {0.62f, 0.14f, 0.14f, 1.0f}, 0.45f, -1, soft_cell},
-                          {"bone", -0.040f, -0.050f, {0.92f, 0.90f, 0.82f, 1.0f}, 0.7f, -1, 0.0f}};
+  const Layer layers[] = {{"skin", 0.0f, -0.002f, {1.0f, 1.0f, 1.0f, 1.0f}, 0.6f, skin_texture},
+                          {"fat", -0.002f, -0.012f, {0.98f, 0.88f, 0.55f, 1.0f}, 0.5f, -1},
+                          {"muscle", -0.012f, -0.040f, {0.62f, 0.14f, 0.14f, 1.0f}, 0.45f, -1},
+                          {"bone", -0.040f, -0.050f, {0.92f, 0.90f, 0.82f, 1.0f}, 0.7f, -1}};
   for (const Layer& layer : layers) {
     const int material = b.add_material(layer.name, layer.color, 0.0f, layer.roughness, layer.texture);
     b.add_root_node(layer.name,
-                    b.add_mesh(layer.name, box_mesh({-half, -half, layer.bottom}, {half, half, layer.top}, layer.cell), material));
+                    b.add_mesh(layer.name, box_mesh({-half, -half, layer.bottom}, {half, half, layer.top}, cell), material));
   }
   return b.take();
 }
