@@ -11,7 +11,7 @@ const engine::NeedleLoad& ReplayCursor::at(const std::vector<haptics::ToolSnapsh
 }
 
 void ReplayCursor::reset() {
-  tracker_ = {};
+  tracker_ = NeedleTracker(kind_);
   load_ = {};
   fed_ = 0;
 }

@@ -11,13 +11,17 @@ namespace needle::app {
 
 class ReplayCursor {
  public:
+  explicit ReplayCursor(TissueKind kind = TissueKind::SingleSurface) : tracker_(kind), kind_(kind) {}
+
   // The needle at the last state with time_s <= t (the first state when t is before it).
-  // `states` must stay the same between calls unless reset() is called.
+  // `states` must stay the same between calls (a new recording: a new cursor).
   const engine::NeedleLoad& at(const std::vector<haptics::ToolSnapshot>& states, double t);
-  void reset();
 
  private:
+  void reset();
+
   NeedleTracker tracker_;
+  TissueKind kind_;
   engine::NeedleLoad load_;
   size_t fed_ = 0;  // states fed to the tracker
 };

@@ -135,7 +135,7 @@ int run_review_window(const ReviewOptions& options) {
       refreshed = std::chrono::steady_clock::now();
     }
     if (a.update(*store, options.db, table.selected, sessions)) {
-      cursor.reset();
+      cursor = ReplayCursor(a.review && a.review->task ? tissue_kind(*a.review->task) : TissueKind::SingleSurface);
       playing = false;
       detail.export_message.clear();
       span = {};

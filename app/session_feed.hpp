@@ -17,7 +17,7 @@ namespace needle::app {
 
 class SessionFeed {
  public:
-  explicit SessionFeed(const training::Task& task) : scorer_(task) {}
+  explicit SessionFeed(const training::Task& task) : scorer_(task), tracker_(tissue_kind(task)) {}
 
   // The recorder's thread: one sample, in tick order.
   void consume(const haptics::TickSample& sample);

@@ -97,7 +97,7 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
     std::printf("no replay picture: %s\n", review.task_problem.c_str());
     return 0;
   }
-  ReplayCursor cursor;
+  ReplayCursor cursor(tissue_kind(*review.task));
   ui::PictureScene scene{engine::load_scene(review.task->scene), cursor.at(review.states, t), 0.0f};
   double shown_t = t;
   const ui::PanelRect bar{ImVec2(0, float(replay_size.height) - 64.0f), ImVec2(float(replay_size.width), 64.0f)};

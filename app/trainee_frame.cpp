@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <utility>
@@ -19,12 +20,16 @@ double ms_between(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration<double, std::milli>(to - from).count();
 }
 
-// The scripted needle's target: the first deformable tissue's bounding sphere, if any.
+// The scripted needle's target: the first deformable tissue whose bounds are a cube (a sphere's),
+// as its bounding sphere; none otherwise. The script is the thesis's insert-pivot-insert on its
+// sphere: on a block (the layered target's) it would dent the air beside it.
 std::optional<engine::ScriptedSphere> script_target(const engine::GpuScene& scene) {
   const auto& assets = scene.scene().assets;
   for (size_t i = 0; i < assets.size(); ++i) {
     if (!assets[i].deformation) continue;
     const engine::Bounds& b = scene.model_bounds(i);
+    const glm::vec3 size = b.max - b.min;
+    if (std::abs(size.x - size.y) > 1e-3f * size.x || std::abs(size.x - size.z) > 1e-3f * size.x) continue;
     engine::ScriptedSphere sphere;
     sphere.centre = glm::dvec3(assets[i].transform() * glm::vec4((b.min + b.max) * 0.5f, 1.0f));
     sphere.radius = 0.5 * double(b.max.x - b.min.x) * double(assets[i].scale.x);

@@ -37,4 +37,9 @@ struct NeedleLoad {
   glm::dvec3 lateral_force_on_tissue_N{0.0};  // inserted: the needle's lateral push on the tissue
 };
 
+// (needle load, tissue parameters, a rest point of the tissue) => where the deformation moves that
+// point this frame, world frame: the double-precision CPU reference of the pass's field
+// (docs/DEFORMATION.md), for checking what the application feeds it.
+glm::dvec3 deformed_point(const NeedleLoad& load, const TissueParams& tissue, const glm::dvec3& rest);
+
 }  // namespace needle::engine

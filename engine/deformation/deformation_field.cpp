@@ -54,6 +54,11 @@ DeformationField build_field(const NeedleLoad& load, const TissueParams& tissue)
   return field;
 }
 
+glm::dvec3 deformed_point(const NeedleLoad& load, const TissueParams& tissue, const glm::dvec3& rest) {
+  const DeformationField field = build_field(load, tissue);
+  return rest + field_at(field.loads, field.material, rest);
+}
+
 DeformedVertex deform(const DeformationField& field, const glm::dvec3& rest_position, const glm::dvec3& rest_normal) {
   glm::dvec3 u(0.0);
   glm::dmat3 jacobian(0.0);

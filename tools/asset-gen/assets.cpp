@@ -56,6 +56,10 @@ tinygltf::Model make_needle() {
 
 tinygltf::Model make_tissue_block() {
   constexpr float half = 0.05f;  // m: a 10 cm square block
+  // The layers dimple under the needle (docs/DEFORMATION.md): quads of at most 2 mm, so that a
+  // dimple of a few millimetres has vertices. The bone plate too, although rigid: faces that touch
+  // must be triangulated alike, or the section view's caps fight in depth where they meet.
+  constexpr float cell = 0.002f;
   GltfBuilder b("tissue_block.bin");
   const int skin_texture = b.add_texture("tissue_block_skin.png", 64, 64, skin_texels(64));
   struct Layer {
@@ -72,7 +76,7 @@ tinygltf::Model make_tissue_block() {
   for (const Layer& layer : layers) {
     const int material = b.add_material(layer.name, layer.color, 0.0f, layer.roughness, layer.texture);
     b.add_root_node(layer.name,
-                    b.add_mesh(layer.name, box_mesh({-half, -half, layer.bottom}, {half, half, layer.top}), material));
+                    b.add_mesh(layer.name, box_mesh({-half, -half, layer.bottom}, {half, half, layer.top}, cell), material));
   }
   return b.take();
 }

@@ -1,5 +1,6 @@
 #include "asset-gen/shapes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -73,22 +74,33 @@ MeshData revolution_mesh(const std::vector<ProfilePoint>& profile, int segments)
   return mesh;
 }
 
-MeshData box_mesh(const glm::vec3& min, const glm::vec3& max) {
+MeshData box_mesh(const glm::vec3& min, const glm::vec3& max, float max_cell_m) {
   const glm::vec3 center = (min + max) * 0.5f, half = (max - min) * 0.5f;
   const glm::vec3 X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1);
   // (u, v) per face with u x v = the face's outward normal.
   const glm::vec3 faces[6][2] = {{Y, Z}, {Z, Y}, {Z, X}, {X, Z}, {X, Y}, {Y, X}};
+  // Quads along a face's edge of half-length h: enough that none is longer than max_cell_m.
+  const auto cells = [&](const glm::vec3& axis) {
+    const float length = 2.0f * glm::dot(half, axis);
+    return max_cell_m > 0.0f ? std::max(1, int(std::ceil(length / max_cell_m - 1e-4f))) : 1;
+  };
   MeshData mesh;
   for (const auto& [u, v] : faces) {
     const glm::vec3 normal = glm::cross(u, v);
     const auto base = static_cast<uint32_t>(mesh.positions.size());
-    const glm::vec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-    for (const glm::vec2& c : corners) {
-      mesh.positions.push_back(center + half * (normal + c.x * u + c.y * v));
-      mesh.normals.push_back(normal);
-      mesh.uvs.emplace_back((c.x + 1) / 2, (1 - c.y) / 2);
-    }
-    mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    const int nu = cells(u), nv = cells(v);
+    for (int j = 0; j <= nv; ++j)
+      for (int i = 0; i <= nu; ++i) {
+        const glm::vec2 c(-1.0f + 2.0f * float(i) / float(nu), -1.0f + 2.0f * float(j) / float(nv));
+        mesh.positions.push_back(center + half * (normal + c.x * u + c.y * v));
+        mesh.normals.push_back(normal);
+        mesh.uvs.emplace_back((c.x + 1) / 2, (1 - c.y) / 2);
+      }
+    for (int j = 0; j < nv; ++j)
+      for (int i = 0; i < nu; ++i) {
+        const uint32_t a = base + uint32_t(j * (nu + 1) + i), b = a + 1, c = a + uint32_t(nu + 1) + 1, d = c - 1;
+        mesh.indices.insert(mesh.indices.end(), {a, b, c, a, c, d});
+      }
   }
   return mesh;
 }

@@ -38,7 +38,9 @@ struct ProfilePoint {
 // profile segment, each segment with its own (hard-edged) normals.
 MeshData revolution_mesh(const std::vector<ProfilePoint>& profile, int segments);
 
-// Axis-aligned box, four vertices per face with the face's normal, UV 0..1 on each face.
-MeshData box_mesh(const glm::vec3& min, const glm::vec3& max);
+// Axis-aligned box, each face a grid of quads no longer than `max_cell_m` (one quad when 0: what
+// a rigid part needs; a deformable tissue needs vertices where it dimples), with the face's
+// normal and UV 0..1 on each face.
+MeshData box_mesh(const glm::vec3& min, const glm::vec3& max, float max_cell_m = 0.0f);
 
 }  // namespace needle::asset_gen
