@@ -12,6 +12,12 @@ layout(location = 4) flat in int in_sectioned;
 
 layout(location = 0) out vec4 out_color;
 
+// The target is UNORM and holds sRGB-encoded values (docs/RENDERING.md, "Colour"): shading is in
+// linear light, encoded here once per fragment rather than by the device on every write and blend.
+vec3 srgb_encode(vec3 linear) {
+  return mix(linear * 12.92, 1.055 * pow(linear, vec3(1.0 / 2.4)) - 0.055, greaterThan(linear, vec3(0.0031308)));
+}
+
 // Specialized per draw (scene_pass.cpp, "pipeline_index"): a CPU device (llvmpipe) runs both
 // sides of every branch with the lanes masked, so code a draw cannot need is compiled out. Without
 // discards it also writes depth before shading, not after (Mesa's lp_state_fs.c).
@@ -56,5 +62,5 @@ void main() {
     float spec = pow(max(dot(n, h), 0.0), shininess) * (shininess + 8.0) / 25.1327;
     color += frame.light_radiance[i].rgb * n_dot_l * (diffuse_color + specular_color * spec);
   }
-  out_color = vec4(color, base.a);
+  out_color = vec4(srgb_encode(max(color, vec3(0.0))), base.a);
 }

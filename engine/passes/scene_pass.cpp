@@ -10,6 +10,7 @@
 
 #include "engine/passes/frame_uniforms.hpp"
 #include "engine/passes/level_of_detail.hpp"
+#include "engine/passes/srgb.hpp"
 #include "engine/screen_projection.hpp"
 #include "engine/vulkan/pipelines.hpp"
 #include "engine/vulkan/vk_check.hpp"
@@ -534,7 +535,7 @@ RgbaImage ScenePass::read_capture(const TargetImages& target) const {
   VkExtent2D e = target.extent();
   RgbaImage out{e.width, e.height, std::vector<uint8_t>(size_t(e.width) * e.height * 4)};
   std::memcpy(out.pixels.data(), capture_buffer_.mapped(), out.pixels.size());
-  if (target.format() == VK_FORMAT_B8G8R8A8_SRGB || target.format() == VK_FORMAT_B8G8R8A8_UNORM) {
+  if (target.format() == VK_FORMAT_B8G8R8A8_UNORM) {
     for (size_t i = 0; i < out.pixels.size(); i += 4) std::swap(out.pixels[i], out.pixels[i + 2]);
   }
   return out;
@@ -590,7 +591,9 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
   std::sort(blended.begin(), blended.end(), [](const Draw& a, const Draw& b) { return a.depth > b.depth; });
 
   std::array<VkClearValue, 3> clears{};
-  clears[0].color = {{params.background.r, params.background.g, params.background.b, 1.0f}};
+  // The background is linear; the target holds encoded values (srgb.hpp).
+  clears[0].color = {{srgb_encode(params.background.r), srgb_encode(params.background.g), srgb_encode(params.background.b),
+                      1.0f}};
   clears[1].depthStencil = {1.0f, 0};
   clears[2].color = clears[0].color;
   VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};

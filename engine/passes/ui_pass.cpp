@@ -5,10 +5,13 @@
 #include <backends/imgui_impl_vulkan.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 #include "engine/passes/scene_pass.hpp"
+#include "engine/passes/srgb.hpp"
 #include "engine/vulkan/vk_check.hpp"
 #include "engine/vulkan/vulkan_context.hpp"
 #include "engine/window.hpp"
@@ -35,13 +38,32 @@ size_t font_for(Extent extent) {
 
 void check_imgui_vk(VkResult result) { vk_check(result, "ImGui Vulkan backend"); }
 
-// ImGui's style colours are sRGB values; our targets are sRGB formats that encode on write,
-// so the colours are decoded once here to keep the panels as ImGui designs them.
+// Panel colours are meant in linear light (ImGui's style colours, sRGB values, are decoded once
+// here; the panels' own colours are written as linear); the target holds sRGB-encoded values, so
+// every vertex colour is encoded after ImGui::Render (encode_vertex_colors).
 void linearise_style_colors() {
   for (ImVec4& c : ImGui::GetStyle().Colors) {
-    for (float* channel : {&c.x, &c.y, &c.z}) {
-      float v = *channel;
-      *channel = v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+    for (float* channel : {&c.x, &c.y, &c.z}) *channel = srgb_decode(*channel);
+  }
+}
+
+// Byte => encoded byte, for the vertex colours' red, green and blue (alpha stays linear coverage).
+std::array<uint8_t, 256> encoding_table() {
+  std::array<uint8_t, 256> table{};
+  for (size_t i = 0; i < table.size(); ++i) table[i] = uint8_t(std::lround(255.0f * srgb_encode(float(i) / 255.0f)));
+  return table;
+}
+
+// (the frame's draw lists, colours linear) => (the same, colours encoded). A few thousand vertices
+// a frame: about what one blended pixel row costs the device.
+void encode_vertex_colors(ImDrawData& data, const std::array<uint8_t, 256>& table) {
+  constexpr ImU32 kRgb = (0xFFu << IM_COL32_R_SHIFT) | (0xFFu << IM_COL32_G_SHIFT) | (0xFFu << IM_COL32_B_SHIFT);
+  for (int l = 0; l < data.CmdListsCount; ++l) {
+    for (ImDrawVert& v : data.CmdLists[l]->VtxBuffer) {
+      const ImU32 c = v.col;
+      v.col = (c & ~kRgb) | (ImU32(table[(c >> IM_COL32_R_SHIFT) & 0xFF]) << IM_COL32_R_SHIFT) |
+              (ImU32(table[(c >> IM_COL32_G_SHIFT) & 0xFF]) << IM_COL32_G_SHIFT) |
+              (ImU32(table[(c >> IM_COL32_B_SHIFT) & 0xFF]) << IM_COL32_B_SHIFT);
     }
   }
 }
@@ -55,6 +77,7 @@ struct UiPass::Backend {
   ImFont* fonts[std::size(kFontSizes_px)] = {};
   ImGuiStyle base_style;  // at 13 px
   size_t font = 0;        // the one in use
+  std::array<uint8_t, 256> encode = encoding_table();
 };
 
 UiPass::UiPass(const SceneRenderer& renderer, Window* window) : backend_(std::make_unique<Backend>()) {
@@ -135,6 +158,7 @@ void UiPass::begin_frame(Extent extent, float delta_s) {
 
 CommandRecorder UiPass::end_frame() {
   ImGui::Render();
+  encode_vertex_colors(*ImGui::GetDrawData(), backend_->encode);
   return [](const CommandBuffer& cmd) { ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd.handle); };
 }
 

@@ -10,10 +10,10 @@ namespace needle::engine {
 
 class HeadlessImage final : public TargetImages {
  public:
-  // sRGB RGBA8, so captured bytes are display-ready PNG pixels.
+  // RGBA8 holding sRGB-encoded values, so captured bytes are display-ready PNG pixels.
   HeadlessImage(const VulkanContext& context, VkExtent2D extent);
 
-  VkFormat format() const override { return VK_FORMAT_R8G8B8A8_SRGB; }
+  VkFormat format() const override { return VK_FORMAT_R8G8B8A8_UNORM; }
   VkExtent2D extent() const override { return image_.spec().extent; }
   const std::vector<VkImageView>& image_views() const override { return views_; }
   VkImage image(uint32_t) const override { return image_.image(); }

@@ -15,12 +15,14 @@ VkSurfaceFormatKHR choose_format(VkPhysicalDevice device, VkSurfaceKHR surface) 
   std::vector<VkSurfaceFormatKHR> formats(count);
   VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(device, surface, &count, formats.data()));
   if (formats.empty()) throw VulkanError("the window surface offers no formats");
-  for (VkFormat wanted : {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB}) {
+  // UNORM, holding sRGB-encoded values written by the shaders (docs/RENDERING.md, "Colour"): a
+  // CPU device encodes an sRGB format's every write, blend and blit texel in software.
+  for (VkFormat wanted : {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM}) {
     for (const auto& f : formats) {
       if (f.format == wanted && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) return f;
     }
   }
-  throw VulkanError("the window surface offers no 8-bit sRGB format");
+  throw VulkanError("the window surface offers no 8-bit UNORM format in the sRGB colour space");
 }
 
 }  // namespace

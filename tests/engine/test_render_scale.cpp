@@ -22,19 +22,16 @@ namespace {
 const std::filesystem::path kScene = test::source_dir() / "assets/scenes/penetrable_sphere.json";
 const ImVec2 kPanelPos(16, 16), kPanelSize(120, 60);
 
-double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
-double linear_to_srgb(double c) { return c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055; }
-
 // vkCmdBlitImage's linear filter over the whole images, computed on the CPU: the centre of target
 // pixel (x, y) maps to (x + 0.5) * small / large in the small image, whose texel centres are at
-// i + 0.5, clamped to its edge; sRGB texels are filtered in linear light (the Vulkan spec's
-// "Texel Filtering" and "Image Copies with Scaling").
+// i + 0.5, clamped to its edge; the targets are UNORM, so the bytes themselves are filtered (the
+// Vulkan spec's "Texel Filtering" and "Image Copies with Scaling").
 engine::RgbaImage bilinear_upscale(const engine::RgbaImage& small, uint32_t width, uint32_t height) {
   engine::RgbaImage out{width, height, std::vector<uint8_t>(size_t(width) * height * 4)};
   auto texel = [&](int x, int y, int c) {
     x = std::clamp(x, 0, int(small.width) - 1);
     y = std::clamp(y, 0, int(small.height) - 1);
-    return srgb_to_linear(small.pixels[(size_t(y) * small.width + x) * 4 + c] / 255.0);
+    return double(small.pixels[(size_t(y) * small.width + x) * 4 + c]);
   };
   for (uint32_t y = 0; y < height; ++y) {
     const double v = (y + 0.5) * small.height / height - 0.5;
@@ -45,9 +42,9 @@ engine::RgbaImage bilinear_upscale(const engine::RgbaImage& small, uint32_t widt
       const int x0 = int(std::floor(u));
       const double fx = u - x0;
       for (int c = 0; c < 3; ++c) {
-        const double l = (1 - fy) * ((1 - fx) * texel(x0, y0, c) + fx * texel(x0 + 1, y0, c)) +
+        const double b = (1 - fy) * ((1 - fx) * texel(x0, y0, c) + fx * texel(x0 + 1, y0, c)) +
                          fy * ((1 - fx) * texel(x0, y0 + 1, c) + fx * texel(x0 + 1, y0 + 1, c));
-        out.pixels[(size_t(y) * width + x) * 4 + c] = uint8_t(std::lround(255.0 * linear_to_srgb(l)));
+        out.pixels[(size_t(y) * width + x) * 4 + c] = uint8_t(std::lround(b));
       }
       out.pixels[(size_t(y) * width + x) * 4 + 3] = 255;
     }

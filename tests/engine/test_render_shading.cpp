@@ -144,8 +144,9 @@ TEST_F(RenderShading, BlendedSurfaceMixesWithWhatLiesBehind) {
   scene.lights.directional.clear();
   scene.lights.ambient = glm::vec3(1.0f);  // colour = base exactly
   engine::RgbaImage image = render(model, scene);
-  // 0.25 * white + 0.75 * black, blended in linear space before sRGB encoding.
-  EXPECT_NEAR(centre(image)[0], srgb_count(0.25), 1);
+  // 0.25 * white + 0.75 * black, blended as the target holds them, sRGB-encoded (a UNORM target,
+  // docs/RENDERING.md, "Colour"): white encodes to 255, black to 0.
+  EXPECT_NEAR(centre(image)[0], 0.25 * 255.0, 1);
 }
 
 TEST_F(RenderShading, MaskedTexelsBelowTheCutoffAreDiscarded) {
