@@ -1,6 +1,7 @@
 #include "app/auto_render_scale.hpp"
 
 #include <algorithm>
+#include <cstddef>
 
 namespace needle::app {
 
@@ -11,8 +12,13 @@ AutoRenderScale::AutoRenderScale(const AutoRenderScaleSettings& settings) : sett
 float AutoRenderScale::next(double frame_ms) {
   periods_.push_back(frame_ms);
   if (periods_.size() < settings_.frames) return scale();
-  std::nth_element(periods_.begin(), periods_.begin() + periods_.size() / 2, periods_.end());
-  const double median = periods_[periods_.size() / 2];
+  const auto at = [&](double share) {
+    const auto nth = periods_.begin() + ptrdiff_t(share * double(periods_.size() - 1) + 0.5);
+    std::nth_element(periods_.begin(), nth, periods_.end());
+    return *nth;
+  };
+  const double median = at(0.5);
+  const double tail = at(settings_.percentile);
   periods_.clear();
   if (hold_ > 0) --hold_;
   if (trying_) {
@@ -23,7 +29,7 @@ float AutoRenderScale::next(double frame_ms) {
       return scale();
     }
   }
-  if (median > settings_.budget_ms) {
+  if (tail > settings_.budget_ms) {
     if (step_ + 1 < kSteps.size() && hold_ == 0) {
       ++step_;
       trying_ = true;
@@ -31,7 +37,7 @@ float AutoRenderScale::next(double frame_ms) {
     }
   } else if (step_ > 0) {
     const double grow = double(kSteps[step_ - 1]) / double(kSteps[step_]);
-    if (median * grow * grow < settings_.headroom * settings_.budget_ms) --step_;
+    if (tail * grow * grow < settings_.headroom * settings_.budget_ms) --step_;
   }
   return scale();
 }

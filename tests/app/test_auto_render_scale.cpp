@@ -2,7 +2,8 @@
 // below scale 1 and a part that grows with the pixel count (fixed + upscale + per_pixels *
 // scale^2): it settles on the largest step whose frame fits the budget (found here by enumerating
 // the steps), holds it without swinging, climbs back when the frame gets cheaper, goes back up
-// when a lower step is no faster; one slow frame in a block moves nothing.
+// when a lower step is no faster; one slow frame in a block moves nothing, a tail of slow frames
+// does (the budget is held at the 95th percentile).
 #include <gtest/gtest.h>
 
 #include "app/auto_render_scale.hpp"
@@ -50,8 +51,7 @@ TEST(AutoRenderScale, SettlesOnTheLargestStepThatFitsAndHoldsIt) {
 TEST(AutoRenderScale, AFrameThatNeverFitsStopsAtTheSmallestStep) {
   app::AutoRenderScale control;
   const std::vector<float> scales = run(control, {40.0, 40.0}, 8);
-  EXPECT_FLOAT_EQ(scales[0], 0.7f);  // one step a block
-  EXPECT_FLOAT_EQ(scales[1], 0.5f);
+  EXPECT_FLOAT_EQ(scales[0], 0.5f);  // a step after the first block
   EXPECT_FLOAT_EQ(scales.back(), app::AutoRenderScale::kSteps.back());
 }
 
@@ -59,23 +59,47 @@ TEST(AutoRenderScale, ClimbsBackWhenTheFrameGetsCheaper) {
   app::AutoRenderScale control;
   run(control, {4.0, 40.0}, 8);  // a loaded machine: 0.5 (4 + 40 * 0.25 = 14 ms)
   EXPECT_FLOAT_EQ(control.scale(), 0.5f);
-  run(control, {2.0, 8.0}, 8);  // the load gone: every step fits with room
+  run(control, {1.0, 6.0}, 8);  // the load gone: 1 fits with room (7 ms; 2.5 ms at 0.5)
   EXPECT_FLOAT_EQ(control.scale(), 1.0f);
 }
 
 TEST(AutoRenderScale, ALowerStepThatIsNoFasterIsLeftAtOnceAndTriedAgainLater) {
-  // Over budget at scale 1 (30 ms), but the upscale costs more than 0.7 saves (33.9 ms).
+  // Over budget at scale 1 (30 ms), but the upscale costs more than 0.5 saves (31.5 ms).
   const ModelFrame m{20.0, 10.0, 9.0};
   app::AutoRenderScale control;
   const std::vector<float> scales = run(control, m, 100);
   size_t at_full = 0;
   for (size_t b = 0; b < scales.size(); ++b) {
     at_full += scales[b] == 1.0f;
-    if (b > 0 && scales[b - 1] < 1.0f) EXPECT_FLOAT_EQ(scales[b], 1.0f) << "block " << b << ": one block at 0.7, then back";
+    if (b > 0 && scales[b - 1] < 1.0f) EXPECT_FLOAT_EQ(scales[b], 1.0f) << "block " << b << ": one block at 0.5, then back";
   }
   const app::AutoRenderScaleSettings settings;
   EXPECT_GE(at_full, scales.size() - scales.size() / settings.hold_blocks - 1);
   EXPECT_LT(at_full, scales.size()) << "it tries again once the hold is over";
+}
+
+TEST(AutoRenderScale, AFrameWhoseMedianFitsButWhoseTailMissesIsLowered) {
+  // Every third frame does more (a page of the session written, the panel's plot redrawn): at
+  // scale 1 the median is 12 ms, within the budget, the 95th percentile 20 ms, not.
+  const ModelFrame typical{2.0, 10.0}, slow{2.0, 18.0};
+  const app::AutoRenderScaleSettings settings;
+  app::AutoRenderScale control;
+  for (int block = 0; block < 4; ++block)
+    for (size_t f = 0; f < settings.frames; ++f) control.next((f % 3 == 0 ? slow : typical).at(control.scale()));
+  // At 0.5 the median is 4.5 ms and the tail fits (6.5 ms); at 1 it did not (20 ms).
+  EXPECT_FLOAT_EQ(control.scale(), 0.5f);
+}
+
+TEST(AutoRenderScale, AStepThatMakesTheFrameCheaperIsKeptThoughItsBlockHadSlowFrames) {
+  // 20 ms at scale 1; 0.5 quarters it, but its first block also holds two 100 ms frames (the scaled
+  // scene's images made, a swapchain re-created). The trial is judged on the typical frame.
+  const ModelFrame m{0.0, 20.0};
+  const app::AutoRenderScaleSettings settings;
+  app::AutoRenderScale control;
+  for (size_t f = 0; f < settings.frames; ++f) control.next(m.at(control.scale()));
+  ASSERT_FLOAT_EQ(control.scale(), 0.5f);
+  for (size_t f = 0; f < settings.frames; ++f) control.next(f < 2 ? 100.0 : m.at(control.scale()));
+  EXPECT_LT(control.scale(), 1.0f) << "the step down was kept";
 }
 
 TEST(AutoRenderScale, OneSlowFrameInABlockMovesNothing) {
