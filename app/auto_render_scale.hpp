@@ -2,7 +2,7 @@
 // is fixed; docs/RENDERING.md, "Render scale"): lowered a step while the frame's tail (its 95th
 // percentile, what issue 19's goal is stated on) misses its budget, back up at once when the lower
 // step did not make the typical (median) frame faster (the upscale has its own cost: on llvmpipe
-// about what a 0.85 scale saves), and raised a step when the tail at the larger scale would still
+// about what a 0.7 scale saves), and raised a step when the tail at the larger scale would still
 // fit with room to spare.
 #pragma once
 
@@ -26,8 +26,9 @@ struct AutoRenderScaleSettings {
   // budget, so that the scale does not swing between two steps.
   double headroom = 0.8;
   // Design value: a step down is kept only when its first block's median is under this share of
-  // the step above's (medians, as a block's tail is a frame or two, too few to compare); otherwise the scale goes back up and stays for `hold_blocks` blocks (about
-  // 10 s at 60 fps) before trying again, as the machine's load may have changed by then.
+  // the step above's (medians, as a block's tail is a frame or two, too few to compare);
+  // otherwise the scale goes back up and stays for `hold_blocks` blocks (about 10 s at 60 fps)
+  // before trying again, as the machine's load may have changed by then.
   double min_gain = 0.95;
   size_t hold_blocks = 20;
 };
@@ -37,8 +38,8 @@ class AutoRenderScale {
   // Measured: in the trainee's window at 1280x720 on llvmpipe, 0.7 is no faster than 1 (the
   // upscale's blit costs what the smaller scene saves: 19.2 against 19.3 ms median), so a step to
   // 0.7 was judged no faster and undone; 0.5 quarters the scene's pixels (15.3 ms,
-  // docs/BENCHMARKS.md, "The render scale on the tail"). Design value: below half the width and height the
-  // picture gets too soft to judge a needle's tip by.
+  // docs/BENCHMARKS.md, "The render scale on the tail"). Design value: below half the width and
+  // height the picture gets too soft to judge a needle's tip by.
   static constexpr std::array<float, 2> kSteps{1.0f, 0.5f};
 
   explicit AutoRenderScale(const AutoRenderScaleSettings& settings = {});

@@ -55,7 +55,7 @@ std::array<uint8_t, 256> encoding_table() {
 }
 
 // (the frame's draw lists, colours linear) => (the same, colours encoded). A few thousand vertices
-// a frame: about what one blended pixel row costs the device.
+// a frame: the panels' CPU time (`ui_build_cpu`, docs/BENCHMARKS.md, "UNORM targets") did not move.
 void encode_vertex_colors(ImDrawData& data, const std::array<uint8_t, 256>& table) {
   constexpr ImU32 kRgb = (0xFFu << IM_COL32_R_SHIFT) | (0xFFu << IM_COL32_G_SHIFT) | (0xFFu << IM_COL32_B_SHIFT);
   for (int l = 0; l < data.CmdListsCount; ++l) {
