@@ -96,7 +96,7 @@ TEST_F(RenderScale, TheUpscaleIsTheSmallSceneBilinearlySpreadOverTheTarget) {
     const engine::RgbaImage scaled = draw(renderer, target, scene, nullptr, scale);
     int worst = 0;
     for (size_t i = 0; i < scaled.pixels.size(); i += 4) worst = std::max(worst, channel_difference(scaled, reference, i));
-    // The device filters in fixed point and rounds through sRGB: 1 count at most on llvmpipe (2
+    // The device filters in fixed point: 1 count at most on llvmpipe with UNORM targets (2
     // allowed); a missing, shifted or nearest-filtered blit differs by tens of counts at edges.
     EXPECT_LE(worst, 2) << "scale " << scale;
   }
