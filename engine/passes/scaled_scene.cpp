@@ -1,15 +1,63 @@
 #include "engine/passes/scaled_scene.hpp"
 
+#include "engine/vulkan/pipelines.hpp"
 #include "engine/vulkan/target_images.hpp"
 #include "engine/vulkan/vk_check.hpp"
 #include "engine/vulkan/vulkan_context.hpp"
+#include "spirv/upscale_frag.h"
 
 namespace needle::engine {
+namespace {
 
-ScaledScene::ScaledScene(const VulkanContext& context) : context_(context) {}
+// Colour only, its contents replaced whole (DONT_CARE), left for the overlay's pass to load.
+VkRenderPass make_upscale_pass(VkDevice device, VkFormat format) {
+  VkAttachmentDescription color{};
+  color.format = format;
+  color.samples = VK_SAMPLE_COUNT_1_BIT;
+  color.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  color.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  color.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  color.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  color.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  VkAttachmentReference color_ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &color_ref;
+  // Samples what the scene's pass wrote; writes the target image after its last frame's colour
+  // writes or read-back copy.
+  VkSubpassDependency dependency{};
+  dependency.srcSubpass = VK_SUBPASS_EXTERNAL;
+  dependency.dstSubpass = 0;
+  dependency.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
+  dependency.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  dependency.dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependency.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.attachmentCount = 1;
+  info.pAttachments = &color;
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = 1;
+  info.pDependencies = &dependency;
+  VkRenderPass pass;
+  VK_CHECK(vkCreateRenderPass(device, &info, nullptr, &pass));
+  return pass;
+}
+
+}  // namespace
+
+ScaledScene::ScaledScene(const VulkanContext& context, VkFormat target_format)
+    : context_(context),
+      device_(context.device()),
+      upscale_pass_(make_upscale_pass(device_, target_format)),
+      quad_(device_, upscale_frag_spv, sizeof(upscale_frag_spv), upscale_pass_, VK_SAMPLE_COUNT_1_BIT) {}
 
 ScaledScene::~ScaledScene() {
-  if (framebuffer_) vkDestroyFramebuffer(context_.device(), framebuffer_, nullptr);
+  destroy_target_framebuffers();
+  if (framebuffer_) vkDestroyFramebuffer(device_, framebuffer_, nullptr);
+  vkDestroyRenderPass(device_, upscale_pass_, nullptr);  // the pipeline made for it may outlive it
 }
 
 std::string ScaledScene::unsupported(const VulkanContext& context, const TargetImages& target,
@@ -19,51 +67,53 @@ std::string ScaledScene::unsupported(const VulkanContext& context, const TargetI
            std::to_string(int(samples)) + " samples";
   VkFormatProperties properties{};
   vkGetPhysicalDeviceFormatProperties(context.physical_device(), target.format(), &properties);
-  const VkFormatFeatureFlags needed =
-      VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
-  if ((properties.optimalTilingFeatures & needed) != needed)
-    return "the device cannot blit the target's colour format (VkFormat " + std::to_string(int(target.format())) +
+  if (!(properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
+    return "the device cannot sample the target's colour format (VkFormat " + std::to_string(int(target.format())) +
            ") with linear filtering";
-  if (!target.accepts_transfer_writes()) return "the target's images (the window's surface) take no transfer writes";
   return {};
 }
 
-void ScaledScene::ensure(VkExtent2D extent, VkFormat color_format, VkFormat depth_format, VkRenderPass scene_pass) {
+void ScaledScene::ensure(VkExtent2D extent, VkFormat color_format, VkFormat depth_format, VkRenderPass scene_pass,
+                         const TargetImages& target) {
   const VkExtent2D now = color_.spec().extent;
-  if (framebuffer_ && now.width == extent.width && now.height == extent.height) return;
+  const VkExtent2D full = target.extent();
+  const bool scene_fits = framebuffer_ && now.width == extent.width && now.height == extent.height;
+  const bool target_fits = !target_framebuffers_.empty() && target_generation_ == target.generation() &&
+                           target_extent_.width == full.width && target_extent_.height == full.height;
+  if (scene_fits && target_fits) return;
   vkQueueWaitIdle(context_.queue());
-  if (framebuffer_) vkDestroyFramebuffer(context_.device(), framebuffer_, nullptr);
-  framebuffer_ = VK_NULL_HANDLE;
-  color_ = GpuImage(context_, {extent, color_format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
-  depth_ = GpuImage(context_, {extent, depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_SAMPLE_COUNT_1_BIT,
-                               VK_IMAGE_ASPECT_DEPTH_BIT});
-  const VkImageView views[] = {color_.view(), depth_.view()};
-  VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-  info.renderPass = scene_pass;
-  info.attachmentCount = 2;
-  info.pAttachments = views;
-  info.width = extent.width;
-  info.height = extent.height;
-  info.layers = 1;
-  VK_CHECK(vkCreateFramebuffer(context_.device(), &info, nullptr, &framebuffer_));
+  if (!scene_fits) {
+    if (framebuffer_) vkDestroyFramebuffer(device_, framebuffer_, nullptr);
+    framebuffer_ = VK_NULL_HANDLE;
+    color_ = GpuImage(context_, {extent, color_format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT});
+    depth_ = GpuImage(context_, {extent, depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_SAMPLE_COUNT_1_BIT,
+                                 VK_IMAGE_ASPECT_DEPTH_BIT});
+    framebuffer_ = make_framebuffer(device_, scene_pass, {color_.view(), depth_.view()}, extent);
+    quad_.set_image(color_.view());
+  }
+  if (!target_fits) {
+    destroy_target_framebuffers();
+    for (VkImageView view : target.image_views())
+      target_framebuffers_.push_back(make_framebuffer(device_, upscale_pass_, {view}, full));
+    target_generation_ = target.generation();
+    target_extent_ = full;
+  }
 }
 
-void ScaledScene::record_upscale(VkCommandBuffer cmd, VkImage target, VkExtent2D target_extent) const {
-  // The target's last frame may have been drawn into (colour output) or read back (transfer): its
-  // contents are replaced whole, so only those must be over.
-  transition_image(cmd, target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                   VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-  const VkExtent2D scene = extent();
-  VkImageBlit region{};
-  region.srcSubresource = region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.srcOffsets[1] = {int32_t(scene.width), int32_t(scene.height), 1};
-  region.dstOffsets[1] = {int32_t(target_extent.width), int32_t(target_extent.height), 1};
-  vkCmdBlitImage(cmd, color_.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                 &region, VK_FILTER_LINEAR);
-  transition_image(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                   VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                   VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+void ScaledScene::destroy_target_framebuffers() {
+  for (VkFramebuffer f : target_framebuffers_) vkDestroyFramebuffer(device_, f, nullptr);
+  target_framebuffers_.clear();
+}
+
+void ScaledScene::record_upscale(VkCommandBuffer cmd, uint32_t image) const {
+  VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  pass.renderPass = upscale_pass_;
+  pass.framebuffer = target_framebuffers_[image];
+  pass.renderArea = {{0, 0}, target_extent_};
+  vkCmdBeginRenderPass(cmd, &pass, VK_SUBPASS_CONTENTS_INLINE);
+  const VkViewport viewport{0.0f, 0.0f, float(target_extent_.width), float(target_extent_.height), 0.0f, 1.0f};
+  quad_.record(cmd, viewport, {{0, 0}, target_extent_});
+  vkCmdEndRenderPass(cmd);
 }
 
 }  // namespace needle::engine

@@ -83,9 +83,9 @@ void ScenePass::set_render_scale(const TargetImages& target, float scale) {
   if (scale < 1.0f && !scaled_) {
     if (const std::string why = ScaledScene::unsupported(context_, target, samples_); !why.empty())
       throw std::invalid_argument("render scale " + std::to_string(scale) + ": " + why);
-    scaled_pass_ = make_render_pass(VK_ATTACHMENT_LOAD_OP_CLEAR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    scaled_pass_ = make_render_pass(VK_ATTACHMENT_LOAD_OP_CLEAR, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     overlay_pass_ = make_render_pass(VK_ATTACHMENT_LOAD_OP_LOAD, target.final_layout());
-    scaled_ = std::make_unique<ScaledScene>(context_);
+    scaled_ = std::make_unique<ScaledScene>(context_, color_format_);
   }
   render_scale_ = scale;
 }
@@ -176,13 +176,15 @@ VkRenderPass ScenePass::make_render_pass(VkAttachmentLoadOp load, VkImageLayout 
   subpass.pDepthStencilAttachment = &depth_ref;
   subpass.pResolveAttachments = msaa ? &resolve_ref : nullptr;
 
-  // The colour, depth and MSAA images are reused by consecutive frames, and a read-back copy
-  // may have read the last one: order this frame's attachment writes after all of those.
+  // The colour, depth and MSAA images are reused by consecutive frames, and a read-back copy or
+  // the render scale's upscale (a fragment shader) may have read the last one: order this frame's
+  // attachment writes after all of those.
   VkSubpassDependency dependency{};
   dependency.srcSubpass = VK_SUBPASS_EXTERNAL;
   dependency.dstSubpass = 0;
   dependency.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-                            VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
+                            VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
+                            VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
   dependency.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
   dependency.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
                             VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
@@ -364,18 +366,9 @@ void ScenePass::ensure_framebuffers(const TargetImages& target) {
   depth_ = GpuImage(context_, {extent, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, samples_,
                                VK_IMAGE_ASPECT_DEPTH_BIT});
   for (VkImageView target_view : target.image_views()) {
-    std::vector<VkImageView> views = msaa ? std::vector<VkImageView>{msaa_color_.view(), depth_.view(), target_view}
-                                          : std::vector<VkImageView>{target_view, depth_.view()};
-    VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-    info.renderPass = render_pass_;
-    info.attachmentCount = uint32_t(views.size());
-    info.pAttachments = views.data();
-    info.width = extent.width;
-    info.height = extent.height;
-    info.layers = 1;
-    VkFramebuffer framebuffer;
-    VK_CHECK(vkCreateFramebuffer(device_, &info, nullptr, &framebuffer));
-    framebuffers_.push_back(framebuffer);
+    const std::vector<VkImageView> views = msaa ? std::vector<VkImageView>{msaa_color_.view(), depth_.view(), target_view}
+                                                : std::vector<VkImageView>{target_view, depth_.view()};
+    framebuffers_.push_back(make_framebuffer(device_, render_pass_, views, extent));
     VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
     VkSemaphore done;
     VK_CHECK(vkCreateSemaphore(device_, &semaphore, nullptr, &done));
@@ -429,7 +422,7 @@ bool ScenePass::draw(TargetImages& target, const FrameParams& params, RgbaImage*
   if (!image) return false;
   ensure_framebuffers(target);
   const VkExtent2D scene = scene_extent(target.extent());
-  if (render_scale_ < 1.0f) scaled_->ensure(scene, color_format_, kDepthFormat, scaled_pass_);
+  if (render_scale_ < 1.0f) scaled_->ensure(scene, color_format_, kDepthFormat, scaled_pass_, target);
   VK_CHECK(vkResetFences(device_, 1, &slot.done));
 
   fill_uniforms(slot, target.extent(), params);
@@ -445,9 +438,9 @@ bool ScenePass::draw(TargetImages& target, const FrameParams& params, RgbaImage*
 
   t = Clock::now();
   const bool semaphores = target.uses_semaphores();
-  // The image is first written by the scene's pass, or at a render scale below 1 by the upscale's blit.
+  // The image is first written as a colour attachment: by the scene's pass, or at a render scale
+  // below 1 by the upscale's.
   VkPipelineStageFlags wait_stage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-  if (render_scale_ < 1.0f) wait_stage |= VK_PIPELINE_STAGE_TRANSFER_BIT;
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.waitSemaphoreCount = semaphores ? 1 : 0;
   submit.pWaitSemaphores = &slot.image_ready;
@@ -651,7 +644,7 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
   if (scaled) {
     vkCmdEndRenderPass(cmd);
     if (timed) write_timestamp(cmd, 2, false);
-    scaled_->record_upscale(cmd, target.image(image), full);
+    scaled_->record_upscale(cmd, image);
     if (timed) write_timestamp(cmd, 3, false);
     // The overlay over the upscaled scene, at the target's full resolution.
     pass.renderPass = overlay_pass_;

@@ -1,10 +1,11 @@
 // Draws the ultrasound image (UltrasoundPass's storage image, sampled) into a rectangle of a
 // scene renderer's frame, inside its render pass, after the UI pass: one quad, no depth test
-// (shaders/ultrasound_show.*).
+// (shaders/viewport_quad.vert, shaders/ultrasound_show.frag).
 #pragma once
 
 #include <vulkan/vulkan.h>
 
+#include "engine/passes/viewport_quad.hpp"
 #include "engine/ultrasound.hpp"
 
 namespace needle::engine {
@@ -15,7 +16,6 @@ class UltrasoundPass;
 class UltrasoundDisplay {
  public:
   UltrasoundDisplay(const ScenePass& scene_pass, const UltrasoundPass& ultrasound);
-  ~UltrasoundDisplay();
   UltrasoundDisplay(const UltrasoundDisplay&) = delete;
   UltrasoundDisplay& operator=(const UltrasoundDisplay&) = delete;
 
@@ -25,13 +25,7 @@ class UltrasoundDisplay {
 
  private:
   const ScenePass& scene_pass_;
-  VkDevice device_;
-  VkSampler sampler_ = VK_NULL_HANDLE;
-  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
-  VkDescriptorPool pool_ = VK_NULL_HANDLE;
-  VkDescriptorSet set_ = VK_NULL_HANDLE;
-  VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
-  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  ViewportQuad quad_;
 };
 
 }  // namespace needle::engine

@@ -3,9 +3,7 @@
 namespace needle::engine {
 
 HeadlessImage::HeadlessImage(const VulkanContext& context, VkExtent2D extent)
-    : image_(context, {extent, VK_FORMAT_R8G8B8A8_UNORM,
-                       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                           VK_IMAGE_USAGE_TRANSFER_DST_BIT}),
+    : image_(context, {extent, kHeadlessFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT}),
       views_{image_.view()} {}
 
 }  // namespace needle::engine

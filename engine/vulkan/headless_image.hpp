@@ -10,17 +10,19 @@ namespace needle::engine {
 
 class HeadlessImage final : public TargetImages {
  public:
-  // RGBA8 holding sRGB-encoded values, so captured bytes are display-ready PNG pixels.
+  // BGRA8 holding sRGB-encoded values, as a window's: llvmpipe's linear path (the render scale's
+  // upscale, shaders/viewport_quad.vert) takes only BGRA colour buffers in Mesa 22.3. Captures
+  // come back as RGBA, display-ready PNG pixels (ScenePass::read_capture).
+  static constexpr VkFormat kHeadlessFormat = VK_FORMAT_B8G8R8A8_UNORM;
   HeadlessImage(const VulkanContext& context, VkExtent2D extent);
 
-  VkFormat format() const override { return VK_FORMAT_R8G8B8A8_UNORM; }
+  VkFormat format() const override { return kHeadlessFormat; }
   VkExtent2D extent() const override { return image_.spec().extent; }
   const std::vector<VkImageView>& image_views() const override { return views_; }
   VkImage image(uint32_t) const override { return image_.image(); }
   VkImageLayout final_layout() const override { return VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL; }
   uint64_t generation() const override { return 1; }
   bool uses_semaphores() const override { return false; }
-  bool accepts_transfer_writes() const override { return true; }
   std::optional<uint32_t> acquire(VkSemaphore) override { return 0; }
   void present(uint32_t, VkSemaphore) override {}
 

@@ -1,6 +1,6 @@
 // The Vulkan objects every pass makes the same way: shader modules, a descriptor set layout, a
-// pipeline layout of one set, a compute pipeline, and a graphics pipeline from its states with
-// one colour attachment and the viewport and scissor dynamic.
+// pipeline layout of one set, a compute pipeline, a graphics pipeline from its states with one
+// colour attachment and the viewport and scissor dynamic, and a framebuffer.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -33,5 +33,9 @@ struct GraphicsPipelineStates {
 };
 // The result of vkCreateGraphicsPipelines, for the caller to free its modules before throwing.
 VkResult create_graphics_pipeline(VkDevice device, const GraphicsPipelineStates& states, VkPipeline* pipeline);
+
+// A framebuffer of `render_pass` over `attachments` (in the pass's order), one layer of `extent`.
+VkFramebuffer make_framebuffer(VkDevice device, VkRenderPass render_pass, const std::vector<VkImageView>& attachments,
+                               VkExtent2D extent);
 
 }  // namespace needle::engine

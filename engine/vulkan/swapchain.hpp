@@ -23,7 +23,6 @@ class Swapchain final : public TargetImages {
   VkImageLayout final_layout() const override { return VK_IMAGE_LAYOUT_PRESENT_SRC_KHR; }
   uint64_t generation() const override { return generation_; }
   bool uses_semaphores() const override { return true; }
-  bool accepts_transfer_writes() const override { return transfer_dst_; }
   std::optional<uint32_t> acquire(VkSemaphore image_ready) override;
   void present(uint32_t index, VkSemaphore render_done) override;
   // WindowTarget::set_presentation.
@@ -42,7 +41,6 @@ class Swapchain final : public TargetImages {
   std::vector<VkImageView> views_;
   uint64_t generation_ = 0;
   VkPresentModeKHR present_mode_ = VK_PRESENT_MODE_FIFO_KHR;
-  bool transfer_dst_ = false;  // the surface lets its images take transfer writes (the render scale's blit)
   bool stale_ = false;  // set by present on out-of-date/suboptimal; recreate before the next acquire
 };
 

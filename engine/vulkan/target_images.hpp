@@ -25,8 +25,6 @@ class TargetImages {
   virtual uint64_t generation() const = 0;
   // Swapchains hand images over with semaphores; an offscreen image needs none.
   virtual bool uses_semaphores() const = 0;
-  // The images take transfer writes (a blit: the render scale's upscale).
-  virtual bool accepts_transfer_writes() const = 0;
 
   // Index of the image to draw into next, or nullopt when no frame can be drawn now
   // (minimised window, swapchain being recreated). Signals `image_ready` when uses_semaphores().

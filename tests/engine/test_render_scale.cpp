@@ -1,6 +1,6 @@
-// The render scale (docs/RENDERING.md, "Render scale"): the scene drawn smaller and blitted over
+// The render scale (docs/RENDERING.md, "Render scale"): the scene drawn smaller and upscaled over
 // the target with linear filtering is, pixel for pixel, the small picture bilinearly spread over
-// the target (a CPU reference of the blit); the overlay drawn after it stays at full resolution;
+// the target (a CPU reference of the filter); the overlay drawn after it stays at full resolution;
 // the scale changes from frame to frame; what the upscale cannot do is refused, naming why.
 // Validation-clean (the fixture).
 #include <gtest/gtest.h>
@@ -22,10 +22,10 @@ namespace {
 const std::filesystem::path kScene = test::source_dir() / "assets/scenes/penetrable_sphere.json";
 const ImVec2 kPanelPos(16, 16), kPanelSize(120, 60);
 
-// vkCmdBlitImage's linear filter over the whole images, computed on the CPU: the centre of target
-// pixel (x, y) maps to (x + 0.5) * small / large in the small image, whose texel centres are at
-// i + 0.5, clamped to its edge; the targets are UNORM, so the bytes themselves are filtered (the
-// Vulkan spec's "Texel Filtering" and "Image Copies with Scaling").
+// A linear-filtered sample of the whole small image at each target pixel's centre, computed on the
+// CPU: the centre of target pixel (x, y) maps to (x + 0.5) * small / large in the small image,
+// whose texel centres are at i + 0.5, clamped to its edge; the targets are UNORM, so the bytes
+// themselves are filtered (the Vulkan spec's "Texel Filtering").
 engine::RgbaImage bilinear_upscale(const engine::RgbaImage& small, uint32_t width, uint32_t height) {
   engine::RgbaImage out{width, height, std::vector<uint8_t>(size_t(width) * height * 4)};
   auto texel = [&](int x, int y, int c) {
@@ -96,9 +96,11 @@ TEST_F(RenderScale, TheUpscaleIsTheSmallSceneBilinearlySpreadOverTheTarget) {
     const engine::RgbaImage scaled = draw(renderer, target, scene, nullptr, scale);
     int worst = 0;
     for (size_t i = 0; i < scaled.pixels.size(); i += 4) worst = std::max(worst, channel_difference(scaled, reference, i));
-    // The device filters in fixed point: 1 count at most on llvmpipe with UNORM targets (2
-    // allowed); a missing, shifted or nearest-filtered blit differs by tens of counts at edges.
-    EXPECT_LE(worst, 2) << "scale " << scale;
+    // The device filters in fixed point: llvmpipe's linear path weighs with 8 bits and rounds
+    // each of its two lerps (across, then down) to 8 bits, up to a count or so from each: 3 at
+    // most here (2 pixels of 76 800 at 0.7; 2 at 0.5). A missing, shifted or nearest-filtered
+    // upscale differs by tens of counts at edges.
+    EXPECT_LE(worst, 3) << "scale " << scale;
   }
 }
 

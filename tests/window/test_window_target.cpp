@@ -1,6 +1,6 @@
 // The swapchain target under Xvfb: frames are presented, a resize recreates the swapchain at
 // the new size (new generation, new framebuffers), also at a render scale below 1 (the scene's
-// smaller attachments follow, the blit goes into the swapchain's images), and none of it draws a
+// smaller attachments follow, the upscale's framebuffers over the swapchain's images too), and none of it draws a
 // validation message.
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
