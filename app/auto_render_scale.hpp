@@ -1,8 +1,9 @@
 // The render scale chosen from the frame's own period (TraineeFrame on a CPU device when no scale
 // is fixed; docs/RENDERING.md, "Render scale"): lowered a step while the frame's tail (its 95th
-// percentile, what issue 19's goal is stated on) misses its budget, back up at once when the lower
-// step did not make the typical (median) frame faster (the upscale has its own cost), and raised
-// a step when the tail at the larger scale would still fit with room to spare.
+// percentile, what issue 19's goal is stated on) misses its budget; a lower step that did not make
+// the typical (median) frame faster (the upscale has its own cost) is passed over for the next,
+// and when none did, back up to where the trials started; raised a step when the tail at the
+// larger scale would still fit with room to spare.
 #pragma once
 
 #include <array>
@@ -24,11 +25,15 @@ struct AutoRenderScaleSettings {
   // pixel count (an overestimate: the UI and presentation do not), is under this share of the
   // budget, so that the scale does not swing between two steps.
   double headroom = 0.8;
-  // Design value: a step down is kept only when its first block's median is under this share of
-  // the step above's (medians, as a block's tail is a frame or two, too few to compare);
-  // otherwise the scale goes back up and stays for `hold_blocks` blocks (about 10 s at 60 fps)
-  // before trying again, as the machine's load may have changed by then.
-  double min_gain = 0.95;
+  // Design value: a step down is kept unless its first block's median is over this share of the
+  // median of the step the trials left (medians, as a block's tail is a frame or two, too few to
+  // compare); otherwise the next step down is tried, and when none is faster the scale goes back
+  // up and stays for `hold_blocks` blocks (about 10 s at 60 fps) before trying again, as the
+  // machine's load may have changed by then. Not a margin: in the window on llvmpipe two blocks'
+  // medians at the same scale differ by up to a quarter (13.9 then 17.5 ms), more than the gain
+  // of a step (0.84 of the frame), so a margin refused steps that pay and held a frame that
+  // missed its budget for the whole hold; a step kept that is no faster costs sharpness only.
+  double min_gain = 1.0;
   size_t hold_blocks = 20;
 };
 
@@ -50,7 +55,8 @@ class AutoRenderScale {
   size_t step_ = 0;
   std::vector<double> periods_;  // of the frames since the last decision
   bool trying_ = false;          // the last decision stepped down: the next block judges it
-  double above_ms_ = 0.0;        // the median period of the block before that step
+  size_t left_step_ = 0;         // the step the trials left
+  double above_ms_ = 0.0;        // the median period of its last block
   size_t hold_ = 0;              // blocks left before stepping down again
 };
 
