@@ -78,10 +78,10 @@ struct RendererSettings {
   // out (the same picture). Off only to measure what it saves (`bench frame --variants`).
   bool cull_cut_away = true;
   // The scene's meshes drawn at this fraction of the target's width and height, in (0, 1], then
-  // blitted over the target with linear filtering before the overlay, drawn at full resolution:
-  // fewer pixels to shade where they cost the frame (a CPU device). Below 1 it needs MSAA 1, a
-  // colour format the device blits with linear filtering and a target that takes transfer writes
-  // (std::invalid_argument naming what is missing). docs/RENDERING.md, "Render scale".
+  // upscaled over the target with linear filtering before the overlay, drawn at full resolution:
+  // fewer pixels to shade where they cost the frame (a CPU device). Below 1 it needs MSAA 1 and a
+  // colour format the device samples with linear filtering (std::invalid_argument naming what is
+  // missing). docs/RENDERING.md, "Render scale".
   float render_scale = 1.0f;
 };
 
@@ -99,7 +99,7 @@ struct FrameCost {
   double present_ms = 0.0;    // presenting (a CPU device's window copies the finished frame to the display)
   PassCost before_pass;       // FrameParams::before_pass: tissue deformation
   PassCost scene;             // the scene's meshes
-  PassCost upscale;           // at a render scale below 1, the blit of the scene over the target (device only)
+  PassCost upscale;           // at a render scale below 1, the scene's upscale over the target (device only)
   PassCost overlay;           // FrameParams::overlay: the UI
 };
 

@@ -29,7 +29,9 @@ TEST(Settings, LiveInTheUsersConfigFolder) {
   EXPECT_EQ(app::default_settings_file(), fs::path("/tmp/cfg/needle-sim/settings.json"));
   unsetenv("XDG_CONFIG_HOME");
   const char* home = std::getenv("HOME");
-  if (home) EXPECT_EQ(app::default_settings_file(), fs::path(home) / ".config/needle-sim/settings.json");
+  if (home) {
+    EXPECT_EQ(app::default_settings_file(), fs::path(home) / ".config/needle-sim/settings.json");
+  }
   if (old) setenv("XDG_CONFIG_HOME", kept.c_str(), 1);
 }
 
