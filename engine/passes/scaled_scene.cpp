@@ -48,10 +48,12 @@ VkRenderPass make_upscale_pass(VkDevice device, VkFormat format) {
 
 }  // namespace
 
-ScaledScene::ScaledScene(const VulkanContext& context, VkFormat target_format)
+ScaledScene::ScaledScene(const VulkanContext& context, VkFormat color_format, VkFormat depth_format)
     : context_(context),
       device_(context.device()),
-      upscale_pass_(make_upscale_pass(device_, target_format)),
+      color_format_(color_format),
+      depth_format_(depth_format),
+      upscale_pass_(make_upscale_pass(device_, color_format)),
       quad_(device_, upscale_frag_spv, sizeof(upscale_frag_spv), upscale_pass_, VK_SAMPLE_COUNT_1_BIT) {}
 
 ScaledScene::~ScaledScene() {
@@ -73,8 +75,7 @@ std::string ScaledScene::unsupported(const VulkanContext& context, const TargetI
   return {};
 }
 
-void ScaledScene::ensure(VkExtent2D extent, VkFormat color_format, VkFormat depth_format, VkRenderPass scene_pass,
-                         const TargetImages& target) {
+void ScaledScene::ensure(VkExtent2D extent, VkRenderPass scene_pass, const TargetImages& target) {
   const VkExtent2D now = color_.spec().extent;
   const VkExtent2D full = target.extent();
   const bool scene_fits = framebuffer_ && now.width == extent.width && now.height == extent.height;
@@ -85,8 +86,8 @@ void ScaledScene::ensure(VkExtent2D extent, VkFormat color_format, VkFormat dept
   if (!scene_fits) {
     if (framebuffer_) vkDestroyFramebuffer(device_, framebuffer_, nullptr);
     framebuffer_ = VK_NULL_HANDLE;
-    color_ = GpuImage(context_, {extent, color_format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT});
-    depth_ = GpuImage(context_, {extent, depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_SAMPLE_COUNT_1_BIT,
+    color_ = GpuImage(context_, {extent, color_format_, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT});
+    depth_ = GpuImage(context_, {extent, depth_format_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_SAMPLE_COUNT_1_BIT,
                                  VK_IMAGE_ASPECT_DEPTH_BIT});
     framebuffer_ = make_framebuffer(device_, scene_pass, {color_.view(), depth_.view()}, extent);
     quad_.set_image(color_.view());

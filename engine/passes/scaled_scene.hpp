@@ -22,8 +22,9 @@ class TargetImages;
 
 class ScaledScene {
  public:
-  // The upscale's pass and pipeline for targets of `target_format`.
-  ScaledScene(const VulkanContext& context, VkFormat target_format);
+  // The upscale's pass and pipeline for targets of `color_format`, the scene's attachments in it
+  // and `depth_format`.
+  ScaledScene(const VulkanContext& context, VkFormat color_format, VkFormat depth_format);
   ~ScaledScene();
   ScaledScene(const ScaledScene&) = delete;
   ScaledScene& operator=(const ScaledScene&) = delete;
@@ -33,11 +34,10 @@ class ScaledScene {
   // samples with linear filtering.
   static std::string unsupported(const VulkanContext& context, const TargetImages& target, VkSampleCountFlagBits samples);
 
-  // Attachments of `extent` (colour in `color_format`, depth in `depth_format`) and their
-  // framebuffer for `scene_pass`, and the upscale's framebuffers over `target`'s images; each
-  // replaced (after the device is idle) when its extent or the target's images change.
-  void ensure(VkExtent2D extent, VkFormat color_format, VkFormat depth_format, VkRenderPass scene_pass,
-              const TargetImages& target);
+  // Attachments of `extent` and their framebuffer for `scene_pass`, and the upscale's
+  // framebuffers over `target`'s images; each replaced (after the device is idle) when its extent
+  // or the target's images change.
+  void ensure(VkExtent2D extent, VkRenderPass scene_pass, const TargetImages& target);
   VkFramebuffer framebuffer() const { return framebuffer_; }
   VkExtent2D extent() const { return color_.spec().extent; }
 
@@ -50,6 +50,8 @@ class ScaledScene {
 
   const VulkanContext& context_;
   VkDevice device_;
+  VkFormat color_format_;
+  VkFormat depth_format_;
   GpuImage color_;
   GpuImage depth_;
   VkFramebuffer framebuffer_ = VK_NULL_HANDLE;

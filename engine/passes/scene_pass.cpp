@@ -85,7 +85,7 @@ void ScenePass::set_render_scale(const TargetImages& target, float scale) {
       throw std::invalid_argument("render scale " + std::to_string(scale) + ": " + why);
     scaled_pass_ = make_render_pass(VK_ATTACHMENT_LOAD_OP_CLEAR, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     overlay_pass_ = make_render_pass(VK_ATTACHMENT_LOAD_OP_LOAD, target.final_layout());
-    scaled_ = std::make_unique<ScaledScene>(context_, color_format_);
+    scaled_ = std::make_unique<ScaledScene>(context_, color_format_, kDepthFormat);
   }
   render_scale_ = scale;
 }
@@ -422,7 +422,7 @@ bool ScenePass::draw(TargetImages& target, const FrameParams& params, RgbaImage*
   if (!image) return false;
   ensure_framebuffers(target);
   const VkExtent2D scene = scene_extent(target.extent());
-  if (render_scale_ < 1.0f) scaled_->ensure(scene, color_format_, kDepthFormat, scaled_pass_, target);
+  if (render_scale_ < 1.0f) scaled_->ensure(scene, scaled_pass_, target);
   VK_CHECK(vkResetFences(device_, 1, &slot.done));
 
   fill_uniforms(slot, target.extent(), params);
