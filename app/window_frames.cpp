@@ -5,7 +5,9 @@
 namespace needle::app {
 
 GpuWindow::GpuWindow(const std::string& title, engine::Extent size)
-    : window(title, int(size.width), int(size.height)), device(window), target(device, window) {}
+    : window(title, int(size.width), int(size.height)), device(window), target(device, window) {
+  std::printf("Window: %s\n", target.presentation_note().c_str());
+}
 
 void WindowFrames::draw(engine::Window& window, const std::function<bool(engine::RgbaImage*)>& draw_frame) {
   const bool last = frames_ > 0 && drawn_ + 1 == frames_;

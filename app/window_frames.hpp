@@ -1,6 +1,7 @@
-// What the window commands share: a window with its GPU device and swapchain target, and
-// the frame count that draws each frame and, for --frames N, closes the window after frame N,
-// saving it first when --screenshot names a file (the CLI tests under Xvfb use both).
+// What the window commands share: a window with its GPU device and target (saying, as the device
+// does, how frames reach it), and the frame count that draws each frame and, for --frames N,
+// closes the window after frame N, saving it first when --screenshot names a file (the CLI tests
+// under Xvfb use both).
 #pragma once
 
 #include <functional>

@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 packages=(
   cmake ninja-build g++ pkg-config ccache
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
-  libglfw3-dev libglm-dev libeigen3-dev libtinygltf-dev libimgui-dev libstb-dev
+  libglfw3-dev libx11-dev libxext-dev libxrandr-dev libglm-dev libeigen3-dev libtinygltf-dev libimgui-dev libstb-dev
   libusb-1.0-0-dev libgtest-dev nlohmann-json3-dev liburdfdom-dev libsqlite3-dev sqlite3
   postgresql libpq-dev
   xvfb xauth xdotool

@@ -70,7 +70,8 @@ ScenePass::ScenePass(const VulkanContext& context, const TargetImages& target, c
       level_of_detail_(settings.level_of_detail),
       cull_chunks_(settings.cull_chunks),
       cull_cut_away_(settings.cull_cut_away) {
-  render_pass_ = make_render_pass(VK_ATTACHMENT_LOAD_OP_CLEAR, target.final_layout());
+  final_layout_ = target.final_layout();
+  render_pass_ = make_render_pass(VK_ATTACHMENT_LOAD_OP_CLEAR, final_layout_);
   create_layouts_and_sampler();
   create_pipelines();
   create_frame_slots();
@@ -84,7 +85,7 @@ void ScenePass::set_render_scale(const TargetImages& target, float scale) {
     if (const std::string why = ScaledScene::unsupported(context_, target, samples_); !why.empty())
       throw std::invalid_argument("render scale " + std::to_string(scale) + ": " + why);
     scaled_pass_ = make_render_pass(VK_ATTACHMENT_LOAD_OP_CLEAR, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    overlay_pass_ = make_render_pass(VK_ATTACHMENT_LOAD_OP_LOAD, target.final_layout());
+    overlay_pass_ = make_render_pass(VK_ATTACHMENT_LOAD_OP_LOAD, final_layout_);
     scaled_ = std::make_unique<ScaledScene>(context_, color_format_, kDepthFormat);
   }
   render_scale_ = scale;
@@ -191,14 +192,15 @@ VkRenderPass ScenePass::make_render_pass(VkAttachmentLoadOp load, VkImageLayout 
   dependency.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT |
                              VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
 
-  // A capture copies the finished image out right after the pass.
+  // A capture copies the finished image out right after the pass; a window's shared memory
+  // (SharedMemoryImages) is read by the X server as the host reads.
   VkSubpassDependency to_capture{};
   to_capture.srcSubpass = 0;
   to_capture.dstSubpass = VK_SUBPASS_EXTERNAL;
   to_capture.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
   to_capture.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-  to_capture.dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
-  to_capture.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+  to_capture.dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_HOST_BIT;
+  to_capture.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_HOST_READ_BIT;
   const VkSubpassDependency self{0, 0, kSelfStages, kSelfStages, kSelfSrcAccess, kSelfDstAccess, VK_DEPENDENCY_BY_REGION_BIT};
   std::array<VkSubpassDependency, 3> dependencies{dependency, to_capture, self};
 
@@ -357,6 +359,17 @@ void ScenePass::ensure_framebuffers(const TargetImages& target) {
   }
   wait_idle();
   destroy_framebuffers();
+  if (target.final_layout() != final_layout_) {
+    // A window's images of another kind (WindowTarget::set_presentation): the passes into the
+    // target end in its layout. Compatible with the last, so every pipeline made for them serves.
+    final_layout_ = target.final_layout();
+    vkDestroyRenderPass(device_, render_pass_, nullptr);
+    render_pass_ = make_render_pass(VK_ATTACHMENT_LOAD_OP_CLEAR, final_layout_);
+    if (overlay_pass_) {
+      vkDestroyRenderPass(device_, overlay_pass_, nullptr);
+      overlay_pass_ = make_render_pass(VK_ATTACHMENT_LOAD_OP_LOAD, final_layout_);
+    }
+  }
   const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
   if (msaa) {
     msaa_color_ = GpuImage(context_, {extent, color_format_,

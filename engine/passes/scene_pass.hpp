@@ -91,6 +91,7 @@ class ScenePass {
   bool cull_chunks_;
   bool cull_cut_away_;
   VkRenderPass render_pass_ = VK_NULL_HANDLE;
+  VkImageLayout final_layout_ = VK_IMAGE_LAYOUT_UNDEFINED;  // the target's, which its passes end in
   // Made when the render scale first goes below 1: the scene's pass into the smaller attachments,
   // the overlay's pass into the target after the upscale, the attachments and the upscale.
   float render_scale_ = 1.0f;

@@ -95,7 +95,7 @@ bool Swapchain::recreate() {
     VK_CHECK(vkCreateImageView(context_.device(), &view, nullptr, &v));
     views_.push_back(v);
   }
-  ++generation_;
+  generation_ = next_target_generation();
   stale_ = false;
   return true;
 }

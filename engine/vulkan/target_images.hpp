@@ -1,10 +1,11 @@
 // The Vulkan images behind a RenderTarget (render_target.hpp): an offscreen image read back to
-// memory (HeadlessImage) or a window's swapchain (Swapchain). The scene pass draws the same
-// passes into either.
+// memory (HeadlessImage), a window's swapchain (Swapchain) or a CPU device's window through X11
+// shared memory (SharedMemoryImages). The scene pass draws the same passes into each.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
+#include <atomic>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -32,5 +33,12 @@ class TargetImages {
   // Hands the finished image on (present); waits on `render_done` when uses_semaphores().
   virtual void present(uint32_t index, VkSemaphore render_done) = 0;
 };
+
+// A generation no target's images had before: a window's target may change its images for
+// another kind (WindowTarget::set_presentation), whose framebuffers must not pass for the last's.
+inline uint64_t next_target_generation() {
+  static std::atomic<uint64_t> last{0};
+  return ++last;
+}
 
 }  // namespace needle::engine

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <optional>
+#include <string_view>
 
 #include "engine/vulkan/vk_check.hpp"
 #include "engine/vulkan/window_surface.hpp"
@@ -206,6 +207,17 @@ void VulkanContext::create_device() {
 
   std::vector<const char*> extensions;
   if (surface_) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  // A CPU device's window takes frames written into memory shared with the X server
+  // (engine/vulkan/shared_memory_images.hpp): that memory is imported as the image's.
+  if (surface_ && properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) {
+    uint32_t count = 0;
+    VK_CHECK(vkEnumerateDeviceExtensionProperties(physical_device_, nullptr, &count, nullptr));
+    std::vector<VkExtensionProperties> offered(count);
+    VK_CHECK(vkEnumerateDeviceExtensionProperties(physical_device_, nullptr, &count, offered.data()));
+    for (const VkExtensionProperties& e : offered)
+      if (std::string_view(e.extensionName) == VK_EXT_EXTERNAL_MEMORY_HOST_EXTENSION_NAME) imports_host_memory_ = true;
+    if (imports_host_memory_) extensions.push_back(VK_EXT_EXTERNAL_MEMORY_HOST_EXTENSION_NAME);
+  }
 
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   info.queueCreateInfoCount = 1;

@@ -41,6 +41,8 @@ class VulkanContext {
   double timestamp_period_ns() const;
   // The bits of a timestamp that count (the queue family's timestampValidBits).
   uint32_t timestamp_valid_bits() const { return timestamp_valid_bits_; }
+  // VK_EXT_external_memory_host is enabled (a CPU device made for a window, when it offers it).
+  bool imports_host_memory() const { return imports_host_memory_; }
   // Highest sample count ≤ wanted supported for colour and depth attachments together.
   VkSampleCountFlagBits max_msaa(int wanted) const;
 
@@ -71,6 +73,7 @@ class VulkanContext {
   VkQueue queue_ = VK_NULL_HANDLE;
   uint32_t queue_family_ = 0;
   uint32_t timestamp_valid_bits_ = 0;
+  bool imports_host_memory_ = false;
   VkCommandPool command_pool_ = VK_NULL_HANDLE;
 
   mutable std::mutex messages_mutex_;  // the layer may call back from the driver's threads

@@ -78,7 +78,7 @@ struct Variant {
   std::optional<float> scale;  // scale=S: a fixed render scale
   bool cut_culling = true;     // cut_culling=off: the section's cut-away chunks drawn (to measure the culling)
   bool specialized = true;     // specialized=off: every draw with the general mesh shader (to measure the specializing)
-  engine::WindowTarget::Presentation presentation = engine::WindowTarget::Presentation::Fifo;  // present=...
+  std::optional<engine::WindowTarget::Presentation> presentation;  // present=...; none: the window's own
 };
 
 std::vector<Variant> parse_variants(const std::string& list) {
@@ -97,16 +97,20 @@ std::vector<Variant> parse_variants(const std::string& list) {
         const double scale = parse_number(value, "--variants scale");
         if (!(scale > 0.0 && scale <= 1.0)) throw UsageError("--variants: scale=S takes S in (0, 1]");
         v.scale = float(scale);
-      } else if (setting == "present=fifo" || setting == "present=mailbox" || setting == "present=immediate") {
+      } else if (setting == "present=fifo" || setting == "present=mailbox" || setting == "present=immediate" ||
+                 setting == "present=shm") {
         using P = engine::WindowTarget::Presentation;
-        v.presentation = setting == "present=mailbox" ? P::Mailbox : setting == "present=immediate" ? P::Immediate : P::Fifo;
+        v.presentation = setting == "present=mailbox"     ? P::Mailbox
+                         : setting == "present=immediate" ? P::Immediate
+                         : setting == "present=shm"       ? P::SharedMemory
+                                                          : P::Fifo;
       } else if (setting == "cut_culling=off") {
         v.cut_culling = false;
       } else if (setting == "specialized=off") {
         v.specialized = false;
       } else {
         throw UsageError("--variants: unknown setting '" + setting +
-                         "' (default, scale=S, cut_culling=off, specialized=off, present=fifo|mailbox|immediate)");
+                         "' (default, scale=S, cut_culling=off, specialized=off, present=fifo|mailbox|immediate|shm)");
       }
     }
     variants.push_back(std::move(v));
@@ -160,6 +164,8 @@ std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget&
                                  engine::GpuScene& scene, const app::FrameContent& content, engine::Window* window,
                                  const RowOptions& options) {
   const std::optional<float> product_scale = frame.fixed_render_scale();
+  const std::optional<engine::WindowTarget::Presentation> product_presentation =
+      window_target ? std::optional(window_target->presentation()) : std::nullopt;
   const size_t kinds = options.variants.size() * (options.timestamps ? 2 : 1);
   std::vector<FrameSample> samples;
   const Clock::time_point start = Clock::now();
@@ -175,7 +181,9 @@ std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget&
     frame.set_fixed_render_scale(options.variants[variant].scale ? options.variants[variant].scale : product_scale);
     frame.renderer().set_cull_cut_away(options.variants[variant].cut_culling);
     frame.renderer().set_specialized_pipelines(options.variants[variant].specialized);
-    if (window_target && !window_target->set_presentation(options.variants[variant].presentation))
+    const std::optional<engine::WindowTarget::Presentation> presentation =
+        options.variants[variant].presentation ? options.variants[variant].presentation : product_presentation;
+    if (window_target && presentation && !window_target->set_presentation(*presentation))
       throw std::runtime_error("--variants " + options.variants[variant].name + ": the window's surface does not offer it");
     const Clock::time_point now = Clock::now();
     if (counting) samples.back().period_ms = std::chrono::duration<double, std::milli>(now - previous).count();
@@ -348,7 +356,9 @@ const CommandRegistrar reg{
      "                   cut_culling=off (the section's cut-away chunks drawn, as before they were culled),\n"
      "                   specialized=off (every draw with the general mesh shader, its discards and texture\n"
      "                   fetch run masked, as before),\n"
-     "                   present=fifo|mailbox|immediate (the window's present mode; default fifo)",
+     "                   present=fifo|mailbox|immediate (the window's swapchain and its present mode) or\n"
+     "                   present=shm (a CPU device's frames through X11 shared memory); default: the window's own\n"
+     "                   (shm where it is offered, else fifo; the window's line says which)",
      run_bench_frame}};
 
 }  // namespace
