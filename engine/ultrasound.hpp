@@ -105,6 +105,11 @@ struct UltrasoundSettings {
   bool speckle = true;      // off: the scan-line model alone, blurred by the point spread function
   double dynamic_range_dB = 60.0;
   double gain_dB = 0.0;
+  // A deformed tissue's rest positions (where each sample's scatterer is) are found at nodes this
+  // many samples apart down each line and interpolated between; 0 (the default): the spacing that
+  // keeps them within 2 µm of the exact ones for this image's deformation (rest_node_spacing below),
+  // 1: at every sample.
+  uint32_t rest_node_spacing = 0;
 };
 
 // An interface a scan line crosses: where, and between which layers (indices in
@@ -130,6 +135,14 @@ struct ScanLine {
 // the image the GPU pass makes with the same scene, probe, needle (nullptr: none) and settings.
 std::vector<ScanLine> trace_scan_lines(const EchoScene& scene, const UltrasoundProbe& probe, const NeedleLoad* needle,
                                        const UltrasoundSettings& settings);
+// The rest nodes' spacing (samples) an image of this needle takes: the settings' own, or for 0 the
+// one chosen for the tissue's deformation (UltrasoundSettings::rest_node_spacing).
+uint32_t rest_node_spacing(const EchoScene& scene, const UltrasoundProbe& probe, const NeedleLoad& needle,
+                           const UltrasoundSettings& settings);
+// The largest distance, over every sample of that image, between the rest position interpolated
+// between the nodes and the exact one, double precision (0 at rest): the nodes' error.
+double rest_interpolation_error(const EchoScene& scene, const UltrasoundProbe& probe, const NeedleLoad& needle,
+                                const UltrasoundSettings& settings);
 
 class UltrasoundView {
  public:

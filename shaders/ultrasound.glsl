@@ -1,4 +1,4 @@
-// What the four ultrasound passes share (engine/ultrasound/ultrasound_pass.cpp mirrors it, std140
+// What the ultrasound passes share (engine/ultrasound/ultrasound_pass.cpp mirrors it, std140
 // and std430): the frame's probe, needle and display settings, and the buffers between the passes.
 // The model: docs/RENDERING.md, "Ultrasound"; its double-precision reference:
 // engine/ultrasound/echo_model.cpp.
@@ -22,7 +22,7 @@ layout(set = 0, binding = 0, std140) uniform Echo {
   vec4 elevation;    // xyz: direction × lateral
   vec4 image;        // x depth, y width, z sample spacing, w line spacing (m)
   uvec4 counts;      // x lines, y samples, z layers, w loads (the shaders' LOADS)
-  uvec4 kernel;      // x axial radius (samples), y lateral radius (lines) (AXIAL_RADIUS, LATERAL_RADIUS), z speckle (0/1)
+  uvec4 kernel;      // x axial radius (samples), y lateral radius (lines) (AXIAL_RADIUS, LATERAL_RADIUS), z speckle (0/1), w rest nodes' spacing (samples)
   vec4 beam;         // x Np/m per dB/(cm MHz) at the probe's frequency, y time gain (Np/m, one way), z backscatter level, w specular width (rad)
   vec4 media;        // x gel impedance, y needle impedance, z reverberation ratio, w shadow level
   vec4 needle_tip;   // xyz, w: 1 when there is a needle
@@ -103,6 +103,11 @@ struct LineRecord {
 };
 layout(set = 0, binding = 4, std430) buffer Lines { LineRecord lines[]; };
 layout(set = 0, binding = 5, rgba8) uniform writeonly image2D picture;
+// A deformed tissue's rest positions as offsets from the samples' (xyz: rest − x) at nodes every
+// echo.kernel.w samples down each line (x: the node, n at sample n·kernel.w, up to the first at
+// or past the last sample; y: the line), made by ultrasound_rest.comp; the per-sample pass
+// interpolates between them instead of undoing the displacement at every sample (rest_of_sample).
+layout(set = 0, binding = 8, rgba32f) uniform image2D rest_offsets;
 
 // The line's origin on the probe's face (echo_model.cpp, line_origin) and a sample's depth.
 vec3 line_origin(uint line) {
@@ -178,6 +183,19 @@ vec3 rest_position(vec3 x) {
     rest = x - u;
   }
   return rest;
+}
+
+// The nodes of a line (rest_offsets): from sample 0 to the first at or past the last sample.
+uint rest_nodes() { return (echo.counts.y - 1u) / echo.kernel.w + 2u; }
+
+// Sample j's rest position on `line`, x its position: the nodes' offsets linearly interpolated
+// (engine/ultrasound/echo_model.hpp, rest_node_spacing, chooses their spacing for the error); at
+// rest (LOADS 0) x itself, no image read.
+vec3 rest_of_sample(uint line, uint j, vec3 x) {
+  if (LOADS == 0u) return x;
+  uint n = j / echo.kernel.w;
+  float f = float(j - n * echo.kernel.w) / float(echo.kernel.w);
+  return x + mix(imageLoad(rest_offsets, ivec2(n, line)).xyz, imageLoad(rest_offsets, ivec2(n + 1u, line)).xyz, f);
 }
 
 float axial_weight(int k) { return echo.axial_weights[k / 4][k % 4]; }

@@ -4,7 +4,7 @@
 // attenuated to its depth
 // and time-gain compensated, times its layer's backscatter on the scatterer of its cell at its
 // rest position (a fixed random phasor, so the speckle stays put while the probe does and moves
-// with the tissue).
+// with the tissue; the rest position interpolated between ultrasound_rest.comp's nodes).
 #extension GL_GOOGLE_include_directive : require
 #include "ultrasound.glsl"
 
@@ -38,7 +38,7 @@ void add_tissue_echo(uint line, uint j) {
   float gained = run.amplitude * exp(-2.0 * run.alpha * (z - interval_start(run.first))) * time_gain(z);
   vec2 scatter = vec2(1.0, 0.0);
   if (echo.kernel.z == 1u)
-    scatter = scatterer(rest_position(line_origin(line) + z * echo.direction.xyz), layers[run.layer].material.w);
+    scatter = scatterer(rest_of_sample(line, j, line_origin(line) + z * echo.direction.xyz), layers[run.layer].material.w);
   ivec2 at = ivec2(j, line);
   vec2 received = imageLoad(echoes, at).xy + gained * echo.beam.z * layers[run.layer].material.z * echo.display.z * scatter;
   imageStore(echoes, at, vec4(received, 0.0, 0.0));

@@ -148,6 +148,27 @@ glm::dvec3 rest_position(const DeformationField& field, const glm::dvec3& x, int
   return rest;
 }
 
+uint32_t rest_node_spacing(const DeformationField& field, double sample_spacing_m) {
+  double curvature = 0.0;  // Σ_k 3|u_k(c_k)|/ε_k², per metre
+  for (const Kelvinlet& k : field.loads)
+    curvature += 3.0 * center_compliance(field.material, k.epsilon) * glm::length(k.force) / (k.epsilon * k.epsilon);
+  uint32_t spacing = kMaxRestNodeSpacing;
+  while (spacing > 1 && std::pow(spacing * sample_spacing_m, 2.0) / 8.0 * curvature > kRestTolerance_m) spacing /= 2;
+  return spacing;
+}
+
+glm::dvec3 interpolated_rest_position(const DeformationField& field, const UltrasoundProbe& probe,
+                                      const UltrasoundSettings& settings, uint32_t spacing, const glm::dvec3& line_origin,
+                                      uint32_t j) {
+  const uint32_t n = j / spacing;
+  const auto offset = [&](uint32_t node) {
+    const glm::dvec3 x = line_origin + sample_depth(probe, settings, node * spacing) * probe.direction;
+    return rest_position(field, x) - x;
+  };
+  const double f = double(j - n * spacing) / double(spacing);
+  return line_origin + sample_depth(probe, settings, j) * probe.direction + (1.0 - f) * offset(n) + f * offset(n + 1);
+}
+
 std::optional<NeedleHit> needle_hit(const EchoScene& scene, const UltrasoundProbe& probe, const NeedleLoad& needle,
                                     const glm::dvec3& line_origin) {
   const glm::dvec3 e = probe.elevation();
@@ -200,6 +221,27 @@ std::vector<ScanLine> trace_scan_lines(const EchoScene& scene, const UltrasoundP
   lines.reserve(settings.lines);
   for (uint32_t i = 0; i < settings.lines; ++i) lines.push_back(echo::trace_line(scene, probe, needle, settings, field, i));
   return lines;
+}
+
+uint32_t rest_node_spacing(const EchoScene& scene, const UltrasoundProbe& probe, const NeedleLoad& needle,
+                           const UltrasoundSettings& settings) {
+  if (settings.rest_node_spacing) return settings.rest_node_spacing;
+  return echo::rest_node_spacing(echo::echo_field(scene, &needle), probe.depth_m / settings.samples);
+}
+
+double rest_interpolation_error(const EchoScene& scene, const UltrasoundProbe& probe, const NeedleLoad& needle,
+                                const UltrasoundSettings& settings) {
+  const DeformationField field = echo::echo_field(scene, &needle);
+  const uint32_t spacing = rest_node_spacing(scene, probe, needle, settings);
+  double worst = 0.0;
+  for (uint32_t i = 0; i < settings.lines; ++i) {
+    const glm::dvec3 origin = echo::line_origin(probe, settings, i);
+    for (uint32_t j = 0; j < settings.samples; ++j) {
+      const glm::dvec3 exact = echo::rest_position(field, origin + echo::sample_depth(probe, settings, j) * probe.direction);
+      worst = std::max(worst, glm::length(echo::interpolated_rest_position(field, probe, settings, spacing, origin, j) - exact));
+    }
+  }
+  return worst;
 }
 
 }  // namespace needle::engine

@@ -54,6 +54,22 @@ inline int deciding_layer(int from, int to) { return to > from ? to : from; }
 DeformationField echo_field(const EchoScene& scene, const NeedleLoad* needle);
 // The rest position whose displaced position is x: X = x − u(X) by fixed-point iteration.
 glm::dvec3 rest_position(const DeformationField& field, const glm::dvec3& x, int iterations = kRestIterations);
+// The rest nodes' spacing in samples (UltrasoundSettings::rest_node_spacing 0: automatic) for a
+// field sampled every `sample_spacing_m` down the lines: the largest power of two up to
+// kMaxRestNodeSpacing whose interpolation error estimate, h²/8 · Σ_k 3|u_k(c_k)|/ε_k², stays
+// within kRestTolerance_m (1 when none does). Linear interpolation between nodes h apart errs by
+// h²/8 times the second derivative; a regularized Kelvinlet's 1/r_ε profile has |u''| = |u|/ε² at
+// its centre, and the factor 3 covers its window's share and the inverse map's (checked against
+// the exact error, engine::rest_interpolation_error: tests/engine/test_ultrasound.cpp, bench
+// ultrasound's rest_error_m).
+constexpr double kRestTolerance_m = kScattererCell_m / 50.0;  // design value: 2 µm, far below a sample (≥ 98 µm)
+constexpr uint32_t kMaxRestNodeSpacing = 16;
+uint32_t rest_node_spacing(const DeformationField& field, double sample_spacing_m);
+// Sample j's rest position on a line as the GPU finds it (shaders/ultrasound.glsl, rest_of_sample):
+// the offsets rest − x at the nodes `spacing` samples apart, linearly interpolated.
+glm::dvec3 interpolated_rest_position(const DeformationField& field, const UltrasoundProbe& probe,
+                                      const UltrasoundSettings& settings, uint32_t spacing, const glm::dvec3& line_origin,
+                                      uint32_t j);
 
 // Where a scan line meets the needle's near wall, and how strongly the wall sends the echo back:
 // the elevation beam's weight at the needle's offset from the image plane times the specular

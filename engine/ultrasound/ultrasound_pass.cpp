@@ -16,13 +16,14 @@
 #include "spirv/ultrasound_echoes_comp.h"
 #include "spirv/ultrasound_image_comp.h"
 #include "spirv/ultrasound_lines_comp.h"
+#include "spirv/ultrasound_rest_comp.h"
 
 namespace needle::engine {
 namespace {
 
 // local_size_x of the passes: a line's walk is long and its length varies, so lines go in small
 // groups (a CPU device runs a group's invocations on its SIMD lanes, a group to a thread).
-constexpr std::array<uint32_t, UltrasoundPass::kPasses> kWorkgroup{8, 64, 64, 64};
+constexpr std::array<uint32_t, UltrasoundPass::kPasses> kWorkgroup{8, 64, 64, 64, 64};
 // The lines a work item of the per-sample passes does (ultrasound.glsl LINES_PER_ITEM): each SIMD
 // group of work items a CPU device (lavapipe) starts costs about as much as a few samples' arithmetic.
 constexpr uint32_t kLinesPerItem = 16;
@@ -75,7 +76,7 @@ struct LineRecordGpu {
 };
 static_assert(sizeof(LineRecordGpu) == 32 + 16 * ScanLine::kMaxInterfaces, "std430 layout of LineRecord");
 
-enum Binding : uint32_t { kUniforms, kLayers, kEchoes, kAxial, kLines, kPicture, kRuns, kUniformsStorage, kBindings };
+enum Binding : uint32_t { kUniforms, kLayers, kEchoes, kAxial, kLines, kPicture, kRuns, kUniformsStorage, kRestOffsets, kBindings };
 
 VkDescriptorType descriptor_type(uint32_t binding) {
   switch (binding) {
@@ -161,6 +162,7 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
   echoes_ = work_image(context_, settings_.samples, settings_.lines);
   axial_ = work_image(context_, settings_.samples, settings_.lines);
   runs_ = work_image(context_, kMaxRuns, settings_.lines);
+  rest_offsets_ = work_image(context_, settings_.samples + 1, settings_.lines);  // rest_nodes() at a spacing of 1
   lines_ = GpuBuffer::host_visible(context_, settings_.lines * sizeof(LineRecordGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   image_ = GpuImage(context_, {{settings_.lines, settings_.samples},
                                VK_FORMAT_R8G8B8A8_UNORM,
@@ -168,7 +170,7 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
 
   std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * kRing},
                                              {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * kRing},
-                                             {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 4 * kRing}}};
+                                             {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 5 * kRing}}};
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pool_info.maxSets = kRing;
   pool_info.poolSizeCount = uint32_t(sizes.size());
@@ -189,12 +191,14 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
                                                                  {lines_.handle(), 0, VK_WHOLE_SIZE},
                                                                  {},
                                                                  {},
-                                                                 {uniforms_[slot].handle(), 0, VK_WHOLE_SIZE}}};
+                                                                 {uniforms_[slot].handle(), 0, VK_WHOLE_SIZE},
+                                                                 {}}};
     std::array<VkDescriptorImageInfo, kBindings> images{};
     images[kEchoes] = {VK_NULL_HANDLE, echoes_.view(), VK_IMAGE_LAYOUT_GENERAL};
     images[kAxial] = {VK_NULL_HANDLE, axial_.view(), VK_IMAGE_LAYOUT_GENERAL};
     images[kPicture] = {VK_NULL_HANDLE, image_.view(), VK_IMAGE_LAYOUT_GENERAL};
     images[kRuns] = {VK_NULL_HANDLE, runs_.view(), VK_IMAGE_LAYOUT_GENERAL};
+    images[kRestOffsets] = {VK_NULL_HANDLE, rest_offsets_.view(), VK_IMAGE_LAYOUT_GENERAL};
     std::array<VkWriteDescriptorSet, kBindings> writes{};
     for (uint32_t b = 0; b < kBindings; ++b) {
       writes[b] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -246,6 +250,7 @@ VkPipeline UltrasoundPass::pipeline(size_t pass, uint32_t constant) {
   if (const auto found = pipelines_.find(key); found != pipelines_.end()) return found->second;
   static constexpr std::array<std::pair<const uint32_t*, size_t>, kPasses> kCode{{
       {ultrasound_lines_comp_spv, sizeof(ultrasound_lines_comp_spv)},
+      {ultrasound_rest_comp_spv, sizeof(ultrasound_rest_comp_spv)},
       {ultrasound_echoes_comp_spv, sizeof(ultrasound_echoes_comp_spv)},
       {ultrasound_axial_comp_spv, sizeof(ultrasound_axial_comp_spv)},
       {ultrasound_image_comp_spv, sizeof(ultrasound_image_comp_spv)}}};
@@ -269,7 +274,8 @@ std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProb
   u.elevation = glm::vec4(glm::vec3(probe.elevation()), 0.0f);
   u.image = glm::vec4(float(probe.depth_m), float(probe.width_m), float(dz), float(dx));
   u.counts = glm::uvec4(s.lines, s.samples, uint32_t(scene_.layers.size()), uint32_t(field.loads.size()));
-  u.kernel = glm::uvec4(uint32_t(axial.size() - 1), uint32_t(lateral.size() - 1), s.speckle ? 1u : 0u, 0u);
+  const uint32_t rest_spacing = s.rest_node_spacing ? s.rest_node_spacing : echo::rest_node_spacing(field, dz);
+  u.kernel = glm::uvec4(uint32_t(axial.size() - 1), uint32_t(lateral.size() - 1), s.speckle ? 1u : 0u, rest_spacing);
   u.beam = glm::vec4(float(echo::nepers_per_m(1.0, probe.frequency_MHz)),
                      float(echo::nepers_per_m(echo::kTimeGain_dB_per_cm_MHz, probe.frequency_MHz)),
                      float(echo::kBackscatterLevel), float(echo::kSpecularWidth_rad));
@@ -295,13 +301,15 @@ std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProb
   auto bytes = std::make_shared<std::vector<uint8_t>>(sizeof u);
   std::memcpy(bytes->data(), &u, sizeof u);
   if (unless_shown && has_image() && *bytes == recorded_) return {};
-  const std::array<uint32_t, kPasses> constants{u.counts.w, u.counts.w, u.kernel.x, u.kernel.y};
+  const std::array<uint32_t, kPasses> constants{u.counts.w, u.counts.w, u.counts.w, u.kernel.x, u.kernel.y};
   std::array<VkPipeline, kPasses> pipelines{};
   for (size_t p = 0; p < kPasses; ++p) pipelines[p] = pipeline(p, constants[p]);
-  return [this, bytes, pipelines](VkCommandBuffer cmd) { record(cmd, *bytes, pipelines); };
+  if (u.counts.w == 0) pipelines[kRestPass] = VK_NULL_HANDLE;  // a tissue at rest: no nodes to make
+  return [this, bytes, pipelines, rest_spacing](VkCommandBuffer cmd) { record(cmd, *bytes, pipelines, rest_spacing); };
 }
 
-void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms, const std::array<VkPipeline, kPasses>& pipelines) {
+void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms, const std::array<VkPipeline, kPasses>& pipelines,
+                            uint32_t spacing) {
   const size_t slot = ring_;
   ring_ = (ring_ + 1) % kRing;
   std::memcpy(uniforms_[slot].mapped(), uniforms.data(), uniforms.size());
@@ -316,7 +324,7 @@ void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uni
                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
   if (!work_images_ready_) {
-    for (const GpuImage* work : {&echoes_, &axial_, &runs_})
+    for (const GpuImage* work : {&echoes_, &axial_, &runs_, &rest_offsets_})
       transition_image(cmd, work->image(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
                        VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                        VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
@@ -346,16 +354,21 @@ void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uni
   }
   // The line pass: a work item a line; the others: a work item a sample of kLinesPerItem lines.
   const uint32_t line_groups = (lines + kLinesPerItem - 1) / kLinesPerItem;
+  // The rest pass: a work item a node of a line, the lines across a group.
+  const uint32_t nodes = (samples - 1) / spacing + 2;  // ultrasound.glsl rest_nodes
   const std::array<VkExtent2D, kPasses> groups{{{(lines + kWorkgroup[0] - 1) / kWorkgroup[0], 1},
-                                                {(samples + kWorkgroup[1] - 1) / kWorkgroup[1], line_groups},
+                                                {(lines + kWorkgroup[1] - 1) / kWorkgroup[1], nodes},
                                                 {(samples + kWorkgroup[2] - 1) / kWorkgroup[2], line_groups},
-                                                {(samples + kWorkgroup[3] - 1) / kWorkgroup[3], line_groups}}};
+                                                {(samples + kWorkgroup[3] - 1) / kWorkgroup[3], line_groups},
+                                                {(samples + kWorkgroup[4] - 1) / kWorkgroup[4], line_groups}}};
   for (size_t p = 0; p < kPasses; ++p) {
     if (p > 0)
       compute_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                       VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines[p]);
-    vkCmdDispatch(cmd, groups[p].width, groups[p].height, 1);
+    if (pipelines[p]) {
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines[p]);
+      vkCmdDispatch(cmd, groups[p].width, groups[p].height, 1);
+    }
     if (timed_) {
       vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0, nullptr, 0,
                            nullptr);

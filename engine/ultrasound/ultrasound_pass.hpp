@@ -1,6 +1,7 @@
 // The ultrasound image's compute passes behind UltrasoundView (engine/ultrasound.hpp): each scan
-// line's layer changes, reflections and runs between them (shaders/ultrasound_lines.comp), each
-// sample's echo from them and its scatterer (ultrasound_echoes.comp), the point spread function
+// line's layer changes, reflections and runs between them (shaders/ultrasound_lines.comp), a
+// deformed tissue's rest positions at nodes down the lines (ultrasound_rest.comp), each sample's
+// echo from them and its scatterer (ultrasound_echoes.comp), the point spread function
 // along the lines (ultrasound_axial.comp), across them with the envelope and log compression into
 // an RGBA8 storage image (ultrasound_image.comp). The image is left for fragment shaders to sample
 // (the UI pass draws it).
@@ -47,8 +48,8 @@ class UltrasoundPass {
 
   // Device time of each pass of the images recorded from now on (timestamp queries; a device
   // without them gives none), read once an image is done.
-  static constexpr size_t kPasses = 4;
-  static constexpr std::array<const char*, kPasses> kPassNames{"lines", "echoes", "axial", "image"};
+  static constexpr size_t kPasses = 5;
+  static constexpr std::array<const char*, kPasses> kPassNames{"lines", "rest", "echoes", "axial", "image"};
   void set_device_timings(bool on);
   std::optional<std::array<double, kPasses>> read_pass_ms() const;
 
@@ -56,11 +57,14 @@ class UltrasoundPass {
   static constexpr size_t kRing = 3;  // more than the renderer's frames in flight
 
   // The pipeline of pass `pass` (kPassNames) with its specialization constant (ultrasound.glsl:
-  // LOADS for the line and echo passes, AXIAL_RADIUS, LATERAL_RADIUS for the convolutions) set to
-  // `constant`, made the first time an image needs it.
-  static constexpr std::array<uint32_t, kPasses> kConstantId{0, 0, 1, 2};
+  // LOADS for the line, rest and echo passes, AXIAL_RADIUS, LATERAL_RADIUS for the convolutions)
+  // set to `constant`, made the first time an image needs it.
+  static constexpr std::array<uint32_t, kPasses> kConstantId{0, 0, 0, 1, 2};
   VkPipeline pipeline(size_t pass, uint32_t constant);
-  void record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms, const std::array<VkPipeline, kPasses>& pipelines);
+  static constexpr size_t kRestPass = 1;  // kPassNames: dispatched only for a deformed tissue
+  // `spacing`: the rest nodes' (echo.kernel.w).
+  void record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms, const std::array<VkPipeline, kPasses>& pipelines,
+              uint32_t spacing);
 
   const VulkanContext& context_;
   VkDevice device_;
@@ -73,7 +77,7 @@ class UltrasoundPass {
   std::array<VkDescriptorSet, kRing> sets_{};
   std::array<GpuBuffer, kRing> uniforms_;
   GpuBuffer layers_;
-  GpuImage echoes_, axial_, runs_;  // float images between the passes, in GENERAL layout
+  GpuImage echoes_, axial_, runs_, rest_offsets_;  // float images between the passes, in GENERAL layout
   bool work_images_ready_ = false;   // once transitioned to GENERAL
   GpuBuffer lines_;  // host-visible: read back after an image
   GpuImage image_;

@@ -80,28 +80,83 @@ TEST_F(UltrasoundTest, TheGpuScanLinesAreTheReferencesUnderHalfABonePlate) {
     EXPECT_EQ(std::isinf(lines[i].shadow_depth_m), i < lines.size() / 2) << "line " << i;
 }
 
-TEST_F(UltrasoundTest, TheLayersMoveWithTheTissue) {
-  // The thesis's sphere, deformable as in assets/scenes/penetrable_sphere.json, pressed 6 mm
-  // straight down at its top.
+// The thesis's sphere, deformable as in assets/scenes/penetrable_sphere.json, pressed 6 mm
+// straight down at its top, under a 60 mm probe.
+struct PressedSphere {
   engine::EchoScene scene;
-  scene.layers = {{"tissue", {{engine::EchoPrimitive::Kind::Sphere, {0.4, 0.0, 0.0}, {}, 0.1}}, false, {}}};
-  scene.deformation = engine::TissueParams{};
   engine::UltrasoundProbe probe;
-  probe.position = {0.4, 0.0, 0.12};
-  probe.depth_m = 0.06;
   engine::NeedleLoad press;
-  press.contact = engine::NeedleContact::Touching;
-  press.axis = {0.0, 0.0, -1.0};
-  press.surface_point = {0.4, 0.0, 0.1};
-  press.tip = {0.4, 0.0, 0.094};
-  engine::UltrasoundView view(device(), scene, {128, 512});
-  expect_lines_match(view, probe, &press);
+};
+PressedSphere pressed_sphere() {
+  PressedSphere p;
+  p.scene.layers = {{"tissue", {{engine::EchoPrimitive::Kind::Sphere, {0.4, 0.0, 0.0}, {}, 0.1}}, false, {}}};
+  p.scene.deformation = engine::TissueParams{};
+  p.probe.position = {0.4, 0.0, 0.12};
+  p.probe.depth_m = 0.06;
+  p.press.contact = engine::NeedleContact::Touching;
+  p.press.axis = {0.0, 0.0, -1.0};
+  p.press.surface_point = {0.4, 0.0, 0.1};
+  p.press.tip = {0.4, 0.0, 0.094};
+  return p;
+}
+
+TEST_F(UltrasoundTest, TheLayersMoveWithTheTissue) {
+  const PressedSphere p = pressed_sphere();
+  engine::UltrasoundView view(device(), p.scene, {128, 512});
+  expect_lines_match(view, p.probe, &p.press);
   // The middle line meets the surface at the tip (the dimple's floor, docs/DEFORMATION.md), not at rest.
   const engine::ScanLine middle = view.scan_lines()[64];
   ASSERT_FALSE(middle.interfaces.empty());
   EXPECT_NEAR(middle.interfaces[0].depth_m, 0.026, 2e-4);
-  expect_lines_match(view, probe, nullptr);
+  expect_lines_match(view, p.probe, nullptr);
   EXPECT_NEAR(view.scan_lines()[64].interfaces[0].depth_m, 0.02, 2e-4);
+}
+
+// Linear interpolation between nodes h apart errs by h²/8 times the displacement's second
+// derivative: a quarter of the spacing, a sixteenth of the error; a node at every sample, none;
+// and the spacing chosen for the deformation keeps within its tolerance.
+TEST(UltrasoundModel, RestNodesInterpolateTheExactRestPositionsToSecondOrder) {
+  const PressedSphere p = pressed_sphere();
+  const auto error = [&](uint32_t spacing) {
+    engine::UltrasoundSettings settings{128, 512};
+    settings.rest_node_spacing = spacing;
+    return engine::rest_interpolation_error(p.scene, p.probe, p.press, settings);
+  };
+  EXPECT_EQ(error(1), 0.0);
+  const double e4 = error(4), e16 = error(16);
+  EXPECT_GT(e4, 0.0);
+  EXPECT_GT(e16 / e4, 12.0);
+  EXPECT_LT(e16 / e4, 20.0);
+  const uint32_t chosen = engine::rest_node_spacing(p.scene, p.probe, p.press, {128, 512});
+  EXPECT_EQ(chosen, 2u) << "a 6 mm dimple in a tissue whose loads spread over 10 mm";
+  EXPECT_LE(error(0), engine::echo::kRestTolerance_m);
+}
+
+// The GPU's nodes are the rest positions the image needs: its image from nodes 4 samples apart is
+// the one with a node at every sample (the exact rest positions) but for the few scatterer cells
+// whose boundary lies within the interpolation's micrometres of a sample.
+TEST_F(UltrasoundTest, ADeformedImageFromRestNodesIsTheOneWithANodeAtEverySample) {
+  const PressedSphere p = pressed_sphere();
+  engine::UltrasoundSettings exact_settings{128, 512}, node_settings{128, 512};
+  exact_settings.rest_node_spacing = 1;
+  node_settings.rest_node_spacing = 4;
+  engine::UltrasoundView exact(device(), p.scene, exact_settings), nodes(device(), p.scene, node_settings);
+  exact.render(p.probe, &p.press);
+  nodes.render(p.probe, &p.press);
+  const engine::RgbaImage a = exact.image(), b = nodes.image();
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  size_t unlike = 0, grey = 0;
+  double difference = 0.0;
+  for (size_t i = 0; i < a.pixels.size(); i += 4) {
+    const int d = std::abs(int(a.pixels[i]) - int(b.pixels[i]));
+    unlike += d > 1 ? 1 : 0;
+    difference += d;
+    grey += a.pixels[i] > 0 ? 1 : 0;
+  }
+  const size_t pixels = a.pixels.size() / 4;
+  EXPECT_GT(grey, pixels / 4) << "the tissue's speckle fills the image";
+  EXPECT_LT(unlike, pixels / 100) << "pixels more than a count apart (0.4 % measured)";
+  EXPECT_LT(difference / double(pixels), 0.1) << "mean grey difference, counts (0.04 measured)";
 }
 
 // Without speckle, the image is the scan-line model blurred by the point spread function: each

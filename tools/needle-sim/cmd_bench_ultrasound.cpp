@@ -2,8 +2,12 @@
 // block and the lumbar epidural section with the needle in plane, at 256 x 512 and 512 x 1024:
 // time per image (submitted and waited for) against the scan-line model's double-precision CPU
 // reference over the same lines, and the largest depth difference between the two. A third scene,
-// the penetrable sphere of the sphere_ultrasound task, images a tissue the needle deforms (the
-// passes undo its displacement at every sample), as bench frame --views ultrasound draws it.
+// the penetrable sphere of the sphere_ultrasound task, images a tissue the needle deforms, as bench
+// frame --views ultrasound draws it: the passes undo its displacement at nodes down each line and
+// interpolate between them, at the spacing chosen for the deformation and, at 256 x 512, at fixed
+// ones (rest_error_m, the interpolation's largest error against the exact rest positions;
+// pixels_unlike_exact, the image's pixels more than a count away from the one with a node at
+// every sample).
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -23,7 +27,9 @@ namespace needle::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
 
 // The CPU time this process has used, all its threads (a CPU device's too), in milliseconds: on
 // a machine shared with other work it is what the images cost, where the wall time also holds
@@ -73,8 +79,10 @@ std::vector<Case> cases() {
   pushed.surface_point.z -= 0.001;
   pushed.lateral_force_on_tissue_N = {0.0, 0.5, 0.0};
   const engine::UltrasoundProbe sphere_probe = app::task_probe(sphere_task, sphere).probe;
-  return {{"block", scenario_layers("scenarios/tissue_block_layers.json"), block, needle_in_plane({0.315, 0.0, 0.07}, 0.5236, 0.035)},
-          {"epidural", scenario_layers("scenarios/lumbar_epidural.json"), epidural, needle_in_plane({0.31, 0.0, 0.07}, 0.7854, 0.06)},
+  return {{"block", scenario_layers("scenarios/tissue_block_layers.json"), block,
+           needle_in_plane({0.315, 0.0, 0.07}, 0.5236, 0.035)},
+          {"epidural", scenario_layers("scenarios/lumbar_epidural.json"), epidural,
+           needle_in_plane({0.31, 0.0, 0.07}, 0.7854, 0.06)},
           {"sphere_deformed", std::move(sphere), sphere_probe, pushed}};
 }
 
@@ -87,9 +95,17 @@ double max_depth_error(const std::vector<engine::ScanLine>& gpu, const std::vect
       return std::numeric_limits<double>::infinity();  // a line that met other things
     for (size_t k = 0; k < cpu[i].interfaces.size(); ++k)
       worst = std::max(worst, std::abs(gpu[i].interfaces[k].depth_m - cpu[i].interfaces[k].depth_m));
-    if (!std::isinf(cpu[i].needle_depth_m)) worst = std::max(worst, std::abs(gpu[i].needle_depth_m - cpu[i].needle_depth_m));
+    if (!std::isinf(cpu[i].needle_depth_m))
+      worst = std::max(worst, std::abs(gpu[i].needle_depth_m - cpu[i].needle_depth_m));
   }
   return worst;
+}
+
+// Pixels whose grey differs by more than one count.
+long pixels_unlike(const engine::RgbaImage& a, const engine::RgbaImage& b) {
+  long n = 0;
+  for (size_t i = 0; i < a.pixels.size(); i += 4) n += std::abs(int(a.pixels[i]) - int(b.pixels[i])) > 1 ? 1 : 0;
+  return n;
 }
 
 int run_bench_ultrasound(ArgList& args) {
@@ -99,49 +115,70 @@ int run_bench_ultrasound(ArgList& args) {
   if (frames < 2 || frames != double(long(frames))) throw UsageError("--frames: expected a whole number ≥ 2");
 
   engine::GpuDevice device;
-  BenchTable table({"scene", "lines", "samples", "gpu_ms", "gpu_ms_p95", "gpu_cpu_time_ms", "cpu_ms", "max_depth_error_m",
-                    "lines_ms", "echoes_ms", "axial_ms", "image_ms"});
+  BenchTable table({"scene", "lines", "samples", "rest_nodes", "rest_node_spacing", "gpu_ms", "gpu_ms_p95",
+                    "gpu_cpu_time_ms", "cpu_ms", "max_depth_error_m", "rest_error_m", "pixels_unlike_exact", "lines_ms",
+                    "rest_ms", "echoes_ms", "axial_ms", "image_ms"});
   for (const Case& c : cases()) {
     const engine::EchoScene& scene = c.scene;
     for (const auto& [lines, samples] : {std::pair{256u, 512u}, std::pair{512u, 1024u}}) {
-      engine::UltrasoundView view(device, scene, {lines, samples});
-      view.render(c.probe, &c.needle);  // pipelines warmed, memory touched
-      std::vector<double> gpu_ms;
-      const double cpu_time_before = process_cpu_ms();
-      for (int f = 0; f < int(frames); ++f) {
-        const auto start = Clock::now();
-        view.render(c.probe, &c.needle);
-        gpu_ms.push_back(ms_since(start));
+      // A deformed tissue's rest nodes: the product's automatic spacing, then fixed ones from a
+      // node at every sample (the exact rest positions, the image compared against) up.
+      const engine::UltrasoundSettings product{lines, samples};
+      std::vector<uint32_t> spacings{product.rest_node_spacing};
+      if (scene.deformation && lines == 256u) spacings = {product.rest_node_spacing, 1u, 4u, 16u};
+      engine::UltrasoundSettings exact_settings = product;
+      exact_settings.rest_node_spacing = 1;
+      engine::UltrasoundView exact(device, scene, exact_settings);
+      exact.render(c.probe, &c.needle);
+      const engine::RgbaImage exact_image = exact.image();
+      for (const uint32_t spacing : spacings) {
+        engine::UltrasoundSettings settings = product;
+        settings.rest_node_spacing = spacing;
+        const uint32_t used = engine::rest_node_spacing(scene, c.probe, c.needle, settings);
+        engine::UltrasoundView view(device, scene, settings);
+        view.render(c.probe, &c.needle);  // pipelines warmed, memory touched
+        std::vector<double> gpu_ms;
+        const double cpu_time_before = process_cpu_ms();
+        for (int f = 0; f < int(frames); ++f) {
+          const auto start = Clock::now();
+          view.render(c.probe, &c.needle);
+          gpu_ms.push_back(ms_since(start));
+        }
+        const double gpu_cpu_time_ms = (process_cpu_ms() - cpu_time_before) / frames;
+        // Each pass's device time, from images timed apart (the timestamps add a barrier a pass).
+        view.set_device_timings(true);
+        std::vector<std::vector<double>> pass_ms(5);
+        for (int f = 0; f < std::max(10, int(frames) / 4); ++f) {
+          view.render(c.probe, &c.needle);
+          const auto passes = view.pass_ms();
+          for (size_t p = 0; p < std::min(passes.size(), pass_ms.size()); ++p) pass_ms[p].push_back(passes[p].second);
+        }
+        view.set_device_timings(false);
+        const auto pass_median = [&](size_t p) -> nlohmann::json {
+          return pass_ms[p].empty() ? nlohmann::json(nullptr) : nlohmann::json(percentile(pass_ms[p], 0.5));
+        };
+        std::vector<double> cpu_ms;
+        std::vector<engine::ScanLine> reference;
+        for (int r = 0; r < 3; ++r) {
+          const auto start = Clock::now();
+          reference = engine::trace_scan_lines(scene, c.probe, &c.needle, view.settings());
+          cpu_ms.push_back(ms_since(start));
+        }
+        table.add_row({c.name, lines, samples, spacing ? "fixed" : "auto", used, percentile(gpu_ms, 0.5),
+                       percentile(gpu_ms, 0.95), gpu_cpu_time_ms, percentile(cpu_ms, 0.5),
+                       max_depth_error(view.scan_lines(), reference),
+                       engine::rest_interpolation_error(scene, c.probe, c.needle, settings),
+                       pixels_unlike(view.image(), exact_image), pass_median(0), pass_median(1), pass_median(2),
+                       pass_median(3), pass_median(4)});
       }
-      const double gpu_cpu_time_ms = (process_cpu_ms() - cpu_time_before) / frames;
-      // Each pass's device time, from images timed apart (the timestamps add a barrier a pass).
-      view.set_device_timings(true);
-      std::vector<std::vector<double>> pass_ms(4);
-      for (int f = 0; f < std::max(10, int(frames) / 4); ++f) {
-        view.render(c.probe, &c.needle);
-        const auto passes = view.pass_ms();
-        for (size_t p = 0; p < std::min(passes.size(), pass_ms.size()); ++p) pass_ms[p].push_back(passes[p].second);
-      }
-      view.set_device_timings(false);
-      const auto pass_median = [&](size_t p) -> nlohmann::json {
-        return pass_ms[p].empty() ? nlohmann::json(nullptr) : nlohmann::json(percentile(pass_ms[p], 0.5));
-      };
-      std::vector<double> cpu_ms;
-      std::vector<engine::ScanLine> reference;
-      for (int r = 0; r < 3; ++r) {
-        const auto start = Clock::now();
-        reference = engine::trace_scan_lines(scene, c.probe, &c.needle, view.settings());
-        cpu_ms.push_back(ms_since(start));
-      }
-      table.add_row({c.name, lines, samples, percentile(gpu_ms, 0.5), percentile(gpu_ms, 0.95), gpu_cpu_time_ms, percentile(cpu_ms, 0.5),
-                     max_depth_error(view.scan_lines(), reference), pass_median(0), pass_median(1), pass_median(2),
-                     pass_median(3)});
     }
   }
-  table.emit("bench ultrasound: one image on " + device.device_description() +
-                 " (gpu: submitted and waited for, median and 95th percentile; cpu: the scan-line reference, one thread, "
-                 "double; gpu_cpu_time_ms: the process's CPU time per image, all threads; *_ms: each pass's device time, median)",
-             json);
+  table.emit(
+      "bench ultrasound: one image on " + device.device_description() +
+          " (gpu: submitted and waited for, median and 95th percentile; cpu: the scan-line reference, one thread, "
+          "double; gpu_cpu_time_ms: the process's CPU time per image, all threads; *_ms: each pass's device time, "
+          "median)",
+      json);
   return 0;
 }
 
