@@ -136,6 +136,7 @@ SharedMemoryImages::~SharedMemoryImages() {
 
 void SharedMemoryImages::release() {
   vkDeviceWaitIdle(context_.device());
+  pending_ = false;  // a frame of the old size: the next one replaces it
   for (VkImageView v : views_) vkDestroyImageView(context_.device(), v, nullptr);
   views_.clear();
   if (image_) vkDestroyImage(context_.device(), image_, nullptr);
@@ -226,12 +227,17 @@ bool SharedMemoryImages::recreate() {
 }
 
 std::optional<uint32_t> SharedMemoryImages::acquire(VkSemaphore) {
+  show_pending();
   if (window_.take_resized()) stale_ = true;
   if ((stale_ || !image_) && !recreate()) return std::nullopt;
   return 0;
 }
 
-void SharedMemoryImages::present(uint32_t, VkSemaphore) {
+void SharedMemoryImages::present(uint32_t, VkSemaphore) { pending_ = true; }
+
+void SharedMemoryImages::show_pending() {
+  if (!pending_) return;
+  pending_ = false;
   VK_CHECK(vkQueueWaitIdle(context_.queue()));
   X11& x = *x11_;
   XShmPutImage(x.display, x.window, x.gc, x.image, 0, 0, 0, 0, extent_.width, extent_.height, False);

@@ -36,10 +36,14 @@ class SharedMemoryImages final : public TargetImages {
   VkImageLayout final_layout() const override { return VK_IMAGE_LAYOUT_GENERAL; }
   uint64_t generation() const override { return generation_; }
   bool uses_semaphores() const override { return false; }
+  // Shows the frame presented last (show_pending), then hands out the one image again.
   std::optional<uint32_t> acquire(VkSemaphore image_ready) override;
-  // Waits for the device to finish the frame, then for the server to have copied it, so the
-  // one image is free for the next frame.
+  // The frame is shown when the next one is acquired: meanwhile the CPU prepares that one (the
+  // panels, the needle, the ultrasound's uniforms) while the device still draws this one.
   void present(uint32_t index, VkSemaphore render_done) override;
+  // Waits for the device to finish the frame presented, copies it into the window and waits for
+  // the server to have done so: the image is then free for the next frame. Nothing without one.
+  void show_pending();
 
  private:
   struct X11;         // the segment and the window's X objects (shared_memory_images.cpp)
@@ -55,6 +59,7 @@ class SharedMemoryImages final : public TargetImages {
   std::vector<VkImageView> views_;
   uint64_t generation_ = 0;
   bool stale_ = false;
+  bool pending_ = false;  // a frame presented and not yet shown
 };
 
 }  // namespace needle::engine

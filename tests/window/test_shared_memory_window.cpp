@@ -1,7 +1,8 @@
 // A CPU device's window through X11 shared memory, under Xvfb: what the X server holds in the
 // window (read back with XGetImage, independently of our capture) is the frame drawn, pixel for
-// pixel, at the first size and after a resize to an odd width; switching to the swapchain and
-// back keeps drawing it; none of it draws a validation message.
+// pixel, once the next frame has begun (a frame is shown when the next is acquired), at the first
+// size and after a resize to an odd width; switching to the swapchain and back keeps drawing it;
+// none of it draws a validation message.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -37,7 +38,7 @@ engine::FrameParams red_with_green_rectangle(engine::GpuScene& scene) {
   return params;
 }
 
-engine::RgbaImage draw_until_shown(engine::SceneRenderer& renderer, engine::WindowTarget& target, engine::Window& window,
+engine::RgbaImage draw_until_accepted(engine::SceneRenderer& renderer, engine::WindowTarget& target, engine::Window& window,
                                    const engine::FrameParams& params) {
   engine::RgbaImage image;
   for (int attempt = 0; attempt < 100; ++attempt) {
@@ -72,8 +73,12 @@ engine::RgbaImage server_pixels(const engine::Window& window, uint32_t width, ui
   return out;
 }
 
-// The frame drawn is the picture asked for, and the server shows exactly it.
-void expect_shown(const engine::Window& window, const engine::RgbaImage& drawn, uint32_t width, uint32_t height) {
+// The frame drawn is the picture asked for, and once the next frame has begun the server shows
+// exactly it.
+void expect_shown(engine::SceneRenderer& renderer, engine::WindowTarget& target, engine::Window& window,
+                  const engine::FrameParams& params, uint32_t width, uint32_t height) {
+  const engine::RgbaImage drawn = draw_until_accepted(renderer, target, window, params);
+  draw_until_accepted(renderer, target, window, params);
   ASSERT_EQ(drawn.width, width);
   ASSERT_EQ(drawn.height, height);
   EXPECT_EQ(drawn.at(5, 5)[0], 255);  // red outside the rectangle
@@ -102,7 +107,7 @@ TEST(SharedMemoryWindow, TheServerShowsTheFrameDrawnAlsoAfterAResizeAndASwitchTo
     view.background = {1.0f, 0.0f, 0.0f};
     engine::GpuScene scene(renderer, engine::Model{}, view);
     const engine::FrameParams params = red_with_green_rectangle(scene);
-    expect_shown(window, draw_until_shown(renderer, target, window, params), 320, 240);
+    expect_shown(renderer, target, window, params, 320, 240);
 
     // An odd width: rows whose pitch the device may pad.
     glfwSetWindowSize(window.handle(), 401, 301);
@@ -111,16 +116,16 @@ TEST(SharedMemoryWindow, TheServerShowsTheFrameDrawnAlsoAfterAResizeAndASwitchTo
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     ASSERT_EQ(window.framebuffer_extent().width, 401u);
-    expect_shown(window, draw_until_shown(renderer, target, window, params), 401, 301);
+    expect_shown(renderer, target, window, params, 401, 301);
 
     ASSERT_TRUE(target.set_presentation(Presentation::Fifo));
     EXPECT_EQ(target.presentation(), Presentation::Fifo);
-    engine::RgbaImage through_swapchain = draw_until_shown(renderer, target, window, params);
+    engine::RgbaImage through_swapchain = draw_until_accepted(renderer, target, window, params);
     EXPECT_EQ(through_swapchain.width, 401u);
     EXPECT_EQ(through_swapchain.at(kRectX, kRectY)[1], 255);
     ASSERT_TRUE(target.set_presentation(Presentation::SharedMemory));
-    for (int i = 0; i < 3; ++i) draw_until_shown(renderer, target, window, params);
-    expect_shown(window, draw_until_shown(renderer, target, window, params), 401, 301);
+    for (int i = 0; i < 3; ++i) draw_until_accepted(renderer, target, window, params);
+    expect_shown(renderer, target, window, params, 401, 301);
     renderer.wait_idle();
   }
   for (const auto& m : device.validation_messages()) ADD_FAILURE() << "Vulkan validation " << m;
