@@ -5,14 +5,12 @@
 // none of it draws a validation message.
 #include <gtest/gtest.h>
 
-#include <chrono>
-#include <thread>
-
 #include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/passes/scene_pass.hpp"  // CommandBuffer: the overlay's command buffer
 #include "engine/render_target.hpp"
 #include "engine/window.hpp"
+#include "window_frames.hpp"
 
 // Last: Xlib's macros.
 #define GLFW_EXPOSE_NATIVE_X11
@@ -36,18 +34,6 @@ engine::FrameParams red_with_green_rectangle(engine::GpuScene& scene) {
     vkCmdClearAttachments(cmd.handle, 1, &green, 1, &rect);
   };
   return params;
-}
-
-engine::RgbaImage draw_until_accepted(engine::SceneRenderer& renderer, engine::WindowTarget& target, engine::Window& window,
-                                   const engine::FrameParams& params) {
-  engine::RgbaImage image;
-  for (int attempt = 0; attempt < 100; ++attempt) {
-    window.poll_events();
-    if (renderer.draw(target, params, &image)) return image;
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  ADD_FAILURE() << "no frame accepted in 100 attempts";
-  return image;
 }
 
 // The window's pixels as the X server holds them, as RGBA (the visual is 32-bit BGRX).
@@ -110,12 +96,7 @@ TEST(SharedMemoryWindow, TheServerShowsTheFrameDrawnAlsoAfterAResizeAndASwitchTo
     expect_shown(renderer, target, window, params, 320, 240);
 
     // An odd width: rows whose pitch the device may pad.
-    glfwSetWindowSize(window.handle(), 401, 301);
-    for (int i = 0; i < 100 && window.framebuffer_extent().width != 401; ++i) {
-      window.poll_events();
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    ASSERT_EQ(window.framebuffer_extent().width, 401u);
+    ASSERT_TRUE(resize(window, 401, 301));
     expect_shown(renderer, target, window, params, 401, 301);
 
     ASSERT_TRUE(target.set_presentation(Presentation::Fifo));
