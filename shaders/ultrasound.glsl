@@ -58,9 +58,10 @@ layout(set = 0, binding = 1, std140) uniform Layers {
 // its echoes without walking the line again: the runs of samples between the line's events (an
 // interface, the needle's wall), each with its layer and the round-trip amplitude it starts with.
 // Storage images, not buffers: a CPU device (lavapipe) reads and writes an image for all its SIMD
-// lanes at once, a storage buffer lane by lane.
-layout(set = 0, binding = 2, rgba32f) uniform image2D echoes;
-layout(set = 0, binding = 3, rgba32f) uniform image2D axial;
+// lanes at once, a storage buffer lane by lane; the echoes two-channel (rg32f), which halves what
+// the convolutions read.
+layout(set = 0, binding = 2, rg32f) uniform image2D echoes;
+layout(set = 0, binding = 3, rg32f) uniform image2D axial;
 // The per-sample passes' work item does one sample of this many neighbouring lines: a CPU device
 // (lavapipe) pays for every SIMD group of work items it starts, as much as a few samples' arithmetic
 // (docs/BENCHMARKS.md, "Ultrasound image"). engine/ultrasound/ultrasound_pass.cpp kLinesPerItem.

@@ -91,9 +91,21 @@ VkDescriptorType descriptor_type(uint32_t binding) {
   }
 }
 
-// A float image the passes keep in GENERAL layout between them.
-GpuImage work_image(const VulkanContext& context, uint32_t width, uint32_t height) {
-  return GpuImage(context, {{width, height}, VK_FORMAT_R32G32B32A32_SFLOAT, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
+// A float image the passes keep in GENERAL layout between them: four channels, or two for the
+// complex echoes (half the memory the convolutions read: on lavapipe the axial pass took half the
+// time, docs/BENCHMARKS.md, "Fifth round").
+constexpr VkFormat kComplexFormat = VK_FORMAT_R32G32_SFLOAT;
+GpuImage work_image(const VulkanContext& context, uint32_t width, uint32_t height, VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT) {
+  return GpuImage(context, {{width, height}, format, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
+}
+
+// The device stores two-channel float images (not every Vulkan device must).
+void check_device(const VulkanContext& context) {
+  VkFormatProperties properties;
+  vkGetPhysicalDeviceFormatProperties(context.physical_device(), kComplexFormat, &properties);
+  if (!context.storage_image_extended_formats() || !(properties.optimalTilingFeatures & VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT))
+    throw VulkanError("the ultrasound image needs R32G32_SFLOAT storage images (shaderStorageImageExtendedFormats), which " +
+                      context.device_description() + " does not offer");
 }
 
 void check(const EchoScene& scene, const UltrasoundSettings& settings) {
@@ -150,6 +162,7 @@ void compute_barrier(VkCommandBuffer cmd, VkPipelineStageFlags src_stage, VkAcce
 UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, const UltrasoundSettings& settings)
     : context_(context), device_(context.device()), scene_(std::move(scene)), settings_(settings) {
   check(scene_, settings_);
+  check_device(context_);
   std::array<VkDescriptorSetLayoutBinding, kBindings> bindings{};
   for (uint32_t b = 0; b < kBindings; ++b) {
     bindings[b] = {b, descriptor_type(b), 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
@@ -159,8 +172,8 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
 
   const LayersGpu packed = pack_layers(scene_);
   layers_ = GpuBuffer::device_local_with_data(context_, &packed, sizeof packed, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-  echoes_ = work_image(context_, settings_.samples, settings_.lines);
-  axial_ = work_image(context_, settings_.samples, settings_.lines);
+  echoes_ = work_image(context_, settings_.samples, settings_.lines, kComplexFormat);
+  axial_ = work_image(context_, settings_.samples, settings_.lines, kComplexFormat);
   runs_ = work_image(context_, kMaxRuns, settings_.lines);
   rest_offsets_ = work_image(context_, settings_.samples + 1, settings_.lines);  // rest_nodes() at a spacing of 1
   lines_ = GpuBuffer::host_visible(context_, settings_.lines * sizeof(LineRecordGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);

@@ -219,7 +219,13 @@ void VulkanContext::create_device() {
     if (imports_host_memory_) extensions.push_back(VK_EXT_EXTERNAL_MEMORY_HOST_EXTENSION_NAME);
   }
 
+  // Two-channel float storage images: the ultrasound's echoes (engine/ultrasound/ultrasound_pass.cpp).
+  VkPhysicalDeviceFeatures offered_features{}, features{};
+  vkGetPhysicalDeviceFeatures(physical_device_, &offered_features);
+  features.shaderStorageImageExtendedFormats = offered_features.shaderStorageImageExtendedFormats;
+  storage_image_extended_formats_ = features.shaderStorageImageExtendedFormats == VK_TRUE;
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  info.pEnabledFeatures = &features;
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue_info;
   info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());

@@ -43,6 +43,8 @@ class VulkanContext {
   uint32_t timestamp_valid_bits() const { return timestamp_valid_bits_; }
   // VK_EXT_external_memory_host is enabled (a CPU device made for a window, when it offers it).
   bool imports_host_memory() const { return imports_host_memory_; }
+  // shaderStorageImageExtendedFormats is enabled (when the device offers it).
+  bool storage_image_extended_formats() const { return storage_image_extended_formats_; }
   // Highest sample count ≤ wanted supported for colour and depth attachments together.
   VkSampleCountFlagBits max_msaa(int wanted) const;
 
@@ -74,6 +76,7 @@ class VulkanContext {
   uint32_t queue_family_ = 0;
   uint32_t timestamp_valid_bits_ = 0;
   bool imports_host_memory_ = false;
+  bool storage_image_extended_formats_ = false;
   VkCommandPool command_pool_ = VK_NULL_HANDLE;
 
   mutable std::mutex messages_mutex_;  // the layer may call back from the driver's threads
