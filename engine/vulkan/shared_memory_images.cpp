@@ -79,15 +79,22 @@ struct SharedMemoryImages::X11 {
   GC gc = nullptr;
   XShmSegmentInfo segment{};
   XImage* image = nullptr;  // over the segment, rowPitch / 4 pixels wide
+  bool attached = false;    // the server holds the segment
 
+  // The XImage alone (its pixels are the segment's, not Xlib's to free).
+  void drop_image() {
+    if (!image) return;
+    image->data = nullptr;
+    XDestroyImage(image);
+    image = nullptr;
+  }
   void release() {
-    if (image) {
+    if (attached) {
       XShmDetach(display, &segment);
       XSync(display, False);
-      image->data = nullptr;  // the segment's, not Xlib's to free
-      XDestroyImage(image);
-      image = nullptr;
+      attached = false;
     }
+    drop_image();
     if (segment.shmaddr) shmdt(segment.shmaddr);
     segment = {};
   }
@@ -126,7 +133,13 @@ SharedMemoryImages::SharedMemoryImages(const VulkanContext& context, Window& win
   x11_->window = glfwGetX11Window(window.handle());
   XGetWindowAttributes(x11_->display, x11_->window, &x11_->attributes);
   x11_->gc = XCreateGC(x11_->display, x11_->window, 0, nullptr);
-  recreate();
+  try {
+    recreate();
+  } catch (...) {
+    release();  // no destructor runs for an object not made
+    XFreeGC(x11_->display, x11_->gc);
+    throw;
+  }
 }
 
 SharedMemoryImages::~SharedMemoryImages() {
@@ -193,12 +206,8 @@ bool SharedMemoryImages::recreate() {
   if (!x.image || x.image->bits_per_pixel != 32 || size_t(x.image->bytes_per_line) != layout.rowPitch)
     throw VulkanError("X11 shared memory presentation: the server's image of this window is not 32 bits a pixel, rows of " +
                       std::to_string(layout.rowPitch) + " bytes");
-  if (!attach(x.display, x.segment)) {
-    x.image->data = nullptr;
-    XDestroyImage(x.image);
-    x.image = nullptr;
-    throw VulkanError("X11 shared memory presentation: the X server refused the segment");
-  }
+  if (!attach(x.display, x.segment)) throw VulkanError("X11 shared memory presentation: the X server refused the segment");
+  x.attached = true;
 
   auto host_pointer_properties = reinterpret_cast<PFN_vkGetMemoryHostPointerPropertiesEXT>(
       vkGetDeviceProcAddr(device, "vkGetMemoryHostPointerPropertiesEXT"));
