@@ -148,7 +148,8 @@ glm::dvec3 rest_position(const DeformationField& field, const glm::dvec3& x, int
   return rest;
 }
 
-uint32_t rest_node_spacing(const DeformationField& field, double sample_spacing_m) {
+uint32_t rest_node_spacing(const DeformationField& field, const UltrasoundSettings& settings, double sample_spacing_m) {
+  if (settings.rest_node_spacing) return settings.rest_node_spacing;
   double curvature = 0.0;  // Σ_k 3|u_k(c_k)|/ε_k², per metre
   for (const Kelvinlet& k : field.loads)
     curvature += 3.0 * center_compliance(field.material, k.epsilon) * glm::length(k.force) / (k.epsilon * k.epsilon);
@@ -225,14 +226,13 @@ std::vector<ScanLine> trace_scan_lines(const EchoScene& scene, const UltrasoundP
 
 uint32_t rest_node_spacing(const EchoScene& scene, const UltrasoundProbe& probe, const NeedleLoad& needle,
                            const UltrasoundSettings& settings) {
-  if (settings.rest_node_spacing) return settings.rest_node_spacing;
-  return echo::rest_node_spacing(echo::echo_field(scene, &needle), probe.depth_m / settings.samples);
+  return echo::rest_node_spacing(echo::echo_field(scene, &needle), settings, probe.depth_m / settings.samples);
 }
 
 double rest_interpolation_error(const EchoScene& scene, const UltrasoundProbe& probe, const NeedleLoad& needle,
                                 const UltrasoundSettings& settings) {
   const DeformationField field = echo::echo_field(scene, &needle);
-  const uint32_t spacing = rest_node_spacing(scene, probe, needle, settings);
+  const uint32_t spacing = echo::rest_node_spacing(field, settings, probe.depth_m / settings.samples);
   double worst = 0.0;
   for (uint32_t i = 0; i < settings.lines; ++i) {
     const glm::dvec3 origin = echo::line_origin(probe, settings, i);

@@ -54,7 +54,7 @@ inline int deciding_layer(int from, int to) { return to > from ? to : from; }
 DeformationField echo_field(const EchoScene& scene, const NeedleLoad* needle);
 // The rest position whose displaced position is x: X = x − u(X) by fixed-point iteration.
 glm::dvec3 rest_position(const DeformationField& field, const glm::dvec3& x, int iterations = kRestIterations);
-// The rest nodes' spacing in samples (UltrasoundSettings::rest_node_spacing 0: automatic) for a
+// The rest nodes' spacing in samples: the settings' own, or for 0 (automatic) the one for this
 // field sampled every `sample_spacing_m` down the lines: the largest power of two up to
 // kMaxRestNodeSpacing whose interpolation error estimate, h²/8 · Σ_k 3|u_k(c_k)|/ε_k², stays
 // within kRestTolerance_m (1 when none does). Linear interpolation between nodes h apart errs by
@@ -64,7 +64,7 @@ glm::dvec3 rest_position(const DeformationField& field, const glm::dvec3& x, int
 // ultrasound's rest_error_m).
 constexpr double kRestTolerance_m = kScattererCell_m / 50.0;  // design value: 2 µm, far below a sample (≥ 98 µm)
 constexpr uint32_t kMaxRestNodeSpacing = 16;
-uint32_t rest_node_spacing(const DeformationField& field, double sample_spacing_m);
+uint32_t rest_node_spacing(const DeformationField& field, const UltrasoundSettings& settings, double sample_spacing_m);
 // Sample j's rest position on a line as the GPU finds it (shaders/ultrasound.glsl, rest_of_sample):
 // the offsets rest − x at the nodes `spacing` samples apart, linearly interpolated.
 glm::dvec3 interpolated_rest_position(const DeformationField& field, const UltrasoundProbe& probe,

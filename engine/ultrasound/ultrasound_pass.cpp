@@ -287,7 +287,7 @@ std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProb
   u.elevation = glm::vec4(glm::vec3(probe.elevation()), 0.0f);
   u.image = glm::vec4(float(probe.depth_m), float(probe.width_m), float(dz), float(dx));
   u.counts = glm::uvec4(s.lines, s.samples, uint32_t(scene_.layers.size()), uint32_t(field.loads.size()));
-  const uint32_t rest_spacing = s.rest_node_spacing ? s.rest_node_spacing : echo::rest_node_spacing(field, dz);
+  const uint32_t rest_spacing = echo::rest_node_spacing(field, s, dz);
   u.kernel = glm::uvec4(uint32_t(axial.size() - 1), uint32_t(lateral.size() - 1), s.speckle ? 1u : 0u, rest_spacing);
   u.beam = glm::vec4(float(echo::nepers_per_m(1.0, probe.frequency_MHz)),
                      float(echo::nepers_per_m(echo::kTimeGain_dB_per_cm_MHz, probe.frequency_MHz)),
