@@ -73,25 +73,37 @@ void UltrasoundWindow::draw_panel(const engine::NeedleLoad& needle, const engine
   ImGui::End();
 }
 
+engine::UltrasoundView& UltrasoundWindow::view() {
+  if (!view_) {
+    engine::UltrasoundSettings settings;
+    settings.sweep_frames = sweep_frames_;
+    view_ = std::make_unique<engine::UltrasoundView>(device_, scene_, settings);
+  }
+  return *view_;
+}
+
+void UltrasoundWindow::set_sweep_frames(uint32_t frames) {
+  sweep_frames_ = frames;
+  if (view_ && view_->settings().sweep_frames != frames) view_->set_sweep_frames(frames);
+}
+
 engine::RgbaImage UltrasoundWindow::picture(const engine::NeedleLoad& needle) {
-  if (!view_) view_ = std::make_unique<engine::UltrasoundView>(device_, scene_);
   const engine::UltrasoundProbe shown = probe(needle);
-  view_->render(shown, &needle);
-  return engine::to_picture(view_->image(), shown);
+  view().render(shown, &needle);
+  return engine::to_picture(view().image(), shown);
 }
 
 void UltrasoundWindow::add_to_frame(engine::FrameParams& params, const engine::SceneRenderer& renderer, engine::Extent frame,
                                     const engine::NeedleLoad& needle) {
-  if (!view_) view_ = std::make_unique<engine::UltrasoundView>(device_, scene_);
   // None when neither the probe nor the needle moved: the image shown stays.
-  if (engine::CommandRecorder image = view_->record(probe(needle), &needle)) {
+  if (engine::CommandRecorder image = view().record(probe(needle), &needle)) {
     params.before_pass = [before = std::move(params.before_pass), image](const engine::CommandBuffer& cmd) {
       if (before) before(cmd);
       image(cmd);
     };
   }
   if (!rect_) return;
-  engine::CommandRecorder drawn = view_->draw(renderer, *rect_, frame);
+  engine::CommandRecorder drawn = view().draw(renderer, *rect_, frame);
   rect_.reset();
   if (!drawn) return;
   params.overlay = [overlay = std::move(params.overlay), drawn](const engine::CommandBuffer& cmd) {

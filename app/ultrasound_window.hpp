@@ -1,6 +1,6 @@
 // The ultrasound image beside the 3D view: an ImGui window keeping the room for the image, the
-// image made each frame by the compute passes before the scene's render pass and drawn into that
-// room after the panels. The probe is the task's, moved with keys (J/L along the array, I/K
+// image made by the compute passes before the scene's render pass, swept over kSweepFrames frames
+// (half its lines a frame), and drawn into that room after the panels. The probe is the task's, moved with keys (J/L along the array, I/K
 // across it, [ and ] turning it about the beam, always set back on the skin), or, in a task
 // without one, a probe that follows the needle. Nothing is made while the window is closed.
 #pragma once
@@ -16,6 +16,13 @@ namespace needle::app {
 
 class UltrasoundWindow {
  public:
+  // Design value: the image swept over two frames, half its lines a frame, each with that frame's
+  // probe and tissue, as a scanner fires its lines across the array in turn; at 60 frames a
+  // second a sweep takes 33 ms, slower than a scanner's acoustic bound for these lines (256 lines
+  // at 6 cm deep, 2 x depth / 1540 m/s a line: 20 ms, 50 images a second) as a scanner's is with
+  // several focal zones. It halves the frame's ultrasound work (docs/BENCHMARKS.md, "The sweep").
+  static constexpr uint32_t kSweepFrames = 2;
+
   UltrasoundWindow(const engine::GpuDevice& device, const training::Task& task);
   ~UltrasoundWindow();
 
@@ -37,6 +44,8 @@ class UltrasoundWindow {
                     const engine::NeedleLoad& needle);
   // The image for this needle, made now and read back at the probe's proportions (headless pictures).
   engine::RgbaImage picture(const engine::NeedleLoad& needle);
+  // The frames a sweep takes from the next frame on (kSweepFrames unless set; bench frame's variants).
+  void set_sweep_frames(uint32_t frames);
 
  private:
   const engine::GpuDevice& device_;
@@ -44,7 +53,9 @@ class UltrasoundWindow {
   ProbePlan plan_;
   engine::UltrasoundProbe task_probe_;  // the task's, unmoved
   ProbeOffset offset_;
+  uint32_t sweep_frames_ = kSweepFrames;
   std::unique_ptr<engine::UltrasoundView> view_;  // made when first shown
+  engine::UltrasoundView& view();
   std::optional<engine::ScreenRect> rect_;        // where the window kept room, this frame
   struct Placement {
     float x, y, pivot_x, pivot_y;

@@ -110,6 +110,11 @@ struct UltrasoundSettings {
   // keeps them within 2 µm of the exact ones for this image's deformation (rest_node_spacing below),
   // 1: at every sample.
   uint32_t rest_node_spacing = 0;
+  // The frames a window's image is swept over (UltrasoundView::record): its lines in this many
+  // slices, one a frame, each made with that frame's probe and tissue, as a scanner fires its lines
+  // across the array one after another; 1: the whole image every frame. render() always makes the
+  // whole image.
+  uint32_t sweep_frames = 1;
 };
 
 // An interface a scan line crosses: where, and between which layers (indices in
@@ -156,8 +161,10 @@ class UltrasoundView {
   const UltrasoundSettings& settings() const;
 
   // This frame's image, to record before the scene's render pass (FrameParams::before_pass,
-  // after what is there); draw() then shows it. Empty when the last image recorded is already
-  // this probe's and needle's (nothing moved): the passes then cost nothing.
+  // after what is there); draw() then shows it. The first image whole, then with a sweep over
+  // several frames (UltrasoundSettings::sweep_frames) the next slice of lines not yet made for this
+  // probe and needle. Empty when every line shown is already this probe's and needle's (nothing
+  // moved): the passes then cost nothing.
   CommandRecorder record(const UltrasoundProbe& probe, const NeedleLoad* needle);
   // Records drawing the last image recorded into `rect` of a frame of `renderer`'s (`frame` its
   // size), stretched to the rectangle: to run after the UI pass in FrameParams::overlay, so it
@@ -169,6 +176,10 @@ class UltrasoundView {
   RgbaImage image() const;
   // The scan lines the GPU traced for the last image, read back (what trace_scan_lines computes).
   std::vector<ScanLine> scan_lines() const;
+
+  // The sweep from the next frame on (UltrasoundSettings::sweep_frames, at least 1): every line is
+  // made again.
+  void set_sweep_frames(uint32_t frames);
 
   // Device time per pass of the images made from now on (timestamp queries): the last image's,
   // pass name → ms, in order; empty with timings off or on a device without timestamps.

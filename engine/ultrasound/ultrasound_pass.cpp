@@ -27,6 +27,11 @@ constexpr std::array<uint32_t, UltrasoundPass::kPasses> kWorkgroup{8, 64, 64, 64
 // The lines a work item of the per-sample passes does (ultrasound.glsl LINES_PER_ITEM): each SIMD
 // group of work items a CPU device (lavapipe) starts costs about as much as a few samples' arithmetic.
 constexpr uint32_t kLinesPerItem = 16;
+// A sweep's slices start at multiples of this many lines, so that each starts a work group of
+// every pass (vkCmdDispatchBase): the line pass's, the rest pass's and the per-sample passes'.
+constexpr uint32_t kSliceLines = 64;
+static_assert(kSliceLines % kWorkgroup[0] == 0 && kSliceLines % kWorkgroup[1] == 0 && kSliceLines % kLinesPerItem == 0,
+              "a slice starts a work group of every pass");
 constexpr size_t kMaxLoads = 8;      // ultrasound.glsl MAX_LOADS
 constexpr size_t kKernelVec4s = 5;   // ultrasound.glsl KERNEL_VEC4S
 constexpr size_t kMaxPrimitives = 128;
@@ -110,6 +115,7 @@ void check_device(const VulkanContext& context) {
 
 void check(const EchoScene& scene, const UltrasoundSettings& settings) {
   if (settings.lines == 0 || settings.samples == 0) throw std::invalid_argument("an ultrasound image needs lines and samples");
+  if (settings.sweep_frames == 0) throw std::invalid_argument("an ultrasound sweep takes at least one frame");
   if (scene.layers.size() > EchoScene::kMaxLayers)
     throw std::invalid_argument("the ultrasound takes " + std::to_string(EchoScene::kMaxLayers) + " layers, not " +
                                 std::to_string(scene.layers.size()));
@@ -226,6 +232,19 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
     }
     vkUpdateDescriptorSets(device_, uint32_t(writes.size()), writes.data(), 0, nullptr);
   }
+  set_sweep_frames(settings_.sweep_frames);
+}
+
+void UltrasoundPass::set_sweep_frames(uint32_t frames) {
+  if (frames == 0) throw std::invalid_argument("an ultrasound sweep takes at least one frame");
+  settings_.sweep_frames = frames;
+  // Slice k: groups of kSliceLines lines [k G / n, (k + 1) G / n) of the image's G, n at most G.
+  const uint32_t groups = (settings_.lines + kSliceLines - 1) / kSliceLines, n = std::min(frames, groups);
+  slices_.clear();
+  for (uint32_t k = 0; k < n; ++k)
+    slices_.push_back({std::min(settings_.lines, k * groups / n * kSliceLines), std::min(settings_.lines, (k + 1) * groups / n * kSliceLines)});
+  made_.assign(n, {});
+  next_slice_ = 0;
 }
 
 UltrasoundPass::~UltrasoundPass() {
@@ -269,7 +288,8 @@ VkPipeline UltrasoundPass::pipeline(size_t pass, uint32_t constant) {
       {ultrasound_image_comp_spv, sizeof(ultrasound_image_comp_spv)}}};
   const VkSpecializationMapEntry entry{kConstantId[pass], 0, sizeof constant};
   const VkSpecializationInfo info{1, &entry, sizeof constant, &constant};
-  return pipelines_[key] = compute_pipeline(device_, pipeline_layout_, kCode[pass].first, kCode[pass].second, &info);
+  return pipelines_[key] = compute_pipeline(device_, pipeline_layout_, kCode[pass].first, kCode[pass].second, &info,
+                                            VK_PIPELINE_CREATE_DISPATCH_BASE_BIT);  // a slice's lines (record)
 }
 
 std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProbe& probe, const NeedleLoad* needle, bool unless_shown) {
@@ -313,21 +333,32 @@ std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProb
   }
   auto bytes = std::make_shared<std::vector<uint8_t>>(sizeof u);
   std::memcpy(bytes->data(), &u, sizeof u);
-  if (unless_shown && has_image() && *bytes == recorded_) return {};
+  std::optional<size_t> slice;  // none: the whole image
+  if (unless_shown && has_image()) {
+    for (size_t k = 0; k < made_.size() && !slice; ++k)
+      if (const size_t at = (next_slice_ + k) % made_.size(); made_[at] != *bytes) slice = at;
+    if (!slice) return {};
+  }
   const std::array<uint32_t, kPasses> constants{u.counts.w, u.counts.w, u.counts.w, u.kernel.x, u.kernel.y};
   std::array<VkPipeline, kPasses> pipelines{};
   for (size_t p = 0; p < kPasses; ++p) pipelines[p] = pipeline(p, constants[p]);
   if (u.counts.w == 0) pipelines[kRestPass] = VK_NULL_HANDLE;  // a tissue at rest: no nodes to make
-  return [this, bytes, pipelines, rest_spacing](VkCommandBuffer cmd) { record(cmd, *bytes, pipelines, rest_spacing); };
+  const uint32_t lateral_radius = u.kernel.y;
+  return [this, bytes, pipelines, rest_spacing, lateral_radius, slice](VkCommandBuffer cmd) {
+    record(cmd, *bytes, pipelines, rest_spacing, lateral_radius, slice);
+  };
 }
 
 void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms, const std::array<VkPipeline, kPasses>& pipelines,
-                            uint32_t spacing) {
+                            uint32_t spacing, uint32_t lateral_radius, std::optional<size_t> slice) {
   const size_t slot = ring_;
   ring_ = (ring_ + 1) % kRing;
   std::memcpy(uniforms_[slot].mapped(), uniforms.data(), uniforms.size());
-  recorded_ = uniforms;
-  const uint32_t lines = settings_.lines, samples = settings_.samples;
+  for (size_t k = 0; k < made_.size(); ++k)
+    if (!slice || k == *slice) made_[k] = uniforms;
+  if (slice) next_slice_ = (*slice + 1) % made_.size();
+  const Slice made = slice ? slices_[*slice] : Slice{0, settings_.lines};
+  const uint32_t first = made.first, lines = made.end - made.first, samples = settings_.samples;
 
   // The last image's reads (the UI's fragment shader, a read-back copy, the passes themselves)
   // come before this image's writes.
@@ -344,7 +375,7 @@ void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uni
     work_images_ready_ = true;
   }
   // The echoes cleared for the line pass to add the specular echoes to, after the last image's
-  // passes read them.
+  // passes read them (another slice's are in the axial image by then).
   VkMemoryBarrier before_clear{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   before_clear.srcAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
   before_clear.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
@@ -365,22 +396,32 @@ void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uni
   } else {
     timed_slot_ = kRing;
   }
-  // The line pass: a work item a line; the others: a work item a sample of kLinesPerItem lines.
-  const uint32_t line_groups = (lines + kLinesPerItem - 1) / kLinesPerItem;
-  // The rest pass: a work item a node of a line, the lines across a group.
+  // The slice's lines: the line pass a work item a line; the rest pass a work item a node of a
+  // line, the lines across a group; the others a work item a sample of kLinesPerItem lines. The
+  // work groups (x, y) from the slice's first line's (vkCmdDispatchBase). The image pass also
+  // remakes the neighbouring slices' lines within the lateral kernel's reach: their picture
+  // blends this slice's lines, so after a whole sweep every line is its probe's and needle's.
+  const auto groups_of = [](uint32_t n, uint32_t size) { return (n + size - 1) / size; };
   const uint32_t nodes = (samples - 1) / spacing + 2;  // ultrasound.glsl rest_nodes
-  const std::array<VkExtent2D, kPasses> groups{{{(lines + kWorkgroup[0] - 1) / kWorkgroup[0], 1},
-                                                {(lines + kWorkgroup[1] - 1) / kWorkgroup[1], nodes},
-                                                {(samples + kWorkgroup[2] - 1) / kWorkgroup[2], line_groups},
-                                                {(samples + kWorkgroup[3] - 1) / kWorkgroup[3], line_groups},
-                                                {(samples + kWorkgroup[4] - 1) / kWorkgroup[4], line_groups}}};
+  const uint32_t line_groups = groups_of(lines, kLinesPerItem), first_group = first / kLinesPerItem;
+  const uint32_t reach_first = (first - std::min(first, lateral_radius)) / kLinesPerItem;
+  const uint32_t reach_end = groups_of(std::min(settings_.lines, made.end + lateral_radius), kLinesPerItem);
+  struct Groups {
+    uint32_t base_x, base_y, x, y;
+  };
+  const std::array<Groups, kPasses> groups{{{first / kWorkgroup[0], 0, groups_of(lines, kWorkgroup[0]), 1},
+                                            {first / kWorkgroup[1], 0, groups_of(lines, kWorkgroup[1]), nodes},
+                                            {0, first_group, groups_of(samples, kWorkgroup[2]), line_groups},
+                                            {0, first_group, groups_of(samples, kWorkgroup[3]), line_groups},
+                                            {0, reach_first, groups_of(samples, kWorkgroup[4]), reach_end - reach_first}}};
   for (size_t p = 0; p < kPasses; ++p) {
     if (p > 0)
       compute_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                       VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     if (pipelines[p]) {
+      const Groups& g = groups[p];
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines[p]);
-      vkCmdDispatch(cmd, groups[p].width, groups[p].height, 1);
+      vkCmdDispatchBase(cmd, g.base_x, g.base_y, 0, g.x, g.y, 1);
     }
     if (timed_) {
       vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0, nullptr, 0,

@@ -36,9 +36,12 @@ class UltrasoundPass {
   const UltrasoundSettings& settings() const { return settings_; }
 
   // The recorder of one image for this probe and needle (its uniforms are filled now). With
-  // `unless_shown`, none (an empty function) when the last image recorded was made from the same
-  // uniforms: the scene and settings are the pass's own, so the image would be the same.
+  // `unless_shown`, once there is an image: the next slice of the sweep (settings().sweep_frames)
+  // whose lines were last recorded from other uniforms, or none (an empty function) when every
+  // slice's were these (the scene and settings are the pass's own, so the lines would be the same).
   std::function<void(VkCommandBuffer)> update(const UltrasoundProbe& probe, const NeedleLoad* needle, bool unless_shown = false);
+  // std::invalid_argument for 0.
+  void set_sweep_frames(uint32_t frames);
 
   // The image: sampled by fragment shaders in SHADER_READ_ONLY_OPTIMAL once an image was recorded.
   VkImageView image_view() const { return image_.view(); }
@@ -62,9 +65,14 @@ class UltrasoundPass {
   static constexpr std::array<uint32_t, kPasses> kConstantId{0, 0, 0, 1, 2};
   VkPipeline pipeline(size_t pass, uint32_t constant);
   static constexpr size_t kRestPass = 1;  // kPassNames: dispatched only for a deformed tissue
-  // `spacing`: the rest nodes' (echo.kernel.w).
+  // Slice k of the sweep: lines [first, end) (ultrasound_pass.cpp, slice_lines).
+  struct Slice {
+    uint32_t first = 0, end = 0;
+  };
+  // `spacing`: the rest nodes' (echo.kernel.w), `lateral_radius` the lateral kernel's (echo.kernel.y);
+  // `slice`: the sweep's slice recorded, none: all.
   void record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms, const std::array<VkPipeline, kPasses>& pipelines,
-              uint32_t spacing);
+              uint32_t spacing, uint32_t lateral_radius, std::optional<size_t> slice);
 
   const VulkanContext& context_;
   VkDevice device_;
@@ -83,7 +91,9 @@ class UltrasoundPass {
   GpuImage image_;
   VkImageLayout image_layout_ = VK_IMAGE_LAYOUT_UNDEFINED;
   size_t ring_ = 0;
-  std::vector<uint8_t> recorded_;  // the uniforms of the last image recorded
+  std::vector<Slice> slices_;                // the sweep's
+  std::vector<std::vector<uint8_t>> made_;   // per slice, the uniforms its lines were last recorded with
+  size_t next_slice_ = 0;                    // where the sweep goes on
   VkQueryPool timestamps_ = VK_NULL_HANDLE;  // kPasses + 1 a ring slot, while timings are on
   bool timed_ = false;
   size_t timed_slot_ = kRing;  // the slot of the last image recorded with timings

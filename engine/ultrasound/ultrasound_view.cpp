@@ -41,6 +41,8 @@ RgbaImage UltrasoundView::image() const { return pass_->read_image(); }
 
 std::vector<ScanLine> UltrasoundView::scan_lines() const { return pass_->read_lines(); }
 
+void UltrasoundView::set_sweep_frames(uint32_t frames) { pass_->set_sweep_frames(frames); }
+
 void UltrasoundView::set_device_timings(bool on) { pass_->set_device_timings(on); }
 
 std::vector<std::pair<std::string, double>> UltrasoundView::pass_ms() const {

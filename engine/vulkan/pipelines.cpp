@@ -34,9 +34,10 @@ VkPipelineLayout single_set_pipeline_layout(VkDevice device, VkDescriptorSetLayo
 }
 
 VkPipeline compute_pipeline(VkDevice device, VkPipelineLayout layout, const uint32_t* code, size_t bytes,
-                            const VkSpecializationInfo* specialization) {
+                            const VkSpecializationInfo* specialization, VkPipelineCreateFlags flags) {
   const VkShaderModule module = shader_module(device, code, bytes);
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.flags = flags;
   info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_COMPUTE_BIT, module, "main", specialization};
   info.layout = layout;
   VkPipeline pipeline = VK_NULL_HANDLE;

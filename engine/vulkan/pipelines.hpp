@@ -16,9 +16,9 @@ VkDescriptorSetLayout descriptor_set_layout(VkDevice device, const std::vector<V
 // One set, no push constants.
 VkPipelineLayout single_set_pipeline_layout(VkDevice device, VkDescriptorSetLayout set_layout);
 // The compute shader `code` with `layout` and its specialization constants, if any (its module
-// destroyed once the pipeline is made).
+// destroyed once the pipeline is made); `flags` such as VK_PIPELINE_CREATE_DISPATCH_BASE_BIT.
 VkPipeline compute_pipeline(VkDevice device, VkPipelineLayout layout, const uint32_t* code, size_t bytes,
-                            const VkSpecializationInfo* specialization = nullptr);
+                            const VkSpecializationInfo* specialization = nullptr, VkPipelineCreateFlags flags = 0);
 
 struct GraphicsPipelineStates {
   std::vector<VkPipelineShaderStageCreateInfo> stages;

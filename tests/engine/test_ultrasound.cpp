@@ -254,6 +254,57 @@ TEST_F(UltrasoundTest, AFrameRecordsThePassesOnlyWhenTheProbeOrTheNeedleMoved) {
   EXPECT_EQ(view.image().pixels, rendered.pixels);
 }
 
+// A sweep over two frames: the first image whole, then after a move half the lines a frame, each
+// slice exactly the lines (picture columns) of the whole image for the new probe while the other
+// slice keeps the old probe's; after both slices the image is the whole new one and nothing more
+// is recorded. The reference is a view without a sweep rendering each probe's whole image.
+TEST_F(UltrasoundTest, ASweepMakesTheImageASliceOfLinesAFrame) {
+  engine::UltrasoundSettings swept;
+  swept.sweep_frames = 2;
+  engine::UltrasoundView view(device(), block_scene(), swept), whole(device(), block_scene());
+  const auto run = [&](const engine::CommandRecorder& recorder) {
+    ASSERT_TRUE(recorder);
+    view.pass().context().submit_and_wait([&](VkCommandBuffer cmd) { recorder(engine::CommandBuffer{cmd}); });
+  };
+  const engine::NeedleLoad needle = in_plane_needle();
+  const engine::UltrasoundProbe before = block_probe();
+  engine::UltrasoundProbe after = before;
+  after.position.y += 0.001;  // a millimetre across the plane: other scatterers on every line
+  whole.render(before, &needle);
+  const engine::RgbaImage old_image = whole.image();
+  whole.render(after, &needle);
+  const engine::RgbaImage new_image = whole.image();
+
+  // Whether columns [from, to) of `image` are those of `reference`.
+  const auto columns_match = [](const engine::RgbaImage& image, const engine::RgbaImage& reference, uint32_t from, uint32_t to) {
+    for (uint32_t y = 0; y < image.height; ++y)
+      for (uint32_t x = from; x < to; ++x)
+        for (int c = 0; c < 4; ++c)
+          if (image.pixels[(size_t(y) * image.width + x) * 4 + c] != reference.pixels[(size_t(y) * image.width + x) * 4 + c])
+            return false;
+    return true;
+  };
+  const uint32_t lines = view.settings().lines, half = lines / 2;
+  const uint32_t reach = engine::echo::kMaxKernelRadius;  // the lateral kernel's, or more
+  ASSERT_FALSE(columns_match(new_image, old_image, 0, half - reach)) << "the move changes the first slice's lines";
+  ASSERT_FALSE(columns_match(new_image, old_image, half + reach, lines)) << "and the second's";
+
+  run(view.record(before, &needle));
+  EXPECT_EQ(view.image().pixels, old_image.pixels) << "the first image is whole";
+  EXPECT_FALSE(view.record(before, &needle));
+
+  run(view.record(after, &needle));
+  const engine::RgbaImage first_half = view.image();
+  EXPECT_TRUE(columns_match(first_half, new_image, 0, half - reach));
+  EXPECT_TRUE(columns_match(first_half, old_image, half + reach, lines));
+
+  run(view.record(after, &needle));  // the other slice, though nothing moved since
+  EXPECT_EQ(view.image().pixels, new_image.pixels);
+  EXPECT_FALSE(view.record(after, &needle));
+
+  EXPECT_THROW(view.set_sweep_frames(0), std::invalid_argument);
+}
+
 TEST_F(UltrasoundTest, AScenePastTheShadersLimitsIsRefused) {
   engine::EchoScene many = block_scene();
   while (many.layers.size() <= engine::EchoScene::kMaxLayers) many.layers.push_back(many.layers.back());

@@ -79,6 +79,7 @@ struct Variant {
   bool cut_culling = true;     // cut_culling=off: the section's cut-away chunks drawn (to measure the culling)
   bool specialized = true;     // specialized=off: every draw with the general mesh shader (to measure the specializing)
   std::optional<engine::WindowTarget::Presentation> presentation;  // present=...; none: the window's own
+  std::optional<uint32_t> sweep_frames;  // sweep=N: the ultrasound image made over N frames; none: the window's own
 };
 
 std::vector<Variant> parse_variants(const std::string& list) {
@@ -104,13 +105,18 @@ std::vector<Variant> parse_variants(const std::string& list) {
                          : setting == "present=immediate" ? P::Immediate
                          : setting == "present=shm"       ? P::SharedMemory
                                                           : P::Fifo;
+      } else if (key == "sweep") {
+        const double frames = parse_number(value, "--variants sweep");
+        if (!(frames >= 1.0 && frames <= 16.0 && frames == double(int(frames))))
+          throw UsageError("--variants: sweep=N takes N in 1..16");
+        v.sweep_frames = uint32_t(frames);
       } else if (setting == "cut_culling=off") {
         v.cut_culling = false;
       } else if (setting == "specialized=off") {
         v.specialized = false;
       } else {
         throw UsageError("--variants: unknown setting '" + setting +
-                         "' (default, scale=S, cut_culling=off, specialized=off, present=fifo|mailbox|immediate|shm)");
+                         "' (default, scale=S, cut_culling=off, specialized=off, present=fifo|mailbox|immediate|shm, sweep=N)");
       }
     }
     variants.push_back(std::move(v));
@@ -162,7 +168,7 @@ struct RowOptions {
 // leaves the frame's own (automatic or fixed) render scale to it.
 std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget& target, engine::WindowTarget* window_target,
                                  engine::GpuScene& scene, const app::FrameContent& content, engine::Window* window,
-                                 const RowOptions& options) {
+                                 app::UltrasoundWindow* ultrasound, const RowOptions& options) {
   const std::optional<float> product_scale = frame.fixed_render_scale();
   const std::optional<engine::WindowTarget::Presentation> product_presentation =
       window_target ? std::optional(window_target->presentation()) : std::nullopt;
@@ -183,6 +189,7 @@ std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget&
     frame.renderer().set_specialized_pipelines(options.variants[variant].specialized);
     const std::optional<engine::WindowTarget::Presentation> presentation =
         options.variants[variant].presentation ? options.variants[variant].presentation : product_presentation;
+    if (ultrasound) ultrasound->set_sweep_frames(options.variants[variant].sweep_frames.value_or(app::UltrasoundWindow::kSweepFrames));
     if (window_target && presentation && !window_target->set_presentation(*presentation))
       throw std::runtime_error("--variants " + options.variants[variant].name + ": the window's surface does not offer it");
     const Clock::time_point now = Clock::now();
@@ -279,7 +286,8 @@ int run_bench_frame(ArgList& args) {
           if (section_view) view.section = engine::Section::Mode::Cut;
           view.ultrasound = view.has_ultrasound = ultrasound_view;
           const app::FrameContent shown = app::with_views(show, view, frame.renderer(), target);
-          const std::vector<FrameSample> samples = measure(frame, target, window_target, scene, shown, window, options);
+          const std::vector<FrameSample> samples =
+              measure(frame, target, window_target, scene, shown, window, show.ultrasound.get(), options);
           const std::string size_text = std::to_string(target.extent().width) + "x" + std::to_string(target.extent().height);
           for (size_t v = 0; v < options.variants.size(); ++v) {
             std::vector<double> untimed, timed, scales;
@@ -347,8 +355,9 @@ const CommandRegistrar reg{
      "  --no-timestamps  no device timings; otherwise frames with and without timestamps alternate in blocks\n"
      "                   of 8, the frame times are those without, the device times those with\n"
      "  --views LIST     the views open as in the window (default none): the section view cut through the needle\n"
-     "                   (or the task's plane), the ultrasound window with its 256 x 512 image made every frame\n"
-     "                   (its passes are in deformation_*, the work recorded before the scene's pass); key views\n"
+     "                   (or the task's plane), the ultrasound window with its 256 x 512 image swept over two\n"
+     "                   frames, half its lines a frame, as the window does (its passes are in deformation_*, the\n"
+     "                   work recorded before the scene's pass); key views\n"
      "  --render-scale X the frame's render scale, as run's (default auto: lowered on a CPU device while the\n"
      "                   frame misses 60 fps); key render_scale (the median of the frames'), upscale_device\n"
      "  --variants LIST  settings compared within each row, block by block in turn, ';' between variants and\n"
@@ -358,7 +367,8 @@ const CommandRegistrar reg{
      "                   fetch run masked, as before),\n"
      "                   present=fifo|mailbox|immediate (the window's swapchain and its present mode) or\n"
      "                   present=shm (a CPU device's frames through X11 shared memory); default: the window's own\n"
-     "                   (shm where it is offered, else fifo; the window's line says which)",
+     "                   (shm where it is offered, else fifo; the window's line says which),\n"
+     "                   sweep=N (the ultrasound image made over N frames, 1: whole every frame; default 2)",
      run_bench_frame}};
 
 }  // namespace
