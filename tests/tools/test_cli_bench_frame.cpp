@@ -35,16 +35,19 @@ TEST(CliBenchFrame, OffscreenRowsCarryTheContractKeysAndEveryPass) {
 TEST(CliBenchFrame, TheViewsRowDrawsTheSectionAndTheUltrasoundValidationClean) {
   const auto json_path = test_output_dir("cli_bench_frame") / "views.json";
   ProcessResult r = run_needle_sim("bench frame --contents sphere_ultrasound --sizes 320x240 --targets offscreen --frames 10 "
-                                   "--warmup 2 --views section,ultrasound --json " + quoted(json_path));
+                                   "--warmup 2 --views section,ultrasound --variants 'sweep=1;default' --json " + quoted(json_path));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
   const nlohmann::json rows = nlohmann::json::parse(std::ifstream(json_path));
-  ASSERT_EQ(rows.size(), 1u);
-  EXPECT_EQ(rows[0]["views"], "section,ultrasound");
-  EXPECT_TRUE(rows[0]["passes"].contains("deformation_device"));  // the ultrasound's passes are recorded there
+  ASSERT_EQ(rows.size(), 2u) << "the whole image every frame, and the window's sweep, in turn";
+  for (const nlohmann::json& row : rows) {
+    EXPECT_EQ(row["views"], "section,ultrasound");
+    EXPECT_TRUE(row["passes"].contains("deformation_device"));  // the ultrasound's passes are recorded there
+  }
   // The ultrasound images a task's layers: a bare tissue has none; an unknown view is refused.
   EXPECT_EQ(run_needle_sim("bench frame --contents tissue:20 --targets offscreen --views ultrasound").exit_code, 2);
   EXPECT_EQ(run_needle_sim("bench frame --targets offscreen --views xray").exit_code, 2);
+  EXPECT_EQ(run_needle_sim("bench frame --targets offscreen --variants sweep=0").exit_code, 2);
 }
 
 TEST(CliBenchFrame, VariantsTakeTurnsInOneRowGroupAndTheScaledOneTimesItsUpscale) {
