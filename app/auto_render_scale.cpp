@@ -22,27 +22,30 @@ float AutoRenderScale::next(double frame_ms) {
   periods_.clear();
   if (hold_ > 0) --hold_;
   if (trying_) {
-    trying_ = false;
     if (median > settings_.min_gain * above_ms_) {
+      if (++looks_ < settings_.trial_blocks) return scale();  // judged again on the next block
       // No faster than the step the trials left. A lower step still may be (the level of detail
       // drops at its own thresholds: the 400x400 sphere's 0.7 draws the same mesh as 1, its 0.5 a
       // coarser one), so it is tried against the same block; past the last, back to where the
       // trials started, and wait before trying again.
+      looks_ = 0;
       if (step_ + 1 < kSteps.size()) {
         ++step_;
-        trying_ = true;
       } else {
+        trying_ = false;
         step_ = left_step_;
         hold_ = settings_.hold_blocks;
       }
       return scale();
     }
+    trying_ = false;
   }
   if (tail > settings_.budget_ms) {
     if (step_ + 1 < kSteps.size() && hold_ == 0) {
       left_step_ = step_;
       ++step_;
       trying_ = true;
+      looks_ = 0;
       above_ms_ = median;
     }
   } else if (step_ > 0) {

@@ -2,8 +2,8 @@
 // below scale 1 and a part that grows with the pixel count (fixed + upscale + per_pixels *
 // scale^2): it settles on the largest step whose frame fits the budget (found here by enumerating
 // the steps), holds it without swinging, climbs back when the frame gets cheaper, goes back up
-// when a lower step is no faster; one slow frame in a block moves nothing, a tail of slow frames
-// does (the budget is held at the 95th percentile).
+// when a lower step is no faster in two blocks (not after one noisy block); one slow frame in a
+// block moves nothing, a tail of slow frames does (the budget is held at the 95th percentile).
 #include <gtest/gtest.h>
 
 #include "app/auto_render_scale.hpp"
@@ -63,20 +63,21 @@ TEST(AutoRenderScale, ClimbsBackWhenTheFrameGetsCheaper) {
   EXPECT_FLOAT_EQ(control.scale(), 1.0f);
 }
 
-TEST(AutoRenderScale, LowerStepsThatAreNoFasterAreLeftAtOnceAndTriedAgainLater) {
+TEST(AutoRenderScale, LowerStepsThatAreNoFasterAreLeftAfterTwoBlocksAndTriedAgainLater) {
   // Over budget at scale 1 (30 ms), but the upscale costs more than the smaller scene saves (33.9 ms
   // at 0.7, 31.5 ms at 0.5).
   const ModelFrame m{20.0, 10.0, 9.0};
   app::AutoRenderScale control;
   const std::vector<float> scales = run(control, m, 100);
-  const size_t lower = app::AutoRenderScale::kSteps.size() - 1;  // blocks of one round of trials
+  const app::AutoRenderScaleSettings settings;
+  // Blocks of one round of trials: two at each lower step.
+  const size_t lower = (app::AutoRenderScale::kSteps.size() - 1) * settings.trial_blocks;
   size_t at_full = 0, below_in_a_row = 0;
   for (size_t b = 0; b < scales.size(); ++b) {
     at_full += scales[b] == 1.0f;
     below_in_a_row = scales[b] < 1.0f ? below_in_a_row + 1 : 0;
-    EXPECT_LE(below_in_a_row, lower) << "block " << b << ": a block at each lower step, then back";
+    EXPECT_LE(below_in_a_row, lower) << "block " << b << ": two blocks at each lower step, then back";
   }
-  const app::AutoRenderScaleSettings settings;
   EXPECT_GE(at_full, scales.size() - lower * (scales.size() / settings.hold_blocks + 1));
   EXPECT_LT(at_full, scales.size()) << "it tries again once the hold is over";
 }
@@ -91,6 +92,26 @@ TEST(AutoRenderScale, AStepThatIsNoFasterIsPassedOverForALowerOneThatIs) {
   for (int block = 0; block < 6; ++block)
     for (size_t f = 0; f < settings.frames; ++f) control.next(period(control.scale()));
   EXPECT_FLOAT_EQ(control.scale(), 0.5f);
+}
+
+TEST(AutoRenderScale, AStepJudgedNoFasterInOneNoisyBlockIsKeptWhenTheNextShowsItFaster) {
+  // The trainee's window with the ultrasound open: 30 ms at 1, 20 at 0.7 (still over the budget),
+  // 14 at 0.5; but the first block at 0.5 is a loaded machine's, 22 ms, slower than 0.7's. One
+  // block's judgment would go back to 0.7 and hold a frame that misses for the whole hold.
+  const auto period = [](float scale) { return scale == 1.0f ? 30.0 : scale > 0.6f ? 20.0 : 14.0; };
+  const app::AutoRenderScaleSettings settings;
+  app::AutoRenderScale control;
+  bool noisy_done = false;
+  std::vector<float> scales;
+  for (int block = 0; block < 8; ++block) {
+    const bool noisy = control.scale() == 0.5f && !noisy_done;
+    for (size_t f = 0; f < settings.frames; ++f) control.next(noisy ? 22.0 : period(control.scale()));
+    noisy_done = noisy_done || noisy;
+    scales.push_back(control.scale());
+  }
+  ASSERT_TRUE(noisy_done) << "0.5 was tried";
+  EXPECT_FLOAT_EQ(scales.back(), 0.5f);
+  for (size_t b = 3; b < scales.size(); ++b) EXPECT_FLOAT_EQ(scales[b], 0.5f) << "block " << b;
 }
 
 TEST(AutoRenderScale, AFrameWhoseMedianFitsButWhoseTailMissesIsLowered) {
