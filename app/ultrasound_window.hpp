@@ -1,8 +1,9 @@
 // The ultrasound image beside the 3D view: an ImGui window keeping the room for the image, the
 // image made by the compute passes before the scene's render pass, swept over kSweepFrames frames
-// (half its lines a frame), and drawn into that room after the panels. The probe is the task's, moved with keys (J/L along the array, I/K
-// across it, [ and ] turning it about the beam, always set back on the skin), or, in a task
-// without one, a probe that follows the needle. Nothing is made while the window is closed.
+// (half its lines a frame), and drawn into that room after the panels. The probe is the task's,
+// moved with keys (J/L along the array, I/K across it, [ and ] turning it about the beam, always
+// set back on the skin), or, in a task without one, a probe that follows the needle. Nothing is
+// made while the window is closed.
 #pragma once
 
 #include <memory>
@@ -17,10 +18,10 @@ namespace needle::app {
 class UltrasoundWindow {
  public:
   // Design value: the image swept over two frames, half its lines a frame, each with that frame's
-  // probe and tissue, as a scanner fires its lines across the array in turn; at 60 frames a
-  // second a sweep takes 33 ms, slower than a scanner's acoustic bound for these lines (256 lines
-  // at 6 cm deep, 2 x depth / 1540 m/s a line: 20 ms, 50 images a second) as a scanner's is with
-  // several focal zones. It halves the frame's ultrasound work (docs/BENCHMARKS.md, "The sweep").
+  // probe and tissue, as a scanner fires its lines across the array in turn. At 60 frames a
+  // second a sweep takes 33 ms; a scanner's takes at least 20 ms for these lines (256 lines at
+  // 6 cm deep, 2 x depth / 1540 m/s a line) and 40 ms with two focal zones. The frame's
+  // ultrasound device time is 0.6 of the whole image's (docs/BENCHMARKS.md, "The sweep").
   static constexpr uint32_t kSweepFrames = 2;
 
   UltrasoundWindow(const engine::GpuDevice& device, const training::Task& task);

@@ -65,7 +65,7 @@ class UltrasoundPass {
   static constexpr std::array<uint32_t, kPasses> kConstantId{0, 0, 0, 1, 2};
   VkPipeline pipeline(size_t pass, uint32_t constant);
   static constexpr size_t kRestPass = 1;  // kPassNames: dispatched only for a deformed tissue
-  // Slice k of the sweep: lines [first, end) (ultrasound_pass.cpp, slice_lines).
+  // Slice k of the sweep: lines [first, end) (set_sweep_frames divides the image).
   struct Slice {
     uint32_t first = 0, end = 0;
   };
