@@ -84,7 +84,7 @@ engine::UltrasoundView& UltrasoundWindow::view() {
 
 void UltrasoundWindow::set_sweep_frames(uint32_t frames) {
   sweep_frames_ = frames;
-  if (view_ && view_->settings().sweep_frames != frames) view_->set_sweep_frames(frames);
+  if (view_) view_->set_sweep_frames(frames);
 }
 
 engine::RgbaImage UltrasoundWindow::picture(const engine::NeedleLoad& needle) {

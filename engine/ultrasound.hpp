@@ -177,8 +177,8 @@ class UltrasoundView {
   // The scan lines the GPU traced for the last image, read back (what trace_scan_lines computes).
   std::vector<ScanLine> scan_lines() const;
 
-  // The sweep from the next frame on (UltrasoundSettings::sweep_frames, at least 1): every line is
-  // made again.
+  // The sweep from the next frame on (UltrasoundSettings::sweep_frames, at least 1): when it
+  // changes, every line is made again.
   void set_sweep_frames(uint32_t frames);
 
   // Device time per pass of the images made from now on (timestamp queries): the last image's,

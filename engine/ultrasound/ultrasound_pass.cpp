@@ -232,14 +232,19 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
     }
     vkUpdateDescriptorSets(device_, uint32_t(writes.size()), writes.data(), 0, nullptr);
   }
-  set_sweep_frames(settings_.sweep_frames);
+  divide_lines();
 }
 
 void UltrasoundPass::set_sweep_frames(uint32_t frames) {
   if (frames == 0) throw std::invalid_argument("an ultrasound sweep takes at least one frame");
+  if (frames == settings_.sweep_frames) return;
   settings_.sweep_frames = frames;
+  divide_lines();
+}
+
+void UltrasoundPass::divide_lines() {
   // Slice k: groups of kSliceLines lines [k G / n, (k + 1) G / n) of the image's G, n at most G.
-  const uint32_t groups = (settings_.lines + kSliceLines - 1) / kSliceLines, n = std::min(frames, groups);
+  const uint32_t groups = (settings_.lines + kSliceLines - 1) / kSliceLines, n = std::min(settings_.sweep_frames, groups);
   slices_.clear();
   for (uint32_t k = 0; k < n; ++k)
     slices_.push_back({std::min(settings_.lines, k * groups / n * kSliceLines), std::min(settings_.lines, (k + 1) * groups / n * kSliceLines)});

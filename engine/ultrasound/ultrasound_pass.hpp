@@ -40,7 +40,7 @@ class UltrasoundPass {
   // whose lines were last recorded from other uniforms, or none (an empty function) when every
   // slice's were these (the scene and settings are the pass's own, so the lines would be the same).
   std::function<void(VkCommandBuffer)> update(const UltrasoundProbe& probe, const NeedleLoad* needle, bool unless_shown = false);
-  // std::invalid_argument for 0.
+  // From the next image on, every line made again when it changes; std::invalid_argument for 0.
   void set_sweep_frames(uint32_t frames);
 
   // The image: sampled by fragment shaders in SHADER_READ_ONLY_OPTIMAL once an image was recorded.
@@ -65,10 +65,12 @@ class UltrasoundPass {
   static constexpr std::array<uint32_t, kPasses> kConstantId{0, 0, 0, 1, 2};
   VkPipeline pipeline(size_t pass, uint32_t constant);
   static constexpr size_t kRestPass = 1;  // kPassNames: dispatched only for a deformed tissue
-  // Slice k of the sweep: lines [first, end) (set_sweep_frames divides the image).
+  // Slice k of the sweep: lines [first, end).
   struct Slice {
     uint32_t first = 0, end = 0;
   };
+  // settings_.sweep_frames => slices_, and made_ emptied: every slice is made again.
+  void divide_lines();
   // `spacing`: the rest nodes' (echo.kernel.w), `lateral_radius` the lateral kernel's (echo.kernel.y);
   // `slice`: the sweep's slice recorded, none: all.
   void record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms, const std::array<VkPipeline, kPasses>& pipelines,

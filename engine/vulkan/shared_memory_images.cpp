@@ -49,6 +49,19 @@ bool is_bgrx(Display* display, const XWindowAttributes& attributes) {
          v->green_mask == 0x00ff00 && v->blue_mask == 0x0000ff;
 }
 
+// A private System V segment of `bytes` attached here (segment.shmid and shmaddr set, read-only to
+// the server), removed once both sides detach; false, nothing attached, where the system refuses.
+bool make_segment(XShmSegmentInfo& segment, size_t bytes) {
+  segment.shmid = shmget(IPC_PRIVATE, bytes, IPC_CREAT | 0600);
+  if (segment.shmid < 0) return false;
+  void* at = shmat(segment.shmid, nullptr, 0);
+  shmctl(segment.shmid, IPC_RMID, nullptr);
+  if (at == reinterpret_cast<void*>(-1)) return false;
+  segment.shmaddr = static_cast<char*>(at);
+  segment.readOnly = True;
+  return true;
+}
+
 VkDeviceSize host_pointer_alignment(const VulkanContext& context) {
   VkPhysicalDeviceExternalMemoryHostPropertiesEXT host{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTERNAL_MEMORY_HOST_PROPERTIES_EXT};
   VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &host};
@@ -111,12 +124,7 @@ std::string SharedMemoryImages::unavailable(const VulkanContext& context, const 
   if (!XGetWindowAttributes(display, x_window, &attributes) || !is_bgrx(display, attributes))
     return "the window's visual is not 32-bit BGRX";
   XShmSegmentInfo probe{};
-  probe.shmid = shmget(IPC_PRIVATE, 4096, IPC_CREAT | 0600);
-  if (probe.shmid < 0) return "no shared memory segment could be made (shmget)";
-  probe.shmaddr = static_cast<char*>(shmat(probe.shmid, nullptr, 0));
-  shmctl(probe.shmid, IPC_RMID, nullptr);  // gone once both sides detach
-  if (probe.shmaddr == reinterpret_cast<char*>(-1)) return "no shared memory segment could be attached here (shmat)";
-  probe.readOnly = True;
+  if (!make_segment(probe, 4096)) return "no shared memory segment could be made here (shmget, shmat)";
   const bool attached = attach(display, probe);
   if (attached) {
     XShmDetach(display, &probe);
@@ -192,15 +200,8 @@ bool SharedMemoryImages::recreate() {
   const VkDeviceSize alignment = std::max<VkDeviceSize>(host_pointer_alignment(context_), 1);
   const VkDeviceSize bytes = (std::max(needs.size, layout.rowPitch * extent_.height) + alignment - 1) / alignment * alignment;
   X11& x = *x11_;
-  x.segment.shmid = shmget(IPC_PRIVATE, bytes, IPC_CREAT | 0600);
-  if (x.segment.shmid < 0) throw VulkanError("X11 shared memory presentation: shmget of " + std::to_string(bytes) + " bytes failed");
-  x.segment.shmaddr = static_cast<char*>(shmat(x.segment.shmid, nullptr, 0));
-  shmctl(x.segment.shmid, IPC_RMID, nullptr);
-  if (x.segment.shmaddr == reinterpret_cast<char*>(-1)) {
-    x.segment.shmaddr = nullptr;
-    throw VulkanError("X11 shared memory presentation: shmat failed");
-  }
-  x.segment.readOnly = True;
+  if (!make_segment(x.segment, bytes))
+    throw VulkanError("X11 shared memory presentation: no segment of " + std::to_string(bytes) + " bytes (shmget, shmat)");
   x.image = XShmCreateImage(x.display, x.attributes.visual, unsigned(x.attributes.depth), ZPixmap, x.segment.shmaddr, &x.segment,
                             unsigned(layout.rowPitch / 4), extent_.height);
   if (!x.image || x.image->bits_per_pixel != 32 || size_t(x.image->bytes_per_line) != layout.rowPitch)

@@ -302,6 +302,12 @@ TEST_F(UltrasoundTest, ASweepMakesTheImageASliceOfLinesAFrame) {
   EXPECT_EQ(view.image().pixels, new_image.pixels);
   EXPECT_FALSE(view.record(after, &needle));
 
+  view.set_sweep_frames(2);  // as it was: nothing to make again
+  EXPECT_FALSE(view.record(after, &needle));
+  view.set_sweep_frames(1);  // another sweep: every line made again, here at once
+  run(view.record(after, &needle));
+  EXPECT_EQ(view.image().pixels, new_image.pixels);
+  EXPECT_FALSE(view.record(after, &needle));
   EXPECT_THROW(view.set_sweep_frames(0), std::invalid_argument);
 }
 
