@@ -36,19 +36,25 @@ LayerShape slab(double top, double thickness) {
   return LayerShape::slab(Vector3d(0, 0, top), Vector3d::UnitZ(), thickness);
 }
 
-TissueModel slab_stack() {
+// The stack's thicknesses: outer from 0 to −outer, middle to −(outer + middle), inner below it, the
+// tip starting `start` above the outer surface.
+struct StackGeometry {
+  double start, outer, middle, inner;
+};
+
+TissueModel slab_stack(const StackGeometry& g) {
   LayerMechanics bone;
   bone.rigid = true;
-  return TissueModel({{"outer", slab(0.0, 0.010), mechanics(200, 0, 1.0, 0.3, 40, 60)},
-                      {"middle", slab(-0.010, 0.020), mechanics(100, 20000, 2.0, 0.5, 80, 120)},
-                      {"inner", slab(-0.030, 0.030), mechanics(0, 0, 0, 0.1, 20, 30)},
-                      {"bone", slab(-0.060, 0.010), bone}});
+  return TissueModel({{"outer", slab(0.0, g.outer), mechanics(200, 0, 1.0, 0.3, 40, 60)},
+                      {"middle", slab(-g.outer, g.middle), mechanics(100, 20000, 2.0, 0.5, 80, 120)},
+                      {"inner", slab(-g.outer - g.middle, g.inner), mechanics(0, 0, 0, 0.1, 20, 30)},
+                      {"bone", slab(-g.outer - g.middle - g.inner, 0.010), bone}});
 }
 
-// The closed forms, with depths measured from the start (5 mm above the outer surface).
+TissueModel slab_stack() { return slab_stack({kStart, 0.010, 0.020, 0.030}); }
+
+// The middle surface's deflection when it gives way: the root of k₁d + k₂d² = F_p.
 const double kMiddleDeflection = (-100.0 + std::sqrt(100.0 * 100.0 + 4.0 * 20000.0 * 2.0)) / (2.0 * 20000.0);
-constexpr double kOuterPop = 0.005 + 1.0 / 200.0;
-const double kMiddlePop = 0.015 + kMiddleDeflection;  // met at its rest surface: the outer popped above it
 
 // Σ fᵢ Lᵢ for the shaft down to `depth` (all layers punctured above it).
 double friction_to(double depth, bool stick) {
@@ -78,21 +84,45 @@ const InsertionSample& sample_at(const InsertionRun& run, double depth, bool wit
   });
 }
 
-TEST(TissueInsertion, PuncturesHappenAtTheClosedFormDepthsAndForces) {
-  const InsertionRun run = run_kinematic_insertion(slab_stack(), plan(0.050, 1.0));
+void expect_closed_form_punctures(const StackGeometry& g, const InsertionPlan& p) {
+  const double outer_pop = g.start + 1.0 / 200, middle_pop = g.start + g.outer + kMiddleDeflection;
+  const InsertionRun run = run_kinematic_insertion(slab_stack(g), p);
   ASSERT_EQ(run.punctures.size(), 2u);  // the inner layer has no surface: entered, not punctured
   EXPECT_EQ(run.punctures[0].layer, 0);
-  EXPECT_NEAR(run.punctures[0].depth_m, kOuterPop, 0.02 * (kOuterPop - 0.005));
+  EXPECT_NEAR(run.punctures[0].depth_m, outer_pop, 0.02 * (outer_pop - g.start));
   EXPECT_NEAR(run.punctures[0].peak_force_N, 1.0, 0.02);  // no shaft in tissue yet: the surface alone
   EXPECT_EQ(run.punctures[1].layer, 1);
-  EXPECT_NEAR(run.punctures[1].depth_m, kMiddlePop, 0.02 * kMiddleDeflection);
+  EXPECT_NEAR(run.punctures[1].depth_m, middle_pop, 0.02 * kMiddleDeflection);
   // The middle surface plus the outer layer's friction (slipping) on all the shaft: while the tip
   // tents a surface, the tissue around the shaft is the layer above, carried down with the tent.
-  const double peak = 2.0 + 40 * (kMiddlePop - 0.005);
+  const double peak = 2.0 + 40 * (middle_pop - g.start);
   EXPECT_NEAR(run.punctures[1].peak_force_N, peak, 0.02 * peak);
   // The drop: one tick later only the friction is left.
-  const InsertionSample& after = sample_at(run, kMiddlePop + 0.005 * 0.001, false);
+  const InsertionSample& after = sample_at(run, middle_pop + p.speed_mps * p.period_s, false);
   EXPECT_LT(after.axial_force_N, 0.5 * run.punctures[1].peak_force_N);
+  // Once the outer surface gave way the tip is always in some layer: a shared face is no "outside".
+  for (const InsertionSample& s : run.samples)
+    if (s.depth_m > run.punctures[0].depth_m && s.depth_m < g.start + g.outer + g.middle + g.inner && s.t < p.depth_m / p.speed_mps)
+      EXPECT_GE(s.layer, 0) << s.depth_m;
+}
+
+TEST(TissueInsertion, PuncturesHappenAtTheClosedFormDepthsAndForces) {
+  expect_closed_form_punctures({kStart, 0.010, 0.020, 0.030}, plan(0.050, 1.0));
+}
+
+// Every number a dyadic fraction, so the drive lands exactly on each face between two layers (the
+// tick grid meets the boundaries, as round millimetres at round speeds do): the tip on a shared face
+// belongs to the inner layer, never to none.
+TEST(TissueInsertion, PuncturesHappenAtTheClosedFormDepthsAndForcesWithFacesOnTheTickGrid) {
+  const StackGeometry g{std::ldexp(1.0, -8), std::ldexp(1.0, -7), std::ldexp(1.0, -6), std::ldexp(1.0, -5)};
+  InsertionPlan p = plan(g.start + g.outer + g.middle + std::ldexp(1.0, -7), 0.25);
+  p.from = Vector3d(0, 0, g.start);
+  p.speed_mps = std::ldexp(1.0, -8);
+  p.period_s = std::ldexp(1.0, -10);
+  const double step = p.speed_mps * p.period_s;
+  for (double face : {g.start, g.start + g.outer, g.start + g.outer + g.middle})
+    ASSERT_EQ(std::fmod(face, step), 0.0) << "the faces must lie on the tick grid";
+  expect_closed_form_punctures(g, p);
 }
 
 TEST(TissueInsertion, InsideALayerTheForceIsCuttingPlusFrictionPerLayer) {
