@@ -25,15 +25,17 @@ constexpr const char* kReplayPrefix = "replay:";
 // text as the session ran it.
 constexpr int kContextVersion = 2;
 
-// The tool law's springs (issue 12), each added after recordings had been made without it: a
-// recording that names one was made with it, one that does not replays without it.
+// The tool law's springs and its passivity damper, each added after recordings had been made
+// without it: a recording that names one was made with it, one that does not replays without it.
 struct ToolLawSpring {
   const char* key;
-  double haptics::TeleoperationGains::*gain;
+  double (*get)(const haptics::TeleoperationGains&);
 };
 constexpr ToolLawSpring kToolLawSprings[] = {
-    {"lateral_stiffness_N_per_m", &haptics::TeleoperationGains::lateral_stiffness_N_per_m},
-    {"axial_stiffness_N_per_m", &haptics::TeleoperationGains::axial_stiffness_N_per_m}};
+    {"lateral_stiffness_N_per_m", [](const haptics::TeleoperationGains& g) { return g.lateral_stiffness_N_per_m; }},
+    {"axial_stiffness_N_per_m", [](const haptics::TeleoperationGains& g) { return g.axial_stiffness_N_per_m; }},
+    {"passivity_max_damping_per_tick",
+     [](const haptics::TeleoperationGains& g) { return g.passivity.max_damping_per_tick; }}};
 
 bool is_replay(const std::string& device) { return device.rfind(kReplayPrefix, 0) == 0; }
 
@@ -190,7 +192,7 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
         json& gains = scenario_json["gains"];
         // Recorded before issue 13's tool law existed: replayed with the law it was recorded with.
         if (!gains.contains("law")) gains["law"] = haptics::control_law_name(haptics::ControlLaw::Thesis);
-        // Recorded before a tool law's spring (issue 12): replayed without it.
+        // Recorded before a tool law's spring or its passivity damper: replayed without it.
         for (const ToolLawSpring& spring : kToolLawSprings)
           if (!gains.contains(spring.key)) gains[spring.key] = 0.0;
       }
@@ -243,7 +245,7 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
     const haptics::TeleoperationGains defaults;
     if (!gains.contains("law")) gains["law"] = haptics::control_law_name(defaults.law);
     for (const ToolLawSpring& spring : kToolLawSprings)
-      if (!gains.contains(spring.key)) gains[spring.key] = defaults.*spring.gain;
+      if (!gains.contains(spring.key)) gains[spring.key] = spring.get(defaults);
   }
   const std::string recorded_device = is_replay(spec) ? description_ : spec;
   context_ = json{{"version", kContextVersion},

@@ -14,7 +14,7 @@ fuzz_seconds=${FUZZ_SECONDS:-20}
 # The closed-loop simulations and the sessions run end to end: the sanitized tick is 50 to 300
 # times slower (Eigen's small matrices, no longer inlined), a session of minutes.
 suites='BenchPrecision|BenchStability|PenaltyOnRobot|ControllerLoop|DeviceSim|RealtimeLoop|RealtimeTaskSpace'
-suites+='|SimHolonomic|SimNonholonomic|SimFeel|SimHandPassivity|TissueInsertion|TissueSnapshot|RealtimeNoAlloc'
+suites+='|SimHolonomic|SimNonholonomic|SimFeel|SimHandPassivity|PassivityClosedLoop|TissueInsertion|TissueSnapshot|RealtimeNoAlloc'
 suites+='|SessionLimits|SessionReviewTest|SessionStoreFailure|ShippedTasks/ScriptedSessions|LayeredSessions|ReviewPanels|ReviewPanelsLayered'
 suites+='|CliBench[A-Za-z]*|CliHapticsBench|CliHapticsSimulate|CliRecordings|CliReport|CliReportLayered|CliRunDevices|CliRunTask|CliWrites|Tasks/RunReplay'
 suites+='|CliPostgres'

@@ -8,6 +8,7 @@
 
 #include "haptics/constraints/nonholonomic_multiplier.hpp"
 #include "haptics/constraints/penalty_contact.hpp"
+#include "haptics/control/passivity_control.hpp"
 #include "haptics/model/types.hpp"
 
 namespace needle::haptics {
@@ -89,6 +90,9 @@ struct TeleoperationGains {
   // which the virtual needle ran ahead of the hand by the tissue's stored force when a membrane gave
   // way (10 mm through the epidural space and the dura in 50 ms). The epidural scenario sets it.
   double axial_stiffness_N_per_m = 0.0;
+  // ControlLaw::Tool: the passivity observer and its damper at the device's port
+  // (haptics/control/passivity_control.hpp; docs/CONTROLLER.md, "Passivity guaranteed").
+  PassivityGains passivity;
 };
 
 // Section 4.3 (holonomic experiment, law (3.20)-(3.21)) and 4.4 (nonholonomic, (3.27)-(3.28)),

@@ -2,6 +2,7 @@
 
 #include "haptics/model/dynamics.hpp"
 #include "haptics/model/kinematics.hpp"
+#include "haptics/tissue/tissue_step.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -14,8 +15,9 @@ VirtualWorldOptions world_options(ControlLaw law) {
 }  // namespace
 
 Teleoperation::Teleoperation(const RobotModel& master, const RobotModel& virt, Scene scene, TeleoperationGains gains,
-                             double period, int virtual_substeps)
+                             double period, int virtual_substeps, std::optional<DeviceParams> device)
     : master_(master),
+      device_(device),
       gains_(gains),
       period_(period),
       substeps_(virtual_substeps),
@@ -35,6 +37,7 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
   out_ = TickOutput{};
   wrench_filtered_.setZero();
   wrench_scene_.setZero();
+  passivity_ = PassivityObserver{};
   out_.tau_m.setZero(n);
   out_.tau_v.setZero(n);
   out_.lambda_m.setZero(2);
@@ -53,6 +56,10 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
 
   const bool tool = gains_.law == ControlLaw::Tool;
   const double scale = gains_.force_scale;
+  const bool passivity = tool && gains_.passivity.enabled();
+  // The port's energy up to this tick, with the weights and stiffness the last tick's torque used.
+  if (passivity) observe_passivity(in.q_m, stored_energy(master_data_), passivity_);
+  out_.passivity_dissipated_J = passivity_.dissipated_J;
 
   // Blend weights and the sensed wrench (not in the thesis).
   advance_contact_blend(contact.rigid, contact.tissue, tool && contact.axial, T / gains_.switch_time_s, blend_,
@@ -128,10 +135,40 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
     }
   }
 
-  // (2.21) with the contact's constraint, then report the whole virtual torque.
+  // (2.21) with the contact's constraint, then report the whole virtual torque; the virtual robot damped
+  // while the world has made energy.
+  if (passivity) passivity_virtual_damping(gains_.passivity, world_.data().H, world_.dq(), T, passivity_, velocity_gain_v_);
   world_.advance(out_.tau_v, velocity_gain_v_, T, substeps_);
   out_.tau_v -= velocity_gain_v_.cwiseProduct(world_.dq());
+
+  // The damper, while the world has given the device more than it took (its H_m only then).
+  passivity_.damping_per_s = 0.0;
+  if (passivity && passivity_.dissipated_J < 0.0) {
+    // The conservative part (U's −V_m and −m gᵀx_m): the weight compensation and the tool's weight.
+    update_gravity(master_, master_data_);
+    passivity_conservative_ = master_data_.g;
+    passivity_conservative_.noalias() += master_data_.J.topRows<3>().transpose() * (gains_.tool.mass_kg * master_.gravity);
+    update_tick_dynamics(master_, master_data_);
+    passivity_control(gains_.passivity, master_data_.H, in.dq_m, passivity_conservative_, T, passivity_, out_.tau_m);
+  }
+  out_.passivity_damping_per_s = passivity_.damping_per_s;
+  out_.saturated = device_ && limit_to_device(master_data_.J, *device_, out_.tau_m);
+  passivity_applied(out_.tau_m, passivity_);  // what the device applies, unless the driver says otherwise (applied())
   return out_;
+}
+
+double Teleoperation::stored_energy(const RobotData& m) const {
+  const VirtualWorld& world = world_;
+  const Eigen::Isometry3d& tip_v = world.data().tip;
+  const Eigen::Vector3d x_m = m.tip.translation();
+  double virtual_side = world.energy() + tissue_stored_energy(world.scene().tissue, world.tissue());
+  if (gains_.law != ControlLaw::Tool) return gains_.force_scale * virtual_side;
+  const double along = world.report().axis.dot(x_m - tip_v.translation());
+  virtual_side += 0.5 * blend_.axial * out_.axial_stiffness_N_per_m * along * along;
+  const Eigen::Vector3d offset = lateral_offset(tip_v.linear(), x_m, tip_v.translation());
+  return gains_.force_scale * virtual_side - potential_energy(master_, m) -
+         gains_.tool.mass_kg * master_.gravity.dot(x_m) +
+         0.5 * blend_.tissue * gains_.lateral_stiffness_N_per_m * offset.squaredNorm();
 }
 
 }  // namespace needle::haptics

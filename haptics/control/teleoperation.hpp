@@ -8,6 +8,9 @@
 // nothing and throws nothing.
 #pragma once
 
+#include <optional>
+
+#include "haptics/control/device_limit.hpp"
 #include "haptics/control/gains.hpp"
 #include "haptics/control/teleoperation_terms.hpp"
 #include "haptics/control/tracking.hpp"
@@ -29,20 +32,40 @@ struct TickOutput {
   VecK lambda_m;                 // (3.24), hand's push along the needle constraints, scene newtons
   double push_axial_N = 0.0;     // F_h,a: the hand's push along the needle, scene newtons (tool law, in tissue)
   double axial_stiffness_N_per_m = 0.0;  // the spring along the needle as applied (gains', held under the tick's limit)
+  double passivity_dissipated_J = 0.0;   // the passivity observer's D at the tick's start (tool law)
+  double passivity_damping_per_s = 0.0;  // β of its damper, 0 while off
+  bool saturated = false;                // tau_m was scaled down to the device's force limit
 };
 
 class Teleoperation {
  public:
   // The virtual world follows the law: under ControlLaw::Tool its robot is weightless and the
-  // needle's track decides entry (VirtualWorldOptions).
+  // needle's track decides entry (VirtualWorldOptions). With `device` the master torque is held within
+  // its force limit (limit_to_device) before it is output, so that the passivity observer counts what
+  // the device applies; without it the command goes out as computed (a kinematic master in tests).
   Teleoperation(const RobotModel& master, const RobotModel& virt, Scene scene, TeleoperationGains gains, double period,
-                int virtual_substeps);
+                int virtual_substeps, std::optional<DeviceParams> device = std::nullopt);
 
   // Both robots at the master's state, integrals cleared.
   void reset(const VecN& q_m, const VecN& dq_m);
   // Moves the virtual robot alone (e.g. to start it away from the master).
   void place_virtual(const VecN& q_v, const VecN& dq_v) { world_.reset(q_v, dq_v); }
   const TickOutput& step(const TickInput& in);
+  // The torque the device was given for the tick that follows the last step (the command after the
+  // safety monitor): the passivity observer's port. Without this call the observer takes the last
+  // step's command. A device's own force limit (the simulated Omni's, MasterPlant) is below what the
+  // loop can know and reproduce in a replay: the observer counts the torque as given.
+  void applied(const VecN& tau_m) { passivity_applied(tau_m, passivity_); }
+
+  // (master data at q_m) => U, the energy the world behind the device's port holds and may give back,
+  // with the virtual side in the hand's units (times the force scale s):
+  //   tool law:   −V_m(q_m) − m gᵀx_m + ½ w K |P (x_m − x_v)|²
+  //               + s (½ w_a K_a (x₅ᵀ(x_m − x_v))² + ½q̇_vᵀH_vq̇_v + V_v + tissue_stored_energy)
+  //   thesis law: s (½q̇_vᵀH_vq̇_v + V_v + tissue_stored_energy)
+  // (−V_m: the gravity compensation's potential; −m gᵀx_m: the rendered tool's weight; the springs at
+  // the weights and the axial stiffness of the last step.) The passivity observer's U, and with the
+  // device's own ½q̇_mᵀH_mq̇_m + V_m the world's energy at the hand (haptics/sim/hand_port.hpp).
+  double stored_energy(const RobotData& master_data) const;
 
   const VirtualWorld& world() const { return world_; }
   const RobotData& master_data() const { return master_data_; }
@@ -53,6 +76,7 @@ class Teleoperation {
 
  private:
   const RobotModel& master_;
+  std::optional<DeviceParams> device_;
   TeleoperationGains gains_;
   double period_;
   int substeps_;
@@ -66,6 +90,8 @@ class Teleoperation {
   VecN velocity_gain_v_;  // B of τ_v = τ_v0 − B q̇_v
   OperatorMultiplierScratch multiplier_scratch_;
   AxialSpringScratch axial_spring_scratch_;
+  PassivityObserver passivity_;
+  VecN passivity_conservative_;  // scratch: the master torque's conservative part
   Wrench wrench_filtered_ = Wrench::Zero();
   Wrench wrench_scene_ = Wrench::Zero();  // filtered, net of the tool's weight (tool law), divided by the force scale
   TickOutput out_;

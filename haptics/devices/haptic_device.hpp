@@ -43,6 +43,10 @@ class HapticDevice {
   virtual void read(DeviceReading& out) noexcept = 0;
   // Real-time: sends the command (already saturated by the safety monitor).
   virtual void write(const DeviceCommand& command) noexcept = 0;
+  // Real-time, after write(): whether the device applied less than it was written, at a force limit of
+  // its own (the simulated Omni's at the tip; a replay: whether the recorded device did). The loop
+  // marks the tick (ToolSnapshot::limits, kLimitForce) so that no clipping goes unsaid.
+  virtual bool held_back() const noexcept { return false; }
 };
 
 }  // namespace needle::haptics

@@ -8,19 +8,25 @@ void ReplayDevice::open() {
   RecordingReader reader(path_);
   header_ = reader.header();
   readings_.clear();
+  held_back_.clear();
   next_ = 0;
   std::vector<TickSample> block;
   while (reader.next(block)) {
-    // Commands are discarded, but the loop builds them in the recorded space so the safety
-    // monitor and the step see the session as it was.
+    // The loop builds its commands in the recorded space so the safety monitor and the step see
+    // the session as it was.
     if (readings_.empty()) {
       caps_.command_space = block.front().command.space;
       caps_.joint_count = block.front().command.joint_count;
     }
-    for (const TickSample& s : block) readings_.push_back(s.reading);
+    for (const TickSample& s : block) {
+      readings_.push_back(s.reading);
+      held_back_.push_back((s.state.limits & kLimitForce) != 0);
+    }
   }
   end_ = reader.end();
 }
+
+bool ReplayDevice::held_back() const noexcept { return next_ > 0 && next_ <= held_back_.size() && held_back_[next_ - 1]; }
 
 void ReplayDevice::read(DeviceReading& out) noexcept {
   if (finished()) {

@@ -2,7 +2,8 @@
 // same step on the same build, it reproduces the recorded simulation state bit for bit.
 // After the last record the device reads as disconnected, so the safety monitor ramps any
 // force to zero. open() reads the recording through its checks, a block at a time, and keeps
-// only the readings, so a damaged recording is refused before the first tick.
+// the readings and whether the device held each tick's force back, so a damaged recording is refused
+// before the first tick.
 #pragma once
 
 #include <string>
@@ -24,6 +25,8 @@ class ReplayDevice : public HapticDevice {
   const DeviceCapabilities& capabilities() const noexcept override { return caps_; }
   void read(DeviceReading& out) noexcept override;
   void write(const DeviceCommand&) noexcept override {}
+  // Whether the recorded device held the tick last read back (its kLimitForce mark).
+  bool held_back() const noexcept override;
 
   const SessionHeader& header() const noexcept { return header_; }
   // Whether the file was closed, cut short or has no checksums (valid after open()).
@@ -37,6 +40,7 @@ class ReplayDevice : public HapticDevice {
   SessionHeader header_;
   RecordingEnd end_;
   std::vector<DeviceReading> readings_;
+  std::vector<uint8_t> held_back_;
   std::size_t next_ = 0;
 };
 

@@ -25,6 +25,8 @@ class SimDevice : public HapticDevice {
   const DeviceCapabilities& capabilities() const noexcept override { return caps_; }
   void read(DeviceReading& out) noexcept override;
   void write(const DeviceCommand& command) noexcept override;
+  // The plant scaled the torque down to its force limit at the tip.
+  bool held_back() const noexcept override { return plant_.saturated(); }
 
   const MasterPlant& plant() const noexcept { return plant_; }
 

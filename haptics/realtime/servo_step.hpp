@@ -15,6 +15,10 @@ class ServoStep {
   // the new state. Must not allocate, lock, block or log.
   virtual void step(const DeviceReading& reading, double dt_s, DeviceCommand& command,
                     ToolSnapshot& state) noexcept = 0;
+  // What the device was given after the safety monitor (saturated, rate-limited or ramped down),
+  // once per tick after step(): a step that observes the energy at the device's port needs it. The
+  // same in a replay, so the replay's observer sees what the run's did.
+  virtual void applied(const DeviceCommand& /*command*/) noexcept {}
 };
 
 }  // namespace needle::haptics

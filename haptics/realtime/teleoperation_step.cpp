@@ -6,8 +6,10 @@ namespace needle::haptics {
 
 TeleoperationStep::TeleoperationStep(const Scenario& scenario, double period_s)
     : scenario_(scenario),
-      tele_(scenario.master, scenario.virt, scenario.scene, scenario.gains, period_s, scenario.virtual_substeps),
-      previous_q_(VecN::Zero(scenario.master.dof())) {
+      tele_(scenario.master, scenario.virt, scenario.scene, scenario.gains, period_s, scenario.virtual_substeps,
+            scenario.device),
+      previous_q_(VecN::Zero(scenario.master.dof())),
+      applied_(VecN::Zero(scenario.master.dof())) {
   const int n = scenario.master.dof();
   tele_.reset(scenario.q0, VecN::Zero(n));
   in_.q_m = VecN::Zero(n);
@@ -38,6 +40,14 @@ void TeleoperationStep::step(const DeviceReading& reading, double dt_s, DeviceCo
 
   publish_virtual_state(tele_.world(), scenario_.base_in_world, dt_s, state);
   for (int i = 0; i < 3; ++i) state.operator_force_n[i] = in_.wrench_h[i];
+  if (out.passivity_damping_per_s > 0.0) state.limits |= kLimitPassivityDamper;
+  if (out.saturated) state.limits |= kLimitForce;
+}
+
+void TeleoperationStep::applied(const DeviceCommand& command) noexcept {
+  for (int j = 0; j < applied_.size(); ++j)
+    applied_[j] = command.space == CommandSpace::kJointTorque && uint32_t(j) < command.joint_count ? command.torque_nm[j] : 0.0;
+  tele_.applied(applied_);
 }
 
 }  // namespace needle::haptics

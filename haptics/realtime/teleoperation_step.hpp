@@ -18,6 +18,8 @@ class TeleoperationStep : public ServoStep {
   // Velocities come from the reading when the device gives them, else by differencing
   // joint angles over dt. Torques of joints the device cannot drive are sent as zero.
   void step(const DeviceReading& reading, double dt_s, DeviceCommand& command, ToolSnapshot& state) noexcept override;
+  // The torque the device was given: the controller's passivity observer sees it, not the command.
+  void applied(const DeviceCommand& command) noexcept override;
 
   const Teleoperation& controller() const noexcept { return tele_; }
 
@@ -26,6 +28,7 @@ class TeleoperationStep : public ServoStep {
   Teleoperation tele_;
   TickInput in_;
   VecN previous_q_;
+  VecN applied_;
   bool have_previous_ = false;
 };
 

@@ -33,6 +33,11 @@ struct TissueSnapshot {
   double surface_point_m[3] = {0.0, 0.0, 0.0};  // where the tip met that surface, at rest, world frame
 };
 
+// ToolSnapshot::limits: what held the tick's force back, one bit each.
+inline constexpr uint32_t kLimitForce = 1u;             // the safety monitor saturated the command at the device's limit
+inline constexpr uint32_t kLimitRate = 2u;              // ... or limited its rate of change
+inline constexpr uint32_t kLimitPassivityDamper = 4u;   // the passivity observer's damper acted (world not passive)
+
 struct ToolSnapshot {
   uint64_t tick = 0;
   double time_s = 0.0;
@@ -49,7 +54,8 @@ struct ToolSnapshot {
   double environment_force_n[3] = {0.0, 0.0, 0.0};  // F_v = J_phi^T lambda
   double device_force_n[3] = {0.0, 0.0, 0.0};       // what the device was commanded
   uint32_t fault = 0;  // haptics::FaultCause, 0 when none
-  uint32_t reserved = 0;
+  uint32_t limits = 0;  // kLimit* bits; recordings made before they existed hold 0 here
+
   TissueSnapshot tissue;
 };
 

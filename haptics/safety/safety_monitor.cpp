@@ -73,6 +73,7 @@ void SafetyMonitor::reset() noexcept {
   have_last_reading_ = false;
   stale_count_ = frozen_count_ = missed_count_ = 0;
   energy_j_ = 0.0;
+  limited_ = 0;
 }
 
 void SafetyMonitor::observe_energy(const DeviceReading& reading) noexcept {
@@ -111,7 +112,8 @@ FaultCause SafetyMonitor::detect(const DeviceReading& reading, const ToolSnapsho
   return FaultCause::kNone;
 }
 
-void SafetyMonitor::shape(double dt_s, DeviceCommand& command) const noexcept {
+uint32_t SafetyMonitor::shape(double dt_s, DeviceCommand& command) const noexcept {
+  uint32_t limited = 0;
   int n = 0;
   double* cmd = effort(command, n);
   // Saturation keeps the direction: one common scale for all components.
@@ -124,6 +126,7 @@ void SafetyMonitor::shape(double dt_s, DeviceCommand& command) const noexcept {
       if (std::abs(cmd[i]) > limits_.max_torque_nm[i]) scale = std::min(scale, limits_.max_torque_nm[i] / std::abs(cmd[i]));
   }
   for (int i = 0; i < n; ++i) cmd[i] *= scale;
+  if (scale < 1.0) limited |= kLimitForce;
 
   // Rate limit against the last output (zero when the space changed).
   const double max_step = (command.space == CommandSpace::kTaskForce ? limits_.max_force_rate_n_per_s
@@ -139,7 +142,9 @@ void SafetyMonitor::shape(double dt_s, DeviceCommand& command) const noexcept {
   const double step = norm(delta, n);
   if (step > max_step) {
     for (int i = 0; i < n; ++i) cmd[i] = last[i] + delta[i] * (max_step / step);
+    limited |= kLimitRate;
   }
+  return limited;
 }
 
 void SafetyMonitor::apply(uint64_t tick, const DeviceReading& reading, const ToolSnapshot& state,
@@ -161,8 +166,9 @@ void SafetyMonitor::apply(uint64_t tick, const DeviceReading& reading, const Too
     int n = 0;
     double* cmd = effort(command, n);
     for (int i = 0; i < n; ++i) cmd[i] *= factor;
+    limited_ = 0;
   } else {
-    shape(dt_s, command);
+    limited_ = shape(dt_s, command);
   }
   last_output_ = command;
   if (reading_finite(reading)) {

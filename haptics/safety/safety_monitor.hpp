@@ -50,13 +50,17 @@ class SafetyMonitor {
   // Net work the device has done on the operator since the last reset, in joules
   // (Hannaford and Ryu's passivity observer; positive means the simulation generated energy).
   double generated_energy_j() const noexcept { return energy_j_; }
+  // What the last apply() held back: kLimitForce and kLimitRate bits (tool_snapshot.hpp), 0 when the
+  // command passed unchanged or a fault's ramp replaced it.
+  uint32_t limited() const noexcept { return limited_; }
   const SafetyLimits& limits() const noexcept { return limits_; }
 
  private:
   FaultCause detect(const DeviceReading& reading, const ToolSnapshot& state, bool deadline_missed,
                     const DeviceCommand& command) noexcept;
   void observe_energy(const DeviceReading& reading) noexcept;
-  void shape(double dt_s, DeviceCommand& command) const noexcept;
+  // Saturates and rate-limits `command`; returns the kLimit* bits of what it changed.
+  uint32_t shape(double dt_s, DeviceCommand& command) const noexcept;
 
   SafetyLimits limits_;
   FaultCause fault_ = FaultCause::kNone;
@@ -70,6 +74,7 @@ class SafetyMonitor {
   uint32_t frozen_count_ = 0;
   uint32_t missed_count_ = 0;
   double energy_j_ = 0.0;
+  uint32_t limited_ = 0;
 };
 
 }  // namespace needle::haptics

@@ -33,13 +33,14 @@ nlohmann::json SimSummary::to_json() const {
           {"max_axis_deviation_m", max_axis_deviation_m}, {"energy_error_J", energy_error_J},
           {"punctures", pops},                            {"tissue_work_J", tissue_work_J},
           {"hand_work_J", hand_work_J},                   {"hand_work_min_J", hand_work_min_J},
-          {"world_dissipated_min_J", world_dissipated_min_J}, {"faults", faults}};
+          {"world_dissipated_min_J", world_dissipated_min_J}, {"saturated_s", saturated_s},
+          {"passivity_damped_s", passivity_damped_s},     {"faults", faults}};
 }
 
 SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::function<void(const TickRecord&)>& on_tick) {
   const int n = sc.master.dof();
   const double T = sc.period_s;
-  Teleoperation tele(sc.master, sc.virt, sc.scene, sc.gains, T, sc.virtual_substeps);
+  Teleoperation tele(sc.master, sc.virt, sc.scene, sc.gains, T, sc.virtual_substeps, sc.device);
   MasterPlant plant(sc.master, sc.device, sc.hand, sc.master_integrator, sc.master_substeps);
   ForceSensor sensor(sc.sensor);
   tele.reset(sc.q0, VecN::Zero(n));
@@ -87,6 +88,8 @@ SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::functi
     rec.layer = world.tissue().out.holding_layer;
     rec.hand_work_J = plant.hand_port_work();
     rec.world_stored_J = world_stored_energy(sc, plant, tele) - stored0;
+    rec.saturated = out.saturated || plant.saturated();
+    rec.passivity_damping_per_s = out.passivity_damping_per_s;
     rec.position_error = (rec.x_m - rec.x_v).norm();
     rec.force_error = 0.0;
 
@@ -116,6 +119,8 @@ SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::functi
     s.hand_work_J = rec.hand_work_J;
     s.hand_work_min_J = std::min(s.hand_work_min_J, rec.hand_work_J);
     s.world_dissipated_min_J = std::min(s.world_dissipated_min_J, rec.hand_work_J - rec.world_stored_J);
+    s.saturated_s += rec.saturated ? T : 0.0;
+    s.passivity_damped_s += rec.passivity_damping_per_s > 0.0 ? T : 0.0;
     s.energy_error_J = std::max(s.energy_error_J, std::abs(rec.energy - e0 - plant.external_work() - world.external_work()));
     if (keep_ticks) result.ticks.push_back(rec);
     if (on_tick) on_tick(rec);

@@ -10,14 +10,12 @@
 
 namespace needle::haptics {
 
-// (scenario, master plant, teleoperation) => the energy stored behind the hand's port, J:
-//   ½q̇_mᵀH_mq̇_m                 the device's own kinetic energy (the hand's mass is the hand's);
-//   V_m(q_m)                      the device's weight, unless the tool law compensates it (g_m in τ_m);
-//   −m gᵀx_m                      the rendered tool's weight (tool law);
-//   ½q̇_vᵀH_vq̇_v + V_v             the virtual robot (weightless under the tool law);
-//   k₁d²/2 + k₂d³/3 + F_g²/2k_g   the tissue's tented surface and stick (tissue_stored_energy);
-//   ½ w K |P (x_m − x_v)|²        the master's lateral spring to the needle's line (tool law);
-//   ½ w K_a (x₅ᵀ(x_m − x_v))²      the spring along the needle between the tips (tool law).
+// (scenario, master plant, teleoperation) => the energy stored behind the hand's port, J: the
+// device's own ½q̇_mᵀH_mq̇_m + V_m(q_m) (the hand's mass is the hand's) and what the world behind the
+// device's actuators holds (Teleoperation::stored_energy: under the tool law the gravity compensation's
+// −V_m, which cancels V_m, the rendered tool's weight −m gᵀx_m, the lateral and axial springs; the
+// virtual robot ½q̇_vᵀH_vq̇_v + V_v and the tissue's tented surface and stick, k₁d²/2 + k₂d³/3 +
+// F_g²/2k_g, in the hand's units).
 double world_stored_energy(const Scenario& scenario, const MasterPlant& plant, const Teleoperation& tele);
 
 }  // namespace needle::haptics

@@ -1,7 +1,5 @@
 #include "haptics/sim/master_plant.hpp"
 
-#include <Eigen/QR>
-
 #include "haptics/model/dynamics.hpp"
 #include "haptics/model/kinematics.hpp"
 
@@ -27,14 +25,8 @@ void MasterPlant::reset(const VecN& q, const VecN& dq) {
 }
 
 void MasterPlant::saturate(const VecN& tau_command) {
-  const int m = device_.actuated_joints;
-  applied_.setZero(model_.dof());
-  applied_.head(m) = tau_command.head(m);
-  // Tip force the actuated joints produce: J_aᵀ F = τ_a (least squares when singular or m ≠ 3).
-  const Eigen::Matrix<double, Eigen::Dynamic, 3, 0, kMaxDof, 3> jt = data_.J.topLeftCorner(3, m).transpose();
-  const Eigen::Vector3d force = jt.colPivHouseholderQr().solve(applied_.head(m));
-  saturated_ = force.norm() > device_.force_limit_N;
-  if (saturated_) applied_ *= device_.force_limit_N / force.norm();
+  applied_ = tau_command;
+  saturated_ = limit_to_device(data_.J, device_, applied_);
 }
 
 double MasterPlant::hand_kinetic_energy() const {

@@ -1,20 +1,14 @@
-// The master device in the loop (2.20), integrated at a finer step than the controller: motors on
-// the first `actuated_joints` joints only, their torques scaled down together when the force they
-// produce at the tip would exceed the device's limit, and the operator's hand (operator_model.hpp)
-// attached at the tip. Default limit: 3.3 N, the "maximum exertable force at nominal position" of
-// the Geomagic Touch specification sheet (3D Systems).
+// The master device in the loop (2.20), integrated at a finer step than the controller: its force
+// limit (haptics/control/device_limit.hpp) and the operator's hand (operator_model.hpp) attached at
+// the tip.
 #pragma once
 
+#include "haptics/control/device_limit.hpp"
 #include "haptics/model/robot_data.hpp"
 #include "haptics/sim/integrator.hpp"
 #include "haptics/sim/operator_model.hpp"
 
 namespace needle::haptics {
-
-struct DeviceParams {
-  double force_limit_N = 3.3;
-  int actuated_joints = 3;
-};
 
 class MasterPlant {
  public:

@@ -171,7 +171,7 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
   void gains(const json& g, const std::string& at, int n, TeleoperationGains& out) const {
     object(g, at, {"preset", "law", "gpm", "nonholonomic", "switch_time_s", "force_scale",
                    "lateral_damping_Ns_per_m", "lateral_stiffness_N_per_m", "axial_damping_Ns_per_m",
-                   "axial_stiffness_N_per_m"});
+                   "axial_stiffness_N_per_m", "passivity_max_damping_per_tick"});
     const std::string preset = string(member(g, at, "preset"), at + "/preset");
     if (preset == "thesis_holonomic") out = thesis_holonomic_gains(n);
     else if (preset == "thesis_nonholonomic") out = thesis_nonholonomic_gains(n);
@@ -206,6 +206,12 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
       out.lateral_stiffness_N_per_m = non_negative(g["lateral_stiffness_N_per_m"], at + "/lateral_stiffness_N_per_m");
     if (g.contains("axial_stiffness_N_per_m"))
       out.axial_stiffness_N_per_m = non_negative(g["axial_stiffness_N_per_m"], at + "/axial_stiffness_N_per_m");
+    if (g.contains("passivity_max_damping_per_tick")) {
+      const std::string where = at + "/passivity_max_damping_per_tick";
+      out.passivity.max_damping_per_tick = non_negative(g["passivity_max_damping_per_tick"], where);
+      if (out.passivity.max_damping_per_tick > 1.0)
+        fail(where, "must be in [0, 1] (the share of the device's velocity the damper may remove in one tick)");
+    }
   }
 
   void tool(const json& t, const std::string& at, Tool& out) const {

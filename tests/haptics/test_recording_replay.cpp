@@ -11,6 +11,8 @@
 #include "haptics/realtime/servo_tick.hpp"
 #include "haptics/realtime/sim_session.hpp"
 #include "haptics/recording/session_recorder.hpp"
+#include "haptics/sim/stress_cases.hpp"
+#include "sim_fixtures.hpp"
 #include "test_realtime_fakes.hpp"
 #include "tests/support/test_paths.hpp"
 
@@ -157,14 +159,16 @@ TEST(RecordingReplay, ThreadedRecorderWritesEverySampleByStop) {
 // device stream into a fresh controller, and every tick's state must match bit for bit.
 TEST(RecordingReplay, ControllerReplayIsBitForBit) {
   const std::string path = temp_path("sim.nsrec");
-  const std::string scenario = test::source_dir().string() + "/assets/scenarios/nonholonomic_needle.json";
+  const std::string scenario = needle::test::source_dir().string() + "/assets/scenarios/nonholonomic_needle.json";
   constexpr double kSimRate = 500.0;
   constexpr uint64_t kTicks = 3000;  // 6 s
   std::vector<ToolSnapshot> live;
+  SafetyLimits limits;  // the replay runs under the recorded device's limits, as `run` replays
   {
     SimSession sim(scenario, kSimRate);
     sim.device().open();
-    testing::TickRig rig(sim.device(), sim.step(), safety_limits_for(sim.device().capabilities()), 4096);
+    limits = safety_limits_for(sim.device().capabilities());
+    testing::TickRig rig(sim.device(), sim.step(), limits, 4096);
     SessionRecorder recorder(path, {kSessionFormatVersion, kSimRate, 0, "sim:" + scenario, ""}, rig.samples);
     for (uint64_t k = 0; k < kTicks; ++k) {
       rig.run(k, 1, 1.0 / kSimRate);
@@ -174,7 +178,7 @@ TEST(RecordingReplay, ControllerReplayIsBitForBit) {
   ReplayDevice replay(path);
   replay.open();
   SimSession fresh(scenario, kSimRate);  // only its controller step is used
-  testing::TickRig rig(replay, fresh.step(), safety_limits_for(replay.capabilities()), 4096);
+  testing::TickRig rig(replay, fresh.step(), limits, 4096);
   uint64_t differing = 0;
   bool entered_tissue = false;
   for (uint64_t k = 0; k < kTicks; ++k) {
@@ -184,6 +188,37 @@ TEST(RecordingReplay, ControllerReplayIsBitForBit) {
   }
   EXPECT_EQ(differing, 0u);
   EXPECT_TRUE(entered_tissue);
+  std::filesystem::remove(path);
+}
+
+// A hand pushing the rigid sphere at twice the device's force limit: the device holds the force back,
+// and every such tick says so in the recording (ToolSnapshot::limits, kLimitForce), so the review and
+// the score can name it; in free motion before the push no tick does.
+TEST(RecordingReplay, ATickTheDeviceHeldAtItsForceLimitIsMarkedInTheRecording) {
+  const std::string path = temp_path("push.nsrec");
+  const Scenario& h = test::scenario("holonomic_sphere");
+  Scenario push = pressing(h, 2 * h.device.force_limit_N, 10.0);
+  push.duration_s = 12.0;
+  constexpr double kRate = 500.0;
+  {
+    SimSession sim(push, kRate);
+    sim.device().open();
+    testing::TickRig rig(sim.device(), sim.step(), safety_limits_for(sim.device().capabilities()), 8192);
+    SessionRecorder recorder(path, {kSessionFormatVersion, kRate, 0, "sim", ""}, rig.samples);
+    for (uint64_t k = 0; k < uint64_t(push.duration_s * kRate); ++k) {
+      rig.run(k, 1, 1.0 / kRate);
+      recorder.drain();
+    }
+  }
+  const Session session = read_session(path);
+  uint64_t held = 0, held_in_free_motion = 0;
+  for (const TickSample& s : session.records) {
+    const bool limited = (s.state.limits & kLimitForce) != 0;
+    held += limited;
+    held_in_free_motion += limited && s.state.time_s < 3.0;  // the approach, before the surface
+  }
+  EXPECT_GT(held, 100u) << "pushing at twice the limit for seconds";
+  EXPECT_EQ(held_in_free_motion, 0u);
   std::filesystem::remove(path);
 }
 

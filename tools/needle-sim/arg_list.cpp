@@ -103,6 +103,12 @@ std::optional<float> parse_render_scale(const std::string& text, const std::stri
   return float(v);
 }
 
+std::vector<bool> parse_on_off_both(const std::string& text, const std::string& flag) {
+  if (text == "both") return {true, false};
+  if (text == "on" || text == "off") return {text == "on"};
+  throw UsageError(flag + ": expected on, off or both, got '" + text + "'");
+}
+
 std::vector<double> parse_number_list(const std::string& text, const std::string& flag) {
   std::vector<double> out;
   size_t start = 0;

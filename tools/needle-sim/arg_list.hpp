@@ -45,6 +45,8 @@ std::optional<std::string> output_file(ArgList& args, const std::string& flag);
 int parse_msaa(const std::string& text, const std::string& flag);
 // "auto" (nullopt) or a render scale in [0.25, 1].
 std::optional<float> parse_render_scale(const std::string& text, const std::string& flag);
+// "on", "off" or "both": the settings a bench runs in turn ({true}, {false} or {true, false}).
+std::vector<bool> parse_on_off_both(const std::string& text, const std::string& flag);
 // Comma-separated numbers, "0.1,0.2,-1".
 std::vector<double> parse_number_list(const std::string& text, const std::string& flag);
 

@@ -26,6 +26,7 @@ std::vector<haptics::ControlLaw> laws_named(const std::string& text) {
 int run_bench_feel(ArgList& args) {
   const auto scenario_arg = args.value("--scenario");
   const std::vector<haptics::ControlLaw> laws = laws_named(args.value("--law").value_or("both"));
+  const std::vector<bool> passivity = parse_on_off_both(args.value("--passivity").value_or("on"), "--passivity");
   const auto json = args.value("--json");
   args.finish();
   check_output_folder(json, "--json");
@@ -37,23 +38,31 @@ int run_bench_feel(ArgList& args) {
       paths.push_back((asset_dir() / "scenarios" / (std::string(name) + ".json")).string());
   }
 
-  BenchTable table({"scenario", "law", "phase", "seconds", "free_force_rest_N", "force_band_rms_N", "force_hf_rms_N",
-                    "max_lateral_speed_mps", "tracking_rms_m", "run_s", "faults", "hand_work_min_J", "world_dissipated_min_J"});
+  BenchTable table({"scenario", "law", "passivity", "phase", "seconds", "free_force_rest_N", "force_band_rms_N", "force_hf_rms_N",
+                    "max_lateral_speed_mps", "tracking_rms_m", "run_s", "faults", "hand_work_min_J", "world_dissipated_min_J",
+                    "passivity_damped_s"});
   for (const std::string& path : paths) {
-    haptics::Scenario scenario = haptics::load_scenario(path);
+    const haptics::Scenario scenario = haptics::load_scenario(path);
     for (haptics::ControlLaw law : laws) {
-      scenario.gains.law = law;
-      const double rest = haptics::free_force_at_rest(scenario);
-      const auto t0 = std::chrono::steady_clock::now();
-      const haptics::SimResult run = haptics::run_closed_loop(scenario, true);
-      const double run_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      const std::string faults = run.summary.faults.empty() ? "none" : run.summary.faults.front();
-      for (const haptics::PhaseFeel& p : haptics::feel_by_phase(run.ticks, scenario.period_s)) {
-        const bool free = p.phase == haptics::FeelPhase::Free;
-        table.add_row({scenario.name, haptics::control_law_name(law), haptics::feel_phase_name(p.phase), p.seconds,
-                       free ? nlohmann::json(rest) : nlohmann::json(nullptr), p.force_band_rms_N, p.force_hf_rms_N,
-                       number_or_null(p.max_lateral_speed_mps), p.tracking_rms_m, run_s, faults, run.summary.hand_work_min_J,
-                       run.summary.world_dissipated_min_J});
+      // The damper acts under the tool law only: the thesis's law runs once.
+      const bool tool = law == haptics::ControlLaw::Tool;
+      for (bool damper : tool ? passivity : std::vector<bool>{false}) {
+        haptics::Scenario s = scenario;
+        s.gains.law = law;
+        if (!damper) s.gains.passivity.max_damping_per_tick = 0.0;
+        const double rest = haptics::free_force_at_rest(s);
+        const auto t0 = std::chrono::steady_clock::now();
+        const haptics::SimResult run = haptics::run_closed_loop(s, true);
+        const double run_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const std::string faults = run.summary.faults.empty() ? "none" : run.summary.faults.front();
+        for (const haptics::PhaseFeel& p : haptics::feel_by_phase(run.ticks, s.period_s)) {
+          const bool free = p.phase == haptics::FeelPhase::Free;
+          table.add_row({s.name, haptics::control_law_name(law), tool ? (damper ? "on" : "off") : "-",
+                         haptics::feel_phase_name(p.phase), p.seconds, free ? nlohmann::json(rest) : nlohmann::json(nullptr),
+                         p.force_band_rms_N, p.force_hf_rms_N, number_or_null(p.max_lateral_speed_mps), p.tracking_rms_m,
+                         run_s, faults, run.summary.hand_work_min_J, run.summary.world_dissipated_min_J,
+                         run.summary.passivity_damped_s});
+        }
       }
     }
   }
@@ -64,16 +73,20 @@ int run_bench_feel(ArgList& args) {
 }
 
 const CommandRegistrar reg{{"bench feel",
-                            "needle-sim bench feel [--scenario FILE] [--law thesis|tool|both] [--json FILE]\n"
+                            "needle-sim bench feel [--scenario FILE] [--law thesis|tool|both] [--passivity on|off|both]\n"
+                            "                      [--json FILE]\n"
                             "  --scenario FILE  one scenario (default: the two thesis scenarios and the layered ones)\n"
                             "  --law L          the controller: thesis (as the thesis prints it, corrected), tool, or both\n"
                             "                   side by side (default both)\n"
+                            "  --passivity P    the passivity damper under the tool law: on (default), off, or both in turn\n"
+                            "                   (what it costs in transparency, docs/CONTROLLER.md \"Passivity guaranteed\")\n"
                             "  --json FILE      also write the rows as JSON (its folder must exist)\n"
                             "  per scenario, law and phase (free, rigid contact, tissue): free_force_rest_N,\n"
                             "  force_band_rms_N (3-50 Hz), force_hf_rms_N (> 50 Hz), max_lateral_speed_mps, tracking_rms_m,\n"
                             "  run_s (wall time of the closed-loop run); per run: hand_work_min_J (least work of the hand on the\n"
                             "  stylus), world_dissipated_min_J (least of that work minus the change of the energy the world\n"
-                            "  stores: < 0 means the world gave the hand energy it had not stored, docs/CONTROLLER.md)",
+                            "  stores: < 0 means the world gave the hand energy it had not stored, docs/CONTROLLER.md),\n"
+                            "  passivity_damped_s (time the passivity damper acted)",
                             run_bench_feel}};
 
 }  // namespace

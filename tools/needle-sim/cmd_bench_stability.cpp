@@ -16,6 +16,7 @@ namespace {
 
 int run_bench_stability(ArgList& args) {
   const auto sustained_text = args.value("--sustained");
+  const std::vector<bool> passivity = parse_on_off_both(args.value("--passivity").value_or("on"), "--passivity");
   const auto json = output_file(args, "--json");
   args.finish();
   const double sustained = sustained_text ? parse_number(*sustained_text, "--sustained") : 3600.0;
@@ -29,21 +30,25 @@ int run_bench_stability(ArgList& args) {
     cases.insert(cases.end(), std::make_move_iterator(layered.begin()), std::make_move_iterator(layered.end()));
   }
 
-  BenchTable table({"sweep", "value", "outcome", "simulated_s", "max_abs_energy_J", "energy_error_J", "position_max_contact_m",
+  BenchTable table({"sweep", "value", "passivity", "outcome", "simulated_s", "max_abs_energy_J", "energy_error_J", "position_max_contact_m",
                     "force_max_N", "max_penetration_m", "max_lateral_speed_mps", "wall_s", "punctures", "tissue_work_J",
-                    "world_dissipated_min_J"});
-  for (const haptics::StressCase& c : cases) {
-    double max_energy = 0;
-    const auto t0 = std::chrono::steady_clock::now();
-    const haptics::SimResult r = haptics::run_closed_loop(c.scenario, false, [&](const haptics::TickRecord& t) {
-      max_energy = std::max(max_energy, std::abs(t.energy));
-    });
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const haptics::SimSummary& s = r.summary;
-    table.add_row({c.name, c.value, s.faults.empty() ? std::string("bounded") : s.faults.front(), r.simulated_s, max_energy,
-                   s.energy_error_J, s.position_max_contact_m, s.force_max_N, s.max_penetration_m, s.max_lateral_speed_mps, wall,
-                   s.punctures.size(), s.tissue_work_J, s.world_dissipated_min_J});
-  }
+                    "world_dissipated_min_J", "passivity_damped_s", "saturated_s"});
+  for (const haptics::StressCase& c : cases)
+    for (bool damper : passivity) {
+      haptics::Scenario scenario = c.scenario;
+      if (!damper) scenario.gains.passivity.max_damping_per_tick = 0.0;
+      double max_energy = 0;
+      const auto t0 = std::chrono::steady_clock::now();
+      const haptics::SimResult r = haptics::run_closed_loop(scenario, false, [&](const haptics::TickRecord& t) {
+        max_energy = std::max(max_energy, std::abs(t.energy));
+      });
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const haptics::SimSummary& s = r.summary;
+      table.add_row({c.name, c.value, damper ? "on" : "off", s.faults.empty() ? std::string("bounded") : s.faults.front(),
+                     r.simulated_s, max_energy, s.energy_error_J, s.position_max_contact_m, s.force_max_N, s.max_penetration_m,
+                     s.max_lateral_speed_mps, wall, s.punctures.size(), s.tissue_work_J, s.world_dissipated_min_J,
+                     s.passivity_damped_s, s.saturated_s});
+    }
   table.emit("closed-loop stress (energy bound " + std::to_string(h.energy_bound_J) + " J, divergence bound " +
                  std::to_string(h.divergence_bound_m) + " m; K_crit = 2b/T = " +
                  std::to_string(haptics::passivity_stiffness_bound(h)) + " N/m)",
@@ -52,8 +57,9 @@ int run_bench_stability(ArgList& args) {
 }
 
 const CommandRegistrar reg{{"bench stability",
-                            "needle-sim bench stability [--sustained S] [--json FILE]\n"
+                            "needle-sim bench stability [--sustained S] [--passivity on|off|both] [--json FILE]\n"
                             "  --sustained S  length of the sustained-contact run (default 3600 s: about two minutes of wall time)\n"
+                            "  --passivity P  the tool law's passivity damper: on (default), off, or both in turn for each row\n"
                             "  --json FILE    also write the rows as JSON\n"
                             "  sweeps: gains x0.1..x100, period x1..x8, singular poses, 2x force-limit push, sustained contact,\n"
                             "  penalty stiffness across K_crit = 2(b - |B|)/T; in the layered scenarios (tissue_block_layers,\n"
