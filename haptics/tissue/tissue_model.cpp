@@ -24,6 +24,13 @@ std::optional<MechanicsProblem> mechanics_problem(const LayerMechanics& m) {
   return std::nullopt;
 }
 
+double tent_depth_m(const LayerMechanics& m) {
+  if (m.rigid || !(m.puncture_force_N > 0.0)) return 0.0;
+  const double k1 = m.stiffness_N_per_m, k2 = m.stiffness2_N_per_m2, f = m.puncture_force_N;
+  if (k2 == 0.0) return f / k1;
+  return 2.0 * f / (k1 + std::sqrt(k1 * k1 + 4.0 * k2 * f));  // the positive root, without cancellation
+}
+
 std::optional<MechanicsProblem> acoustics_problem(const LayerAcoustics& a) {
   for (const auto& f : kAcousticsFields)
     if (!std::isfinite(a.*f.member)) return MechanicsProblem{f.key, "must be a finite number"};

@@ -48,6 +48,10 @@ struct MechanicsProblem {
 };
 std::optional<MechanicsProblem> mechanics_problem(const LayerMechanics& m);
 
+// (mechanics) => d_p, the surface's deflection when it gives way: the root of k₁d + k₂d² = F_p
+// (the tent's depth, m); 0 for a layer without a surface (entered when reached) and a rigid one.
+double tent_depth_m(const LayerMechanics& m);
+
 // What a layer is to ultrasound (the simulated image, docs/RENDERING.md "Ultrasound"); the
 // physics does not use it. Absent, the image takes a generic soft tissue.
 struct LayerAcoustics {
@@ -108,7 +112,8 @@ class TissueModel {
   std::span<const TissueLayer> layers() const { return layers_; }
   const StickParams& stick() const { return stick_; }
 
-  // x => the last layer whose shape holds x (layers are listed outside in), −1 in none.
+  // x => the last layer whose shape holds x, its surface included (layers are listed outside in, so
+  // on a face two layers share it is the inner one; LayerShape::contains), −1 in none.
   int layer_at(const Eigen::Vector3d& x) const;
   // x => the tissue's signed distance: the least φ of its non-rigid layers (< 0 inside the tissue;
   // +∞ with none). For a single surface, that surface's φ.

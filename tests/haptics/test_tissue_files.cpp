@@ -8,6 +8,7 @@
 #include <regex>
 
 #include "haptics/sim/scenario.hpp"
+#include "haptics/tissue/kinematic_insertion.hpp"
 #include "robot_fixtures.hpp"
 
 namespace needle::haptics {
@@ -266,6 +267,61 @@ TEST(TissueFiles, UltrasoundParametersInlineOrFromTheSetNotBoth) {
   EXPECT_EQ(error_of(scenario_with_tissue(t)),
             "/tissue/layers/1/ultrasound: given beside \"parameters\": a layer's parameters come from the file or inline, "
             "not both");
+}
+
+}  // namespace
+}  // namespace needle::haptics
+
+namespace needle::haptics {
+namespace {
+
+TEST(TissueTent, TheTentsDepthIsTheRootOfTheSurfaceForceAtThePunctureForce) {
+  LayerMechanics linear{.stiffness_N_per_m = 200, .puncture_force_N = 1.0};
+  EXPECT_DOUBLE_EQ(tent_depth_m(linear), 0.005);
+  LayerMechanics quadratic{.stiffness_N_per_m = 100, .stiffness2_N_per_m2 = 20000, .puncture_force_N = 2.0};
+  const double d = tent_depth_m(quadratic);
+  EXPECT_NEAR(100 * d + 20000 * d * d, 2.0, 1e-12);
+  EXPECT_EQ(tent_depth_m(LayerMechanics{.cutting_force_N = 0.1}), 0.0);  // no surface: entered when reached
+  EXPECT_EQ(tent_depth_m(LayerMechanics{.rigid = true}), 0.0);
+}
+
+// In every shipped layered scenario, along the line its task or profile inserts on (docs/TISSUE.md,
+// "Profiles"), each surface gives way before its tent reaches the next structure (the next surface or
+// bone), and a layer with a cutting force gives way within its own thickness, so that it is cut
+// after its pop. The dura is the exception a source makes: it tents 2-6 mm (Zarzur and Gonçalves
+// 1992) in a 0.5 mm membrane.
+TEST(TissueTent, EveryShippedLayerGivesWayBeforeItsTentReachesTheNextStructure) {
+  struct Line {
+    const char* scenario;
+    Vector3d from, dir;
+  };
+  const Line lines[] = {{"tissue_block_layers", {0.33, 0, 0.075}, {0, 0, -1}},
+                        {"lumbar_epidural", {0.33, 0, 0.075}, {0, 0, -1}},
+                        {"epidural", {0.33, 0, 0.075}, {0, 0, -1}},
+                        {"liver_biopsy", {0.32575, 0, 0.07425}, Vector3d(1, 0, -1).normalized()}};
+  for (const Line& line : lines) {
+    const Scenario s = load_scenario(test::asset(std::string("assets/scenarios/") + line.scenario + ".json"));
+    const TissueModel& tissue = s.scene.tissue;
+    const std::vector<LayerBoundary> b = layer_boundaries(tissue, line.from, line.dir, 0.15);
+    auto structure = [&](int layer) { return layer >= 0 && (tissue.layer(layer).mechanics.rigid || tent_depth_m(tissue.layer(layer).mechanics) > 0.0); };
+    for (size_t k = 0; k < b.size(); ++k) {
+      if (b[k].layer < 0) continue;
+      const LayerMechanics& m = tissue.layer(b[k].layer).mechanics;
+      const double tent = tent_depth_m(m);
+      if (tent == 0.0) continue;
+      const std::string name = std::string(line.scenario) + ": " + tissue.layer(b[k].layer).name;
+      double next = std::numeric_limits<double>::infinity();
+      for (size_t j = k + 1; j < b.size(); ++j)
+        if (structure(b[j].layer)) {
+          next = b[j].depth_m - b[k].depth_m;
+          break;
+        }
+      EXPECT_LT(tent, next) << name << ": its tent reaches the next structure";
+      const double thickness = k + 1 < b.size() ? b[k + 1].depth_m - b[k].depth_m : std::numeric_limits<double>::infinity();
+      if (m.cutting_force_N > 0.0 && tissue.layer(b[k].layer).name != "dura")
+        EXPECT_LT(tent, thickness) << name << ": it gives way only past its own far side, so its cutting force never acts";
+    }
+  }
 }
 
 }  // namespace
