@@ -267,9 +267,7 @@ void TaskSession::draw_panel(std::optional<size_t> step, const char* controls, c
     ui::TraineeView view{&task_, &scorer.progress()};
     view.step = step;
     view.step_metrics = scorer.step_metrics(shown);
-    const double* f = last.environment_force_n;
-    view.force_N = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-    if (last.contact == haptics::ContactState::kTissue) view.lateral_N = training::lateral_load_N(last);
+    ui::set_forces(view, last, task_.force_scale);
     if (task_.layers.size() > 1) view.tissue = last.tissue;
     const haptics::LoopStatsSummary stats = loop_->stats();
     view.loop_rate_hz = loop_->running() ? stats.rate_hz : rig_->rate_hz();

@@ -24,7 +24,9 @@ struct MetricDisplay {
 const MetricDisplay kMetrics[] = {
     {"duration_s", "duration", "s", 1.0},          {"tip_error_m", "tip to target", "mm", 1000.0},
     {"axis_deviation_deg", "off axis", "deg", 1.0}, {"lateral_load_Ns", "lateral load", "N s", 1.0},
-    {"lateral_peak_N", "lateral peak", "N", 1.0},   {"peak_force_N", "peak force", "N", 1.0},
+    {"lateral_peak_N", "lateral peak", "N", 1.0},   {"peak_hand_force_N", "peak force at the hand", "N", 1.0},
+    {"peak_axial_force_N", "peak along the needle", "N", 1.0}, {"peak_force_N", "peak rigid contact", "N", 1.0},
+    {"force_limited_s", "at the device's limit", "s", 1.0}, {"passivity_damped_s", "passivity damper on", "s", 1.0},
     {"force_sd_N", "force SD", "N", 1.0},          {"path_length_m", "path", "mm", 1000.0},
     {"ideal_path_m", "ideal path", "mm", 1000.0},  {"normalized_jerk", "normalized jerk", "-", 1.0},
     {"withdrawals", "withdrawals", "count", 1.0},  {"reinsertions", "re-insertions", "count", 1.0},
@@ -73,6 +75,11 @@ void header_lines(const training::SessionReview& r) {
   } else {
     ImGui::TextColored(i.passed ? kGood : kBad, "Score %.1f / 100   %s", i.score, i.passed ? "PASSED" : "NOT PASSED");
   }
+  // The device holding the force back is said, never left silent (docs/SCORING.md, "Forces").
+  const double limited = r.stored.overall.force_limited_s;
+  if (limited > 0.0)
+    ImGui::TextColored(kWarn, "the device held the force back at its limit for %.2f s: the hand felt less than the scene's",
+                       limited);
 }
 
 void breakdown_table(const std::vector<training::ScoreComponent>& components) {

@@ -29,7 +29,12 @@ void force_gauge(double force, double safe, double band_min, double band_max) {
                   0.0f, 0, 2.0f);
   }
   ImGui::Dummy(ImVec2(width, height));
-  ImGui::Text("force %.2f N   safe < %.1f N", force, safe);
+  ImGui::Text("force at the hand %.2f N   safe < %.1f N", force, safe);
+}
+
+// The world's force on the needle by what makes it, as the tissue and bone push it (scene newtons).
+void needle_force_line(const training::NeedleForce& f) {
+  ImGui::Text("on the needle: along %.2f N, sideways %.2f N, bone %.2f N", f.along_N, f.sideways_N, f.rigid_N);
 }
 
 void metric_line(const char* name, double value, const char* unit, double scale = 1.0) {
@@ -82,16 +87,17 @@ void draw_running(const TraineeView& v) {
   }
   ImGui::Separator();
   const bool force_band = step.condition.type == training::ConditionType::kForceHeld;
-  force_gauge(v.force_N, task.scoring.safe_force_N, force_band ? step.condition.min : 0.0,
+  force_gauge(v.hand_force_N, task.scoring.safe_force_N, force_band ? step.condition.min : 0.0,
               force_band ? step.condition.max : 0.0);
-  if (v.lateral_N) ImGui::Text("in tissue: lateral load %.2f N", *v.lateral_N);
+  needle_force_line(v.needle);
+  if (v.at_device_limit) ImGui::TextColored(kBad, "the device is at its force limit: you feel less than this");
   if (v.tissue) tissue_lines(task, *v.tissue);
   ImGui::Separator();
   const training::Metrics& m = v.step_metrics;
   metric_line("tip to target", m.tip_error_m, "mm", 1000.0);
   metric_line("off axis", m.axis_deviation_deg, "deg");
   metric_line("lateral load", m.lateral_load_Ns, "N s");
-  metric_line("peak force", m.peak_force_N, "N");
+  metric_line("peak at the hand", m.peak_hand_force_N, "N");
   metric_line("path", m.path_length_m, "mm", 1000.0);
 }
 
@@ -129,6 +135,12 @@ void draw_result(const training::SessionResult& r) {
 }
 
 }  // namespace
+
+void set_forces(TraineeView& view, const haptics::ToolSnapshot& state, double force_scale) {
+  view.needle = training::needle_force(state);
+  view.hand_force_N = force_scale * view.needle.total_N;
+  view.at_device_limit = (state.limits & haptics::kLimitForce) != 0;
+}
 
 std::vector<std::string> what_to_improve(const training::Score& score) {
   static const std::map<std::string, std::string> advice = {

@@ -22,10 +22,11 @@ struct TraineeView {
   const training::Task* task = nullptr;
   const training::TaskProgress* progress = nullptr;
   training::Metrics step_metrics;        // the current step's, live
-  double force_N = 0.0;        // |environment force| now
-  // |lambda| now while the needle is in tissue, where the environment force is zero and the
-  // load is the tissue's sideways reaction; nullopt outside tissue.
-  std::optional<double> lateral_N;
+  // The world's force on the needle now, by part (scene newtons), and at the hand (the task's force
+  // scale times its total: what the gauge shows against the safe limit).
+  training::NeedleForce needle;
+  double hand_force_N = 0.0;
+  bool at_device_limit = false;  // the device held the force back at its limit in the last tick
   // The layered tissue at the needle now (issue 14), in a task with layers: the panel shows the
   // layer holding the tip and the punctures so far (names hidden when the task says so).
   std::optional<haptics::TissueSnapshot> tissue;
@@ -38,6 +39,10 @@ struct TraineeView {
   const char* controls = nullptr;  // how the trainee's device moves the needle, one line
   std::vector<Choice> choices;     // buttons under the panel: Stop while running, Retry, Next task, Back at the end
 };
+
+// (view, the newest state, the task's force scale) => (view.needle, .hand_force_N, .at_device_limit):
+// the gauge's numbers, as the panel shows them.
+void set_forces(TraineeView& view, const haptics::ToolSnapshot& state, double force_scale);
 
 void draw_trainee_panel(const TraineeView& view);
 

@@ -5,10 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
+#include "haptics/recording/session_format.hpp"
 #include "haptics/sim/closed_loop.hpp"
 #include "recorded_session.hpp"
+#include "ui/trainee_panel.hpp"
 #include "training/sessions/session_review.hpp"
 #include "training/tasks/scripted_operator.hpp"
 
@@ -71,6 +75,35 @@ TEST(LayeredSessions, EpiduralGoodStopsInTheEpiduralSpaceSloppyMeetsTheLamina) {
   for (const training::StepResult& s : good.result.steps) EXPECT_EQ(s.record.outcome, training::StepOutcome::kCompleted) << s.id;
   EXPECT_EQ(good.result.overall.forbidden_punctures, 0u) << report(good.result);
   EXPECT_TRUE(std::none_of(p.begin(), p.end(), [](const auto& x) { return x.layer == "dura"; })) << report(good.result);
+}
+
+// The force the trainee's gauge and score.json report at the ligamentum flavum is the tissue's own,
+// as the recording holds it (the gauge once showed only the rigid contact: 0 N there), and at the
+// hand it stays within the device's limit with the margin docs/TASKS.md states.
+TEST(LayeredSessions, TheGaugeAndTheScoreReportTheFlavumsForceTheRecordingHolds) {
+  const std::filesystem::path dir = process_folder(output_dir() / "layered_sessions" / "epidural_force");
+  const RecordedSession good = record_session(dir / "sessions.db", {"epidural", "good", "ana", true});
+  const training::Task task = training::load_task(source_dir() / "assets/tasks/epidural.json");
+  const haptics::Session recording = haptics::read_session(good.recording.string());
+  const int flavum = task.layer_index("ligamentum flavum");
+  const haptics::TickSample* peak = nullptr;
+  for (const haptics::TickSample& s : recording.records)
+    if ((s.state.tissue.surface_layer == flavum || s.state.tissue.tip_layer == flavum) &&
+        (!peak || s.state.tissue.axial_force_N > peak->state.tissue.axial_force_N))
+      peak = &s;
+  ASSERT_NE(peak, nullptr) << "the good run never reached the flavum";
+  const double tissue_N = peak->state.tissue.axial_force_N;
+  EXPECT_GT(tissue_N, 5.0);  // the flavum's puncture force at least
+
+  ui::TraineeView view;
+  ui::set_forces(view, peak->state, task.force_scale);
+  EXPECT_NEAR(view.needle.along_N, tissue_N, 0.05 * tissue_N);
+  EXPECT_NEAR(view.hand_force_N, task.force_scale * view.needle.total_N, 1e-12);
+
+  const nlohmann::json score = nlohmann::json::parse(std::ifstream(dir / "ana_good" / "score.json"));
+  const double reported = score.at("metrics").at("peak_axial_force_N").get<double>();
+  EXPECT_NEAR(reported, tissue_N, 0.05 * tissue_N);
+  EXPECT_NEAR(good.result.overall.peak_axial_force_N, reported, 1e-12);
 }
 
 }  // namespace

@@ -65,9 +65,10 @@ TEST_F(TraineePanel, MidTaskMatchesGolden) {
   view.step_metrics.tip_error_m = 0.0123;
   view.step_metrics.axis_deviation_deg = 4.5;
   view.step_metrics.lateral_load_Ns = 0.08;
-  view.step_metrics.peak_force_N = 1.4;
+  view.step_metrics.peak_hand_force_N = 1.4;
   view.step_metrics.path_length_m = 0.052;
-  view.force_N = 1.1;
+  view.needle = {.along_N = 0.0, .sideways_N = 0.0, .rigid_N = 1.1, .total_N = 1.1};
+  view.hand_force_N = 1.1;
   view.loop_rate_hz = 1000.0;
   EXPECT_TRUE(matches_golden(draw(view), "panel_trainee_running"));
 }
@@ -119,8 +120,8 @@ TEST_F(TraineePanel, LayeredTargetShowsTheLayerAndThePuncturesMatchesGolden) {
   view.tissue = s.tissue;
   view.step_metrics.tip_error_m = 0.0142;
   view.step_metrics.axis_deviation_deg = 3.1;
-  view.force_N = 0.0;
-  view.lateral_N = 0.12;
+  view.needle = {.along_N = 0.8, .sideways_N = 0.12, .rigid_N = 0.0, .total_N = std::hypot(0.8, 0.12)};
+  view.hand_force_N = view.needle.total_N;
   view.loop_rate_hz = 1000.0;
   EXPECT_TRUE(matches_golden(draw(view), "panel_trainee_layered_target"));
 }
@@ -157,7 +158,8 @@ TEST_F(TraineePanel, EpiduralDuralPunctureWithTheNamesHiddenMatchesGolden) {
   ui::TraineeView view{&task, &progress};
   view.step = 2;  // the failed step, as the panel shows it for a moment
   view.tissue = s.tissue;
-  view.lateral_N = 0.05;
+  view.needle = {.along_N = 0.0, .sideways_N = 0.05, .rigid_N = 0.0, .total_N = 0.05};
+  view.hand_force_N = task.force_scale * view.needle.total_N;
   view.loop_rate_hz = 1000.0;
   EXPECT_TRUE(matches_golden(draw(view), "panel_trainee_epidural_hidden_names"));
 }

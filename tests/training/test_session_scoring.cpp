@@ -63,6 +63,32 @@ TEST(StepMetrics, LateralLoadNowIsTheMultipliersNormInTissueOnly) {
   EXPECT_DOUBLE_EQ(lateral_load_N(s), 0.0);
 }
 
+// The world's force on the needle by part and as vectors: the axial force along x₅, the sideways
+// hold at right angles to it, the rigid contact as it points; at the hand, times the force scale.
+TEST(StepMetrics, TheNeedleForceAddsItsPartsAsVectors) {
+  haptics::ToolSnapshot s = state(0.0, {0, 0, 0}, 0, ContactState::kTissue);  // x₅ = +x (identity orientation)
+  s.tissue.axial_force_N = 3.0;
+  s.multiplier_count = 2;
+  s.multipliers[0] = 0.0, s.multipliers[1] = 4.0;
+  NeedleForce f = needle_force(s);
+  EXPECT_DOUBLE_EQ(f.along_N, 3.0);
+  EXPECT_DOUBLE_EQ(f.sideways_N, 4.0);
+  EXPECT_DOUBLE_EQ(f.rigid_N, 0.0);
+  EXPECT_DOUBLE_EQ(f.total_N, 5.0);
+  EXPECT_DOUBLE_EQ(hand_force_N(s, 0.25), 1.25);
+  // Pressing bone from inside the tissue: the axial force and the contact add as vectors.
+  s.contact = ContactState::kRigidSurface;
+  s.multiplier_count = 1;
+  s.tissue.axial_force_N = 5.0;
+  s.environment_force_n[2] = 12.0;  // across the needle
+  EXPECT_DOUBLE_EQ(needle_force(s).total_N, 13.0);
+  s.environment_force_n[2] = 0.0;
+  s.environment_force_n[0] = -3.0;  // against the axial force
+  f = needle_force(s);
+  EXPECT_DOUBLE_EQ(f.rigid_N, 3.0);
+  EXPECT_DOUBLE_EQ(f.total_N, 2.0);
+}
+
 TEST(StepMetrics, ForceSteadinessIsTheSpreadOnceTheForceReachedTheBand) {
   const Task t = one_step(ConditionType::kForceHeld);  // band [1, 3] N
   SessionScorer scorer(t);
@@ -207,12 +233,13 @@ TEST(Score, PeakForceAboveTheSafeLimitCostsPointsAndFails) {
   spec.pass_score = 0.0;
   std::vector<StepResult> steps = two_results();
   steps[1].record.outcome = StepOutcome::kCompleted;
-  steps[1].metrics.peak_force_N = 4.5;  // 50 % over 3 N: the component drops to 0.5
+  steps[1].metrics.peak_hand_force_N = 4.5;  // 50 % over 3 N: the component drops to 0.5
+  steps[1].metrics.peak_force_N = 0.0;       // the rigid contact alone is not what is scored
   const Score s = score_session(spec, steps, combine_metrics(steps));
   EXPECT_DOUBLE_EQ(s.components[4].value, 0.5);
   ASSERT_EQ(s.reasons_failed.size(), 1u);
-  EXPECT_NE(s.reasons_failed[0].find("peak force 4.5 N above the safe limit 3 N"), std::string::npos);
-  steps[1].metrics.peak_force_N = 2.0;
+  EXPECT_NE(s.reasons_failed[0].find("peak force at the hand 4.5 N above the safe limit 3 N"), std::string::npos);
+  steps[1].metrics.peak_hand_force_N = 2.0;
   EXPECT_TRUE(score_session(spec, steps, combine_metrics(steps)).passed);
   steps[0].metrics.faults = 1;
   EXPECT_FALSE(score_session(spec, steps, combine_metrics(steps)).passed);

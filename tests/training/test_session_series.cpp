@@ -53,10 +53,13 @@ void expect_values(const Series& s, const std::vector<double>& v, double toleran
 TEST(SessionSeries, JointDeviceSessionOnThePenetrableTask) {
   const Task task = load_task(kTasks / "penetrable_sphere.json");
   const SessionPlots p = session_plots(joint_samples(), &task);
-  ASSERT_EQ(p.force.lines.size(), 2u);
+  ASSERT_EQ(p.force.lines.size(), 4u);
   EXPECT_EQ(p.force.lines[0].t, (std::vector<double>{0.0, 0.001, 0.002}));
-  expect_values(p.force.lines[0], {5.0, 0.0, 0.0});
-  expect_values(p.force.lines[1], {2.0, 0.0, 0.0});
+  // At the hand (the task's force scale is 1): the rigid contact's 5 N, then the tissue's sideways 5 N.
+  expect_values(p.force.lines[0], {5.0, 5.0, 0.0});
+  expect_values(p.force.lines[1], {0.0, 0.0, 0.0});  // no axial tissue force
+  expect_values(p.force.lines[2], {5.0, 0.0, 0.0});  // the rigid contact
+  expect_values(p.force.lines[3], {2.0, 0.0, 0.0});  // the hand's sensed push
   ASSERT_EQ(p.force.guides.size(), 1u);
   EXPECT_DOUBLE_EQ(p.force.guides[0].value, 3.0);  // the task's safe_force_N
 

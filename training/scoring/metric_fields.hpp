@@ -15,6 +15,11 @@ void for_each_metric(M& m, F&& f) {
   f("lateral_load_Ns", m.lateral_load_Ns);
   f("lateral_peak_N", m.lateral_peak_N);
   f("peak_force_N", m.peak_force_N);
+  f("peak_axial_force_N", m.peak_axial_force_N);
+  f("peak_needle_force_N", m.peak_needle_force_N);
+  f("peak_hand_force_N", m.peak_hand_force_N);
+  f("force_limited_s", m.force_limited_s);
+  f("passivity_damped_s", m.passivity_damped_s);
   f("force_sd_N", m.force_sd_N);
   f("path_length_m", m.path_length_m);
   f("ideal_path_m", m.ideal_path_m);

@@ -15,7 +15,12 @@ struct Metrics {
   double axis_deviation_deg = kNotApplicable;  // needle axis to the planned axis
   double lateral_load_Ns = 0.0;                // integral of |lateral multipliers| in tissue
   double lateral_peak_N = 0.0;                 // peak |lateral multipliers| in tissue
-  double peak_force_N = 0.0;                   // peak |environment force|
+  double peak_force_N = 0.0;                   // peak |rigid contact force| (F_v: bone or the rigid surface), scene N
+  double peak_axial_force_N = 0.0;             // peak |tissue's force along the needle|, scene N
+  double peak_needle_force_N = 0.0;            // peak |world's force on the needle| (needle_force.hpp), scene N
+  double peak_hand_force_N = 0.0;              // peak of it at the hand, force scale times, N: the scored peak
+  double force_limited_s = 0.0;                // time the device held the force back at its limit
+  double passivity_damped_s = 0.0;             // time the passivity damper acted (the world was not passive)
   double force_sd_N = kNotApplicable;          // steadiness while holding a force
   double path_length_m = 0.0;                  // tip path
   double ideal_path_m = 0.0;                   // straight line, start to end

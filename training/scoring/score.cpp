@@ -48,6 +48,11 @@ Metrics combine_metrics(const std::vector<StepResult>& steps) {
     m.lateral_load_Ns += x.lateral_load_Ns;
     m.lateral_peak_N = std::max(m.lateral_peak_N, x.lateral_peak_N);
     m.peak_force_N = std::max(m.peak_force_N, x.peak_force_N);
+    m.peak_axial_force_N = std::max(m.peak_axial_force_N, x.peak_axial_force_N);
+    m.peak_needle_force_N = std::max(m.peak_needle_force_N, x.peak_needle_force_N);
+    m.peak_hand_force_N = std::max(m.peak_hand_force_N, x.peak_hand_force_N);
+    m.force_limited_s += x.force_limited_s;
+    m.passivity_damped_s += x.passivity_damped_s;
     m.path_length_m += x.path_length_m;
     m.ideal_path_m += x.ideal_path_m;
     m.withdrawals += x.withdrawals;
@@ -75,7 +80,7 @@ Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& step
   const ScoreReferences& r = spec.references;
   const long completed = std::count_if(steps.begin(), steps.end(),
                                        [](const StepResult& s) { return s.record.outcome == StepOutcome::kCompleted; });
-  const double peak = m.peak_force_N, safe = spec.safe_force_N;
+  const double peak = m.peak_hand_force_N, safe = spec.safe_force_N;
   Score score;
   score.components = {
       {"completion", steps.empty() ? 0.0 : double(completed) / double(steps.size()), w.completion},
@@ -108,7 +113,7 @@ Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& step
       score.reasons_failed.push_back("step " + s.id + ": " + (s.failure.empty() ? step_outcome_name(s.record.outcome) : s.failure));
   if (m.faults > 0) score.reasons_failed.push_back(std::to_string(m.faults) + " safety fault(s)");
   if (peak > safe)
-    score.reasons_failed.push_back("peak force " + format(peak) + " N above the safe limit " + format(safe) + " N");
+    score.reasons_failed.push_back("peak force at the hand " + format(peak) + " N above the safe limit " + format(safe) + " N");
   score.passed = score.reasons_failed.empty();
   return score;
 }

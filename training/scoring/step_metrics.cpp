@@ -7,14 +7,6 @@
 
 namespace needle::training {
 
-double lateral_load_N(const haptics::ToolSnapshot& state) {
-  if (state.contact != haptics::ContactState::kTissue) return 0.0;
-  double sum = 0.0;
-  for (uint32_t i = 0; i < std::min<uint32_t>(state.multiplier_count, haptics::kMaxMultipliers); ++i)
-    sum += state.multipliers[i] * state.multipliers[i];
-  return std::sqrt(sum);
-}
-
 StepMetricsAccumulator::StepMetricsAccumulator(const Task& task, const Step& step) : task_(task), step_(step) {
   const Condition& c = step.condition;
   target_ = c.type == ConditionType::kTargetReached ? c.marker : step.guidance.target;
@@ -39,6 +31,12 @@ void StepMetricsAccumulator::add(const haptics::ToolSnapshot& state, const Conta
   lateral_prev_ = lateral;
   const double force = norm(vec3(state.environment_force_n));
   m_.peak_force_N = std::max(m_.peak_force_N, force);
+  const NeedleForce needle = needle_force(state);
+  m_.peak_axial_force_N = std::max(m_.peak_axial_force_N, std::abs(needle.along_N));
+  m_.peak_needle_force_N = std::max(m_.peak_needle_force_N, needle.total_N);
+  m_.peak_hand_force_N = std::max(m_.peak_hand_force_N, task_.force_scale * needle.total_N);
+  if (state.limits & haptics::kLimitForce) m_.force_limited_s += dt;
+  if (state.limits & haptics::kLimitPassivityDamper) m_.passivity_damped_s += dt;
   if (step_.condition.type == ConditionType::kForceHeld) {
     in_band_seen_ = in_band_seen_ || (force >= step_.condition.min && force <= step_.condition.max);
     if (in_band_seen_) {

@@ -4,14 +4,11 @@
 #include "haptics/realtime/tool_snapshot.hpp"
 #include "training/scoring/layer_events.hpp"
 #include "training/scoring/metrics.hpp"
+#include "training/scoring/needle_force.hpp"
 #include "training/scoring/trajectory_metrics.hpp"
 #include "training/tasks/task.hpp"
 
 namespace needle::training {
-
-// The tissue's sideways reaction now: |lambda| of the nonholonomic multipliers (thesis 3.22)
-// while in tissue, 0 elsewhere (N). The integrand of lateral_load_Ns (docs/SCORING.md).
-double lateral_load_N(const haptics::ToolSnapshot& state);
 
 // Contact events the session tracks across steps and attributes to the step they happen in.
 struct ContactEvents {

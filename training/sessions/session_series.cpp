@@ -90,9 +90,12 @@ SessionPlots session_plots(const std::vector<haptics::TickSample>& samples, cons
     p.depth.unit = "mm";
     return p;
   }
-  p.force.lines.push_back(series("|F_v| environment", samples, [](const auto& s) { return norm3(s.state.environment_force_n); }));
-  p.force.lines.push_back(series("|F_h| operator", samples, [](const auto& s) { return norm3(s.state.operator_force_n); }));
-  if (task) p.force.guides.push_back({task->scoring.safe_force_N, "safe limit"});
+  const double scale = task ? task->force_scale : 1.0;
+  p.force.lines.push_back(series("force at the hand", samples, [scale](const auto& s) { return hand_force_N(s.state, scale); }));
+  p.force.lines.push_back(series("tissue along the needle", samples, [](const auto& s) { return s.state.tissue.axial_force_N; }));
+  p.force.lines.push_back(series("rigid contact", samples, [](const auto& s) { return norm3(s.state.environment_force_n); }));
+  p.force.lines.push_back(series("hand's push (sensed)", samples, [](const auto& s) { return norm3(s.state.operator_force_n); }));
+  if (task) p.force.guides.push_back({task->scoring.safe_force_N, "safe limit at the hand"});
   p.lateral.lines.push_back(series("|lambda| in tissue", samples, [](const auto& s) { return lateral_load_N(s.state); }));
   p.depth = depth_plot(samples, task);
   if (joint_space(samples)) {

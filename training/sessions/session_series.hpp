@@ -33,7 +33,8 @@ struct Plot {
 };
 
 struct SessionPlots {
-  Plot force;     // N: |F_v| (environment_force_n, the scored force) and |F_h| (operator_force_n)
+  Plot force;     // N: the world's force at the hand (the scored one, hand_force_N), the tissue's along the
+                  // needle and the rigid contact (scene N), the hand's sensed push (operator_force_n)
   Plot lateral;   // N: |lambda| in tissue, 0 elsewhere (the integrand of lateral_load_Ns)
   Plot depth;     // mm: depth of the tip along the task's insertion axis from its origin
   Plot tracking;  // mrad: |q_m - q_v| for joint-space devices; N: coupling force for the others

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <ctime>
 #include <random>
+#include <type_traits>
 
 #include "haptics/recording/crc32.hpp"
 #include "training/scoring/metric_fields.hpp"
@@ -57,6 +58,17 @@ SessionInfo session_info(const SqlRow& s) {
   i.station = s.text(13);
   i.uid = s.text(14);
   return i;
+}
+
+// Metrics as a stored session has them before its rows are read: a number the store does not hold
+// (a metric added after the session was stored, or any of an incomplete session's) is not
+// applicable, never a zero; counts stay 0.
+Metrics unrecorded_metrics() {
+  Metrics m;
+  for_each_metric(m, [](const char*, auto& field) {
+    if constexpr (std::is_floating_point_v<std::remove_reference_t<decltype(field)>>) field = kNotApplicable;
+  });
+  return m;
 }
 
 // Sets the field of `m` called `name`; false when no field has that name.
@@ -188,6 +200,7 @@ StoredSession SessionStore::load(int64_t id) const {
   // One read transaction: a writer finishing this session meanwhile is seen wholly or not at all.
   SqlTransaction snapshot(*db_, what, false);
   StoredSession out;
+  out.overall = unrecorded_metrics();
   const int version = schema_version();
   const SqlResult s = db_->query(session_select(version) + "WHERE s.id = ?", {id}, what);
   if (s.rows.empty()) throw SessionStoreError(db_->name() + ": " + what + ": no such session");
@@ -197,6 +210,7 @@ StoredSession SessionStore::load(int64_t id) const {
                                       {id}, what)
                                .rows) {
     StepResult r;
+    r.metrics = unrecorded_metrics();
     r.id = row.text(0);
     if (!step_outcome_from_name(row.text(1), r.record.outcome))
       throw SessionStoreError(db_->name() + ": " + what + ": unknown step outcome \"" + row.text(1) + "\"");

@@ -160,6 +160,9 @@ struct Task {
   // The scenario's tissue layers in its order (the indices of ToolSnapshot::tissue); empty without
   // a scenario. The thesis's single-surface tissue is one layer, "tissue".
   std::vector<TaskLayer> layers;
+  // The scenario's gains.force_scale: newtons at the hand per newton on the needle in the scene
+  // (1 without a scenario). The scored peak force and the trainee's gauge are at the hand.
+  double force_scale = 1.0;
   // Hide the layer names from the trainee's panel (assessment runs): it shows "layer 3" instead.
   bool hide_layer_names = false;
   // Per marker (as `markers`): for an axis on a layered tissue, where along it each layer begins,

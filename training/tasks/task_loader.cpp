@@ -39,6 +39,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     if (root.contains("scenario")) {
       t.scenario = existing_file(root["scenario"], "/scenario", folder_);
       tissue = scenario_tissue(t.scenario);
+      t.force_scale = tissue.force_scale;
       for (const haptics::TissueLayer& l : tissue.tissue.layers()) t.layers.push_back({l.name, l.mechanics.rigid, l.mechanics.puncture_force_N});
     }
     if (root.contains("order")) t.order = static_cast<int>(whole(root["order"], "/order", 0, kMaxTaskOrder));
@@ -90,11 +91,12 @@ class TaskReader : io::StrictJsonReader<TaskError> {
   struct ScenarioTissue {
     haptics::TissueModel tissue;
     Vec3 frame_in_world{};
+    double force_scale = 1.0;
   };
   ScenarioTissue scenario_tissue(const fs::path& scenario) const {
     try {
       const haptics::Scenario s = haptics::load_scenario(scenario.string());
-      return {s.scene.tissue, {s.base_in_world.x(), s.base_in_world.y(), s.base_in_world.z()}};
+      return {s.scene.tissue, {s.base_in_world.x(), s.base_in_world.y(), s.base_in_world.z()}, s.gains.force_scale};
     } catch (const haptics::ScenarioError& e) {
       fail("/scenario", e.what());
     }
