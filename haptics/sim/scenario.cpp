@@ -131,8 +131,7 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     const int n = s.master.dof();
     s.base_in_world = vec3(member(j, "", "robot_base_in_world_m"), "/robot_base_in_world_m");
     s.period_s = positive(member(j, "", "period_s"), "/period_s");
-    s.duration_s = in_range(member(j, "", "duration_s"), "/duration_s", 1e-9, io::kMaxSessionSeconds,
-                            "(0, " + std::to_string(int(io::kMaxSessionSeconds)) + "] s");
+    s.duration_s = in_range(member(j, "", "duration_s"), "/duration_s", io::kSessionDurationRange);
     s.master_substeps = int(whole(member(j, "", "master_substeps"), "/master_substeps", 1, 1000000));
     s.virtual_substeps = int(whole(member(j, "", "virtual_substeps"), "/virtual_substeps", 1, 1000000));
     s.q0 = vector(member(j, "", "q0_rad"), "/q0_rad", n);
@@ -372,8 +371,7 @@ OperatorHand read_hand(const json& h, const std::string& file, const std::string
     const std::string where = at + "/waypoints/" + std::to_string(k);
     r.object(wps[k], where, {"t", "p", "dir"});
     // A time past the longest session would make a run that never ends (docs/TASKS.md, "Limits").
-    const double t = r.in_range(r.member(wps[k], where, "t"), where + "/t", 0.0, io::kMaxSessionSeconds,
-                                "[0, " + std::to_string(int(io::kMaxSessionSeconds)) + "] s");
+    const double t = r.in_range(r.member(wps[k], where, "t"), where + "/t", io::kSessionTimeRange);
     if (!waypoints.empty() && !(t > waypoints.back().t))
       r.fail(where + "/t", "must be after the waypoint before it (" + std::to_string(waypoints.back().t) + " s)");
     waypoints.push_back({t, vec3(r.member(wps[k], where, "p"), where + "/p") - base_in_world,

@@ -77,7 +77,7 @@ TEST(OperatorScriptFiles, WaypointTimesMustBeFiniteOrderedAndWithinTheLongestSes
   const std::string path = (kOutput / "").string();
   const std::string p = R"("p": [0.3, 0, 0.2], "dir": [1, 0, 0])";
   EXPECT_EQ(script_error("forever", R"({"hand": {"waypoints": [{"t": 0, )" + p + R"(}, {"t": 1e308, )" + p + "}]}}"),
-            path + "forever.json: /hand/waypoints/1/t: must be in [0, 1800] s, got " + std::to_string(1e308));
+            path + "forever.json: /hand/waypoints/1/t: must be in [0, 1800] s, got 1e+308");
   EXPECT_EQ(script_error("backwards", R"({"hand": {"waypoints": [{"t": 5, )" + p + R"(}, {"t": 2, )" + p + "}]}}"),
             path + "backwards.json: /hand/waypoints/1/t: must be after the waypoint before it (5.000000 s)");
   EXPECT_EQ(script_error("not_json", R"({"hand": )"), path + "not_json.json: /: not valid JSON: " +

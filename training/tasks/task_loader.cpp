@@ -309,8 +309,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     s.instruction = string(member(value, at, "instruction"), at + "/instruction");
     s.condition = condition(t, member(value, at, "condition"), at + "/condition");
     if (value.contains("time_limit_s"))
-      s.time_limit_s = in_range(value["time_limit_s"], at + "/time_limit_s", 1e-9, io::kMaxSessionSeconds,
-                                "(0, " + std::to_string(int(io::kMaxSessionSeconds)) + "] s");
+      s.time_limit_s = in_range(value["time_limit_s"], at + "/time_limit_s", io::kSessionDurationRange);
     if (value.contains("tip_fixed_within_m"))
       s.tip_fixed_within_m = positive(value["tip_fixed_within_m"], at + "/tip_fixed_within_m");
     if (value.contains("tip_out_of_plane_max_s")) {
