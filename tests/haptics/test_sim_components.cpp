@@ -140,8 +140,8 @@ TEST(SimComponents, ScenarioRejectsUnknownKeysAndImpossibleHands) {
     }
     return std::string("no error");
   };
-  EXPECT_EQ(error_of("\"mass_kg\": 0.554", "\"mass_kg\": 0"), ": /hand/mass_kg: must be > 0, got 0.000000");
-  EXPECT_EQ(error_of("\"mass_kg\": 0.554", "\"mass_kg\": -1"), ": /hand/mass_kg: must be > 0, got -1.000000");
+  EXPECT_EQ(error_of("\"mass_kg\": 0.554", "\"mass_kg\": 0"), ": /hand/mass_kg: must be in (0, 10] kg, got 0");
+  EXPECT_EQ(error_of("\"mass_kg\": 0.554", "\"mass_kg\": -1"), ": /hand/mass_kg: must be in (0, 10] kg, got -1");
   EXPECT_EQ(error_of("\"mass_kg\"", "\"mass_kgs\"").substr(0, 32), ": /hand/mass_kgs: unknown key (a");
   EXPECT_EQ(error_of("\"period_s\"", "\"period\"").substr(0, 23), ": /period: unknown key ");
   EXPECT_EQ(error_of("\"preset\": \"thesis_holonomic\"", "\"preset\": \"fast\""),
