@@ -20,6 +20,7 @@
 #include "haptics/devices/replay_device.hpp"
 #include "haptics/recording/crc32.hpp"
 #include "haptics/recording/session_recorder.hpp"
+#include "tests/fuzz/structure.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -529,6 +530,26 @@ TEST(RecordingIntegrity, AStateThatIsNotFiniteIsRecordedOnlyWithTheFaultTheLoopL
   record_with(0);  // no fault: no run records it
   EXPECT_EQ(error_of(path), path + ": tick 0 at byte " + std::to_string(block_offset(0) + kBlockHeaderBytes) +
                                 ": reading joint_rad[0] = inf, outside [-1e+06, 1e+06]: not what a run records (damaged)");
+  fs::remove(path);
+}
+
+TEST(RecordingIntegrity, TheFuzzersRecordingMutationReachesTheContentChecksNotTheChecksums) {
+  const std::string path = temp_path("mutated.nrec");
+  const std::vector<uint8_t> good = recorded(path, 600);
+  int refused = 0;
+  for (unsigned seed = 0; seed < 200; ++seed) {
+    std::vector<uint8_t> bytes = good;
+    std::mt19937 random(seed);
+    ASSERT_EQ(fuzz::extreme_record_value(bytes.data(), bytes.size(), bytes.size(), random), bytes.size());
+    write_bytes(path, bytes);
+    const std::string error = error_of(path);
+    EXPECT_EQ(error.find("checksum"), std::string::npos) << error;
+    refused += error.find("not what a run records (damaged)") != std::string::npos;
+  }
+  // About half the places and values are refused: the readings' and commands' numbers, the counts
+  // and a state's NaN or infinity are checked; the timing fields, the sequence, the buttons and a
+  // state's finite numbers are not (a double written 4 bytes off its field may be neither).
+  EXPECT_GT(refused, 40);
   fs::remove(path);
 }
 
