@@ -22,6 +22,8 @@ inline constexpr Range kDepth{0.0, 0.2, false, "m"};
 // 100 N is past what a needle (or a trainee's hand on a device) exerts.
 inline constexpr Range kForce{0.0, 100.0, false, "N"};
 inline constexpr Range kSafeForce{0.0, 100.0, true, "N"};
+// The pass mark: the score's own scale (docs/SCORING.md).
+inline constexpr Range kPassScore{0.0, 100.0, false, ""};
 // The normal markers' spacing [0.02 m]: they stand 1 to 3 spacings out from the surface; past
 // 10 cm they leave the view.
 inline constexpr Range kMarkerSpacing{0.0, 0.1, true, "m"};

@@ -331,7 +331,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       s.weights.redirections = ScoreWeights::kDefaultRedirections;
     }
     if (value.contains("safe_force_N")) s.safe_force_N = in_range(value["safe_force_N"], at + "/safe_force_N", limits::kSafeForce);
-    if (value.contains("pass_score")) s.pass_score = in_range(value["pass_score"], at + "/pass_score", {0.0, 100.0, false, ""});
+    if (value.contains("pass_score")) s.pass_score = in_range(value["pass_score"], at + "/pass_score", limits::kPassScore);
     s.weights = weights(value.contains("weights") ? value["weights"] : json::object(), at + "/weights", s.weights);
     if (value.contains("references")) s.references = references(value["references"], at + "/references");
     return s;
