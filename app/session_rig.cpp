@@ -12,6 +12,7 @@
 #include "haptics/realtime/task_space_step.hpp"
 #include "haptics/realtime/teleoperation_step.hpp"
 #include "haptics/recording/session_format.hpp"
+#include "io/strict_json.hpp"
 #include "training/tasks/scripted_operator.hpp"
 
 namespace needle::app {
@@ -122,9 +123,9 @@ json read_context(const std::string& path, const haptics::SessionHeader& header)
   if (header.context.empty()) throw fail("none (recorded by another program): cannot rebuild its task");
   json context;
   try {
-    context = json::parse(header.context);
-  } catch (const json::exception& e) {
-    throw fail(std::string("not valid JSON (") + e.what() + ")");
+    context = io::parse_json_text(header.context);
+  } catch (const io::JsonTextError& e) {
+    throw fail(e.what());
   }
   if (!context.is_object() || context.value("version", 0) != kContextVersion)
     throw fail("expected version " + std::to_string(kContextVersion));

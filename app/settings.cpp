@@ -57,7 +57,7 @@ class SettingsReader : io::StrictJsonReader<SettingsError> {
   std::optional<float> render_scale(const json& v) const {
     if (v.is_string() && v == "auto") return std::nullopt;
     if (!v.is_number()) fail("/render_scale", "expected \"auto\" or a number in [0.25, 1]");
-    return float(in_range(v, "/render_scale", kMinRenderScale, 1.0, "[0.25, 1]"));
+    return float(in_range(v, "/render_scale", {kMinRenderScale, 1.0, false, ""}));
   }
 
   ViewSettings views(const json& v) const {
@@ -77,10 +77,10 @@ class SettingsReader : io::StrictJsonReader<SettingsError> {
       const json& p = v["probe"];
       object(p, "/views/probe", {"along_m", "across_m", "turn_deg"});
       // A probe stays on its task's skin: a metre either way is past any task's tissue.
-      if (p.contains("along_m")) out.probe.along_m = in_range(p["along_m"], "/views/probe/along_m", -1.0, 1.0, "[-1, 1] m");
-      if (p.contains("across_m")) out.probe.across_m = in_range(p["across_m"], "/views/probe/across_m", -1.0, 1.0, "[-1, 1] m");
+      if (p.contains("along_m")) out.probe.along_m = in_range(p["along_m"], "/views/probe/along_m", {-1.0, 1.0, false, "m"});
+      if (p.contains("across_m")) out.probe.across_m = in_range(p["across_m"], "/views/probe/across_m", {-1.0, 1.0, false, "m"});
       if (p.contains("turn_deg"))
-        out.probe.turn_rad = in_range(p["turn_deg"], "/views/probe/turn_deg", -360.0, 360.0, "[-360, 360] degrees") * kRadPerDeg;
+        out.probe.turn_rad = in_range(p["turn_deg"], "/views/probe/turn_deg", {-360.0, 360.0, false, "degrees"}) * kRadPerDeg;
     }
     return out;
   }

@@ -1,44 +1,65 @@
 // Strict reading of a JSON document with errors that point at the culprit:
 // "FILE: /json/pointer: what is wrong", thrown as `Error`. Unknown keys are errors, numbers
-// must be finite, strings non-empty and without NUL. Header-only: scene, scenario, task and tissue files all
-// read through it, from libraries that do not link each other.
+// must be finite (and in their key's range where one is given), strings non-empty and without
+// NUL; a file must be a regular one of at most kMaxTextFileBytes (io/file_read.hpp), nested at
+// most kMaxNestingDepth deep (io/input_limits.hpp). A template on the error type: scene,
+// scenario, task and tissue files all read through it, from libraries that do not link each other.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <span>
+#include <stdexcept>
 #include <string>
+
+#include "io/file_read.hpp"
+#include "io/input_limits.hpp"
 
 namespace needle::io {
 
-// The text of `file`; Error("FILE: /: what") when it is not a readable regular file.
+// The text of `file`; Error("FILE: /: what") when it is not a readable regular file (read_text).
 template <typename Error>
 std::string read_text_file(const std::filesystem::path& file) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(file, ec);
-  if (!std::filesystem::exists(status)) throw Error(file.string() + ": /: file not found");
-  if (std::filesystem::is_directory(status)) throw Error(file.string() + ": /: is a folder, not a file");
-  if (!std::filesystem::is_regular_file(status)) throw Error(file.string() + ": /: not a regular file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw Error(file.string() + ": /: cannot open the file for reading");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw Error(file.string() + ": /: cannot be read");
+  std::string problem;
+  std::string text = read_text(file, problem);
+  if (!problem.empty()) throw Error(file.string() + ": /: " + problem);
   return text;
+}
+
+// A JSON document that cannot be read: what() says why ("not valid JSON: ...", "nested deeper
+// than 64 levels").
+struct JsonTextError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The document in `text`, refusing one nested deeper than kMaxNestingDepth before it is built
+// (nlohmann's parser is iterative, but copying, comparing or printing a value recurses once a
+// level). Throws JsonTextError.
+inline nlohmann::json parse_json_text(const std::string& text) {
+  struct TooDeep {};
+  try {
+    return nlohmann::json::parse(text, [](int depth, nlohmann::json::parse_event_t, nlohmann::json&) {
+      if (depth > kMaxNestingDepth) throw TooDeep{};
+      return true;
+    });
+  } catch (const TooDeep&) {
+    throw JsonTextError("nested deeper than " + std::to_string(kMaxNestingDepth) + " levels");
+  } catch (const nlohmann::json::exception& e) {
+    throw JsonTextError(std::string("not valid JSON: ") + e.what());
+  }
 }
 
 // The document in `text`, read from `label` (a file name); Error("LABEL: /: not valid JSON: ...").
 template <typename Error>
 nlohmann::json parse_json(const std::string& text, const std::string& label) {
   try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw Error(label + ": /: not valid JSON: " + e.what());
+    return parse_json_text(text);
+  } catch (const JsonTextError& e) {
+    throw Error(label + ": /: " + e.what());
   }
 }
 
@@ -98,11 +119,33 @@ class StrictJsonReader {
     return x;
   }
 
-  // A number in [lo, hi], said as `range` in the error ("[0, 0.5]", "(0, 1] m", ...).
-  double in_range(const json& value, const std::string& at, double lo, double hi, const std::string& range) const {
+  // A number in `range`: "FILE: /pointer: must be in (0, 1800] s, got 1e+300" when it is not.
+  double in_range(const json& value, const std::string& at, const Range& range) const {
     const double x = number(value, at);
-    if (!(x >= lo && x <= hi)) fail(at, "must be in " + range + ", got " + std::to_string(x));
+    if (!range.contains(x)) fail(at, "must be in " + range.text() + ", got " + number_text(x));
     return x;
+  }
+
+  // N numbers, each in `range`.
+  template <size_t N>
+  std::array<double, N> numbers_in(const json& value, const std::string& at, const Range& range) const {
+    const std::array<double, N> v = numbers<N>(value, at);
+    for (size_t k = 0; k < N; ++k)
+      if (!range.contains(v[k])) fail(at + "/" + std::to_string(k), "must be in " + range.text() + ", got " + number_text(v[k]));
+    return v;
+  }
+
+  // A position in the world: three numbers within kWorldExtent_m.
+  std::array<double, 3> position(const json& value, const std::string& at) const {
+    return numbers_in<3>(value, at, kWorldCoordinateRange);
+  }
+
+  // A direction as given (its reader normalizes it): three numbers within kMaxDirectionComponent,
+  // not all (nearly) zero.
+  std::array<double, 3> direction(const json& value, const std::string& at) const {
+    const std::array<double, 3> v = numbers_in<3>(value, at, kDirectionComponentRange);
+    if (!(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) >= 1e-9)) fail(at, "must not be the zero vector");
+    return v;
   }
 
   // A whole number in [lo, hi].

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Runs the libFuzzer targets of tests/fuzz (scene, task, scenario, urdf, recording, gltf) under
 # ASan and UBSan, each for SECONDS (default 600) from its seed corpus (assets/, tests/fuzz/seeds/)
-# plus what earlier runs found (BUILD/fuzz/corpus/TARGET/), JOBS targets at a time (default: the
-# cores). A crash, a hang (10 s an input) or a runaway allocation (over 2 GB) is saved to
-# BUILD/fuzz/artifacts/TARGET/ and ends the run with exit 1; make it a regression by copying the
-# file into tests/fuzz/regressions/TARGET/ (every build then runs it, tests/README.md) and adding
-# a test of the fixed reader.
+# plus what earlier runs found (BUILD/fuzz/corpus/TARGET/), with its dictionary
+# (tests/fuzz/dictionaries/) and its structured mutations (tests/fuzz/structure.hpp), JOBS targets
+# at a time (default: the cores). A crash, a hang (10 s an input) or a runaway allocation (over
+# 2 GB) is saved to BUILD/fuzz/artifacts/TARGET/ and ends the run with exit 1; make it a
+# regression by copying the file into tests/fuzz/regressions/TARGET/ (every build then runs it,
+# tests/README.md) and adding a test of the fixed reader.
 #
 #   tools/fuzz.sh [--build DIR] [--seconds N] [--jobs N] [TARGET...]
 #
@@ -22,7 +23,7 @@ while (($#)); do
     --build) build_dir=$2; shift 2 ;;
     --seconds) seconds=$2; shift 2 ;;
     --jobs) jobs=$2; shift 2 ;;
-    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
     -*) echo "fuzz.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
     *) targets+=("$1"); shift ;;
   esac
@@ -44,11 +45,12 @@ source tools/sanitizers/environment.sh
 # One target: its log in BUILD/fuzz/TARGET.log, exit 1 when it found a fault.
 fuzz_one() {
   local t=$1 corpus=$build_dir/fuzz/corpus/$1 artifacts=$build_dir/fuzz/artifacts/$1 log=$build_dir/fuzz/$1.log
-  local seeds
+  local seeds options
   mkdir -p "$corpus" "$artifacts"
   mapfile -t seeds <"$build_dir/tests/fuzz/fuzz_$t.seeds"
+  mapfile -t options <"$build_dir/tests/fuzz/fuzz_$t.options"  # its dictionary (tests/fuzz/CMakeLists.txt)
   "$build_dir/tests/fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-    -artifact_prefix="$artifacts/" "$corpus" "${seeds[@]}" >"$log" 2>&1
+    "${options[@]}" -artifact_prefix="$artifacts/" "$corpus" "${seeds[@]}" >"$log" 2>&1
 }
 
 echo "fuzzing ${targets[*]}: ${seconds} s each, $jobs at a time"

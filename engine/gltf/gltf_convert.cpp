@@ -1,6 +1,7 @@
 // convert_gltf: validated conversion of a tinygltf::Model to the renderer's Model.
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
@@ -282,6 +283,19 @@ glm::mat4 local_transform(const tinygltf::Node& node, const std::string& file, c
   return glm::mat4(m);
 }
 
+template <typename T>
+bool finite(const T& value) {
+  const float* x = glm::value_ptr(value);
+  return std::all_of(x, x + sizeof(T) / sizeof(float), [](float v) { return std::isfinite(v); });
+}
+
+// How deep a node hierarchy may nest: 256 levels. Design value: an animated character's skeleton
+// is under 100 levels deep, a CAD assembly a few tens; a chain of 100,000 nodes is no model, and
+// its transforms, multiplied in 32-bit floats, would have drifted long before its end.
+constexpr size_t kMaxNodeDepth = 256;
+
+// Every node under the roots, each once, with its world transform: depth first with a stack of
+// its own, not the call stack, and at most kMaxNodeDepth deep.
 struct NodeWalker {
   const Model& gltf;
   const std::string& file;
@@ -289,24 +303,41 @@ struct NodeWalker {
   std::vector<bool> visited;
   std::vector<MeshInstance>& instances;
 
-  void walk(int index, const glm::mat4& parent, const std::string& referrer) {
-    if (index < 0 || static_cast<size_t>(index) >= gltf.nodes.size())
-      asset_fail(file, referrer, "node " + std::to_string(index) + " does not exist");
-    const size_t i = static_cast<size_t>(index);
-    const std::string name = element_name("nodes", i);
-    // glTF nodes form disjoint trees; a second visit means a cycle or a shared child.
-    if (visited[i]) asset_fail(file, name, "is reached twice (a cycle or more than one parent)");
-    visited[i] = true;
-    const tinygltf::Node& node = gltf.nodes[i];
-    const glm::mat4 world = parent * local_transform(node, file, name);
-    if (node.mesh >= 0) {
-      if (static_cast<size_t>(node.mesh) >= gltf.meshes.size())
-        asset_fail(file, name, "mesh " + std::to_string(node.mesh) + " does not exist");
-      const size_t mesh = static_cast<size_t>(node.mesh);
-      for (size_t p = 0; p < gltf.meshes[mesh].primitives.size(); ++p)
-        instances.push_back({first_primitive[mesh] + static_cast<uint32_t>(p), world, node.name});
+  struct Pending {
+    int index;
+    glm::mat4 parent;
+    size_t referrer;  // the node whose children list it (for messages), or SIZE_MAX: the scene
+    size_t depth;     // 1 for a root
+  };
+
+  void walk(int root, const glm::mat4& parent) {
+    std::vector<Pending> stack{{root, parent, SIZE_MAX, 1}};
+    while (!stack.empty()) {
+      const Pending p = stack.back();
+      stack.pop_back();
+      if (p.index < 0 || static_cast<size_t>(p.index) >= gltf.nodes.size())
+        asset_fail(file, p.referrer == SIZE_MAX ? "scene.nodes" : element_name("nodes", p.referrer) + ".children",
+                   "node " + std::to_string(p.index) + " does not exist");
+      const size_t i = static_cast<size_t>(p.index);
+      if (p.depth > kMaxNodeDepth)
+        asset_fail(file, element_name("nodes", i), "nested deeper than " + std::to_string(kMaxNodeDepth) + " levels of the node hierarchy");
+      // glTF nodes form disjoint trees; a second visit means a cycle or a shared child.
+      if (visited[i]) asset_fail(file, element_name("nodes", i), "is reached twice (a cycle or more than one parent)");
+      visited[i] = true;
+      const tinygltf::Node& node = gltf.nodes[i];
+      const glm::mat4 world = p.parent * local_transform(node, file, element_name("nodes", i));
+      if (!finite(world))
+        asset_fail(file, element_name("nodes", i), "its transform, with its parents', is beyond what 32-bit floats hold");
+      if (node.mesh >= 0) {
+        if (static_cast<size_t>(node.mesh) >= gltf.meshes.size())
+          asset_fail(file, element_name("nodes", i), "mesh " + std::to_string(node.mesh) + " does not exist");
+        const size_t mesh = static_cast<size_t>(node.mesh);
+        for (size_t k = 0; k < gltf.meshes[mesh].primitives.size(); ++k)
+          instances.push_back({first_primitive[mesh] + static_cast<uint32_t>(k), world, node.name});
+      }
+      // Children pushed last first, so they are walked in their order.
+      for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back({*child, world, i, p.depth + 1});
     }
-    for (int child : node.children) walk(child, world, name + ".children");
   }
 };
 
@@ -348,13 +379,18 @@ engine::Model convert_gltf(const tinygltf::Model& gltf, const std::string& file)
   for (size_t m = 0; m < gltf.materials.size(); ++m) out.materials.push_back(convert_material(gltf, m, file));
   std::vector<uint32_t> first_primitive;
   for (size_t m = 0; m < gltf.meshes.size(); ++m) {
+    // glTF 2.0 requires at least one primitive a mesh (mesh.primitives: minItems 1).
+    if (gltf.meshes[m].primitives.empty()) asset_fail(file, element_name("meshes", m), "has no primitives (glTF requires at least one)");
     first_primitive.push_back(static_cast<uint32_t>(out.primitives.size()));
     for (size_t p = 0; p < gltf.meshes[m].primitives.size(); ++p)
       out.primitives.push_back(convert_primitive(gltf, m, p, file));
   }
   NodeWalker walker{gltf, file, first_primitive, std::vector<bool>(gltf.nodes.size(), false), out.instances};
-  for (int root : root_nodes(gltf, file)) walker.walk(root, glm::mat4(1.0f), "scene.nodes");
+  for (int root : root_nodes(gltf, file)) walker.walk(root, glm::mat4(1.0f));
+  if (out.instances.empty()) asset_fail(file, "scene", "no node with a mesh: nothing to draw");
   out.world_bounds = world_bounds(out);
+  if (!finite(out.world_bounds.min) || !finite(out.world_bounds.max))
+    asset_fail(file, "scene", "its vertices, placed by the nodes' transforms, lie beyond what 32-bit floats hold");
   return out;
 }
 

@@ -11,6 +11,7 @@
 
 #include "engine/gltf/gltf_errors.hpp"
 #include "engine/gltf/gltf_uri.hpp"
+#include "io/strict_json.hpp"
 
 namespace needle::engine {
 namespace fs = std::filesystem;
@@ -58,13 +59,13 @@ uint64_t data_uri_bytes(const std::string& uri) {
   return n % 4 == 0 ? n / 4 * 3 - padding : n * 3 / 4;  // the latter: unpadded base64
 }
 
-// Every buffer and image URI checked before tinygltf touches any file: confined to the asset's
-// folder, existing, and for buffers exactly byteLength bytes long.
+// The document's nesting depth and every buffer and image URI checked before tinygltf touches any
+// file: confined to the asset's folder, existing, and for buffers exactly byteLength bytes long.
 void check_uris(const std::string& json_text, const fs::path& folder, const std::string& file) {
   nlohmann::json root;
   try {
-    root = nlohmann::json::parse(json_text);
-  } catch (const nlohmann::json::exception& e) {
+    root = io::parse_json_text(json_text);  // nested at most io::kMaxNestingDepth: tinygltf recurses once a level
+  } catch (const io::JsonTextError& e) {
     asset_fail(file, "JSON", e.what());
   }
   if (!root.is_object()) asset_fail(file, "JSON", "the top level is not an object");

@@ -4,10 +4,13 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <cstring>
 #include <initializer_list>
-#include <sstream>
+
+#include "io/file_read.hpp"
+#include "io/input_limits.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -110,6 +113,46 @@ long first_non_utf8_byte(const std::string& text) {
   return -1;
 }
 
+// (text) => the line of the first element nested deeper than io::kMaxNestingDepth, or 0. TinyXML
+// (urdfdom's parser) recurses once a level and overflows the stack on a document nested some
+// 10,000 deep, so such a document never reaches it. Comments, CDATA, processing instructions and
+// declarations nest nothing; a '>' inside an attribute's quotes does not close its tag.
+long too_deep_line(const std::string& text) {
+  int depth = 0;
+  long line = 1;
+  auto skip_to = [&](size_t& i, const char* end) {
+    const size_t found = text.find(end, i);
+    const size_t stop = found == std::string::npos ? text.size() : found + std::strlen(end);
+    line += std::count(text.begin() + long(i), text.begin() + long(stop), '\n');
+    i = stop;
+  };
+  for (size_t i = 0; i < text.size();) {
+    if (text[i] == '\n') ++line;
+    if (text[i] != '<') {
+      ++i;
+      continue;
+    }
+    if (text.compare(i, 4, "<!--") == 0) skip_to(i, "-->");
+    else if (text.compare(i, 9, "<![CDATA[") == 0) skip_to(i, "]]>");
+    else if (text.compare(i, 2, "<?") == 0) skip_to(i, "?>");
+    else if (text.compare(i, 2, "<!") == 0) skip_to(i, ">");
+    else {
+      const bool closing = text.compare(i, 2, "</") == 0;
+      char quote = 0;
+      size_t j = i + 1;
+      for (; j < text.size() && (quote || text[j] != '>'); ++j) {
+        if (text[j] == '\n') ++line;
+        if (quote ? text[j] == quote : text[j] == '"' || text[j] == '\'') quote = quote ? 0 : text[j];
+      }
+      const bool empty = j < text.size() && text[j - 1] == '/';
+      if (closing) --depth;
+      else if (!empty && ++depth > io::kMaxNestingDepth) return line;
+      i = j + 1;
+    }
+  }
+  return 0;
+}
+
 }  // namespace
 
 RobotModel parse_robot_urdf(const std::string& xml, const std::string& source, std::optional<int> expected_dof) {
@@ -117,6 +160,9 @@ RobotModel parse_robot_urdf(const std::string& xml, const std::string& source, s
   std::string rejected;
   if (const long at = first_non_utf8_byte(xml); at >= 0)
     fail(source, "not a valid URDF document: byte " + std::to_string(at) + " is not UTF-8");
+  if (const long line = too_deep_line(xml))
+    fail(source, "not a valid URDF document: elements nested deeper than " + std::to_string(io::kMaxNestingDepth) +
+                     " levels (line " + std::to_string(line) + ")");
   {
     UrdfdomErrors errors;
     urdf = urdf::parseURDF(xml);
@@ -178,11 +224,10 @@ RobotModel parse_robot_urdf(const std::string& xml, const std::string& source, s
 }
 
 RobotModel load_robot_urdf(const std::string& path, std::optional<int> expected_dof) {
-  std::ifstream in(path);
-  if (!in) throw UrdfError(path + ": cannot open");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_robot_urdf(text.str(), path, expected_dof);
+  std::string problem;
+  const std::string text = io::read_text(path, problem);
+  if (!problem.empty()) throw UrdfError(path + ": " + problem);
+  return parse_robot_urdf(text, path, expected_dof);
 }
 
 }  // namespace needle::haptics

@@ -5,8 +5,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "haptics/sim/scenario_limits.hpp"
+
 namespace needle::haptics {
 namespace {
+
+// A scenario's period is one the loop runs at: a task runs it at 1 / period_s.
+static_assert(limits::kPeriod.lo == 1.0 / kMaxLoopRateHz && limits::kPeriod.hi == 1.0 / kMinLoopRateHz);
 
 int64_t period_of(double hz) { return static_cast<int64_t>(1e9 / hz + 0.5); }
 

@@ -95,6 +95,77 @@ std::string hz(double rate) {
   return text;
 }
 
+// The largest magnitude of a recorded reading or command other than a position, in SI units
+// (rad, rad/s, N, N·m): no desk device reads or is sent a million of any of them, so such a
+// number is damage (1e300 written over a joint), not a reading. Positions stay within the world
+// (io::kWorldExtent_m).
+constexpr double kMaxReading = 1e6;
+
+// "reading joint_rad[2] = nan, outside [-1e+06, 1e+06]" for the first of `values` outside
+// [-bound, bound] (NaN included), "" when none is.
+std::string out_of_bound(const char* name, const double* values, int count, double bound) {
+  for (int i = 0; i < count; ++i)
+    if (!(std::abs(values[i]) <= bound)) {
+      char text[160];
+      std::snprintf(text, sizeof text, "%s[%d] = %g, outside [%g, %g]", name, i, values[i], -bound, bound);
+      return text;
+    }
+  return {};
+}
+
+// "state virtual_q[1] = nan, not finite" for the first of `values` that is not, "" when all are.
+std::string not_finite(const char* name, const double* values, int count) {
+  for (int i = 0; i < count; ++i)
+    if (!std::isfinite(values[i])) {
+      char index[16] = "";
+      if (count > 1) std::snprintf(index, sizeof index, "[%d]", i);
+      char text[160];
+      std::snprintf(text, sizeof text, "%s%s = %g, not finite", name, index, values[i]);
+      return text;
+    }
+  return {};
+}
+
+// What makes a decoded record one no run can have written, or "" (docs/SESSIONS.md, "Reading"):
+// counts past the arrays they count, an unknown contact or command space, a layer index outside
+// the punctured set's 32 bits; and, unless the loop had latched a fault on it (then it holds what
+// the loop met, NaN included, as the loop recorded it), a reading or a command that is not finite
+// or past kMaxReading (a position past the world), a state that is not finite (a tip past the world).
+std::string record_problem(const TickSample& s) {
+  const DeviceReading& r = s.reading;
+  const DeviceCommand& c = s.command;
+  const ToolSnapshot& t = s.state;
+  auto count = [](const char* name, uint32_t n, int most) {
+    return n > uint32_t(most) ? std::string(name) + " = " + std::to_string(n) + ", more than " + std::to_string(most) : std::string();
+  };
+  for (const std::string& problem :
+       {count("reading joint_count", r.joint_count, kMaxDeviceJoints), count("command joint_count", c.joint_count, kMaxDeviceJoints),
+        count("command space", uint32_t(c.space), int(CommandSpace::kJointTorque)),
+        count("state joint_count", t.joint_count, kMaxSnapshotJoints), count("state multiplier_count", t.multiplier_count, kMaxMultipliers),
+        count("state contact", uint32_t(t.contact), int(ContactState::kTissue))})
+    if (!problem.empty()) return problem;
+  for (const int32_t layer : {t.tissue.tip_layer, t.tissue.surface_layer, t.tissue.bone_layer})
+    if (layer < -1 || layer > 31) return "state layer index " + std::to_string(layer) + ", outside [-1, 31]";
+  if (t.fault != 0) return {};
+  const TissueSnapshot& l = t.tissue;
+  for (const std::string& problem :
+       {out_of_bound("reading position_m", r.position_m, 3, io::kWorldExtent_m),
+        out_of_bound("reading joint_rad", r.joint_rad, kMaxDeviceJoints, kMaxReading),
+        out_of_bound("reading joint_velocity_rad_s", r.joint_velocity_rad_s, kMaxDeviceJoints, kMaxReading),
+        out_of_bound("reading sensed_force_n", r.sensed_force_n, 3, kMaxReading),
+        out_of_bound("reading sensed_torque_nm", r.sensed_torque_nm, 3, kMaxReading),
+        out_of_bound("command force_n", c.force_n, 3, kMaxReading), out_of_bound("command torque_nm", c.torque_nm, kMaxDeviceJoints, kMaxReading),
+        not_finite("state time_s", &t.time_s, 1), not_finite("state axial_force_N", &l.axial_force_N, 1),
+        not_finite("state deflection_m", &l.deflection_m, 1), out_of_bound("state needle_tip_m", t.needle_tip_m, 3, io::kWorldExtent_m),
+        not_finite("state needle_orientation", t.needle_orientation, 4), not_finite("state virtual_q", t.virtual_q, kMaxSnapshotJoints),
+        not_finite("state virtual_dq", t.virtual_dq, kMaxSnapshotJoints), not_finite("state multipliers", t.multipliers, kMaxMultipliers),
+        not_finite("state operator_force_n", t.operator_force_n, 3), not_finite("state environment_force_n", t.environment_force_n, 3),
+        not_finite("state device_force_n", t.device_force_n, 3), not_finite("state bone_force_n", l.bone_force_n, 3),
+        out_of_bound("state surface_point_m", l.surface_point_m, 3, io::kWorldExtent_m)})
+    if (!problem.empty()) return problem;
+  return {};
+}
+
 }  // namespace
 
 std::size_t session_record_bytes(uint32_t payload_version) {
@@ -266,11 +337,7 @@ bool RecordingReader::next_bare(std::vector<TickSample>& records) {
   }
   buffer_.resize(count * record_bytes_);
   if (std::fread(buffer_.data(), 1, buffer_.size(), file_.get()) != buffer_.size()) fail(at_byte(offset_), "cannot be read");
-  records.resize(count);
-  for (std::size_t k = 0; k < count; ++k) {
-    Reader reader{buffer_.data() + k * record_bytes_};
-    visit_record(reader, records[k], header_.payload_version);
-  }
+  decode_records(records, count, offset_);
   offset_ += buffer_.size();
   end_.whole_bytes = offset_;
   return true;
@@ -321,14 +388,21 @@ bool RecordingReader::next_block(std::vector<TickSample>& records) {
   buffer_.resize(bytes);
   if (std::fread(buffer_.data(), 1, bytes, file_.get()) != bytes) fail(where, "cannot be read");
   if (crc32(buffer_.data(), bytes) != records_crc) fail(where, "records checksum mismatch (damaged)");
+  decode_records(records, count, offset_ + kBlockHeaderBytes);
+  offset_ += kBlockHeaderBytes + bytes;
+  end_.whole_bytes = offset_;
+  return true;
+}
+
+void RecordingReader::decode_records(std::vector<TickSample>& records, std::size_t count, uint64_t at) {
   records.resize(count);
   for (std::size_t k = 0; k < count; ++k) {
     Reader reader{buffer_.data() + k * record_bytes_};
     visit_record(reader, records[k], header_.payload_version);
+    if (const std::string problem = record_problem(records[k]); !problem.empty())
+      fail("tick " + std::to_string(records_read_ + k) + " " + at_byte(at + k * record_bytes_),
+           problem + ": not what a run records (damaged)");
   }
-  offset_ += kBlockHeaderBytes + bytes;
-  end_.whole_bytes = offset_;
-  return true;
 }
 
 SessionHeader read_header(const std::string& path) { return RecordingReader(path).header(); }

@@ -92,7 +92,9 @@ class RecordingReader {
 
   const SessionHeader& header() const { return header_; }
   // Replaces `records` with the next block's; false at the end of the file. Throws
-  // RecordingError naming the file and the byte offset of a damaged block.
+  // RecordingError naming the file and the byte offset of a damaged block, or the tick and the
+  // byte of a record whose checksum holds but whose content no run records (a NaN or 1e300
+  // reading, a count past its array: docs/SESSIONS.md, "Reading").
   bool next(std::vector<TickSample>& records);
   // Valid once next() has returned false.
   const RecordingEnd& end() const { return end_; }
@@ -102,6 +104,9 @@ class RecordingReader {
   [[noreturn]] void fail(const std::string& element, const std::string& what) const;
   bool next_block(std::vector<TickSample>& records);
   bool next_bare(std::vector<TickSample>& records);  // versions 1 and 2
+  // The `count` records in buffer_ into `records`, the first at byte `at` of the file; throws
+  // RecordingError naming the tick and its byte when one holds what no run records.
+  void decode_records(std::vector<TickSample>& records, std::size_t count, uint64_t at);
 
   std::string path_;
   // Owned from the moment it opens: a header refused by the constructor must not leak the file.

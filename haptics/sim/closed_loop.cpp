@@ -93,6 +93,14 @@ SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::functi
     rec.position_error = (rec.x_m - rec.x_v).norm();
     rec.force_error = 0.0;
 
+    // A state that is not finite is a latched fault, found before the tick enters the summary or
+    // the ticks: summary.json never holds a NaN.
+    if (!finite(plant.q()) || !finite(plant.dq()) || !finite(world.q()) || !finite(world.dq()) || !std::isfinite(rec.energy) ||
+        !finite(rec.tau_m) || !std::isfinite(rec.hand_work_J) || !std::isfinite(rec.world_stored_J) || !rec.force_h.allFinite()) {
+      result.summary.faults.push_back("non_finite_state at t=" + std::to_string(rec.t) + " s");
+      break;
+    }
+
     // Metrics: free vs contact by the virtual tool's contact mode.
     if (c.mode == ContactMode::Free) {
       free_pos.add(rec.position_error);
@@ -127,9 +135,7 @@ SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::functi
     result.simulated_s = rec.t;
 
     // Latched faults end the run, naming the cause.
-    if (!finite(plant.q()) || !finite(plant.dq()) || !finite(world.q()) || !finite(world.dq()) || !std::isfinite(rec.energy)) {
-      s.faults.push_back("non_finite_state at t=" + std::to_string(rec.t) + " s");
-    } else if (std::abs(rec.energy) > sc.energy_bound_J) {
+    if (std::abs(rec.energy) > sc.energy_bound_J) {
       s.faults.push_back("energy_bound_exceeded at t=" + std::to_string(rec.t) + " s: |E| = " + std::to_string(std::abs(rec.energy)) +
                          " J > " + std::to_string(sc.energy_bound_J) + " J");
     } else if (rec.position_error > sc.divergence_bound_m) {

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <tuple>
 
 #include "haptics/model/urdf_loader.hpp"
+#include "haptics/sim/scenario_limits.hpp"
 #include "io/input_limits.hpp"
 #include "io/strict_json.hpp"
 
@@ -129,13 +131,12 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     s.master = load_robot_urdf(existing_file(member(j, "", "master_urdf"), "/master_urdf", folder_).string());
     s.virt = load_robot_urdf(existing_file(member(j, "", "virtual_urdf"), "/virtual_urdf", folder_).string(), s.master.dof());
     const int n = s.master.dof();
-    s.base_in_world = vec3(member(j, "", "robot_base_in_world_m"), "/robot_base_in_world_m");
-    s.period_s = positive(member(j, "", "period_s"), "/period_s");
-    s.duration_s = in_range(member(j, "", "duration_s"), "/duration_s", 1e-9, io::kMaxSessionSeconds,
-                            "(0, " + std::to_string(int(io::kMaxSessionSeconds)) + "] s");
-    s.master_substeps = int(whole(member(j, "", "master_substeps"), "/master_substeps", 1, 1000000));
-    s.virtual_substeps = int(whole(member(j, "", "virtual_substeps"), "/virtual_substeps", 1, 1000000));
-    s.q0 = vector(member(j, "", "q0_rad"), "/q0_rad", n);
+    s.base_in_world = point(member(j, "", "robot_base_in_world_m"), "/robot_base_in_world_m");
+    s.period_s = in_range(member(j, "", "period_s"), "/period_s", limits::kPeriod);
+    s.duration_s = in_range(member(j, "", "duration_s"), "/duration_s", io::kSessionDurationRange);
+    s.master_substeps = int(whole(member(j, "", "master_substeps"), "/master_substeps", 1, limits::kMaxSubsteps));
+    s.virtual_substeps = int(whole(member(j, "", "virtual_substeps"), "/virtual_substeps", 1, limits::kMaxSubsteps));
+    s.q0 = vector(member(j, "", "q0_rad"), "/q0_rad", n, limits::kJointAngle);
     gains(member(j, "", "gains"), "/gains", n, s.gains);
     if (j.contains("tool")) tool(j["tool"], "/tool", s.gains.tool);
     if (j.contains("rigid")) {
@@ -148,23 +149,30 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     if (j.contains("device")) {
       object(j["device"], "/device", {"force_limit_N"});
       if (j["device"].contains("force_limit_N"))
-        s.device.force_limit_N = positive(j["device"]["force_limit_N"], "/device/force_limit_N");
+        s.device.force_limit_N = in_range(j["device"]["force_limit_N"], "/device/force_limit_N", limits::kDeviceForceLimit);
     }
-    if (j.contains("energy_bound_J")) s.energy_bound_J = positive(j["energy_bound_J"], "/energy_bound_J");
+    if (j.contains("energy_bound_J")) s.energy_bound_J = in_range(j["energy_bound_J"], "/energy_bound_J", limits::kEnergyBound);
     return s;
   }
 
  private:
-  Eigen::Vector3d vec3(const json& v, const std::string& at) const {
-    const auto a = numbers<3>(v, at);
+  // A position in the world (io::kWorldCoordinateRange).
+  Eigen::Vector3d point(const json& v, const std::string& at) const {
+    const auto a = position(v, at);
     return {a[0], a[1], a[2]};
   }
 
-  Eigen::VectorXd vector(const json& v, const std::string& at, int size) const {
+  // A direction as given, not the zero vector (io::kDirectionComponentRange).
+  Eigen::Vector3d way(const json& v, const std::string& at) const {
+    const auto a = direction(v, at);
+    return {a[0], a[1], a[2]};
+  }
+
+  Eigen::VectorXd vector(const json& v, const std::string& at, int size, const io::Range& range) const {
     if (!v.is_array() || static_cast<int>(v.size()) != size)
       fail(at, "expected an array of " + std::to_string(size) + " numbers");
     Eigen::VectorXd out(size);
-    for (int i = 0; i < size; ++i) out[i] = number(v[size_t(i)], at + "/" + std::to_string(i));
+    for (int i = 0; i < size; ++i) out[i] = in_range(v[size_t(i)], at + "/" + std::to_string(i), range);
     return out;
   }
 
@@ -180,44 +188,41 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
       const json& p = g["gpm"];
       const std::string where = at + "/gpm";
       object(p, where, {"alpha", "xi", "omega"});
-      out.gpm = {positive(member(p, where, "alpha"), where + "/alpha"), positive(member(p, where, "xi"), where + "/xi"),
-                 positive(member(p, where, "omega"), where + "/omega")};
+      out.gpm = {in_range(member(p, where, "alpha"), where + "/alpha", limits::kGpmAlpha),
+                 in_range(member(p, where, "xi"), where + "/xi", limits::kGpmXi),
+                 in_range(member(p, where, "omega"), where + "/omega", limits::kGpmOmega)};
     }
     if (g.contains("nonholonomic")) {
       const json& p = g["nonholonomic"];
       const std::string where = at + "/nonholonomic";
       object(p, where, {"alpha", "beta"});
-      out.nonholonomic = {positive(member(p, where, "alpha"), where + "/alpha"),
-                          positive(member(p, where, "beta"), where + "/beta")};
+      out.nonholonomic = {in_range(member(p, where, "alpha"), where + "/alpha", limits::kNonholonomicAlpha),
+                          in_range(member(p, where, "beta"), where + "/beta", limits::kNonholonomicBeta)};
     }
-    if (g.contains("switch_time_s")) out.switch_time_s = positive(g["switch_time_s"], at + "/switch_time_s");
+    if (g.contains("switch_time_s")) out.switch_time_s = in_range(g["switch_time_s"], at + "/switch_time_s", limits::kSwitchTime);
     if (g.contains("law")) {
       const std::string law = string(g["law"], at + "/law");
       const auto named = control_law_named(law);
       if (!named) fail(at + "/law", "expected \"tool\" or \"thesis\", got \"" + law + "\"");
       out.law = *named;
     }
-    if (g.contains("force_scale")) out.force_scale = positive(g["force_scale"], at + "/force_scale");
-    if (g.contains("axial_damping_Ns_per_m"))
-      out.axial_damping_Ns_per_m = non_negative(g["axial_damping_Ns_per_m"], at + "/axial_damping_Ns_per_m");
-    if (g.contains("lateral_damping_Ns_per_m"))
-      out.lateral_damping_Ns_per_m = non_negative(g["lateral_damping_Ns_per_m"], at + "/lateral_damping_Ns_per_m");
-    if (g.contains("lateral_stiffness_N_per_m"))
-      out.lateral_stiffness_N_per_m = non_negative(g["lateral_stiffness_N_per_m"], at + "/lateral_stiffness_N_per_m");
-    if (g.contains("axial_stiffness_N_per_m"))
-      out.axial_stiffness_N_per_m = non_negative(g["axial_stiffness_N_per_m"], at + "/axial_stiffness_N_per_m");
-    if (g.contains("passivity_max_damping_per_tick")) {
-      const std::string where = at + "/passivity_max_damping_per_tick";
-      out.passivity.max_damping_per_tick = non_negative(g["passivity_max_damping_per_tick"], where);
-      if (out.passivity.max_damping_per_tick > 1.0)
-        fail(where, "must be in [0, 1] (the share of the device's velocity the damper may remove in one tick)");
-    }
+    if (g.contains("force_scale")) out.force_scale = in_range(g["force_scale"], at + "/force_scale", limits::kForceScale);
+    const std::tuple<const char*, double*, const io::Range&> springs[] = {
+        {"axial_damping_Ns_per_m", &out.axial_damping_Ns_per_m, limits::kToolDamping},
+        {"lateral_damping_Ns_per_m", &out.lateral_damping_Ns_per_m, limits::kToolDamping},
+        {"lateral_stiffness_N_per_m", &out.lateral_stiffness_N_per_m, limits::kToolStiffness},
+        {"axial_stiffness_N_per_m", &out.axial_stiffness_N_per_m, limits::kToolStiffness}};
+    for (const auto& [key, field, range] : springs)
+      if (g.contains(key)) *field = in_range(g[key], at + "/" + key, range);
+    if (g.contains("passivity_max_damping_per_tick"))
+      out.passivity.max_damping_per_tick =
+          in_range(g["passivity_max_damping_per_tick"], at + "/passivity_max_damping_per_tick", limits::kPassivityDampingPerTick);
   }
 
   void tool(const json& t, const std::string& at, Tool& out) const {
     object(t, at, {"name", "mass_kg"});
     if (t.contains("name")) out.name = string(t["name"], at + "/name");
-    if (t.contains("mass_kg")) out.mass_kg = non_negative(t["mass_kg"], at + "/mass_kg");
+    if (t.contains("mass_kg")) out.mass_kg = in_range(t["mass_kg"], at + "/mass_kg", limits::kToolMass);
   }
 
   struct Primitives {
@@ -250,8 +255,9 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
       const json& p = j["stick"];
       const std::string where = at + "/stick";
       object(p, where, {"stiffness_N_per_m", "band_mps"});
-      if (p.contains("stiffness_N_per_m")) stick.stiffness_N_per_m = positive(p["stiffness_N_per_m"], where + "/stiffness_N_per_m");
-      if (p.contains("band_mps")) stick.band_mps = positive(p["band_mps"], where + "/band_mps");
+      if (p.contains("stiffness_N_per_m"))
+        stick.stiffness_N_per_m = in_range(p["stiffness_N_per_m"], where + "/stiffness_N_per_m", limits::kStickStiffness);
+      if (p.contains("band_mps")) stick.band_mps = in_range(p["band_mps"], where + "/band_mps", limits::kStickBand);
     }
     const json& list = member(j, at, "layers");
     const std::string where = at + "/layers";
@@ -292,16 +298,14 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
       const json& p = j["slab"];
       const std::string where = at + "/slab";
       object(p, where, {"point", "normal", "thickness_m"});
-      const Eigen::Vector3d normal = vec3(member(p, where, "normal"), where + "/normal");
-      if (normal.norm() < 1e-9) fail(where + "/normal", "must not be the zero vector");
-      return LayerShape::slab(vec3(member(p, where, "point"), where + "/point") - base, normal,
-                              positive(member(p, where, "thickness_m"), where + "/thickness_m"));
+      return LayerShape::slab(point(member(p, where, "point"), where + "/point") - base, way(member(p, where, "normal"), where + "/normal"),
+                              in_range(member(p, where, "thickness_m"), where + "/thickness_m", limits::kShapeSize));
     }
     if (j.contains("box")) {
       const json& p = j["box"];
       const std::string where = at + "/box";
       object(p, where, {"min", "max"});
-      const Eigen::Vector3d lo = vec3(member(p, where, "min"), where + "/min"), hi = vec3(member(p, where, "max"), where + "/max");
+      const Eigen::Vector3d lo = point(member(p, where, "min"), where + "/min"), hi = point(member(p, where, "max"), where + "/max");
       if (!(lo.array() < hi.array()).all()) fail(where + "/max", "must exceed min on every axis");
       return LayerShape::box(lo - base, hi - base);
     }
@@ -320,23 +324,21 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
       const json& p = e["sphere"];
       const std::string where = at + "/sphere";
       object(p, where, {"centre", "radius"});
-      return SurfacePrimitive::sphere(vec3(member(p, where, "centre"), where + "/centre") - base,
-                                      positive(member(p, where, "radius"), where + "/radius"));
+      return SurfacePrimitive::sphere(point(member(p, where, "centre"), where + "/centre") - base,
+                                      in_range(member(p, where, "radius"), where + "/radius", limits::kShapeSize));
     }
     if (e.contains("plane")) {
       const json& p = e["plane"];
       const std::string where = at + "/plane";
       object(p, where, {"point", "normal"});
-      const Eigen::Vector3d normal = vec3(member(p, where, "normal"), where + "/normal");
-      if (normal.norm() < 1e-9) fail(where + "/normal", "must not be the zero vector");
-      return SurfacePrimitive::plane(vec3(member(p, where, "point"), where + "/point") - base, normal);
+      return SurfacePrimitive::plane(point(member(p, where, "point"), where + "/point") - base, way(member(p, where, "normal"), where + "/normal"));
     }
     const json& p = e["capsule"];
     const std::string where = at + "/capsule";
     object(p, where, {"a", "b", "radius"});
-    return SurfacePrimitive::capsule(vec3(member(p, where, "a"), where + "/a") - base,
-                                     vec3(member(p, where, "b"), where + "/b") - base,
-                                     positive(member(p, where, "radius"), where + "/radius"));
+    return SurfacePrimitive::capsule(point(member(p, where, "a"), where + "/a") - base,
+                                     point(member(p, where, "b"), where + "/b") - base,
+                                     in_range(member(p, where, "radius"), where + "/radius", limits::kShapeSize));
   }
 
   void hand(const json& h, const std::string& at, Scenario& s) const {
@@ -347,10 +349,13 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
 
   void sensor(const json& j, const std::string& at, ForceSensorParams& out) const {
     object(j, at, {"bias_N", "force_noise_N", "bandwidth_Hz", "seed"});
-    if (j.contains("force_noise_N")) out.force_noise_N = non_negative(j["force_noise_N"], at + "/force_noise_N");
-    if (j.contains("bandwidth_Hz")) out.bandwidth_Hz = positive(j["bandwidth_Hz"], at + "/bandwidth_Hz");
+    if (j.contains("force_noise_N")) out.force_noise_N = in_range(j["force_noise_N"], at + "/force_noise_N", limits::kSensorNoise);
+    if (j.contains("bandwidth_Hz")) out.bandwidth_Hz = in_range(j["bandwidth_Hz"], at + "/bandwidth_Hz", limits::kSensorBandwidth);
     if (j.contains("seed")) out.seed = static_cast<unsigned>(whole(j["seed"], at + "/seed", 0, 4294967295LL));
-    if (j.contains("bias_N")) out.bias.head<3>() = vec3(j["bias_N"], at + "/bias_N");
+    if (j.contains("bias_N")) {
+      const auto bias = numbers_in<3>(j["bias_N"], at + "/bias_N", limits::kSensorBias);
+      out.bias.head<3>() = Eigen::Vector3d(bias[0], bias[1], bias[2]);
+    }
   }
 
   std::filesystem::path folder_;
@@ -360,17 +365,17 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
 
 OperatorHand read_hand(const json& h, const std::string& file, const std::string& at, const Eigen::Vector3d& base_in_world) {
   const io::StrictJsonReader<ScenarioError> r(file);
-  auto vec3 = [&r](const json& v, const std::string& where) {
-    const auto a = r.numbers<3>(v, where);
-    return Eigen::Vector3d(a[0], a[1], a[2]);
-  };
+  auto vec3 = [](const std::array<double, 3>& a) { return Eigen::Vector3d(a[0], a[1], a[2]); };
   r.object(h, at, {"mass_kg", "damping_Ns_per_m", "stiffness_N_per_m", "grip_length_m", "waypoints"});
   OperatorHand out;
   HandImpedance& i = out.impedance;
-  if (h.contains("mass_kg")) i.mass_kg = r.positive(h["mass_kg"], at + "/mass_kg");
-  if (h.contains("damping_Ns_per_m")) i.damping_Ns_per_m = r.non_negative(h["damping_Ns_per_m"], at + "/damping_Ns_per_m");
-  if (h.contains("stiffness_N_per_m")) i.stiffness_N_per_m = r.non_negative(h["stiffness_N_per_m"], at + "/stiffness_N_per_m");
-  if (h.contains("grip_length_m")) i.grip_length_m = r.positive(h["grip_length_m"], at + "/grip_length_m");
+  const std::tuple<const char*, double*, const io::Range&> impedance[] = {
+      {"mass_kg", &i.mass_kg, limits::kHandMass},
+      {"damping_Ns_per_m", &i.damping_Ns_per_m, limits::kHandDamping},
+      {"stiffness_N_per_m", &i.stiffness_N_per_m, limits::kHandStiffness},
+      {"grip_length_m", &i.grip_length_m, limits::kGripLength}};
+  for (const auto& [key, field, range] : impedance)
+    if (h.contains(key)) *field = r.in_range(h[key], at + "/" + key, range);
   const json& wps = r.member(h, at, "waypoints");
   if (!wps.is_array() || wps.empty()) r.fail(at + "/waypoints", "expected a non-empty array of waypoints");
   std::vector<HandWaypoint> waypoints;
@@ -378,12 +383,11 @@ OperatorHand read_hand(const json& h, const std::string& file, const std::string
     const std::string where = at + "/waypoints/" + std::to_string(k);
     r.object(wps[k], where, {"t", "p", "dir"});
     // A time past the longest session would make a run that never ends (docs/TASKS.md, "Limits").
-    const double t = r.in_range(r.member(wps[k], where, "t"), where + "/t", 0.0, io::kMaxSessionSeconds,
-                                "[0, " + std::to_string(int(io::kMaxSessionSeconds)) + "] s");
+    const double t = r.in_range(r.member(wps[k], where, "t"), where + "/t", io::kSessionTimeRange);
     if (!waypoints.empty() && !(t > waypoints.back().t))
       r.fail(where + "/t", "must be after the waypoint before it (" + std::to_string(waypoints.back().t) + " s)");
-    waypoints.push_back({t, vec3(r.member(wps[k], where, "p"), where + "/p") - base_in_world,
-                         vec3(r.member(wps[k], where, "dir"), where + "/dir")});
+    waypoints.push_back({t, vec3(r.position(r.member(wps[k], where, "p"), where + "/p")) - base_in_world,
+                         vec3(r.direction(r.member(wps[k], where, "dir"), where + "/dir"))});
   }
   try {
     out.trajectory = HandTrajectory(std::move(waypoints));

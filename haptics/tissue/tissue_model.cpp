@@ -2,15 +2,27 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
 namespace needle::haptics {
+namespace {
+
+// "must be in [0, 10000] N/m, got 1e+300".
+template <class Set>
+std::string out_of_range(const ParameterField<Set>& f, double lo, double value) {
+  char text[128];
+  std::snprintf(text, sizeof text, "must be in [%g, %g]%s%s, got %g", lo, f.max, *f.unit ? " " : "", f.unit, value);
+  return text;
+}
+
+}  // namespace
 
 std::optional<MechanicsProblem> mechanics_problem(const LayerMechanics& m) {
   for (const auto& f : kMechanicsFields) {
     const double value = m.*f.member;
-    if (!(value >= 0.0) || !std::isfinite(value)) return MechanicsProblem{f.key, "must be a finite number >= 0"};
+    if (!(value >= 0.0 && value <= f.max)) return MechanicsProblem{f.key, out_of_range(f, 0.0, value)};
     if (m.rigid && value != 0.0)
       return MechanicsProblem{f.key, "a rigid layer takes no other parameter (it is the GPM contact of (3.15))"};
   }
@@ -33,7 +45,7 @@ double tent_depth_m(const LayerMechanics& m) {
 
 std::optional<MechanicsProblem> acoustics_problem(const LayerAcoustics& a) {
   for (const auto& f : kAcousticsFields)
-    if (!std::isfinite(a.*f.member)) return MechanicsProblem{f.key, "must be a finite number"};
+    if (!std::isfinite(a.*f.member) || a.*f.member > f.max) return MechanicsProblem{f.key, out_of_range(f, 0.0, a.*f.member)};
   if (!(a.impedance_MRayl > 0.0)) return MechanicsProblem{"impedance_MRayl", "must be > 0"};
   if (!(a.attenuation_dB_per_cm_MHz >= 0.0)) return MechanicsProblem{"attenuation_dB_per_cm_MHz", "must be >= 0"};
   if (!(a.echogenicity >= 0.0 && a.echogenicity <= 1.0)) return MechanicsProblem{"echogenicity", "must be in [0, 1]"};

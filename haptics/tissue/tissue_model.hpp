@@ -25,21 +25,29 @@ struct LayerMechanics {
   bool rigid = false;                    // bone: never punctured, every other number zero
 };
 
-// A numeric parameter of `Set` by its key in scenario and parameter set files.
+// A numeric parameter of `Set` by its key in scenario and parameter set files, with the largest
+// value it may take and its unit.
 template <class Set>
 struct ParameterField {
   const char* key;
   double Set::*member;
+  double max;
+  const char* unit;
 };
-// The mechanical parameters, in file order.
+// The mechanical parameters, in file order. Each is in [0, max]; max is a design value about 20
+// times the largest of the shipped parameter sets (assets/tissues/: the flavum's 500 N/m,
+// 1e5 N/m², 5 N puncture, 1.5 N cutting, 150 and 225 N/m friction; no set gives a damping, and
+// 1000 N·s/m resists a 5 mm/s insertion with 5 N, a puncture's force), beyond any tissue their
+// sources measured: past it a number is a typo or an attack (1e300 N/m is not a tissue), and the
+// tick's forces would overflow what the device and the solver can take (docs/TISSUE.md).
 inline constexpr ParameterField<LayerMechanics> kMechanicsFields[] = {
-    {"stiffness_N_per_m", &LayerMechanics::stiffness_N_per_m},
-    {"stiffness2_N_per_m2", &LayerMechanics::stiffness2_N_per_m2},
-    {"puncture_force_N", &LayerMechanics::puncture_force_N},
-    {"cutting_force_N", &LayerMechanics::cutting_force_N},
-    {"friction_N_per_m", &LayerMechanics::friction_N_per_m},
-    {"static_friction_N_per_m", &LayerMechanics::static_friction_N_per_m},
-    {"damping_Ns_per_m", &LayerMechanics::damping_Ns_per_m}};
+    {"stiffness_N_per_m", &LayerMechanics::stiffness_N_per_m, 1e4, "N/m"},
+    {"stiffness2_N_per_m2", &LayerMechanics::stiffness2_N_per_m2, 2e6, "N/m^2"},
+    {"puncture_force_N", &LayerMechanics::puncture_force_N, 100.0, "N"},
+    {"cutting_force_N", &LayerMechanics::cutting_force_N, 30.0, "N"},
+    {"friction_N_per_m", &LayerMechanics::friction_N_per_m, 5000.0, "N/m"},
+    {"static_friction_N_per_m", &LayerMechanics::static_friction_N_per_m, 5000.0, "N/m"},
+    {"damping_Ns_per_m", &LayerMechanics::damping_Ns_per_m, 1000.0, "N*s/m"}};
 
 // What is wrong with a layer's mechanics: the offending parameter's key and the reason.
 struct MechanicsProblem {
@@ -61,11 +69,14 @@ struct LayerAcoustics {
   double scatterer_density = 0.0;          // share of scatterer cells that hold one, (0, 1]
 };
 
+// The largest values (design values): an impedance of 100 MRayl is past any solid (the shipped
+// bone's 6.5, steel's about 46), an attenuation of 100 dB/(cm MHz) seven times the shipped
+// bone's 15 (assets/tissues/bone.json cites both); echogenicity and scatterer density are fractions.
 inline constexpr ParameterField<LayerAcoustics> kAcousticsFields[] = {
-    {"impedance_MRayl", &LayerAcoustics::impedance_MRayl},
-    {"attenuation_dB_per_cm_MHz", &LayerAcoustics::attenuation_dB_per_cm_MHz},
-    {"echogenicity", &LayerAcoustics::echogenicity},
-    {"scatterer_density", &LayerAcoustics::scatterer_density}};
+    {"impedance_MRayl", &LayerAcoustics::impedance_MRayl, 100.0, "MRayl"},
+    {"attenuation_dB_per_cm_MHz", &LayerAcoustics::attenuation_dB_per_cm_MHz, 100.0, "dB/(cm MHz)"},
+    {"echogenicity", &LayerAcoustics::echogenicity, 1.0, ""},
+    {"scatterer_density", &LayerAcoustics::scatterer_density, 1.0, ""}};
 
 // The parameter at fault and why, or nothing when every number is in its range.
 std::optional<MechanicsProblem> acoustics_problem(const LayerAcoustics& a);

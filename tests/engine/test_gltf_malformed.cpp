@@ -259,5 +259,53 @@ TEST(GltfMalformedInMemory, AttributeCountsDisagree) {
                      {"meshes[0].primitives[0]", "NORMAL has 2 elements but POSITION has 3"});
 }
 
+// A chain of `length` nodes, each the only child of the one before, the last holding the mesh.
+void make_chain(nlohmann::json& j, size_t length) {
+  j["nodes"] = nlohmann::json::array();
+  for (size_t i = 0; i + 1 < length; ++i) j["nodes"].push_back({{"children", {i + 1}}});
+  j["nodes"].push_back({{"mesh", 0}});
+  j["scenes"][0]["nodes"] = {0};
+}
+
+TEST_F(GltfMalformed, ANodeChainOfAHundredThousandIsRefusedAtTheStatedDepth) {
+  edit_json(file, [](nlohmann::json& j) { make_chain(j, 100000); });
+  expect_error({"nodes[256]", "nested deeper than 256 levels of the node hierarchy"});
+  edit_json(file, [](nlohmann::json& j) { make_chain(j, 256); });
+  const Model model = load_gltf(file);
+  ASSERT_EQ(model.instances.size(), 1u);
+  EXPECT_EQ(model.instances[0].world, glm::mat4(1.0f));
+}
+
+TEST_F(GltfMalformed, DeeplyNestedJsonIsRefusedBeforeTinygltfRecursesIntoIt) {
+  std::string extras = "1";
+  for (int k = 0; k < 100000; ++k) extras = "[" + extras;
+  extras += std::string(100000, ']');
+  std::string text = read_json(file).dump();
+  text.insert(text.size() - 1, ",\"extras\":" + extras);
+  write_text(file, text);
+  expect_error({"JSON", "nested deeper than 64 levels"});
+}
+
+TEST_F(GltfMalformed, AMeshWithoutPrimitivesIsRefusedAsSuch) {
+  edit_json(file, [](nlohmann::json& j) { j["meshes"][0]["primitives"] = nlohmann::json::array(); });
+  expect_error({"meshes[0]", "has no primitives"});
+}
+
+TEST_F(GltfMalformed, AModelWithNothingToDrawIsRefusedAsSuch) {
+  edit_json(file, [](nlohmann::json& j) { j["nodes"][0].erase("mesh"); });
+  expect_error({"scene", "no node with a mesh: nothing to draw"});
+}
+
+TEST_F(GltfMalformed, TransformsPastWhatFloatsHoldAreRefused) {
+  edit_json(file, [](nlohmann::json& j) { j["nodes"][0]["translation"] = {1e39, 0, 0}; });
+  expect_error({"nodes[0]", "beyond what 32-bit floats hold"});
+  // A finite transform that carries the vertex (1, 0, 0) to 1e38 + 3e38, past a float's 3.4e38.
+  edit_json(file, [](nlohmann::json& j) {
+    j["nodes"][0]["translation"] = {3e38, 0, 0};
+    j["nodes"][0]["scale"] = {1e38, 1, 1};
+  });
+  expect_error({"scene", "its vertices, placed by the nodes' transforms, lie beyond what 32-bit floats hold"});
+}
+
 }  // namespace
 }  // namespace needle::engine

@@ -5,6 +5,9 @@
 
 #include "engine/gltf_loader.hpp"
 #include "fuzz_input.hpp"
+#include "structure.hpp"
+
+NEEDLE_FUZZ_MUTATIONS(needle::fuzz::extreme_number, needle::fuzz::deep_json)
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const bool binary = size >= 4 && std::memcmp(data, "glTF", 4) == 0;

@@ -2,7 +2,10 @@
 // told): any input is a session or a haptics::RecordingError, nothing else, and nothing is
 // allocated that the header has not been checked for.
 #include "fuzz_input.hpp"
+#include "structure.hpp"
 #include "haptics/recording/session_format.hpp"
+
+NEEDLE_FUZZ_MUTATIONS(needle::fuzz::extreme_record_value)
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string file = needle::fuzz::write_input("fuzz_input.nrec", data, size).string();

@@ -1,7 +1,10 @@
 // Task files (training::parse_task, as a replay reads the task its recording keeps, and load_task
 // with the same text): any input is a task or a training::TaskError, nothing else.
 #include "fuzz_input.hpp"
+#include "structure.hpp"
 #include "training/tasks/task.hpp"
+
+NEEDLE_FUZZ_MUTATIONS(needle::fuzz::extreme_number, needle::fuzz::deep_json)
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

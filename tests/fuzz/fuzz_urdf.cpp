@@ -1,6 +1,9 @@
 // Robot descriptions (haptics::parse_robot_urdf, through urdfdom): any input is a model or a
 // haptics::UrdfError, nothing else; urdfdom's own messages are captured, never printed.
 #include "haptics/model/urdf_loader.hpp"
+#include "structure.hpp"
+
+NEEDLE_FUZZ_MUTATIONS(needle::fuzz::extreme_number, needle::fuzz::deep_xml)
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {

@@ -1,4 +1,6 @@
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <string>
 
@@ -17,6 +19,23 @@ TEST(DeviceFalcon, MissingFirmwareFileIsNamed) {
   } catch (const DeviceError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/novint.bin"), std::string::npos) << e.what();
   }
+}
+
+TEST(DeviceFalcon, AFirmwarePathThatIsNotARegularFileIsRefusedBeforeItIsOpened) {
+  const std::string fifo = ::testing::TempDir() + "/falcon_fifo_" + std::to_string(::getpid()) + ".bin";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  for (const std::string& path : {fifo, std::string("/dev/zero")}) {  // a pipe nobody writes would block; zeros never end
+    FalconOptions options;
+    options.firmware_path = path;
+    FalconDevice falcon(options);
+    try {
+      falcon.open();
+      ADD_FAILURE() << path;
+    } catch (const DeviceError& e) {
+      EXPECT_EQ(std::string(e.what()), "falcon: firmware file " + path + ": not a regular file (a device, a pipe or a folder)");
+    }
+  }
+  ::unlink(fifo.c_str());
 }
 
 // CI machines have no Falcon: open() must say so clearly rather than crash or hang.

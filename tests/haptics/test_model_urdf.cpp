@@ -1,5 +1,7 @@
 // Malformed or physically impossible URDFs are errors that name the file and the element.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "haptics/model/urdf_loader.hpp"
 
@@ -99,8 +101,40 @@ TEST(ModelUrdf, MissingFileIsNamed) {
     load_robot_urdf("/nonexistent/robot.urdf");
     FAIL();
   } catch (const UrdfError& e) {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent/robot.urdf: cannot open"), std::string::npos);
+    EXPECT_EQ(std::string(e.what()), "/nonexistent/robot.urdf: file not found");
   }
+}
+
+// `depth` <link> elements nested inside the one-joint robot's arm link.
+std::string nested(int depth) {
+  std::string links;
+  for (int k = 0; k < depth; ++k) links += "<link>";
+  for (int k = 0; k < depth; ++k) links += "</link>";
+  return one_joint("revolute", inertial("1", "1", "1", "1"), links);
+}
+
+TEST(ModelUrdf, ADocumentNestedPastSixtyFourLevelsIsRefusedBeforeTheXmlParserRecursesIntoIt) {
+  // 100,000 levels overflowed TinyXML's stack (SIGSEGV); the robot and 63 levels of links in it are within.
+  expect_error(nested(100000), "not a valid URDF document: elements nested deeper than 64 levels (line 4)");
+  expect_error(nested(63), "No name given for the link");  // reaches urdfdom, which wants its links named
+  expect_error(nested(64), "elements nested deeper than 64 levels");
+  // Comments, CDATA and a '>' inside quotes nest nothing.
+  const std::string quiet = "<!-- <a><b><c> -->" + std::string("<![CDATA[<d><e>]]>");
+  EXPECT_EQ(parse_robot_urdf(one_joint("revolute", inertial("1", "1", "1", "1") + quiet, "<!-- <x> -->"), "robot.urdf", 1).dof(), 1);
+}
+
+TEST(ModelUrdf, WhatIsNotARegularFileIsRefusedBeforeItIsOpened) {
+  const std::string fifo = ::testing::TempDir() + "/robot_fifo_" + std::to_string(::getpid()) + ".urdf";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  for (const std::string& path : {fifo, std::string("/dev/zero")}) {  // a pipe nobody writes; endless zeros
+    try {
+      load_robot_urdf(path);
+      ADD_FAILURE() << path;
+    } catch (const UrdfError& e) {
+      EXPECT_EQ(std::string(e.what()), path + ": not a regular file (a device or a pipe)");
+    }
+  }
+  ::unlink(fifo.c_str());
 }
 
 }  // namespace

@@ -14,11 +14,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <random>
 
 #include "haptics/devices/replay_device.hpp"
 #include "haptics/recording/crc32.hpp"
 #include "haptics/recording/session_recorder.hpp"
+#include "tests/fuzz/structure.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -453,6 +455,101 @@ TEST(RecordingIntegrity, PayloadOneRecordingsStillReadExactlyAsBefore) {
   std::vector<uint8_t> again;
   for (const TickSample& r : s.records) encode_record(r, again, 1);
   EXPECT_TRUE(std::equal(again.begin(), again.end(), bytes.begin() + long(block + kBlockHeaderBytes)));
+  fs::remove(path);
+}
+
+// A checksummed recording's bytes with `bytes` written at `at` inside block `block`'s records
+// and the block's two checksums made valid again: damage no checksum sees.
+void write_under_checksums(std::vector<uint8_t>& recording, int block, uint64_t at, const void* bytes, size_t size) {
+  std::memcpy(&recording[at], bytes, size);
+  const uint64_t head = block_offset(block);
+  uint32_t count = 0;
+  std::memcpy(&count, &recording[head + 12], 4);
+  const uint32_t records_crc = crc32(&recording[head + kBlockHeaderBytes], count * session_record_bytes());
+  std::memcpy(&recording[head + 16], &records_crc, 4);
+  const uint32_t header_crc = crc32(&recording[head], 20);
+  std::memcpy(&recording[head + 20], &header_crc, 4);
+}
+
+// Where the fields below start in a record (the order of visit_record in session_format.cpp):
+// tick, time, period and compute time (4 x 8 bytes), the reading's sequence (8), its five 32-bit
+// flags and counts (joint_count the second), its position (3 doubles), its joints (8 doubles).
+constexpr uint64_t kReadingJointCount = 32 + 8 + 4;
+constexpr uint64_t kReadingPosition = 32 + 8 + 5 * 4;
+constexpr uint64_t kReadingJoints = kReadingPosition + 3 * 8;
+
+TEST(RecordingIntegrity, ReadingsNoRunRecordsAreDamageNamingTheTickAndTheByteThoughTheChecksumsHold) {
+  const std::string path = temp_path("content.nrec");
+  const std::vector<uint8_t> good = recorded(path, 1000);
+  const uint64_t record_300 = block_offset(1) + kBlockHeaderBytes + 44 * session_record_bytes();  // tick 300 is block 1's 45th
+  const std::string where = path + ": tick 300 at byte " + std::to_string(record_300) + ": ";
+  const std::string damaged = ": not what a run records (damaged)";
+  struct Case {
+    uint64_t at;
+    double value;
+    std::string problem;
+  };
+  const Case cases[] = {
+      {kReadingJoints, std::nan(""), "reading joint_rad[0] = nan, outside [-1e+06, 1e+06]"},
+      {kReadingJoints + 8, 1e300, "reading joint_rad[1] = 1e+300, outside [-1e+06, 1e+06]"},
+      {kReadingPosition + 16, -1e300, "reading position_m[2] = -1e+300, outside [-10, 10]"},
+      {kReadingPosition, 11.0, "reading position_m[0] = 11, outside [-10, 10]"},  // past the world (io::kWorldExtent_m)
+  };
+  for (const Case& c : cases) {
+    std::vector<uint8_t> bad = good;
+    write_under_checksums(bad, 1, record_300 + c.at, &c.value, 8);
+    write_bytes(path, bad);
+    EXPECT_EQ(error_of(path), where + c.problem + damaged);
+    ReplayDevice replay(path);  // refused before its first tick
+    EXPECT_THROW(replay.open(), RecordingError);
+  }
+  // A count past its array would be read past the array's end.
+  std::vector<uint8_t> bad = good;
+  const uint32_t count = 1u << 31;
+  write_under_checksums(bad, 1, record_300 + kReadingJointCount, &count, 4);
+  write_bytes(path, bad);
+  EXPECT_EQ(error_of(path), where + "reading joint_count = 2147483648, more than 8" + damaged);
+  fs::remove(path);
+}
+
+TEST(RecordingIntegrity, AStateThatIsNotFiniteIsRecordedOnlyWithTheFaultTheLoopLatchedOnIt) {
+  const std::string path = temp_path("faulted.nrec");
+  auto record_with = [&](uint32_t fault) {
+    SpscRing<TickSample> ring(16);
+    SessionRecorder recorder(path, kHeader, ring);
+    TickSample s = sample(0);
+    s.state.virtual_q[1] = std::nan("");
+    s.reading.joint_rad[0] = std::numeric_limits<double>::infinity();
+    s.state.fault = fault;
+    ring.push(s);
+    recorder.drain();
+    recorder.stop(true);
+  };
+  record_with(1);  // the loop latched kNonFinite: the record holds what it met
+  EXPECT_TRUE(std::isnan(read_session(path).records[0].state.virtual_q[1]));
+  record_with(0);  // no fault: no run records it
+  EXPECT_EQ(error_of(path), path + ": tick 0 at byte " + std::to_string(block_offset(0) + kBlockHeaderBytes) +
+                                ": reading joint_rad[0] = inf, outside [-1e+06, 1e+06]: not what a run records (damaged)");
+  fs::remove(path);
+}
+
+TEST(RecordingIntegrity, TheFuzzersRecordingMutationReachesTheContentChecksNotTheChecksums) {
+  const std::string path = temp_path("mutated.nrec");
+  const std::vector<uint8_t> good = recorded(path, 600);
+  int refused = 0;
+  for (unsigned seed = 0; seed < 200; ++seed) {
+    std::vector<uint8_t> bytes = good;
+    std::mt19937 random(seed);
+    ASSERT_EQ(fuzz::extreme_record_value(bytes.data(), bytes.size(), bytes.size(), random), bytes.size());
+    write_bytes(path, bytes);
+    const std::string error = error_of(path);
+    EXPECT_EQ(error.find("checksum"), std::string::npos) << error;
+    refused += error.find("not what a run records (damaged)") != std::string::npos;
+  }
+  // About half the places and values are refused: the readings' and commands' numbers, the counts
+  // and a state's NaN or infinity are checked; the timing fields, the sequence, the buttons and a
+  // state's finite numbers are not (a double written 4 bytes off its field may be neither).
+  EXPECT_GT(refused, 40);
   fs::remove(path);
 }
 

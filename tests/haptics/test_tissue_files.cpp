@@ -10,6 +10,7 @@
 #include "haptics/sim/scenario.hpp"
 #include "haptics/tissue/kinematic_insertion.hpp"
 #include "robot_fixtures.hpp"
+#include "scenario_files.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -18,25 +19,13 @@ using Eigen::Vector3d;
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-json read(const std::string& path) {
-  std::ifstream in(path);
-  return json::parse(in);
-}
-
-// A file name of the running test's own: CTest runs the tests of this file in parallel processes.
-std::string own_file(const std::string& what) {
-  return (fs::weakly_canonical(::testing::TempDir()) /
-          (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" + what))
-      .string();
-}
-
 // The thesis's needle scenario with `tissue` replaced, written where the test's files are.
 std::string scenario_with_tissue(const json& tissue) {
-  json s = read(test::asset("assets/scenarios/nonholonomic_needle.json"));
+  json s = test::read_json(test::asset("assets/scenarios/nonholonomic_needle.json"));
   s["master_urdf"] = test::asset("assets/robots/master_omni.urdf");
   s["virtual_urdf"] = test::asset("assets/robots/virtual_needle_robot.urdf");
   s["tissue"] = tissue;
-  const std::string path = own_file("scenario.json");
+  const std::string path = test::own_file("scenario.json");
   std::ofstream(path) << s.dump(1);
   return path;
 }
@@ -89,7 +78,7 @@ TEST(TissueFiles, TheShippedLayeredScenariosLoad) {
 TEST(TissueFiles, EveryParameterSetLoadsAndEveryNumberCarriesItsSource) {
   int sets = 0;
   for (const auto& entry : fs::directory_iterator(test::asset("assets/tissues"))) {
-    const json set = read(entry.path().string());
+    const json set = test::read_json(entry.path().string());
     json numbers = set;
     numbers.erase("ultrasound");
     numbers.update(set["ultrasound"]);  // what the set is to ultrasound: every number with its source too
@@ -169,7 +158,7 @@ TEST(TissueFiles, BadInlineLayersAreErrorsWithTheirPointer) {
   EXPECT_EQ(edited([](json& t) {
               t["stick"] = {{"band_mps", 0}};
             }),
-            "/tissue/stick/band_mps: must be > 0, got 0.000000");
+            "/tissue/stick/band_mps: must be in (0, 0.1] m/s, got 0");
 }
 
 TEST(TissueFiles, NestedSpheresLoadAndCrossingOnesDoNot) {
@@ -209,11 +198,11 @@ TEST(TissueFiles, SlabsAndBoxesMayTouchButNotCross) {
 }
 
 TEST(TissueFiles, BadParameterSetsAreErrorsInTheirOwnFile) {
-  const json skin = read(test::asset("assets/tissues/skin.json"));
+  const json skin = test::read_json(test::asset("assets/tissues/skin.json"));
   auto error_in_set = [&](const std::function<void(json&)>& edit) {
     json set = skin;
     edit(set);
-    const std::string path = own_file("parameters.json");
+    const std::string path = test::own_file("parameters.json");
     std::ofstream(path) << set.dump(1);
     const json tissue = {{"layers", {{{"name", "x"}, {"shape", slab(0.05, 0.01)}, {"parameters", path}}}}};
     const std::string error = error_of(scenario_with_tissue(tissue));
@@ -240,7 +229,7 @@ TEST(TissueFiles, BadParameterSetsAreErrorsInTheirOwnFile) {
       "reaches it)");
   EXPECT_EQ(error_in_set([](json& s) { s["colour"] = "pink"; }).substr(0, 20), "/colour: unknown key");
   EXPECT_EQ(error_in_set([](json& s) { s["ultrasound"]["echogenicity"]["value"] = 1.5; }),
-            "/ultrasound/echogenicity/value: must be in [0, 1]");
+            "/ultrasound/echogenicity/value: must be in [0, 1], got 1.5");
   EXPECT_EQ(error_in_set([](json& s) { s["ultrasound"]["impedance_MRayl"] = 1.99; }),
             "/ultrasound/impedance_MRayl: expected {\"value\": ..., \"source\": \"...\"}: every number in a parameter "
             "set carries its source");

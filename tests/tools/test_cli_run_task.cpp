@@ -167,7 +167,7 @@ TEST(CliRunTask, UnknownOperatorAndDeviceAreClearErrors) {
                                                 " --operator " + quoted(dir / "massless.json") + " --out " + quoted(dir / "out") +
                                                 " --db " + quoted(dir / "s.db"));
   EXPECT_EQ(massless.exit_code, 1) << massless.output;
-  EXPECT_NE(massless.output.find((dir / "massless.json").string() + ": /hand/mass_kg: must be > 0"), std::string::npos)
+  EXPECT_NE(massless.output.find((dir / "massless.json").string() + ": /hand/mass_kg: must be in (0, 10] kg"), std::string::npos)
       << massless.output;
 }
 

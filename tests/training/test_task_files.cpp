@@ -136,7 +136,7 @@ TEST(TaskFiles, ErrorsNameTheFileAndThePointer) {
 
   j = valid_task();
   j["steps"][0]["condition"]["within_m"] = -0.01;
-  expect_error(j, "negative_distance", "/steps/0/condition/within_m", "must be > 0");
+  expect_error(j, "negative_distance", "/steps/0/condition/within_m", "must be in (0, 1] m");
 
   j = valid_task();
   j["steps"][0]["condition"]["marker"] = "a";
@@ -311,7 +311,7 @@ TEST(TaskFiles, WeightsAreNormalizedToOneHundred) {
 
 json probe() {
   return json::parse(R"({"probe": {"position": [0.33, 0, 0.07], "direction": [0, 0, -2], "lateral": [1, 0, 0],
-                                   "depth_m": 0.06, "frequency_MHz": 5}})");
+                                   "depth_m": 0.06, "width_m": 0.045, "frequency_MHz": 5, "slice_thickness_m": 0.003}})");
 }
 
 TEST(TaskFiles, AnUltrasoundProbeLoadsAndWeighsTheNeedlesVisibility) {
@@ -322,7 +322,8 @@ TEST(TaskFiles, AnUltrasoundProbeLoadsAndWeighsTheNeedlesVisibility) {
   ASSERT_TRUE(t.ultrasound_probe.has_value());
   EXPECT_EQ(t.ultrasound_probe->direction, (Vec3{0, 0, -1}));  // normalized
   EXPECT_EQ(t.ultrasound_probe->depth_m, 0.06);
-  EXPECT_EQ(t.ultrasound_probe->width_m, 0.04);  // the default
+  EXPECT_EQ(t.ultrasound_probe->width_m, 0.045);
+  EXPECT_EQ(t.ultrasound_probe->slice_thickness_m, 0.003);
   EXPECT_EQ(t.steps[0].tip_out_of_plane_max_s, 1.5);
   // The default 10 joins the other defaults' 100, and all are normalized to 100.
   EXPECT_DOUBLE_EQ(t.scoring.weights.needle_visibility, 1000.0 / 110.0);

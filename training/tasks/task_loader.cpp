@@ -6,12 +6,14 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <set>
+#include <tuple>
 
 #include "haptics/sim/scenario.hpp"
 #include "io/input_limits.hpp"
 #include "io/strict_json.hpp"
 #include "training/tasks/layer_starts.hpp"
 #include "training/tasks/task.hpp"
+#include "training/tasks/task_limits.hpp"
 
 namespace needle::training {
 namespace fs = std::filesystem;
@@ -45,7 +47,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     if (root.contains("order")) t.order = static_cast<int>(whole(root["order"], "/order", 0, kMaxTaskOrder));
     if (root.contains("hide_layer_names")) t.hide_layer_names = boolean(root["hide_layer_names"], "/hide_layer_names");
     if (root.contains("normal_marker_spacing_m"))
-      t.normal_marker_spacing_m = positive(root["normal_marker_spacing_m"], "/normal_marker_spacing_m");
+      t.normal_marker_spacing_m = in_range(root["normal_marker_spacing_m"], "/normal_marker_spacing_m", limits::kMarkerSpacing);
     const json& markers = member(root, "", "markers");
     if (!markers.is_array()) fail("/markers", "expected an array of markers");
     for (size_t i = 0; i < markers.size(); ++i) {
@@ -136,11 +138,10 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     }
   }
 
-  Vec3 vector(const json& value, const std::string& at) const {
-    if (!value.is_array() || value.size() != 3) fail(at, "expected an array of 3 numbers");
-    Vec3 v;
-    for (size_t k = 0; k < 3; ++k) v[k] = number(value[k], at + "/" + std::to_string(k));
-    return v;
+  // A position in the world (io::kWorldCoordinateRange).
+  Vec3 point(const json& value, const std::string& at) const {
+    const auto a = position(value, at);
+    return {a[0], a[1], a[2]};
   }
 
   Marker marker(const json& value, const std::string& at) const {
@@ -152,21 +153,19 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     if (kinds != 1) fail(at, "expected exactly one of point, axis or surface_normal");
     if (value.contains("point")) {
       m.kind = MarkerKind::kPoint;
-      m.position = vector(value["point"], at + "/point");
+      m.position = point(value["point"], at + "/point");
     } else if (value.contains("axis")) {
       const json& axis = value["axis"];
       object(axis, at + "/axis", {"origin", "direction"});
       m.kind = MarkerKind::kAxis;
-      m.position = vector(member(axis, at + "/axis", "origin"), at + "/axis/origin");
-      const Vec3 d = vector(member(axis, at + "/axis", "direction"), at + "/axis/direction");
-      if (norm(d) < 1e-9) fail(at + "/axis/direction", "must not be the zero vector");
-      m.direction = (1.0 / norm(d)) * d;
+      m.position = point(member(axis, at + "/axis", "origin"), at + "/axis/origin");
+      m.direction = unit(member(axis, at + "/axis", "direction"), at + "/axis/direction");
     } else {
       const json& sphere = value["surface_normal"];
       object(sphere, at + "/surface_normal", {"centre", "radius"});
       m.kind = MarkerKind::kSurfaceNormal;
-      m.position = vector(member(sphere, at + "/surface_normal", "centre"), at + "/surface_normal/centre");
-      m.radius_m = positive(member(sphere, at + "/surface_normal", "radius"), at + "/surface_normal/radius");
+      m.position = point(member(sphere, at + "/surface_normal", "centre"), at + "/surface_normal/centre");
+      m.radius_m = in_range(member(sphere, at + "/surface_normal", "radius"), at + "/surface_normal/radius", limits::kTolerance);
     }
     return m;
   }
@@ -190,10 +189,10 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     return marker_ref(t, value, at, {MarkerKind::kAxis, MarkerKind::kSurfaceNormal}, "an axis or a surface normal");
   }
 
-  // [min, max] with 0 <= min < max.
-  void band(Condition& c, const json& value, const std::string& at) const {
-    c.min = non_negative(member(value, at, "min"), at + "/min");
-    c.max = number(member(value, at, "max"), at + "/max");
+  // [min, max] within `range`, min < max.
+  void band(Condition& c, const json& value, const std::string& at, const io::Range& range) const {
+    c.min = in_range(member(value, at, "min"), at + "/min", range);
+    c.max = in_range(member(value, at, "max"), at + "/max", range);
     if (c.max <= c.min) fail(at + "/max", "must be greater than min");
   }
 
@@ -207,7 +206,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
                : type == "target_reached" ? ConditionType::kTargetReached
                                           : ConditionType::kWithdrawn;
       c.marker = point_ref(t, member(value, at, "marker"), at + "/marker");
-      c.within_m = positive(member(value, at, "within_m"), at + "/within_m");
+      c.within_m = in_range(member(value, at, "within_m"), at + "/within_m", limits::kTolerance);
     } else if (type == "axis_aligned") {
       object(value, at, {"type", "marker", "within_deg", "hold_s", "contact"});
       c.type = ConditionType::kAxisAligned;
@@ -219,11 +218,11 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       object(value, at, {"type", "marker", "min", "max", "hold_s", "contact"});
       c.type = ConditionType::kDepthInBand;
       c.marker = marker_ref(t, member(value, at, "marker"), at + "/marker", {MarkerKind::kAxis}, "an axis");
-      band(c, value, at);
+      band(c, value, at, limits::kDepth);
     } else if (type == "force_held") {
       object(value, at, {"type", "min", "max", "hold_s", "contact"});
       c.type = ConditionType::kForceHeld;
-      band(c, value, at);
+      band(c, value, at, limits::kForce);
       if (!value.contains("hold_s")) fail(at + "/hold_s", "missing (a held force needs a time)");
     } else if (type == "tip_in_layer" || type == "punctured") {
       object(value, at, {"type", "layer", "hold_s", "contact"});
@@ -235,7 +234,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
                "\" (expected tip_near, axis_aligned, depth_in_band, force_held, target_reached, withdrawn, "
                "tip_in_layer or punctured)");
     }
-    if (value.contains("hold_s")) c.hold_s = non_negative(value["hold_s"], at + "/hold_s");
+    if (value.contains("hold_s")) c.hold_s = in_range(value["hold_s"], at + "/hold_s", io::kSessionTimeRange);
     if (c.type == ConditionType::kForceHeld && c.hold_s <= 0.0) fail(at + "/hold_s", "must be > 0 for force_held");
     if (value.contains("contact")) {
       const std::string contact = string(value["contact"], at + "/contact");
@@ -279,27 +278,28 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     const std::string where = at + "/probe";
     object(p, where, {"position", "direction", "lateral", "depth_m", "width_m", "frequency_MHz", "slice_thickness_m"});
     UltrasoundProbeSpec probe;
-    probe.position = vector(member(p, where, "position"), where + "/position");
+    probe.position = point(member(p, where, "position"), where + "/position");
     probe.direction = unit(member(p, where, "direction"), where + "/direction");
     probe.lateral = unit(member(p, where, "lateral"), where + "/lateral");
     if (std::abs(dot(probe.direction, probe.lateral)) > 1e-6) fail(where + "/lateral", "must be perpendicular to direction");
-    const std::pair<const char*, double*> sizes[] = {{"depth_m", &probe.depth_m},
-                                                     {"width_m", &probe.width_m},
-                                                     {"frequency_MHz", &probe.frequency_MHz},
-                                                     {"slice_thickness_m", &probe.slice_thickness_m}};
-    for (const auto& [key, field] : sizes)
-      if (p.contains(key)) *field = positive(p[key], where + "/" + key);
+    const std::tuple<const char*, double*, const io::Range&> sizes[] = {
+        {"depth_m", &probe.depth_m, limits::kProbeDepth},
+        {"width_m", &probe.width_m, limits::kProbeWidth},
+        {"frequency_MHz", &probe.frequency_MHz, limits::kProbeFrequency},
+        {"slice_thickness_m", &probe.slice_thickness_m, limits::kProbeSliceThickness}};
+    for (const auto& [key, field, range] : sizes) *field = in_range(member(p, where, key), where + "/" + key, range);
     return probe;
   }
 
   SectionPlaneSpec section(const json& value, const std::string& at) const {
     object(value, at, {"point", "normal"});
-    return {vector(member(value, at, "point"), at + "/point"), unit(member(value, at, "normal"), at + "/normal")};
+    return {point(member(value, at, "point"), at + "/point"), unit(member(value, at, "normal"), at + "/normal")};
   }
 
+  // A direction, normalized (io::kDirectionComponentRange, not the zero vector).
   Vec3 unit(const json& value, const std::string& at) const {
-    const Vec3 v = vector(value, at);
-    if (norm(v) < 1e-9) fail(at, "must not be the zero vector");
+    const auto a = direction(value, at);
+    const Vec3 v{a[0], a[1], a[2]};
     return (1.0 / norm(v)) * v;
   }
 
@@ -311,13 +311,12 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     s.instruction = string(member(value, at, "instruction"), at + "/instruction");
     s.condition = condition(t, member(value, at, "condition"), at + "/condition");
     if (value.contains("time_limit_s"))
-      s.time_limit_s = in_range(value["time_limit_s"], at + "/time_limit_s", 1e-9, io::kMaxSessionSeconds,
-                                "(0, " + std::to_string(int(io::kMaxSessionSeconds)) + "] s");
+      s.time_limit_s = in_range(value["time_limit_s"], at + "/time_limit_s", io::kSessionDurationRange);
     if (value.contains("tip_fixed_within_m"))
-      s.tip_fixed_within_m = positive(value["tip_fixed_within_m"], at + "/tip_fixed_within_m");
+      s.tip_fixed_within_m = in_range(value["tip_fixed_within_m"], at + "/tip_fixed_within_m", limits::kTolerance);
     if (value.contains("tip_out_of_plane_max_s")) {
       if (!t.ultrasound_probe) fail(at + "/tip_out_of_plane_max_s", "needs the task's ultrasound probe (/ultrasound)");
-      s.tip_out_of_plane_max_s = positive(value["tip_out_of_plane_max_s"], at + "/tip_out_of_plane_max_s");
+      s.tip_out_of_plane_max_s = in_range(value["tip_out_of_plane_max_s"], at + "/tip_out_of_plane_max_s", io::kSessionDurationRange);
     }
     if (value.contains("forbidden")) forbidden(t, s, value["forbidden"], at + "/forbidden");
     if (value.contains("guidance")) s.guidance = guidance(t, s, value["guidance"], at + "/guidance");
@@ -333,11 +332,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       s.weights.bone_contacts = ScoreWeights::kDefaultBoneContacts;
       s.weights.redirections = ScoreWeights::kDefaultRedirections;
     }
-    if (value.contains("safe_force_N")) s.safe_force_N = positive(value["safe_force_N"], at + "/safe_force_N");
-    if (value.contains("pass_score")) {
-      s.pass_score = number(value["pass_score"], at + "/pass_score");
-      if (s.pass_score < 0.0 || s.pass_score > 100.0) fail(at + "/pass_score", "must be in [0, 100]");
-    }
+    if (value.contains("safe_force_N")) s.safe_force_N = in_range(value["safe_force_N"], at + "/safe_force_N", limits::kSafeForce);
+    if (value.contains("pass_score")) s.pass_score = in_range(value["pass_score"], at + "/pass_score", limits::kPassScore);
     s.weights = weights(value.contains("weights") ? value["weights"] : json::object(), at + "/weights", s.weights);
     if (value.contains("references")) s.references = references(value["references"], at + "/references");
     return s;
@@ -382,13 +378,16 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     object(value, at,
            {"tip_error_m", "axis_deviation_deg", "lateral_load_Ns", "force_sd_N", "normalized_jerk", "time_s", "overshoot_m"});
     ScoreReferences r;
-    const std::pair<const char*, double*> fields[] = {
-        {"tip_error_m", &r.tip_error_m},         {"axis_deviation_deg", &r.axis_deviation_deg},
-        {"lateral_load_Ns", &r.lateral_load_Ns}, {"force_sd_N", &r.force_sd_N},
-        {"normalized_jerk", &r.normalized_jerk}, {"time_s", &r.time_s},
-        {"overshoot_m", &r.overshoot_m}};
-    for (const auto& [key, field] : fields)
-      if (value.contains(key)) *field = positive(value[key], at + "/" + key);
+    const std::tuple<const char*, double*, const io::Range&> fields[] = {
+        {"tip_error_m", &r.tip_error_m, limits::kTipErrorReference},
+        {"axis_deviation_deg", &r.axis_deviation_deg, limits::kAxisDeviationReference},
+        {"lateral_load_Ns", &r.lateral_load_Ns, limits::kLateralLoadReference},
+        {"force_sd_N", &r.force_sd_N, limits::kForceSdReference},
+        {"normalized_jerk", &r.normalized_jerk, limits::kNormalizedJerkReference},
+        {"time_s", &r.time_s, io::kSessionDurationRange},
+        {"overshoot_m", &r.overshoot_m, limits::kOvershootReference}};
+    for (const auto& [key, field, range] : fields)
+      if (value.contains(key)) *field = in_range(value[key], at + "/" + key, range);
     if (r.normalized_jerk <= std::sqrt(360.0))
       fail(at + "/normalized_jerk", "must exceed sqrt(360), the minimum-jerk movement's value");
     return r;

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <thread>
@@ -25,7 +26,18 @@ constexpr double kFirmwareLoadBaud = 140000.0;
 
 std::string usb_error(int code) { return std::string(libusb_error_name(code)); }
 
+// The largest firmware image read: 1 MiB. Design value: a USB controller's firmware is kilobytes;
+// the bound turns a wrong file (a disk image, /dev/zero) into an error before it is read.
+constexpr std::uintmax_t kMaxFirmwareBytes = 1u << 20;
+
 std::vector<uint8_t> read_firmware(const std::string& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  // Checked before it is opened: a FIFO would block the open, a device never end.
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw DeviceError("falcon: firmware file " + path + ": not a regular file (a device, a pipe or a folder)");
+  if (std::filesystem::exists(status) && std::filesystem::file_size(path, ec) > kMaxFirmwareBytes)
+    throw DeviceError("falcon: firmware file " + path + ": larger than 1 MiB, expected Novint's firmware image");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw DeviceError("falcon: firmware file " + path + ": cannot be opened");
   std::vector<uint8_t> image((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

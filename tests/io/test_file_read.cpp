@@ -1,0 +1,109 @@
+// The bounded text reader and the JSON parse every format goes through (io/file_read.hpp,
+// io/strict_json.hpp): what is not a regular file is refused before it is opened (a FIFO would
+// block, /dev/zero never end), a file past 16 MiB before it is read, a document nested past 64
+// levels before it is built; a number past its range names the range and the value.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include "io/file_read.hpp"
+#include "io/strict_json.hpp"
+#include "tests/support/test_paths.hpp"
+
+namespace needle::io {
+namespace {
+namespace fs = std::filesystem;
+
+struct TestError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+fs::path own_folder() {
+  const fs::path dir = test::output_dir() / "file_read" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string problem_of(const fs::path& file) {
+  std::string problem;
+  const std::string text = read_text(file, problem);
+  EXPECT_TRUE(problem.empty() || text.empty());
+  return problem;
+}
+
+TEST(FileRead, WhatIsNotARegularFileIsRefusedBeforeItIsOpened) {
+  const fs::path dir = own_folder();
+  const fs::path fifo = dir / "fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_EQ(problem_of(fifo), "not a regular file (a device or a pipe)");  // returns: nothing writes to it
+  EXPECT_EQ(problem_of("/dev/zero"), "not a regular file (a device or a pipe)");
+  EXPECT_EQ(problem_of(dir), "is a folder, not a file");
+  EXPECT_EQ(problem_of(dir / "absent.json"), "file not found");
+  EXPECT_THROW(read_json_file<TestError>(fifo), TestError);
+}
+
+TEST(FileRead, AFileLargerThanSixteenMebibytesIsRefusedBeforeItIsRead) {
+  const fs::path file = own_folder() / "large.json";
+  std::ofstream(file) << "{}";
+  fs::resize_file(file, (16u << 20) + 1);  // sparse: nothing is written
+  EXPECT_EQ(problem_of(file), "larger than 16 MiB (16777217 bytes)");
+  fs::resize_file(file, 16u << 20);
+  EXPECT_EQ(problem_of(file), "");
+}
+
+// `depth` arrays nested around a number.
+std::string nested(size_t depth) { return std::string(depth, '[') + "1" + std::string(depth, ']'); }
+
+TEST(FileRead, JsonNestedPastSixtyFourLevelsIsRefusedBeforeItIsBuilt) {
+  EXPECT_NO_THROW(parse_json_text(nested(64)));
+  try {
+    parse_json_text(nested(65));
+    ADD_FAILURE() << "65 levels parsed";
+  } catch (const JsonTextError& e) {
+    EXPECT_STREQ(e.what(), "nested deeper than 64 levels");
+  }
+  EXPECT_THROW(parse_json_text(nested(1000000)), JsonTextError);  // would overflow a recursive copy
+  try {
+    parse_json<TestError>("{\"a\": NaN}", "f.json");
+    ADD_FAILURE() << "NaN parsed";
+  } catch (const TestError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("f.json: /: not valid JSON: ", 0), 0u) << e.what();
+  }
+}
+
+TEST(FileRead, ANumberPastItsRangeNamesThePointerTheRangeAndTheValue) {
+  const StrictJsonReader<TestError> reader("f.json");
+  const Range period{1e-4, 4e-3, false, "s"};
+  EXPECT_EQ(reader.in_range(nlohmann::json(0.002), "/period_s", period), 0.002);
+  try {
+    reader.in_range(nlohmann::json(1e300), "/period_s", period);
+    ADD_FAILURE();
+  } catch (const TestError& e) {
+    EXPECT_STREQ(e.what(), "f.json: /period_s: must be in [0.0001, 0.004] s, got 1e+300");
+  }
+  const Range open{0.0, 1.0, true, "m"};
+  EXPECT_FALSE(open.contains(0.0));
+  EXPECT_TRUE(open.contains(1.0));
+  EXPECT_EQ(open.text(), "(0, 1] m");
+  try {
+    reader.position(nlohmann::json::parse("[0, -1e300, 0]"), "/p");
+    ADD_FAILURE();
+  } catch (const TestError& e) {
+    EXPECT_STREQ(e.what(), "f.json: /p/1: must be in [-10, 10] m, got -1e+300");
+  }
+  try {
+    reader.direction(nlohmann::json::parse("[0, 0, 1e-12]"), "/d");
+    ADD_FAILURE();
+  } catch (const TestError& e) {
+    EXPECT_STREQ(e.what(), "f.json: /d: must not be the zero vector");
+  }
+}
+
+}  // namespace
+}  // namespace needle::io
