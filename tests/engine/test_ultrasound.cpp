@@ -6,9 +6,9 @@
 
 #include <cmath>
 
-#include "engine/passes/scene_pass.hpp"
 #include "engine/ultrasound/echo_model.hpp"
 #include "engine/ultrasound/ultrasound_pass.hpp"
+#include "engine/vulkan/command_buffer.hpp"
 #include "engine/vulkan/vulkan_context.hpp"
 #include "ultrasound_fixture.hpp"
 #include "vulkan_fixture.hpp"

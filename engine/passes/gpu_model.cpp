@@ -1,4 +1,4 @@
-#include "engine/vulkan/gpu_model.hpp"
+#include "engine/passes/gpu_model.hpp"
 
 #include <array>
 #include <cstring>

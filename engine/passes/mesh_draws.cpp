@@ -1,0 +1,100 @@
+#include "engine/passes/mesh_draws.hpp"
+
+#include <algorithm>
+
+#include "engine/passes/frame_uniforms.hpp"
+#include "engine/passes/gpu_model.hpp"
+#include "engine/passes/level_of_detail.hpp"
+#include "engine/passes/mesh_pipelines.hpp"
+
+namespace needle::engine {
+namespace {
+
+size_t level_to_draw(const GpuPrimitive& p, const glm::mat4& model_to_world, const Camera& camera, VkExtent2D extent) {
+  if (p.levels.size() < 2) return 0;
+  const glm::mat3 linear(model_to_world);
+  const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+  const Sphere world{glm::dvec3(model_to_world * glm::vec4(glm::vec3(p.bounds.center), 1.0f)), p.bounds.radius * scale};
+  std::vector<uint32_t> triangles;
+  for (const GpuLevel& level : p.levels) triangles.push_back(level.index_count / 3);
+  return choose_level(triangles, projected_radius_px(world, camera, {extent.width, extent.height}));
+}
+
+bool cuts(const FrameParams& params) { return params.section && params.section->mode == Section::Mode::Cut; }
+
+}  // namespace
+
+glm::vec4 section_plane(const Section& section) {
+  const glm::vec3 n = glm::normalize(section.normal);
+  return glm::vec4(n, -glm::dot(n, section.point));
+}
+
+MeshDraws collect_draws(const FrameParams& params, VkExtent2D extent, const DrawOptions& options) {
+  // A cut shows the inside of what it cuts: its back faces are drawn, so none are culled for their
+  // facing; those wholly on the cut-away side are.
+  const bool cut = cuts(params);
+  const glm::vec4 cut_plane = cut ? section_plane(*params.section) : glm::vec4(0.0f);
+  MeshDraws draws;
+  for (const DrawItem& item : params.items) {
+    for (const MeshInstance& instance : item.model->instances()) {
+      glm::mat4 transform = item.transform * instance.world;
+      const GpuPrimitive& p = item.model->primitives()[instance.primitive];
+      if (p.index_count == 0) continue;
+      const Material& m = item.model->material_of(instance.primitive);
+      float depth = glm::length(glm::vec3(transform[3]) - params.camera.position);
+      const GpuLevel& level = p.levels[options.level_of_detail ? level_to_draw(p, transform, params.camera, extent) : 0];
+      if (level.index_count == 0) continue;
+      const bool sectioned = params.section && item.sectioned;
+      const std::vector<IndexRange> all{{level.first_index, level.index_count}};
+      std::vector<IndexRange> ranges =
+          !options.cull_chunks ? all
+          : cut && sectioned   ? (options.cull_cut_away ? ranges_kept_by_cut(level.chunks, transform, cut_plane, item.moved) : all)
+          : !m.double_sided    ? visible_ranges(level.chunks, transform, params.camera.position, item.moved)
+                               : all;
+      (m.alpha_mode == AlphaMode::Blend ? draws.blended : draws.opaque)
+          .push_back({item.model, instance.primitive, transform, depth, std::move(ranges), sectioned});
+    }
+  }
+  std::sort(draws.blended.begin(), draws.blended.end(), [](const MeshDraw& a, const MeshDraw& b) { return a.depth > b.depth; });
+  return draws;
+}
+
+size_t record_draws(VkCommandBuffer cmd, const std::vector<MeshDraw>& draws, bool blended, const FrameParams& params,
+                    const MeshPipelines& pipelines, const DrawOptions& options) {
+  const bool cut = cuts(params);
+  VkPipeline bound = VK_NULL_HANDLE;
+  size_t triangles = 0;
+  for (const MeshDraw& d : draws) {
+    const GpuPrimitive& p = d.model->primitives()[d.primitive];
+    const Material& m = d.model->material_of(d.primitive);
+    // Only masked materials and sectioned items discard fragments (mesh.frag).
+    const MeshVariant variant{m.double_sided || (cut && d.sectioned), blended,
+                              !options.specialized || m.alpha_mode == AlphaMode::Mask || d.sectioned,
+                              !options.specialized || m.base_color_texture >= 0};
+    VkPipeline pipeline = pipelines.pipeline(variant);
+    if (pipeline != bound) {
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+      bound = pipeline;
+    }
+    VkDescriptorSet set = d.model->descriptor_set_of(d.primitive);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.layout(), 1, 1, &set, 0, nullptr);
+    DrawPushConstants push{};
+    push.model = d.transform;
+    // Inverse-transpose keeps normals perpendicular under non-uniform scale.
+    glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(d.transform)));
+    for (int c = 0; c < 3; ++c) push.normal_matrix[c] = glm::vec4(normal_matrix[c], 0.0f);
+    push.normal_matrix[0].w = d.sectioned ? 1.0f : 0.0f;
+    vkCmdPushConstants(cmd, pipelines.layout(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
+    VkDeviceSize offset = 0;
+    VkBuffer vb = p.vertices.handle();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
+    vkCmdBindIndexBuffer(cmd, p.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+    for (const IndexRange& r : d.ranges) {
+      vkCmdDrawIndexed(cmd, r.count, 1, r.first, 0, 0);
+      triangles += r.count / 3;
+    }
+  }
+  return triangles;
+}
+
+}  // namespace needle::engine

@@ -1,0 +1,55 @@
+// The draws of a frame's meshes: each primitive instance of FrameParams' items as the index
+// ranges left by chunk culling, at the level of detail its size calls for (docs/RENDERING.md,
+// "What a draw leaves out"), opaque and masked ones apart from blended ones (sorted back to
+// front); then recorded with the mesh pipeline each needs.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "engine/passes/triangle_chunks.hpp"
+#include "engine/scene_renderer.hpp"
+
+namespace needle::engine {
+
+class GpuModel;
+class MeshPipelines;
+
+// The section's plane as (n, d), n unit: the cut discards where n · p + d > 0.
+glm::vec4 section_plane(const Section& section);
+
+struct MeshDraw {
+  const GpuModel* model = nullptr;
+  uint32_t primitive = 0;
+  glm::mat4 transform{1.0f};
+  float depth = 0.0f;              // distance from the camera, for back-to-front blending
+  std::vector<IndexRange> ranges;  // of the primitive's indices
+  bool sectioned = false;          // cut or made see-through by the frame's section
+};
+
+struct MeshDraws {
+  std::vector<MeshDraw> opaque;   // opaque and masked, in the items' order
+  std::vector<MeshDraw> blended;  // back to front
+};
+
+// What RendererSettings (and the bench's variants) switch on and off.
+struct DrawOptions {
+  bool level_of_detail = true;
+  bool cull_chunks = true;
+  bool cull_cut_away = true;
+  bool specialized = true;  // each draw's pipeline specialized to what it needs
+};
+
+// (frame, the size of the pixels drawn, options) => its draws.
+MeshDraws collect_draws(const FrameParams& params, VkExtent2D extent, const DrawOptions& options);
+
+// Records `draws` (with blending when `blended`) in a render pass whose frame set is bound;
+// returns the triangles sent to the device.
+size_t record_draws(VkCommandBuffer cmd, const std::vector<MeshDraw>& draws, bool blended, const FrameParams& params,
+                    const MeshPipelines& pipelines, const DrawOptions& options);
+
+}  // namespace needle::engine
