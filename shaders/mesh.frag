@@ -33,13 +33,11 @@ void main() {
 
   vec3 n = normalize(in_world_normal);
   if (!gl_FrontFacing) n = -n;  // double-sided materials light their back faces too
-  // The section view (docs/RENDERING.md). Cut: what lies beyond the plane is discarded; through
-  // the opening the surface's inside (its back faces) shows, filled with its own colour and lit
-  // as the plane would be: the cap. Translucent: a fixed 4x4 ordered dither keeps a third of the
-  // fragments (screen-door transparency: no sorting, the needle shows through).
+  // The section view (docs/RENDERING.md). Cut: what lies beyond the plane is discarded (the caps
+  // are drawn after, engine/passes/section_caps.hpp). Screen door: a fixed 4x4 ordered dither
+  // keeps 5 fragments of 16 (no sorting, the needle shows through).
   if (kMayDiscard && in_sectioned != 0 && frame.section.x == 1) {
     if (dot(frame.section_plane.xyz, in_world_position) + frame.section_plane.w > 0.0) discard;
-    if (!gl_FrontFacing) n = frame.section_plane.xyz;
   } else if (kMayDiscard && in_sectioned != 0 && frame.section.x == 2) {
     const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
     ivec2 p = ivec2(gl_FragCoord.xy) & 3;

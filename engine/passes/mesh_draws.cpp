@@ -12,17 +12,18 @@ namespace {
 
 size_t level_to_draw(const GpuPrimitive& p, const glm::mat4& model_to_world, const Camera& camera, VkExtent2D extent) {
   if (p.levels.size() < 2) return 0;
-  const glm::mat3 linear(model_to_world);
-  const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
-  const Sphere world{glm::dvec3(model_to_world * glm::vec4(glm::vec3(p.bounds.center), 1.0f)), p.bounds.radius * scale};
   std::vector<uint32_t> triangles;
   for (const GpuLevel& level : p.levels) triangles.push_back(level.index_count / 3);
-  return choose_level(triangles, projected_radius_px(world, camera, {extent.width, extent.height}));
+  return choose_level(triangles, projected_radius_px(world_sphere(p.bounds, model_to_world), camera, {extent.width, extent.height}));
 }
 
-bool cuts(const FrameParams& params) { return params.section && params.section->mode == Section::Mode::Cut; }
-
 }  // namespace
+
+Sphere world_sphere(const Sphere& model_space, const glm::mat4& model_to_world) {
+  const glm::mat3 linear(model_to_world);
+  const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+  return {glm::dvec3(model_to_world * glm::vec4(glm::vec3(model_space.center), 1.0f)), model_space.radius * scale};
+}
 
 glm::vec4 section_plane(const Section& section) {
   const glm::vec3 n = glm::normalize(section.normal);
@@ -30,9 +31,9 @@ glm::vec4 section_plane(const Section& section) {
 }
 
 MeshDraws collect_draws(const FrameParams& params, VkExtent2D extent, const DrawOptions& options) {
-  // A cut shows the inside of what it cuts: its back faces are drawn, so none are culled for their
-  // facing; those wholly on the cut-away side are.
-  const bool cut = cuts(params);
+  // A cut's caps are found from every face of what it cuts (section_caps.hpp), so none are
+  // culled for their facing; those wholly on the cut-away side are.
+  const bool cut = params.section && params.section->mode == Section::Mode::Cut;
   const glm::vec4 cut_plane = cut ? section_plane(*params.section) : glm::vec4(0.0f);
   MeshDraws draws;
   for (const DrawItem& item : params.items) {
@@ -59,16 +60,41 @@ MeshDraws collect_draws(const FrameParams& params, VkExtent2D extent, const Draw
   return draws;
 }
 
-size_t record_draws(VkCommandBuffer cmd, const std::vector<MeshDraw>& draws, bool blended, const FrameParams& params,
-                    const MeshPipelines& pipelines, const DrawOptions& options) {
-  const bool cut = cuts(params);
+void bind_material_and_transform(VkCommandBuffer cmd, const MeshDraw& d, VkPipelineLayout layout) {
+  VkDescriptorSet set = d.model->descriptor_set_of(d.primitive);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &set, 0, nullptr);
+  DrawPushConstants push{};
+  push.model = d.transform;
+  // Inverse-transpose keeps normals perpendicular under non-uniform scale.
+  glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(d.transform)));
+  for (int c = 0; c < 3; ++c) push.normal_matrix[c] = glm::vec4(normal_matrix[c], 0.0f);
+  push.normal_matrix[0].w = d.sectioned ? 1.0f : 0.0f;
+  vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
+}
+
+size_t bind_and_draw(VkCommandBuffer cmd, const MeshDraw& d, VkPipelineLayout layout) {
+  bind_material_and_transform(cmd, d, layout);
+  const GpuPrimitive& p = d.model->primitives()[d.primitive];
+  VkDeviceSize offset = 0;
+  VkBuffer vb = p.vertices.handle();
+  vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
+  vkCmdBindIndexBuffer(cmd, p.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+  size_t triangles = 0;
+  for (const IndexRange& r : d.ranges) {
+    vkCmdDrawIndexed(cmd, r.count, 1, r.first, 0, 0);
+    triangles += r.count / 3;
+  }
+  return triangles;
+}
+
+size_t record_draws(VkCommandBuffer cmd, const std::vector<MeshDraw>& draws, bool blended, const MeshPipelines& pipelines,
+                    const DrawOptions& options) {
   VkPipeline bound = VK_NULL_HANDLE;
   size_t triangles = 0;
   for (const MeshDraw& d : draws) {
-    const GpuPrimitive& p = d.model->primitives()[d.primitive];
     const Material& m = d.model->material_of(d.primitive);
     // Only masked materials and sectioned items discard fragments (mesh.frag).
-    const MeshVariant variant{m.double_sided || (cut && d.sectioned), blended,
+    const MeshVariant variant{m.double_sided, blended,
                               !options.specialized || m.alpha_mode == AlphaMode::Mask || d.sectioned,
                               !options.specialized || m.base_color_texture >= 0};
     VkPipeline pipeline = pipelines.pipeline(variant);
@@ -76,23 +102,7 @@ size_t record_draws(VkCommandBuffer cmd, const std::vector<MeshDraw>& draws, boo
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
       bound = pipeline;
     }
-    VkDescriptorSet set = d.model->descriptor_set_of(d.primitive);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.layout(), 1, 1, &set, 0, nullptr);
-    DrawPushConstants push{};
-    push.model = d.transform;
-    // Inverse-transpose keeps normals perpendicular under non-uniform scale.
-    glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(d.transform)));
-    for (int c = 0; c < 3; ++c) push.normal_matrix[c] = glm::vec4(normal_matrix[c], 0.0f);
-    push.normal_matrix[0].w = d.sectioned ? 1.0f : 0.0f;
-    vkCmdPushConstants(cmd, pipelines.layout(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
-    VkDeviceSize offset = 0;
-    VkBuffer vb = p.vertices.handle();
-    vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
-    vkCmdBindIndexBuffer(cmd, p.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-    for (const IndexRange& r : d.ranges) {
-      vkCmdDrawIndexed(cmd, r.count, 1, r.first, 0, 0);
-      triangles += r.count / 3;
-    }
+    triangles += bind_and_draw(cmd, d, pipelines.layout());
   }
   return triangles;
 }

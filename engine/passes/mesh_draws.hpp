@@ -47,9 +47,17 @@ struct DrawOptions {
 // (frame, the size of the pixels drawn, options) => its draws.
 MeshDraws collect_draws(const FrameParams& params, VkExtent2D extent, const DrawOptions& options);
 
+// (a bounding sphere in model space, the model's transform) => one holding it in world space.
+Sphere world_sphere(const Sphere& model_space, const glm::mat4& model_to_world);
+
+// Binds `draw`'s material set and pushes its transform for a pipeline of `layout` (MeshPipelines').
+void bind_material_and_transform(VkCommandBuffer cmd, const MeshDraw& draw, VkPipelineLayout layout);
+// That, then its vertex and index buffers, and draws its ranges; returns the triangles drawn.
+size_t bind_and_draw(VkCommandBuffer cmd, const MeshDraw& draw, VkPipelineLayout layout);
+
 // Records `draws` (with blending when `blended`) in a render pass whose frame set is bound;
 // returns the triangles sent to the device.
-size_t record_draws(VkCommandBuffer cmd, const std::vector<MeshDraw>& draws, bool blended, const FrameParams& params,
-                    const MeshPipelines& pipelines, const DrawOptions& options);
+size_t record_draws(VkCommandBuffer cmd, const std::vector<MeshDraw>& draws, bool blended, const MeshPipelines& pipelines,
+                    const DrawOptions& options);
 
 }  // namespace needle::engine

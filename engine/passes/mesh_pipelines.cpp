@@ -22,7 +22,17 @@ size_t index_of(const MeshVariant& v) {
 MeshPipelines::MeshPipelines(const VulkanContext& context, VkRenderPass render_pass, VkSampleCountFlagBits samples)
     : device_(context.device()) {
   create_layouts_and_sampler();
-  create_pipelines(render_pass, samples);
+  for (size_t index = 0; index < pipelines_.size(); ++index) {
+    MeshPipelineSpec spec{mesh_frag_spv, sizeof(mesh_frag_spv)};
+    spec.variant = {(index & 1) != 0, (index & 2) != 0, (index & 4) != 0, (index & 8) != 0};
+    spec.depth.depthTestEnable = VK_TRUE;
+    spec.depth.depthCompareOp = VK_COMPARE_OP_LESS;
+    spec.depth.depthWriteEnable = spec.variant.blended ? VK_FALSE : VK_TRUE;  // blended surfaces do not hide what lies behind
+    spec.blends = {color_writes(spec.variant.blended)};
+    spec.render_pass = render_pass;
+    spec.samples = samples;
+    pipelines_[index] = make(spec);
+  }
   white_texture_ = GpuImage::texture(context, Texture{1, 1, {255, 255, 255, 255}});
 }
 
@@ -63,12 +73,18 @@ void MeshPipelines::create_layouts_and_sampler() {
   VK_CHECK(vkCreateSampler(device_, &sampler, nullptr, &sampler_));
 }
 
-void MeshPipelines::create_pipelines(VkRenderPass render_pass, VkSampleCountFlagBits samples) {
-  VkShaderModule vert = shader_module(device_, mesh_vert_spv, sizeof(mesh_vert_spv));
-  VkShaderModule frag = shader_module(device_, mesh_frag_spv, sizeof(mesh_frag_spv));
+VkPipeline MeshPipelines::make(const MeshPipelineSpec& spec) const {
+  const std::array<VkShaderModule, 2> modules{shader_module(device_, mesh_vert_spv, sizeof(mesh_vert_spv)),
+                                              shader_module(device_, spec.frag, spec.frag_bytes)};
+  // mesh.frag's specialization constants kMayDiscard (constant_id 0) and kTextured (1).
+  const std::array<VkSpecializationMapEntry, 2> entries{{{0, 0, sizeof(VkBool32)}, {1, sizeof(VkBool32), sizeof(VkBool32)}}};
+  const std::array<VkBool32, 2> constants{spec.variant.may_discard ? VK_TRUE : VK_FALSE,
+                                          spec.variant.textured ? VK_TRUE : VK_FALSE};
+  const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(), sizeof constants, constants.data()};
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
-  stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vert, "main", nullptr};
-  stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, frag, "main", nullptr};
+  stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, modules[0], "main", nullptr};
+  stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, modules[1], "main",
+               &specialization};
 
   VkVertexInputBindingDescription binding{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX};
   std::array<VkVertexInputAttributeDescription, 4> attributes{{
@@ -87,44 +103,27 @@ void MeshPipelines::create_pipelines(VkRenderPass render_pass, VkSampleCountFlag
   assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
   raster.polygonMode = VK_POLYGON_MODE_FILL;
+  raster.cullMode = spec.variant.double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;  // glTF winding; the viewport flips y, not the winding
   raster.lineWidth = 1.0f;
   VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = samples;
-  VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-  depth.depthTestEnable = VK_TRUE;
-  depth.depthCompareOp = VK_COMPARE_OP_LESS;
-  VkPipelineColorBlendAttachmentState blend_attachment{};
-  blend_attachment.colorWriteMask =
-      VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-  GraphicsPipelineStates states{{stages.begin(), stages.end()}, &vertex_input, &assembly, &raster, &multisample,
-                                &depth, &blend_attachment, pipeline_layout_, render_pass};
-
-  // mesh.frag's specialization constants kMayDiscard (constant_id 0) and kTextured (1).
-  const std::array<VkSpecializationMapEntry, 2> entries{{{0, 0, sizeof(VkBool32)}, {1, sizeof(VkBool32), sizeof(VkBool32)}}};
-  for (size_t index = 0; index < pipelines_.size(); ++index) {
-    const MeshVariant v{(index & 1) != 0, (index & 2) != 0, (index & 4) != 0, (index & 8) != 0};
-    const std::array<VkBool32, 2> constants{v.may_discard ? VK_TRUE : VK_FALSE, v.textured ? VK_TRUE : VK_FALSE};
-    const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(), sizeof constants, constants.data()};
-    states.stages[1].pSpecializationInfo = &specialization;
-    raster.cullMode = v.double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-    depth.depthWriteEnable = v.blended ? VK_FALSE : VK_TRUE;  // blended surfaces do not hide what lies behind
-    blend_attachment.blendEnable = v.blended ? VK_TRUE : VK_FALSE;
-    blend_attachment.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
-    blend_attachment.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-    blend_attachment.colorBlendOp = VK_BLEND_OP_ADD;
-    blend_attachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-    blend_attachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-    blend_attachment.alphaBlendOp = VK_BLEND_OP_ADD;
-    VkResult r = create_graphics_pipeline(device_, states, &pipelines_[index]);
-    if (r != VK_SUCCESS) {
-      vkDestroyShaderModule(device_, vert, nullptr);
-      vkDestroyShaderModule(device_, frag, nullptr);
-      vk_check(r, "vkCreateGraphicsPipelines");
-    }
-  }
-  vkDestroyShaderModule(device_, vert, nullptr);
-  vkDestroyShaderModule(device_, frag, nullptr);
+  multisample.rasterizationSamples = spec.samples;
+  GraphicsPipelineStates states{{stages.begin(), stages.end()},
+                                &vertex_input,
+                                &assembly,
+                                &raster,
+                                &multisample,
+                                &spec.depth,
+                                spec.blends.data(),
+                                pipeline_layout_,
+                                spec.render_pass,
+                                uint32_t(spec.blends.size()),
+                                spec.dynamic_states};
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  const VkResult r = create_graphics_pipeline(device_, states, &pipeline);
+  for (VkShaderModule m : modules) vkDestroyShaderModule(device_, m, nullptr);
+  vk_check(r, "vkCreateGraphicsPipelines");
+  return pipeline;
 }
 
 }  // namespace needle::engine

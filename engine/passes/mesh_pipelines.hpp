@@ -9,6 +9,8 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "engine/passes/gpu_model.hpp"
 #include "engine/vulkan/gpu_image.hpp"
@@ -25,6 +27,19 @@ struct MeshVariant {
   bool textured = true;       // a base colour texture: mesh.frag's kTextured
 };
 
+// A pipeline of mesh.vert's vertices and MeshPipelines' layout with another fragment shader or
+// other fixed-function state: the section's caps, the translucent tissue.
+struct MeshPipelineSpec {
+  const uint32_t* frag = nullptr;  // SPIR-V; its specialization constants 0 and 1, if any, as mesh.frag's
+  size_t frag_bytes = 0;
+  MeshVariant variant;  // culling, and the specialization constants kMayDiscard and kTextured
+  VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+  std::vector<VkPipelineColorBlendAttachmentState> blends;  // one per colour attachment
+  std::vector<VkDynamicState> dynamic_states;               // besides the viewport and scissor
+  VkRenderPass render_pass = VK_NULL_HANDLE;
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+};
+
 class MeshPipelines {
  public:
   // Pipelines for `render_pass` (a scene render pass, scene_render_pass.hpp) at `samples`.
@@ -34,6 +49,8 @@ class MeshPipelines {
   MeshPipelines& operator=(const MeshPipelines&) = delete;
 
   VkPipeline pipeline(const MeshVariant& variant) const;
+  // A pipeline the caller destroys.
+  VkPipeline make(const MeshPipelineSpec& spec) const;
   VkPipelineLayout layout() const { return pipeline_layout_; }
   VkDescriptorSetLayout frame_layout() const { return frame_layout_; }
   // For GpuModel's material sets.
@@ -41,7 +58,7 @@ class MeshPipelines {
 
  private:
   void create_layouts_and_sampler();
-  void create_pipelines(VkRenderPass render_pass, VkSampleCountFlagBits samples);
+
 
   VkDevice device_;
   VkDescriptorSetLayout frame_layout_ = VK_NULL_HANDLE;

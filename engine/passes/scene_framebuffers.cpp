@@ -23,7 +23,7 @@ void SceneFramebuffers::make(const TargetImages& target, VkRenderPass render_pas
                                       attachments_.samples});
   }
   depth_ = GpuImage(context_, {extent, attachments_.depth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                               attachments_.samples, VK_IMAGE_ASPECT_DEPTH_BIT});
+                               attachments_.samples, VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT});
   const VkDevice device = context_.device();
   for (VkImageView target_view : target.image_views()) {
     const std::vector<VkImageView> views = msaa ? std::vector<VkImageView>{msaa_color_.view(), depth_.view(), target_view}

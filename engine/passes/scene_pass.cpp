@@ -17,8 +17,6 @@
 namespace needle::engine {
 namespace {
 
-constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
-
 using Clock = std::chrono::steady_clock;
 
 // Milliseconds since `since`, which moves on to now.
@@ -34,10 +32,11 @@ double lap_ms(Clock::time_point& since) {
 ScenePass::ScenePass(const VulkanContext& context, const TargetImages& target, const RendererSettings& settings)
     : context_(context),
       device_(context.device()),
-      attachments_{target.format(), kDepthFormat, context.max_msaa(settings.msaa_samples)},
+      attachments_{target.format(), depth_stencil_format(context.physical_device()), context.max_msaa(settings.msaa_samples)},
       options_{settings.level_of_detail, settings.cull_chunks, settings.cull_cut_away},
       final_layout_(target.final_layout()),
-      render_pass_(make_scene_render_pass(device_, attachments_, VK_ATTACHMENT_LOAD_OP_CLEAR, final_layout_)),
+      passes_(device_, attachments_),
+      render_pass_(passes_.get({VK_ATTACHMENT_LOAD_OP_CLEAR, final_layout_})),
       pipelines_(context, render_pass_, attachments_.samples),
       timestamps_(context, uint32_t(kFramesInFlight)),
       framebuffers_(context, attachments_),
@@ -55,9 +54,8 @@ ScenePass::~ScenePass() {
     if (slot.cmd) vkFreeCommandBuffers(device_, context_.command_pool(), 1, &slot.cmd);
   }
   if (frame_pool_) vkDestroyDescriptorPool(device_, frame_pool_, nullptr);
+  caps_.reset();
   scaled_.reset();
-  for (VkRenderPass p : {render_pass_, scaled_pass_, overlay_pass_})
-    if (p) vkDestroyRenderPass(device_, p, nullptr);
 }
 
 void ScenePass::set_render_scale(const TargetImages& target, float scale) {
@@ -65,9 +63,6 @@ void ScenePass::set_render_scale(const TargetImages& target, float scale) {
   if (scale < 1.0f && !scaled_) {
     if (const std::string why = ScaledScene::unsupported(context_, target, attachments_.samples); !why.empty())
       throw std::invalid_argument("render scale " + std::to_string(scale) + ": " + why);
-    scaled_pass_ = make_scene_render_pass(device_, attachments_, VK_ATTACHMENT_LOAD_OP_CLEAR,
-                                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    overlay_pass_ = make_scene_render_pass(device_, attachments_, VK_ATTACHMENT_LOAD_OP_LOAD, final_layout_);
     scaled_ = std::make_unique<ScaledScene>(context_, attachments_.color, attachments_.depth);
   }
   render_scale_ = scale;
@@ -124,17 +119,9 @@ void ScenePass::create_frame_slots() {
 void ScenePass::ensure_framebuffers(const TargetImages& target) {
   if (framebuffers_.match(target)) return;
   wait_idle();
-  if (target.final_layout() != final_layout_) {
-    // A window's images of another kind (WindowTarget::set_presentation): the passes into the
-    // target end in its layout. Compatible with the last, so every pipeline made for them serves.
-    final_layout_ = target.final_layout();
-    vkDestroyRenderPass(device_, render_pass_, nullptr);
-    render_pass_ = make_scene_render_pass(device_, attachments_, VK_ATTACHMENT_LOAD_OP_CLEAR, final_layout_);
-    if (overlay_pass_) {
-      vkDestroyRenderPass(device_, overlay_pass_, nullptr);
-      overlay_pass_ = make_scene_render_pass(device_, attachments_, VK_ATTACHMENT_LOAD_OP_LOAD, final_layout_);
-    }
-  }
+  // A window's images of another kind (WindowTarget::set_presentation): the passes into the
+  // target end in its layout. Compatible with the last, so every pipeline made for them serves.
+  final_layout_ = target.final_layout();
   framebuffers_.make(target, render_pass_);
 }
 
@@ -173,7 +160,7 @@ bool ScenePass::draw(TargetImages& target, const FrameParams& params, RgbaImage*
   if (!image) return false;
   ensure_framebuffers(target);
   const VkExtent2D scene = scene_extent(target.extent());
-  if (render_scale_ < 1.0f) scaled_->ensure(scene, scaled_pass_, target);
+  if (render_scale_ < 1.0f) scaled_->ensure(scene, render_pass_, target);
   VK_CHECK(vkResetFences(device_, 1, &slot.done));
 
   fill_uniforms(slot, target.extent(), params);
@@ -242,7 +229,7 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
   clears[1].depthStencil = {1.0f, 0};
   clears[2].color = clears[0].color;
   VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-  pass.renderPass = scaled ? scaled_pass_ : render_pass_;
+  pass.renderPass = passes_.get({VK_ATTACHMENT_LOAD_OP_CLEAR, scaled ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : final_layout_});
   pass.framebuffer = scaled ? scaled_->framebuffer() : framebuffers_.framebuffer(image);
   pass.renderArea = {{0, 0}, extent};
   pass.clearValueCount = attachments_.samples != VK_SAMPLE_COUNT_1_BIT ? 3 : 2;
@@ -256,8 +243,12 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
   vkCmdSetScissor(cmd, 0, 1, &scissor);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout(), 0, 1, &slots_[slot].frame_set, 0,
                           nullptr);
-  triangles_drawn_ = record_draws(cmd, draws.opaque, false, params, pipelines_, options_) +
-                     record_draws(cmd, draws.blended, true, params, pipelines_, options_);
+  triangles_drawn_ = record_draws(cmd, draws.opaque, false, pipelines_, options_);
+  if (params.section && params.section->mode == Section::Mode::Cut) {
+    if (!caps_) caps_ = std::make_unique<SectionCaps>(context_, pipelines_, render_pass_, attachments_.samples, uint32_t(kFramesInFlight));
+    triangles_drawn_ += caps_->record(cmd, slot, draws.opaque, *params.section, extent);
+  }
+  triangles_drawn_ += record_draws(cmd, draws.blended, true, pipelines_, options_);
   cost_.scene.record_ms = lap_ms(t);
   if (scaled) {
     vkCmdEndRenderPass(cmd);
@@ -265,7 +256,7 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
     scaled_->record_upscale(cmd, image);
     if (timed) timestamps_.write(cmd, slot, FrameTimestamps::kUpscaleDone, false);
     // The overlay over the upscaled scene, at the target's full resolution.
-    pass.renderPass = overlay_pass_;
+    pass.renderPass = passes_.get({VK_ATTACHMENT_LOAD_OP_LOAD, final_layout_});
     pass.framebuffer = framebuffers_.framebuffer(image);
     pass.renderArea = {{0, 0}, full};
     vkCmdBeginRenderPass(cmd, &pass, VK_SUBPASS_CONTENTS_INLINE);  // the overlay sets its own viewport

@@ -2,8 +2,9 @@
 // meshes into any TargetImages. Frames in flight overlap recording with the device's execution;
 // opaque and masked primitives draw first, blended ones after, back to front. Its parts: the
 // render passes (scene_render_pass.hpp), the pipelines (mesh_pipelines.hpp), the framebuffers
-// (scene_framebuffers.hpp), the draws (mesh_draws.hpp), the render scale (scaled_scene.hpp), the
-// device times (frame_timestamps.hpp) and the capture (frame_capture.hpp).
+// (scene_framebuffers.hpp), the draws (mesh_draws.hpp), the section's caps (section_caps.hpp), the
+// render scale (scaled_scene.hpp), the device times (frame_timestamps.hpp) and the capture
+// (frame_capture.hpp).
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -19,6 +20,7 @@
 #include "engine/passes/scaled_scene.hpp"
 #include "engine/passes/scene_framebuffers.hpp"
 #include "engine/passes/scene_render_pass.hpp"
+#include "engine/passes/section_caps.hpp"
 #include "engine/rgba_image.hpp"
 #include "engine/scene_renderer.hpp"
 #include "engine/vulkan/command_buffer.hpp"
@@ -53,7 +55,8 @@ class ScenePass {
   void set_cull_cut_away(bool on) { options_.cull_cut_away = on; }
   void set_specialized_pipelines(bool on) { options_.specialized = on; }
   const VulkanContext& context() const { return context_; }
-  // For passes drawn inside the scene's render pass (the UI pass).
+  // For passes drawn inside the scene's render pass (the UI pass): one compatible with every pass
+  // into the target.
   VkRenderPass render_pass() const { return render_pass_; }
 
  private:
@@ -82,14 +85,13 @@ class ScenePass {
   SceneAttachments attachments_;
   DrawOptions options_;
   VkImageLayout final_layout_;  // the target's, which its passes end in
-  VkRenderPass render_pass_;
-  // Made when the render scale first goes below 1: the scene's pass into the smaller attachments,
-  // the overlay's pass into the target after the upscale, the attachments and the upscale.
+  SceneRenderPasses passes_;
+  VkRenderPass render_pass_;  // the scene's first, into a target of final_layout_
+  // Made when the render scale first goes below 1: the scene's attachments and the upscale.
   float render_scale_ = 1.0f;
-  VkRenderPass scaled_pass_ = VK_NULL_HANDLE;
-  VkRenderPass overlay_pass_ = VK_NULL_HANDLE;
   std::unique_ptr<ScaledScene> scaled_;
   MeshPipelines pipelines_;
+  std::unique_ptr<SectionCaps> caps_;  // made for the first cut frame
   VkDescriptorPool frame_pool_ = VK_NULL_HANDLE;
   std::array<FrameSlot, kFramesInFlight> slots_;
   size_t next_slot_ = 0;

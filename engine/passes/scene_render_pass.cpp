@@ -1,21 +1,42 @@
 #include "engine/passes/scene_render_pass.hpp"
 
 #include <array>
+#include <stdexcept>
 #include <vector>
 
 #include "engine/vulkan/vk_check.hpp"
 
 namespace needle::engine {
 
-VkRenderPass make_scene_render_pass(VkDevice device, const SceneAttachments& formats, VkAttachmentLoadOp load,
-                                    VkImageLayout final_layout) {
+VkFormat depth_stencil_format(VkPhysicalDevice device) {
+  for (VkFormat format : {VK_FORMAT_D32_SFLOAT_S8_UINT, VK_FORMAT_D24_UNORM_S8_UINT}) {
+    VkFormatProperties properties;
+    vkGetPhysicalDeviceFormatProperties(device, format, &properties);
+    if (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT) return format;
+  }
+  throw std::runtime_error("the Vulkan device has no depth format with stencil (D32_SFLOAT_S8_UINT, D24_UNORM_S8_UINT)");
+}
+
+SceneRenderPasses::~SceneRenderPasses() {
+  for (const auto& [kind, pass] : passes_) vkDestroyRenderPass(device_, pass, nullptr);
+}
+
+VkRenderPass SceneRenderPasses::get(const SceneRenderPassKind& kind) {
+  auto [it, fresh] = passes_.try_emplace(kind, VK_NULL_HANDLE);
+  if (fresh) it->second = make_scene_render_pass(device_, attachments_, kind);
+  return it->second;
+}
+
+VkRenderPass make_scene_render_pass(VkDevice device, const SceneAttachments& formats, const SceneRenderPassKind& kind) {
+  const VkAttachmentLoadOp load = kind.load;
+  const VkImageLayout final_layout = kind.final_layout;
   const bool msaa = formats.samples != VK_SAMPLE_COUNT_1_BIT;
   std::vector<VkAttachmentDescription> attachments;
   VkAttachmentDescription color{};
   color.format = formats.color;
   color.samples = formats.samples;
   color.loadOp = load;
-  color.storeOp = msaa ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
+  color.storeOp = msaa && !kind.keep ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
   color.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   color.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   color.initialLayout = load == VK_ATTACHMENT_LOAD_OP_LOAD ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
@@ -25,8 +46,9 @@ VkRenderPass make_scene_render_pass(VkDevice device, const SceneAttachments& for
   VkAttachmentDescription depth = color;
   depth.format = formats.depth;
   depth.loadOp = load == VK_ATTACHMENT_LOAD_OP_LOAD ? VK_ATTACHMENT_LOAD_OP_DONT_CARE : load;  // the overlay tests no depth
+  depth.stencilLoadOp = depth.loadOp;
   depth.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  depth.storeOp = kind.keep ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
   depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
   attachments.push_back(depth);
 

@@ -1,0 +1,239 @@
+// The section view checked against the geometry, not against another picture (docs/RENDERING.md,
+// "Section view"): every pixel whose ray meets the cut plane inside a structure, more than a pixel
+// and a half from its outline, shows that structure's cut face in the colour the lighting model
+// gives a surface of the structure's material facing the viewer; the needle lying in the plane
+// shows as one continuous shaft. The same assertions hold on any Vulkan device. Under the
+// validation layer.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "engine/gltf_loader.hpp"
+#include "engine/gpu_scene.hpp"
+#include "engine/render_target.hpp"
+#include "picture_geometry.hpp"
+#include "tests/support/test_paths.hpp"
+#include "vulkan_fixture.hpp"
+
+namespace needle::test {
+namespace {
+
+constexpr engine::Extent kSize{320, 240};
+// Channel counts between a cut face's pixel and its closed form: float rounding on the device.
+constexpr int kFaceTolerance = 3;
+
+// A tissue structure as the scene places it: an axis-aligned box (the layered block, the lumbar
+// section) or a ball (the thesis sphere), with the colour of its cut face before lighting.
+struct Solid {
+  std::string name;
+  bool ball = false;
+  glm::dvec3 min{0.0}, max{0.0};  // box; ball: centre (min) and radius (max.x)
+  engine::Material material;
+  glm::dvec3 base{1.0};  // linear: the material's factor times its texture's middle
+  // How deep `p` lies inside, the distance to the nearest face; negative outside.
+  double depth(const glm::dvec3& p) const {
+    if (ball) return max.x - glm::length(p - min);
+    const glm::dvec3 in = glm::min(p - min, max - p);
+    return std::min({in.x, in.y, in.z});
+  }
+};
+
+// The scene's tissue structures, one per primitive instance, in drawing order.
+std::vector<Solid> solids_of(const engine::Scene& scene, bool balls) {
+  std::vector<Solid> solids;
+  for (const engine::SceneAsset& asset : scene.assets) {
+    if (asset.role != engine::AssetRole::Tissue) continue;
+    const engine::Model model = engine::load_gltf(asset.gltf);
+    for (const engine::MeshInstance& instance : model.instances) {
+      const engine::Primitive& p = model.primitives[instance.primitive];
+      const glm::dmat4 to_world = glm::dmat4(asset.transform()) * glm::dmat4(instance.world);
+      Solid s;
+      s.name = instance.node_name;
+      s.min = glm::dvec3(1e9), s.max = glm::dvec3(-1e9);
+      for (const engine::MeshVertex& v : p.vertices) {
+        const glm::dvec3 w = glm::dvec3(to_world * glm::dvec4(glm::dvec3(v.position), 1.0));
+        s.min = glm::min(s.min, w), s.max = glm::max(s.max, w);
+      }
+      if (balls) {
+        const glm::dvec3 centre = 0.5 * (s.min + s.max);
+        s.ball = true;
+        s.max = glm::dvec3(0.5 * (s.max.x - s.min.x));
+        s.min = centre;
+      }
+      s.material = p.material >= 0 ? model.materials[size_t(p.material)] : engine::Material{};
+      s.base = glm::dvec3(s.material.base_color_factor);
+      if (s.material.base_color_texture >= 0) {  // bilinear at uv (0.5, 0.5), in linear light
+        const engine::Texture& t = model.textures[size_t(s.material.base_color_texture)];
+        glm::dvec3 mean(0.0);
+        for (uint32_t y : {t.height / 2 - 1, t.height / 2})
+          for (uint32_t x : {t.width / 2 - 1, t.width / 2})
+            for (int c = 0; c < 3; ++c) mean[c] += srgb_decode(t.rgba8[(size_t(y) * t.width + x) * 4 + size_t(c)]) / 4.0;
+        s.base *= mean;
+      }
+      solids.push_back(s);
+    }
+  }
+  return solids;
+}
+
+struct FaceCheck {
+  size_t checked = 0;  // pixels inside a structure's cut, away from its outline
+  size_t wrong = 0;    // of those, not in that structure's colour
+  int worst = 0;
+  std::string first_wrong;
+};
+
+// Every pixel whose ray meets the plane inside a solid, more than 1.5 pixels' footprint from its
+// faces, against the closed form of that solid's cut face (the last solid holding the point, as
+// the caps draw them).
+FaceCheck check_cut_faces(const engine::RgbaImage& image, const engine::FrameParams& params, const std::vector<Solid>& solids) {
+  const engine::Section& section = *params.section;
+  const glm::dvec3 n = glm::normalize(glm::dvec3(section.normal)), point(section.point);
+  FaceCheck check;
+  for (int y = 0; y < int(kSize.height); ++y) {
+    for (int x = 0; x < int(kSize.width); ++x) {
+      const glm::dvec3 p = on_plane(pixel_ray(params.camera, kSize, x, y), point, n);
+      const double footprint = std::max(glm::length(on_plane(pixel_ray(params.camera, kSize, x + 1, y), point, n) - p),
+                                        glm::length(on_plane(pixel_ray(params.camera, kSize, x, y + 1), point, n) - p));
+      const Solid* holder = nullptr;
+      for (const Solid& s : solids)
+        if (s.depth(p) > 0.0) holder = &s;
+      if (!holder || holder->depth(p) < 1.5 * footprint) continue;
+      ++check.checked;
+      const glm::ivec3 expected = lit_counts(holder->material, holder->base, n, p, params.camera, params.lights);
+      const int d = max_channel_difference(rgb(image, x, y), expected);
+      check.worst = std::max(check.worst, d);
+      if (d > kFaceTolerance && check.wrong++ == 0) {
+        const glm::ivec3 got = rgb(image, x, y);
+        check.first_wrong = "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") in " + holder->name + ": (" +
+                            std::to_string(got.x) + ", " + std::to_string(got.y) + ", " + std::to_string(got.z) +
+                            ") against (" + std::to_string(expected.x) + ", " + std::to_string(expected.y) + ", " +
+                            std::to_string(expected.z) + ")";
+      }
+    }
+  }
+  return check;
+}
+
+struct CutScene {
+  const char* scene;
+  bool balls;
+  bool through_needle;  // the plane through a needle standing in the scene's middle, else y = const
+};
+void PrintTo(const CutScene& c, std::ostream* os) { *os << c.scene << (c.through_needle ? " through the needle" : " fixed"); }
+
+class CutFaces : public VulkanTest, public ::testing::WithParamInterface<CutScene> {};
+
+TEST_P(CutFaces, EveryPixelOfACutFaceIsItsStructuresColour) {
+  const CutScene& c = GetParam();
+  engine::HeadlessTarget target(device(), kSize);
+  engine::SceneRenderer renderer(device(), target);
+  const engine::Scene file = engine::load_scene(test::source_dir() / "assets/scenes" / c.scene);
+  engine::GpuScene scene(renderer, file);
+  const std::vector<Solid> solids = solids_of(file, c.balls);
+  engine::FrameParams params = scene.frame_params(nullptr);
+  std::erase_if(params.items, [](const engine::DrawItem& item) { return !item.sectioned; });  // no tool in front
+  params.camera.position = params.camera.target + 0.7f * (params.camera.position - params.camera.target);
+  // A needle standing straight down through the camera's target, or the plane y = target.y.
+  engine::NeedleLoad needle;
+  needle.contact = engine::NeedleContact::Inserted;
+  needle.axis = {0.0, 0.0, -1.0};
+  needle.tip = glm::dvec3(params.camera.target);
+  engine::Section section = engine::section_through_needle(params.camera, &needle);
+  if (!c.through_needle) section.normal = {0.0f, params.camera.position.y > params.camera.target.y ? 1.0f : -1.0f, 0.0f};
+  params.section = section;
+  engine::RgbaImage image;
+  ASSERT_TRUE(renderer.draw(target, params, &image));
+  const FaceCheck check = check_cut_faces(image, params, solids);
+  EXPECT_GT(check.checked, 4000u) << "too few pixels of cut faces to judge";
+  EXPECT_EQ(check.wrong, 0u) << check.wrong << " of " << check.checked << " pixels not their structure's colour (worst "
+                             << check.worst << "), first " << check.first_wrong;
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, CutFaces,
+                         ::testing::Values(CutScene{"lumbar_section.json", false, true}, CutScene{"lumbar_section.json", false, false},
+                                           CutScene{"tissue_block_task.json", false, true},
+                                           CutScene{"tissue_block_task.json", false, false},
+                                           CutScene{"penetrable_sphere.json", true, true}),
+                         [](const ::testing::TestParamInfo<CutScene>& info) {
+                           std::string name = std::string(info.param.scene).substr(0, std::string(info.param.scene).find('.'));
+                           return name + (info.param.through_needle ? "_through_needle" : "_fixed_plane");
+                         });
+
+// The needle of a task's section view (as TaskSectionView sets them up) in the cut: along its
+// projected axis, from the end of its tip's cone to where it leaves the view of the cut (in
+// plane: 2 cm above the skin; out of plane: 1 mm before it crosses the plane, beyond which the
+// cut face hides it), every pixel is the needle's as the needle alone draws it: one continuous
+// shaft, no piece of it hidden by a cap or another structure.
+struct NeedleCase {
+  const char* scene;
+  bool in_plane;
+  double entry_y;  // out of plane: where the needle enters, in front of y = 0 (m)
+  double depth;    // along the needle from the entry (m)
+};
+void PrintTo(const NeedleCase& c, std::ostream* os) { *os << c.scene << (c.in_plane ? " in plane" : " out of plane"); }
+
+class NeedleInTheCut : public VulkanTest, public ::testing::WithParamInterface<NeedleCase> {};
+
+TEST_P(NeedleInTheCut, TheShaftIsOneContinuousPiece) {
+  const NeedleCase& c = GetParam();
+  constexpr engine::Extent kLarge{640, 480};
+  constexpr double kTipCone_m = 0.004;  // asset-gen's needle: the tip's cone, then the shaft
+  engine::HeadlessTarget target(device(), kLarge);
+  engine::SceneRenderer renderer(device(), target);
+  engine::GpuScene scene(renderer, engine::load_scene(test::source_dir() / "assets/scenes" / c.scene));
+  engine::NeedleLoad needle;
+  needle.contact = engine::NeedleContact::Inserted;
+  needle.surface_point = {0.33, c.in_plane ? 0.0 : c.entry_y, 0.07};
+  needle.axis = c.in_plane ? glm::dvec3(0.0, 0.0, -1.0) : glm::dvec3(0.0, 0.70710678, -0.70710678);
+  needle.tip = needle.surface_point + c.depth * needle.axis;
+  engine::FrameParams params = scene.frame_params(&needle);
+  params.camera.position = params.camera.target + 0.6f * (params.camera.position - params.camera.target);
+  engine::FrameParams alone = params;
+  std::erase_if(alone.items, [](const engine::DrawItem& item) { return item.sectioned; });
+  engine::Section section;
+  if (c.in_plane) {
+    section = engine::section_through_needle(params.camera, &needle);
+  } else {
+    section.point = glm::vec3(0.33f, 0.0f, 0.07f);
+    section.normal = glm::vec3(0.0f, params.camera.position.y > params.camera.target.y ? 1.0f : -1.0f, 0.0f);
+  }
+  params.section = section;
+  engine::RgbaImage cut, reference;
+  ASSERT_TRUE(renderer.draw(target, params, &cut));
+  ASSERT_TRUE(renderer.draw(target, alone, &reference));
+  // Distances back from the tip: from the shaft's start (in plane) or 1 mm before the crossing
+  // (out of plane) to 2 cm above the skin.
+  const double crossing = c.depth - (-c.entry_y / needle.axis.y);
+  const double near = c.in_plane ? kTipCone_m : crossing + 0.001, far = c.depth + 0.02;
+  const std::optional<glm::vec2> a = engine::project_to_screen(params.camera, kLarge, glm::vec3(needle.tip - near * needle.axis));
+  const std::optional<glm::vec2> b = engine::project_to_screen(params.camera, kLarge, glm::vec3(needle.tip - far * needle.axis));
+  ASSERT_TRUE(a && b);
+  const int steps = int(std::ceil(2.0 * glm::length(*b - *a)));
+  ASSERT_GT(steps, 40) << "the shaft is too short on the screen to judge";
+  int gaps = 0, worst = 0;
+  for (int i = 0; i <= steps; ++i) {
+    const glm::vec2 at = *a + (*b - *a) * (float(i) / float(steps)) - 0.5f;  // pixel centres at integers
+    const int x = int(std::lround(at.x)), y = int(std::lround(at.y));
+    const int d = max_channel_difference(rgb(cut, x, y), rgb(reference, x, y));
+    worst = std::max(worst, d);
+    gaps += d > 8;
+  }
+  EXPECT_EQ(gaps, 0) << gaps << " of " << steps + 1 << " points of the shaft not the needle's (worst " << worst << ")";
+}
+
+INSTANTIATE_TEST_SUITE_P(Tasks, NeedleInTheCut,
+                         ::testing::Values(NeedleCase{"tissue_block_task.json", true, 0.0, 0.034},
+                                           NeedleCase{"tissue_block_task.json", false, -0.02, 0.035},
+                                           NeedleCase{"lumbar_section.json", true, 0.0, 0.05},
+                                           NeedleCase{"lumbar_section.json", false, -0.03, 0.05}),
+                         [](const ::testing::TestParamInfo<NeedleCase>& info) {
+                           std::string name = std::string(info.param.scene).substr(0, std::string(info.param.scene).find('.'));
+                           return name + (info.param.in_plane ? "_in_plane" : "_out_of_plane");
+                         });
+
+}  // namespace
+}  // namespace needle::test
