@@ -34,6 +34,8 @@ MeshDraws collect_draws(const FrameParams& params, VkExtent2D extent, const Draw
   // A cut's caps are found from every face of what it cuts (section_caps.hpp), so none are
   // culled for their facing; those wholly on the cut-away side are.
   const bool cut = params.section && params.section->mode == Section::Mode::Cut;
+  const bool translucent = params.section && params.section->mode == Section::Mode::Translucent &&
+                           options.translucency == Translucency::Blended;
   const glm::vec4 cut_plane = cut ? section_plane(*params.section) : glm::vec4(0.0f);
   MeshDraws draws;
   for (const DrawItem& item : params.items) {
@@ -52,7 +54,9 @@ MeshDraws collect_draws(const FrameParams& params, VkExtent2D extent, const Draw
           : cut && sectioned   ? (options.cull_cut_away ? ranges_kept_by_cut(level.chunks, transform, cut_plane, item.moved) : all)
           : !m.double_sided    ? visible_ranges(level.chunks, transform, params.camera.position, item.moved)
                                : all;
-      (m.alpha_mode == AlphaMode::Blend ? draws.blended : draws.opaque)
+      (translucent && sectioned           ? draws.translucent
+       : m.alpha_mode == AlphaMode::Blend ? draws.blended
+                                          : draws.opaque)
           .push_back({item.model, instance.primitive, transform, depth, std::move(ranges), sectioned});
     }
   }

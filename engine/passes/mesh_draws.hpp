@@ -32,8 +32,9 @@ struct MeshDraw {
 };
 
 struct MeshDraws {
-  std::vector<MeshDraw> opaque;   // opaque and masked, in the items' order
-  std::vector<MeshDraw> blended;  // back to front
+  std::vector<MeshDraw> opaque;       // opaque and masked, in the items' order
+  std::vector<MeshDraw> blended;      // back to front
+  std::vector<MeshDraw> translucent;  // sectioned, in a Translucent section drawn blended (translucent_pass.hpp)
 };
 
 // What RendererSettings (and the bench's variants) switch on and off.
@@ -42,6 +43,7 @@ struct DrawOptions {
   bool cull_chunks = true;
   bool cull_cut_away = true;
   bool specialized = true;  // each draw's pipeline specialized to what it needs
+  Translucency translucency = Translucency::Blended;
 };
 
 // (frame, the size of the pixels drawn, options) => its draws.

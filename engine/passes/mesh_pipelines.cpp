@@ -1,5 +1,6 @@
 #include "engine/passes/mesh_pipelines.hpp"
 
+#include <cstddef>
 #include <vector>
 
 #include "engine/model.hpp"
@@ -76,11 +77,18 @@ void MeshPipelines::create_layouts_and_sampler() {
 VkPipeline MeshPipelines::make(const MeshPipelineSpec& spec) const {
   const std::array<VkShaderModule, 2> modules{shader_module(device_, mesh_vert_spv, sizeof(mesh_vert_spv)),
                                               shader_module(device_, spec.frag, spec.frag_bytes)};
-  // mesh.frag's specialization constants kMayDiscard (constant_id 0) and kTextured (1).
-  const std::array<VkSpecializationMapEntry, 2> entries{{{0, 0, sizeof(VkBool32)}, {1, sizeof(VkBool32), sizeof(VkBool32)}}};
-  const std::array<VkBool32, 2> constants{spec.variant.may_discard ? VK_TRUE : VK_FALSE,
-                                          spec.variant.textured ? VK_TRUE : VK_FALSE};
-  const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(), sizeof constants, constants.data()};
+  // The specialization constants kMayDiscard (constant_id 0), kTextured (1), kAlpha (2); a shader
+  // without one ignores it.
+  struct Constants {
+    VkBool32 may_discard, textured;
+    float alpha;
+  };
+  const std::array<VkSpecializationMapEntry, 3> entries{{{0, offsetof(Constants, may_discard), sizeof(VkBool32)},
+                                                         {1, offsetof(Constants, textured), sizeof(VkBool32)},
+                                                         {2, offsetof(Constants, alpha), sizeof(float)}}};
+  const Constants constants{spec.variant.may_discard ? VK_TRUE : VK_FALSE, spec.variant.textured ? VK_TRUE : VK_FALSE,
+                            spec.alpha};
+  const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(), sizeof constants, &constants};
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
   stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, modules[0], "main", nullptr};
   stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, modules[1], "main",

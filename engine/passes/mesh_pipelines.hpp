@@ -33,6 +33,7 @@ struct MeshPipelineSpec {
   const uint32_t* frag = nullptr;  // SPIR-V; its specialization constants 0 and 1, if any, as mesh.frag's
   size_t frag_bytes = 0;
   MeshVariant variant;  // culling, and the specialization constants kMayDiscard and kTextured
+  float alpha = 1.0f;   // specialization constant 2: mesh_translucent.frag's kAlpha
   VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   std::vector<VkPipelineColorBlendAttachmentState> blends;  // one per colour attachment
   std::vector<VkDynamicState> dynamic_states;               // besides the viewport and scissor

@@ -18,9 +18,8 @@ void SceneFramebuffers::make(const TargetImages& target, VkRenderPass render_pas
   const VkExtent2D extent = target.extent();
   const bool msaa = attachments_.samples != VK_SAMPLE_COUNT_1_BIT;
   if (msaa) {
-    msaa_color_ = GpuImage(context_, {extent, attachments_.color,
-                                      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                                      attachments_.samples});
+    // Not transient: a frame with translucent tissue keeps it between its passes.
+    msaa_color_ = GpuImage(context_, {extent, attachments_.color, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, attachments_.samples});
   }
   depth_ = GpuImage(context_, {extent, attachments_.depth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                                attachments_.samples, VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT});

@@ -32,6 +32,7 @@ class SceneFramebuffers {
 
   VkFramebuffer framebuffer(uint32_t image) const { return framebuffers_[image]; }
   VkSemaphore render_done(uint32_t image) const { return render_done_[image]; }
+  VkImageView depth_view() const { return depth_.view(); }
 
  private:
   const VulkanContext& context_;

@@ -33,7 +33,7 @@ ScenePass::ScenePass(const VulkanContext& context, const TargetImages& target, c
     : context_(context),
       device_(context.device()),
       attachments_{target.format(), depth_stencil_format(context.physical_device()), context.max_msaa(settings.msaa_samples)},
-      options_{settings.level_of_detail, settings.cull_chunks, settings.cull_cut_away},
+      options_{settings.level_of_detail, settings.cull_chunks, settings.cull_cut_away, true, settings.translucency},
       final_layout_(target.final_layout()),
       passes_(device_, attachments_),
       render_pass_(passes_.get({VK_ATTACHMENT_LOAD_OP_CLEAR, final_layout_})),
@@ -55,6 +55,7 @@ ScenePass::~ScenePass() {
   }
   if (frame_pool_) vkDestroyDescriptorPool(device_, frame_pool_, nullptr);
   caps_.reset();
+  translucent_.reset();
   scaled_.reset();
 }
 
@@ -222,6 +223,10 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
   const VkExtent2D extent = scaled ? scaled_->extent() : full;
   const MeshDraws draws = collect_draws(params, extent, options_);
 
+  // With translucent tissue the scene's pass keeps its colour and depth for the translucent pass,
+  // and the next pass (the composite's, and the overlay's at scale 1) loads the colour.
+  const bool translucent = !draws.translucent.empty();
+  const VkImageLayout scene_layout = scaled ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : final_layout_;
   std::array<VkClearValue, 3> clears{};
   // The background is linear; the target holds encoded values (srgb.hpp).
   clears[0].color = {{srgb_encode(params.background.r), srgb_encode(params.background.g), srgb_encode(params.background.b),
@@ -229,7 +234,8 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
   clears[1].depthStencil = {1.0f, 0};
   clears[2].color = clears[0].color;
   VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-  pass.renderPass = passes_.get({VK_ATTACHMENT_LOAD_OP_CLEAR, scaled ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : final_layout_});
+  pass.renderPass = translucent ? passes_.get({VK_ATTACHMENT_LOAD_OP_CLEAR, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, true})
+                                : passes_.get({VK_ATTACHMENT_LOAD_OP_CLEAR, scene_layout});
   pass.framebuffer = scaled ? scaled_->framebuffer() : framebuffers_.framebuffer(image);
   pass.renderArea = {{0, 0}, extent};
   pass.clearValueCount = attachments_.samples != VK_SAMPLE_COUNT_1_BIT ? 3 : 2;
@@ -241,14 +247,23 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
   VkRect2D scissor{{0, 0}, extent};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout(), 0, 1, &slots_[slot].frame_set, 0,
-                          nullptr);
+  const VkDescriptorSet frame_set = slots_[slot].frame_set;
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout(), 0, 1, &frame_set, 0, nullptr);
   triangles_drawn_ = record_draws(cmd, draws.opaque, false, pipelines_, options_);
   if (params.section && params.section->mode == Section::Mode::Cut) {
     if (!caps_) caps_ = std::make_unique<SectionCaps>(context_, pipelines_, render_pass_, attachments_.samples, uint32_t(kFramesInFlight));
     triangles_drawn_ += caps_->record(cmd, slot, draws.opaque, *params.section, extent);
   }
   triangles_drawn_ += record_draws(cmd, draws.blended, true, pipelines_, options_);
+  if (translucent) {
+    vkCmdEndRenderPass(cmd);
+    if (!translucent_) translucent_ = std::make_unique<TranslucentPass>(context_, pipelines_, attachments_, render_pass_);
+    triangles_drawn_ += translucent_->record_accumulation(cmd, scaled ? scaled_->depth_view() : framebuffers_.depth_view(),
+                                                          extent, frame_set, draws.translucent);
+    pass.renderPass = passes_.get({VK_ATTACHMENT_LOAD_OP_LOAD, scene_layout});
+    vkCmdBeginRenderPass(cmd, &pass, VK_SUBPASS_CONTENTS_INLINE);
+    translucent_->record_composite(cmd);
+  }
   cost_.scene.record_ms = lap_ms(t);
   if (scaled) {
     vkCmdEndRenderPass(cmd);

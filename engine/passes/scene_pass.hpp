@@ -2,9 +2,9 @@
 // meshes into any TargetImages. Frames in flight overlap recording with the device's execution;
 // opaque and masked primitives draw first, blended ones after, back to front. Its parts: the
 // render passes (scene_render_pass.hpp), the pipelines (mesh_pipelines.hpp), the framebuffers
-// (scene_framebuffers.hpp), the draws (mesh_draws.hpp), the section's caps (section_caps.hpp), the
-// render scale (scaled_scene.hpp), the device times (frame_timestamps.hpp) and the capture
-// (frame_capture.hpp).
+// (scene_framebuffers.hpp), the draws (mesh_draws.hpp), the section's caps (section_caps.hpp) and
+// translucent tissue (translucent_pass.hpp), the render scale (scaled_scene.hpp), the device times
+// (frame_timestamps.hpp) and the capture (frame_capture.hpp).
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -21,6 +21,7 @@
 #include "engine/passes/scene_framebuffers.hpp"
 #include "engine/passes/scene_render_pass.hpp"
 #include "engine/passes/section_caps.hpp"
+#include "engine/passes/translucent_pass.hpp"
 #include "engine/rgba_image.hpp"
 #include "engine/scene_renderer.hpp"
 #include "engine/vulkan/command_buffer.hpp"
@@ -54,6 +55,7 @@ class ScenePass {
   float render_scale() const { return render_scale_; }
   void set_cull_cut_away(bool on) { options_.cull_cut_away = on; }
   void set_specialized_pipelines(bool on) { options_.specialized = on; }
+  void set_translucency(Translucency translucency) { options_.translucency = translucency; }
   const VulkanContext& context() const { return context_; }
   // For passes drawn inside the scene's render pass (the UI pass): one compatible with every pass
   // into the target.
@@ -91,7 +93,8 @@ class ScenePass {
   float render_scale_ = 1.0f;
   std::unique_ptr<ScaledScene> scaled_;
   MeshPipelines pipelines_;
-  std::unique_ptr<SectionCaps> caps_;  // made for the first cut frame
+  std::unique_ptr<SectionCaps> caps_;               // made for the first cut frame
+  std::unique_ptr<TranslucentPass> translucent_;  // made for the first frame with translucent tissue
   VkDescriptorPool frame_pool_ = VK_NULL_HANDLE;
   std::array<FrameSlot, kFramesInFlight> slots_;
   size_t next_slot_ = 0;

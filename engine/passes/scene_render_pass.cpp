@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "engine/vulkan/vk_check.hpp"
+#include "engine/vulkan/pipelines.hpp"
 
 namespace needle::engine {
 
@@ -102,18 +102,7 @@ VkRenderPass make_scene_render_pass(VkDevice device, const SceneAttachments& for
                                  kSceneSelfSrcAccess,
                                  kSceneSelfDstAccess,
                                  VK_DEPENDENCY_BY_REGION_BIT};
-  std::array<VkSubpassDependency, 3> dependencies{dependency, to_capture, self};
-
-  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-  info.attachmentCount = uint32_t(attachments.size());
-  info.pAttachments = attachments.data();
-  info.subpassCount = 1;
-  info.pSubpasses = &subpass;
-  info.dependencyCount = uint32_t(dependencies.size());
-  info.pDependencies = dependencies.data();
-  VkRenderPass pass;
-  VK_CHECK(vkCreateRenderPass(device, &info, nullptr, &pass));
-  return pass;
+  return make_render_pass(device, attachments, subpass, {dependency, to_capture, self});
 }
 
 }  // namespace needle::engine

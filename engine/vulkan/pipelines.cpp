@@ -89,6 +89,20 @@ VkResult create_graphics_pipeline(VkDevice device, const GraphicsPipelineStates&
   return vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, pipeline);
 }
 
+VkRenderPass make_render_pass(VkDevice device, const std::vector<VkAttachmentDescription>& attachments,
+                              const VkSubpassDescription& subpass, const std::vector<VkSubpassDependency>& dependencies) {
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.attachmentCount = uint32_t(attachments.size());
+  info.pAttachments = attachments.data();
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = uint32_t(dependencies.size());
+  info.pDependencies = dependencies.data();
+  VkRenderPass pass = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateRenderPass(device, &info, nullptr, &pass));
+  return pass;
+}
+
 VkFramebuffer make_framebuffer(VkDevice device, VkRenderPass render_pass, const std::vector<VkImageView>& attachments,
                                VkExtent2D extent) {
   VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};

@@ -1,6 +1,6 @@
 // The Vulkan objects every pass makes the same way: shader modules, a descriptor set layout, a
 // pipeline layout of one set, a compute pipeline, a graphics pipeline from its states with the
-// viewport and scissor dynamic, and a framebuffer.
+// viewport and scissor dynamic, a render pass of one subpass, and a framebuffer.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -38,6 +38,10 @@ struct GraphicsPipelineStates {
 };
 // The result of vkCreateGraphicsPipelines, for the caller to free its modules before throwing.
 VkResult create_graphics_pipeline(VkDevice device, const GraphicsPipelineStates& states, VkPipeline* pipeline);
+
+// A render pass of one subpass over `attachments`, ordered by `dependencies`.
+VkRenderPass make_render_pass(VkDevice device, const std::vector<VkAttachmentDescription>& attachments,
+                              const VkSubpassDescription& subpass, const std::vector<VkSubpassDependency>& dependencies);
 
 // A framebuffer of `render_pass` over `attachments` (in the pass's order), one layer of `extent`.
 VkFramebuffer make_framebuffer(VkDevice device, VkRenderPass render_pass, const std::vector<VkImageView>& attachments,

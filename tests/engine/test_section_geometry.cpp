@@ -7,11 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <glm/gtc/matrix_transform.hpp>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "engine/gltf_loader.hpp"
+#include "engine/passes/translucent_pass.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/render_target.hpp"
 #include "picture_geometry.hpp"
@@ -234,6 +236,104 @@ INSTANTIATE_TEST_SUITE_P(Tasks, NeedleInTheCut,
                            std::string name = std::string(info.param.scene).substr(0, std::string(info.param.scene).find('.'));
                            return name + (info.param.in_plane ? "_in_plane" : "_out_of_plane");
                          });
+
+// The translucent mode against its closed form (weighted blended transparency of one layer is
+// exact): where a ray meets the thesis sphere's front once, the pixel is kTranslucentAlpha of the
+// sphere's lit colour there over the rest of what lies behind it, the background or the needle as
+// it draws alone (blended on the encoded values, as the targets hold them).
+class TranslucentTissue : public VulkanTest {};
+
+TEST_F(TranslucentTissue, OneLayerLetsThreeQuartersOfWhatIsBehindThrough) {
+  constexpr double kAlpha = engine::kTranslucentAlpha;
+  engine::HeadlessTarget target(device(), kSize);
+  engine::SceneRenderer renderer(device(), target);
+  const engine::Scene file = engine::load_scene(test::source_dir() / "assets/scenes/penetrable_sphere.json");
+  engine::GpuScene scene(renderer, file);
+  const Solid sphere = solids_of(file, true).at(0);
+  // The needle 2 cm past the sphere's centre, drawn where it is but pushing nothing (free): the
+  // sphere keeps its shape, so its front surface is the closed form's.
+  engine::NeedleLoad needle;
+  needle.axis = glm::normalize(glm::dvec3(1.0, 0.0, -0.35));
+  needle.tip = sphere.min + 0.02 * needle.axis;
+  engine::FrameParams params = scene.frame_params(&needle);
+  engine::FrameParams alone = params;
+  std::erase_if(alone.items, [](const engine::DrawItem& item) { return item.sectioned; });
+  params.section = engine::section_through_needle(params.camera, &needle, engine::Section::Mode::Translucent);
+  engine::RgbaImage image, needle_alone;
+  ASSERT_TRUE(renderer.draw(target, params, &image));
+  ASSERT_TRUE(renderer.draw(target, alone, &needle_alone));
+
+  // The sphere's lit front where the pixel's ray meets it, if it does 10 % inside its outline.
+  const double radius = sphere.max.x;
+  auto front = [&](int x, int y) -> std::optional<glm::ivec3> {
+    const Ray ray = pixel_ray(params.camera, kSize, x, y);
+    const double along = glm::dot(sphere.min - ray.origin, ray.direction);
+    const double miss = glm::length(ray.origin + along * ray.direction - sphere.min);
+    if (miss > 0.9 * radius) return std::nullopt;
+    const glm::dvec3 p = ray.origin + (along - std::sqrt(radius * radius - miss * miss)) * ray.direction;
+    return lit_counts(sphere.material, sphere.base, glm::normalize(p - sphere.min), p, params.camera, params.lights);
+  };
+  auto over = [&](const glm::ivec3& layer, const glm::ivec3& behind) {
+    return glm::ivec3(glm::round(kAlpha * glm::dvec3(layer) + (1.0 - kAlpha) * glm::dvec3(behind)));
+  };
+  const glm::ivec3 background(srgb_count(params.background.r), srgb_count(params.background.g), srgb_count(params.background.b));
+  // Over the background: every pixel of the sphere's inner 90 % the needle alone leaves background.
+  size_t checked = 0, wrong = 0;
+  int worst = 0;
+  for (int y = 0; y < int(kSize.height); ++y) {
+    for (int x = 0; x < int(kSize.width); ++x) {
+      const std::optional<glm::ivec3> layer = front(x, y);
+      if (!layer || rgb(needle_alone, x, y) != background) continue;
+      const int d = max_channel_difference(rgb(image, x, y), over(*layer, background));
+      ++checked, wrong += d > kFaceTolerance, worst = std::max(worst, d);
+    }
+  }
+  EXPECT_GT(checked, 10000u);
+  EXPECT_EQ(wrong, 0u) << wrong << " of " << checked << " pixels of the sphere over the background (worst " << worst << ")";
+  // Over the needle: along its axis, from 5 mm above the tip to 2 cm deep.
+  checked = wrong = 0, worst = 0;
+  for (double back = 0.005; back <= 0.05; back += 0.0005) {
+    const std::optional<glm::vec2> at = engine::project_to_screen(params.camera, kSize, glm::vec3(needle.tip - back * needle.axis));
+    ASSERT_TRUE(at);
+    const int x = int(at->x), y = int(at->y);
+    const std::optional<glm::ivec3> layer = front(x, y);
+    if (!layer) continue;
+    const int d = max_channel_difference(rgb(image, x, y), over(*layer, rgb(needle_alone, x, y)));
+    ++checked, wrong += d > kFaceTolerance, worst = std::max(worst, d);
+  }
+  EXPECT_GT(checked, 40u);
+  EXPECT_EQ(wrong, 0u) << wrong << " of " << checked << " points of the needle under the sphere (worst " << worst << ")";
+}
+
+// Order independence: the lumbar section's eleven structures and the layered block overlapping
+// them, drawn in either order, give the same picture (to the rounding of half floats).
+TEST_F(TranslucentTissue, TheOrderOfTheDrawsDoesNotMatter) {
+  engine::HeadlessTarget target(device(), kSize);
+  engine::SceneRenderer renderer(device(), target);
+  engine::GpuScene lumbar(renderer, engine::load_scene(test::source_dir() / "assets/scenes/lumbar_section.json"));
+  engine::GpuScene block(renderer, engine::load_scene(test::source_dir() / "assets/scenes/tissue_block_task.json"));
+  engine::FrameParams params = lumbar.frame_params(nullptr);
+  const engine::FrameParams other = block.frame_params(nullptr);
+  std::erase_if(params.items, [](const engine::DrawItem& item) { return !item.sectioned; });
+  for (const engine::DrawItem& item : other.items)
+    if (item.sectioned) params.items.push_back(item);
+  params.items.back().transform = glm::translate(glm::mat4(1.0f), glm::vec3(0.01f, 0.005f, -0.01f)) * params.items.back().transform;
+  params.section = engine::Section{engine::Section::Mode::Translucent};
+  engine::RgbaImage forward, backward;
+  ASSERT_TRUE(renderer.draw(target, params, &forward));
+  std::reverse(params.items.begin(), params.items.end());
+  ASSERT_TRUE(renderer.draw(target, params, &backward));
+  int worst = 0;
+  size_t covered = 0;
+  const glm::ivec3 background(srgb_count(params.background.r), srgb_count(params.background.g), srgb_count(params.background.b));
+  for (int y = 0; y < int(kSize.height); ++y)
+    for (int x = 0; x < int(kSize.width); ++x) {
+      worst = std::max(worst, max_channel_difference(rgb(forward, x, y), rgb(backward, x, y)));
+      covered += rgb(forward, x, y) != background;
+    }
+  EXPECT_GT(covered, 15000u);
+  EXPECT_LE(worst, 1);
+}
 
 }  // namespace
 }  // namespace needle::test

@@ -40,15 +40,18 @@ TEST_F(SectionView, TheNeedleInsideTheSphereShowsInTheCutAndThroughTheTranslucen
   engine::GpuScene scene(renderer, engine::load_scene(test::source_dir() / "assets/scenes/penetrable_sphere.json"));
   const engine::NeedleLoad needle = sphere_load(engine::NeedleContact::Inserted, {-1.0, 0.0, 0.35}, 0.03);
   std::map<std::string, engine::RgbaImage> images;
-  for (const char* mode : {"none", "cut", "translucent"}) {
+  for (const char* mode : {"none", "cut", "translucent", "screen_door"}) {
     engine::FrameParams params = scene.frame_params(&needle);
     if (std::string(mode) == "cut") params.section = engine::section_through_needle(params.camera, &needle);
-    if (std::string(mode) == "translucent")
+    if (std::string(mode) == "translucent" || std::string(mode) == "screen_door")
       params.section = engine::section_through_needle(params.camera, &needle, engine::Section::Mode::Translucent);
+    renderer.set_translucency(std::string(mode) == "screen_door" ? engine::Translucency::ScreenDoor
+                                                                 : engine::Translucency::Blended);
     ASSERT_TRUE(renderer.draw(target, params, &images[mode]));
   }
   EXPECT_TRUE(matches_golden(images["cut"], "section_sphere_cut"));
   EXPECT_TRUE(matches_golden(images["translucent"], "section_sphere_translucent"));
+  EXPECT_TRUE(matches_golden(images["screen_door"], "section_sphere_screen_door"));
   // 2 cm in, the shaft is inside the tissue: hidden in the plain view, seen in both section modes.
   const glm::vec3 inside = glm::vec3(needle.tip - 0.01 * needle.axis);
   const std::optional<glm::vec2> at = engine::project_to_screen(scene.scene().camera, kSize, inside);
@@ -56,6 +59,7 @@ TEST_F(SectionView, TheNeedleInsideTheSphereShowsInTheCutAndThroughTheTranslucen
   EXPECT_GT(darkest_red(images["none"], *at), 150);
   EXPECT_LT(darkest_red(images["cut"], *at), 120);
   EXPECT_LT(darkest_red(images["translucent"], *at), 120);
+  EXPECT_LT(darkest_red(images["screen_door"], *at), 120);
 }
 
 TEST_F(SectionView, TheCutShowsEachLayerOfTheBlockInItsColour) {
@@ -169,6 +173,13 @@ TEST_P(TaskSectionView, TheNeedleShowsInTheCutOfTheTasksLayers) {
   params.section = section;
   ASSERT_TRUE(renderer.draw(target, params, &cut));
   EXPECT_TRUE(matches_golden(cut, c.golden));
+  if (c.in_plane) {  // and see-through, the needle inside the layers
+    engine::FrameParams translucent = params;
+    translucent.section->mode = engine::Section::Mode::Translucent;
+    engine::RgbaImage image;
+    ASSERT_TRUE(renderer.draw(target, translucent, &image));
+    EXPECT_TRUE(matches_golden(image, std::string(c.golden).replace(std::string(c.golden).find("in_plane"), 8, "translucent")));
+  }
   // In plane, 10 mm above the tip; out of plane, where the shaft crosses the plane: inside the
   // tissue, so hidden in the plain view and dark (the needle) in the cut.
   const glm::dvec3 shown = c.in_plane ? needle.tip - 0.01 * needle.axis
