@@ -17,11 +17,12 @@ layout(location = 0) out vec4 out_color;
 layout(constant_id = 0) const bool kMayDiscard = true;  // false: opaque, unmasked, unsectioned
 
 void main() {
+  vec3 n = normalize(in_world_normal);
+  if (!gl_FrontFacing) n = -n;  // double-sided materials light their back faces too
+  float added_roughness2 = normal_roughness2(n);
   vec4 base = base_color();
   if (kMayDiscard && material.params.x >= 0.0 && base.a < material.params.x) discard;
 
-  vec3 n = normalize(in_world_normal);
-  if (!gl_FrontFacing) n = -n;  // double-sided materials light their back faces too
   // The section view (docs/RENDERING.md). Cut: what lies beyond the plane is discarded (the caps
   // are drawn after, engine/passes/section_caps.hpp). Screen door: a fixed 4x4 ordered dither
   // keeps 5 fragments of 16 (no sorting, the needle shows through).
@@ -32,5 +33,5 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy) & 3;
     if ((bayer[p.y * 4 + p.x] + 0.5) / 16.0 > 0.34) discard;
   }
-  out_color = vec4(srgb_encode(lit(base.rgb, n, in_world_position)), base.a);
+  out_color = vec4(srgb_encode(lit(base.rgb, n, in_world_position, added_roughness2)), base.a);
 }

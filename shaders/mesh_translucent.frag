@@ -24,7 +24,7 @@ layout(constant_id = 2) const float kAlpha = 0.25;
 void main() {
   vec3 n = normalize(in_world_normal);
   if (!gl_FrontFacing) n = -n;
-  vec3 color = srgb_encode(lit(base_color().rgb, n, in_world_position));
+  vec3 color = srgb_encode(lit(base_color().rgb, n, in_world_position, normal_roughness2(n)));
   // The paper's equation (10): nearer fragments weigh more, so the nearest layer's colour leads.
   float z = gl_FragCoord.z;
   float weight = kAlpha * max(1e-2, 3e3 * (1.0 - z) * (1.0 - z) * (1.0 - z));

@@ -30,7 +30,8 @@ inline double srgb_decode(int count) {
 
 // mesh.frag's colour of a surface of base colour `base` (linear) with material `m` at `point`,
 // unit normal `n` facing the camera, under `lights`: ambient + per light n·l (diffuse +
-// normalized Blinn-Phong specular), as sRGB counts.
+// normalized Blinn-Phong specular), as sRGB counts. Without the specular anti-aliasing, which
+// adds nothing where the normal hardly turns within a pixel (a flat face, a large sphere).
 inline glm::ivec3 lit_counts(const engine::Material& m, const glm::dvec3& base, const glm::dvec3& n,
                              const glm::dvec3& point, const engine::Camera& camera, const engine::Lights& lights) {
   const glm::dvec3 v = glm::normalize(glm::dvec3(camera.position) - point);
