@@ -6,7 +6,7 @@
 // compared with its eight neighbours inside the outline: one brighter than all of them, or
 // darker than all of them, by more than 48 counts of luma is isolated (a highlight that lit only
 // the pixel centres falling in it: a dotted streak; a piece of something else over the shaft: a
-// gap). None is allowed; without the specular anti-aliasing 6 of the 32 poses had 1 to 70 each.
+// gap). None is allowed; without the specular anti-aliasing 6 of the 32 poses have 1 to 70 each.
 // Geometry, not goldens: the same on any device.
 #include <gtest/gtest.h>
 

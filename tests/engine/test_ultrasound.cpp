@@ -77,9 +77,9 @@ TEST_F(UltrasoundTest, TheGpuScanLinesAreTheReferencesInTheLayeredBlock) {
 // along, slope 1:50) is one straight line of walls across the image, on the GPU and in the
 // reference: each line's wall depth on the straight line fitted through all of them within 5 µm
 // (the GPU's 2 µm against the reference, and its float), short of the tip, past which the lines
-// within the needle's radius meet its end. Taking, among the shaft's points within
-// its radius of the line, the one nearest the image plane made the wall jump by 2 r tan(30°) =
-// 0.9 mm from one band edge to the other where the needle crossed the plane: the kink.
+// within the needle's radius meet its end. Taking, among the shaft's points within its radius
+// of the line, the one nearest the image plane instead, the wall jumps by 2 r tan(30°) = 0.9 mm
+// from one end of that band to the other where the needle crosses the plane: a kink.
 TEST_F(UltrasoundTest, TheNeedlesLineIsStraightWhereItCrossesTheImagePlane) {
   engine::UltrasoundView view(device(), block_scene());
   const engine::UltrasoundProbe probe = block_probe();
