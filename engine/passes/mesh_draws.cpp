@@ -1,6 +1,7 @@
 #include "engine/passes/mesh_draws.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "engine/passes/frame_uniforms.hpp"
 #include "engine/passes/gpu_model.hpp"
@@ -23,6 +24,16 @@ Sphere world_sphere(const Sphere& model_space, const glm::mat4& model_to_world) 
   const glm::mat3 linear(model_to_world);
   const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
   return {glm::dvec3(model_to_world * glm::vec4(glm::vec3(model_space.center), 1.0f)), model_space.radius * scale};
+}
+
+Bounds world_box(const Bounds& b, const glm::mat4& model_to_world) {
+  Bounds out{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y, (corner & 4) ? b.max.z : b.min.z);
+    const glm::vec3 w(model_to_world * glm::vec4(p, 1.0f));
+    out.min = glm::min(out.min, w), out.max = glm::max(out.max, w);
+  }
+  return out;
 }
 
 glm::vec4 section_plane(const Section& section) {
@@ -54,10 +65,18 @@ MeshDraws collect_draws(const FrameParams& params, VkExtent2D extent, const Draw
           : cut && sectioned   ? (options.cull_cut_away ? ranges_kept_by_cut(level.chunks, transform, cut_plane, item.moved) : all)
           : !m.double_sided    ? visible_ranges(level.chunks, transform, params.camera.position, item.moved)
                                : all;
+      Bounds reach;
+      if (sectioned) {
+        reach = world_box(p.box, transform);
+        for (const Sphere& s : item.moved) {
+          reach.min = glm::min(reach.min, glm::vec3(s.center - s.radius));
+          reach.max = glm::max(reach.max, glm::vec3(s.center + s.radius));
+        }
+      }
       (translucent && sectioned           ? draws.translucent
        : m.alpha_mode == AlphaMode::Blend ? draws.blended
                                           : draws.opaque)
-          .push_back({item.model, instance.primitive, transform, depth, std::move(ranges), sectioned});
+          .push_back({item.model, instance.primitive, transform, depth, std::move(ranges), sectioned, reach});
     }
   }
   std::sort(draws.blended.begin(), draws.blended.end(), [](const MeshDraw& a, const MeshDraw& b) { return a.depth > b.depth; });

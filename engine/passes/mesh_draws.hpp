@@ -29,6 +29,9 @@ struct MeshDraw {
   float depth = 0.0f;              // distance from the camera, for back-to-front blending
   std::vector<IndexRange> ranges;  // of the primitive's indices
   bool sectioned = false;          // cut or made see-through by the frame's section
+  // Sectioned: where its vertices may lie, world space: its rest box and the spheres where a
+  // deformation may have moved them (DrawItem::moved).
+  Bounds reach;
 };
 
 struct MeshDraws {
@@ -51,6 +54,8 @@ MeshDraws collect_draws(const FrameParams& params, VkExtent2D extent, const Draw
 
 // (a bounding sphere in model space, the model's transform) => one holding it in world space.
 Sphere world_sphere(const Sphere& model_space, const glm::mat4& model_to_world);
+// (a box in model space, the model's transform) => the axis-aligned box holding it in world space.
+Bounds world_box(const Bounds& model_space, const glm::mat4& model_to_world);
 
 // Binds `draw`'s material set and pushes its transform for a pipeline of `layout` (MeshPipelines').
 void bind_material_and_transform(VkCommandBuffer cmd, const MeshDraw& draw, VkPipelineLayout layout);

@@ -252,7 +252,7 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
   triangles_drawn_ = record_draws(cmd, draws.opaque, false, pipelines_, options_);
   if (params.section && params.section->mode == Section::Mode::Cut) {
     if (!caps_) caps_ = std::make_unique<SectionCaps>(context_, pipelines_, render_pass_, attachments_.samples, uint32_t(kFramesInFlight));
-    triangles_drawn_ += caps_->record(cmd, slot, draws.opaque, *params.section, extent);
+    triangles_drawn_ += caps_->record(cmd, slot, draws.opaque, *params.section, params.camera, extent);
   }
   triangles_drawn_ += record_draws(cmd, draws.blended, true, pipelines_, options_);
   if (translucent) {

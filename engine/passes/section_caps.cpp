@@ -1,10 +1,13 @@
 #include "engine/passes/section_caps.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "engine/passes/gpu_model.hpp"
 #include "engine/passes/mesh_pipelines.hpp"
+#include "engine/screen_projection.hpp"
 #include "engine/vulkan/pipelines.hpp"
 #include "engine/vulkan/vulkan_context.hpp"
 #include "spirv/mesh_frag.h"
@@ -18,6 +21,27 @@ constexpr uint32_t kStencilBits = 8;
 
 VkStencilOpState stencil_op(VkStencilOp pass, VkCompareOp compare) {
   return {VK_STENCIL_OP_KEEP, pass, VK_STENCIL_OP_KEEP, compare, 0, 0, 0};  // masks and reference: dynamic
+}
+
+// The pixels of `extent` where `box` (world space) can show: its corners' projections' bounding
+// rectangle, the whole extent when a corner lies behind the camera.
+VkRect2D screen_rect(const Bounds& box, const Camera& camera, VkExtent2D extent) {
+  const glm::mat4 view_proj = view_projection(camera, {extent.width, extent.height});
+  glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec4 clip = view_proj * glm::vec4((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
+                                                 (corner & 4) ? box.max.z : box.min.z, 1.0f);
+    if (clip.w <= 0.0f) return {{0, 0}, extent};
+    // The viewport flips y: NDC y up is the framebuffer's row 0 at the top.
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    const glm::vec2 px((ndc.x + 1.0f) * 0.5f * float(extent.width), (1.0f - ndc.y) * 0.5f * float(extent.height));
+    lo = glm::min(lo, px), hi = glm::max(hi, px);
+  }
+  const int32_t x0 = std::clamp(int32_t(std::floor(lo.x)) - 1, 0, int32_t(extent.width));
+  const int32_t y0 = std::clamp(int32_t(std::floor(lo.y)) - 1, 0, int32_t(extent.height));
+  const int32_t x1 = std::clamp(int32_t(std::ceil(hi.x)) + 1, 0, int32_t(extent.width));
+  const int32_t y1 = std::clamp(int32_t(std::ceil(hi.y)) + 1, 0, int32_t(extent.height));
+  return {{x0, y0}, {uint32_t(x1 - x0), uint32_t(y1 - y0)}};
 }
 
 }  // namespace
@@ -87,7 +111,7 @@ SectionCaps::~SectionCaps() {
 }
 
 size_t SectionCaps::record(VkCommandBuffer cmd, uint32_t slot, const std::vector<MeshDraw>& draws, const Section& section,
-                           VkExtent2D extent) {
+                           const Camera& camera, VkExtent2D extent) {
   std::vector<const MeshDraw*> cut;
   std::vector<Sphere> bounds;
   for (const MeshDraw& d : draws) {
@@ -108,6 +132,9 @@ size_t SectionCaps::record(VkCommandBuffer cmd, uint32_t slot, const std::vector
       const VkClearRect rect{{{0, 0}, extent}, 0, 1};
       vkCmdClearAttachments(cmd, 1, &clear, 1, &rect);
     }
+    const VkRect2D scissor = screen_rect(d.reach, camera, extent);
+    if (scissor.extent.width == 0 || scissor.extent.height == 0) continue;
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, stencil_);
     vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, bit);
     vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, bit);
@@ -127,6 +154,8 @@ size_t SectionCaps::record(VkCommandBuffer cmd, uint32_t slot, const std::vector
     vkCmdDraw(cmd, uint32_t(quad.size()), 1, 0, 0);
     triangles += 2;
   }
+  const VkRect2D whole{{0, 0}, extent};
+  vkCmdSetScissor(cmd, 0, 1, &whole);
   return triangles;
 }
 

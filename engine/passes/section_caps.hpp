@@ -38,10 +38,12 @@ class SectionCaps {
   SectionCaps(const SectionCaps&) = delete;
   SectionCaps& operator=(const SectionCaps&) = delete;
 
-  // Records the caps of the sectioned draws among `draws` (a Cut section's), inside the scene's
-  // render pass over `extent` with the frame's set bound; returns the triangles drawn.
+  // Records the caps of the sectioned draws among `draws` (a Cut section's) seen by `camera`,
+  // inside the scene's render pass over `extent` with the frame's set bound; returns the
+  // triangles drawn. Each structure's two draws are scissored to where its reach projects, so a
+  // structure costs the pixels it covers, not the whole cut's.
   size_t record(VkCommandBuffer cmd, uint32_t slot, const std::vector<MeshDraw>& draws, const Section& section,
-                VkExtent2D extent);
+                const Camera& camera, VkExtent2D extent);
 
  private:
   VkDevice device_;
