@@ -18,6 +18,7 @@
 #include "engine/gpu_scene.hpp"
 #include "engine/render_target.hpp"
 #include "picture_geometry.hpp"
+#include "task_sections.hpp"
 #include "tests/support/test_paths.hpp"
 #include "vulkan_fixture.hpp"
 
@@ -244,45 +245,25 @@ TEST_F(CutSpeckles, TheDeformedLayersShowNoSpeckleOfAnother) {
   EXPECT_EQ(speckles, 0) << speckles << " pixels of one layer's cut among another's";
 }
 
-// The needle of a task's section view (as TaskSectionView sets them up) in the cut: along its
-// projected axis, from the end of its tip's cone to where it leaves the view of the cut (in
-// plane: 2 cm above the skin; out of plane: 1 mm before it crosses the plane, beyond which the
-// cut face hides it), every pixel is the needle's as the needle alone draws it: one continuous
-// shaft, no piece of it hidden by a cap or another structure.
-struct NeedleCase {
-  const char* scene;
-  bool in_plane;
-  double entry_y;  // out of plane: where the needle enters, in front of y = 0 (m)
-  double depth;    // along the needle from the entry (m)
-};
-void PrintTo(const NeedleCase& c, std::ostream* os) { *os << c.scene << (c.in_plane ? " in plane" : " out of plane"); }
-
-class NeedleInTheCut : public VulkanTest, public ::testing::WithParamInterface<NeedleCase> {};
+// The needle of a task's section view (task_sections.hpp) in the cut: along its projected axis,
+// from the end of its tip's cone to where it leaves the view of the cut (in plane: 2 cm above the
+// skin; out of plane: 1 mm before it crosses the plane, beyond which the cut face hides it),
+// every pixel is the needle's as the needle alone draws it: one continuous shaft, no piece of it
+// hidden by a cap or another structure.
+class NeedleInTheCut : public VulkanTest, public ::testing::WithParamInterface<TaskSection> {};
 
 TEST_P(NeedleInTheCut, TheShaftIsOneContinuousPiece) {
-  const NeedleCase& c = GetParam();
+  const TaskSection& c = GetParam();
   constexpr engine::Extent kLarge{640, 480};
   constexpr double kTipCone_m = 0.004;  // asset-gen's needle: the tip's cone, then the shaft
   engine::HeadlessTarget target(device(), kLarge);
   engine::SceneRenderer renderer(device(), target);
   engine::GpuScene scene(renderer, engine::load_scene(test::source_dir() / "assets/scenes" / c.scene));
-  engine::NeedleLoad needle;
-  needle.contact = engine::NeedleContact::Inserted;
-  needle.surface_point = {0.33, c.in_plane ? 0.0 : c.entry_y, 0.07};
-  needle.axis = c.in_plane ? glm::dvec3(0.0, 0.0, -1.0) : glm::dvec3(0.0, 0.70710678, -0.70710678);
-  needle.tip = needle.surface_point + c.depth * needle.axis;
-  engine::FrameParams params = scene.frame_params(&needle);
-  params.camera.position = params.camera.target + 0.6f * (params.camera.position - params.camera.target);
+  const engine::NeedleLoad needle = task_needle(c);
+  engine::FrameParams params = task_frame(scene, needle);
   engine::FrameParams alone = params;
   std::erase_if(alone.items, [](const engine::DrawItem& item) { return item.sectioned; });
-  engine::Section section;
-  if (c.in_plane) {
-    section = engine::section_through_needle(params.camera, &needle);
-  } else {
-    section.point = glm::vec3(0.33f, 0.0f, 0.07f);
-    section.normal = glm::vec3(0.0f, params.camera.position.y > params.camera.target.y ? 1.0f : -1.0f, 0.0f);
-  }
-  params.section = section;
+  params.section = task_section(c, params.camera, needle);
   engine::RgbaImage cut, reference;
   ASSERT_TRUE(renderer.draw(target, params, &cut));
   ASSERT_TRUE(renderer.draw(target, alone, &reference));
@@ -306,15 +287,7 @@ TEST_P(NeedleInTheCut, TheShaftIsOneContinuousPiece) {
   EXPECT_EQ(gaps, 0) << gaps << " of " << steps + 1 << " points of the shaft not the needle's (worst " << worst << ")";
 }
 
-INSTANTIATE_TEST_SUITE_P(Tasks, NeedleInTheCut,
-                         ::testing::Values(NeedleCase{"tissue_block_task.json", true, 0.0, 0.034},
-                                           NeedleCase{"tissue_block_task.json", false, -0.02, 0.035},
-                                           NeedleCase{"lumbar_section.json", true, 0.0, 0.05},
-                                           NeedleCase{"lumbar_section.json", false, -0.03, 0.05}),
-                         [](const ::testing::TestParamInfo<NeedleCase>& info) {
-                           std::string name = std::string(info.param.scene).substr(0, std::string(info.param.scene).find('.'));
-                           return name + (info.param.in_plane ? "_in_plane" : "_out_of_plane");
-                         });
+INSTANTIATE_TEST_SUITE_P(Tasks, NeedleInTheCut, kTaskSections, task_section_name);
 
 // The translucent mode against its closed form (weighted blended transparency of one layer is
 // exact): where a ray meets the thesis sphere's front once, the pixel is kTranslucentAlpha of the
