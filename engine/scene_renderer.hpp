@@ -65,6 +65,12 @@ struct FrameParams {
   std::optional<Section> section;  // the section view, when set
 };
 
+// How the section's Translucent mode draws the tissue (docs/RENDERING.md, "Section view").
+enum class Translucency {
+  Blended,     // weighted blended order-independent transparency: see-through tissue
+  ScreenDoor,  // 5 of 16 fragments kept on a fixed dither: cheaper, coarse (docs/BENCHMARKS.md)
+};
+
 struct RendererSettings {
   // MSAA samples (1, 2, 4, 8): the highest count up to this that the device supports for colour
   // and depth together is used.
@@ -83,6 +89,7 @@ struct RendererSettings {
   // colour format the device samples with linear filtering (std::invalid_argument naming what is
   // missing). docs/RENDERING.md, "Render scale".
   float render_scale = 1.0f;
+  Translucency translucency = Translucency::Blended;
 };
 
 // What one pass of a frame cost, in milliseconds.
@@ -128,6 +135,8 @@ class SceneRenderer {
   float render_scale() const;
   // RendererSettings::cull_cut_away from the next frame on (for `bench frame --variants`).
   void set_cull_cut_away(bool on);
+  // RendererSettings::translucency from the next frame on.
+  void set_translucency(Translucency translucency);
   // Each draw uses the mesh shader specialized to what it needs (the default: no discards for
   // opaque unsectioned draws, no texture fetch for untextured materials); off, every draw uses
   // the general one, as before (for `bench frame --variants`). The same picture either way.

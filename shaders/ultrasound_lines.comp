@@ -29,16 +29,9 @@ vec2 needle_hit(vec3 origin) {
   float x0 = dot(tip, echo.lateral.xyz), z0 = dot(tip, echo.direction.xyz), e0 = dot(tip, echo.elevation.xyz);
   float al = dot(a, echo.lateral.xyz), ad = dot(a, echo.direction.xyz), ae = dot(a, echo.elevation.xyz);
   float r = echo.needle.x;
-  float t0 = 0.0, t1 = echo.needle_axis.w;
-  if (abs(al) < 1e-9) {
-    if (abs(x0) > r) return vec2(0.0);
-  } else {
-    float ta = (x0 - r) / al, tb = (x0 + r) / al;
-    t0 = max(t0, min(ta, tb));
-    t1 = min(t1, max(ta, tb));
-    if (t0 > t1) return vec2(0.0);
-  }
-  float t = abs(ae) > 1e-9 ? clamp(e0 / ae, t0, t1) : clamp(abs(al) < 1e-9 ? t0 : x0 / al, t0, t1);
+  float across2 = al * al + ae * ae;
+  float t = across2 > 1e-18 ? clamp((x0 * al + e0 * ae) / across2, 0.0, echo.needle_axis.w) : 0.0;
+  if (abs(x0 - t * al) > r) return vec2(0.0);
   float elevation = e0 - t * ae;
   float tilt = asin(min(1.0, abs(ad)));
   float weight = exp(-0.5 * elevation * elevation / (echo.needle.y * echo.needle.y)) * exp(-(tilt * tilt) / (echo.beam.w * echo.beam.w));

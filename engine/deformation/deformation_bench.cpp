@@ -5,7 +5,7 @@
 #include "engine/deformation/deformation_field.hpp"
 #include "engine/deformation/deformation_pass.hpp"
 #include "engine/gpu_device.hpp"
-#include "engine/vulkan/gpu_model.hpp"
+#include "engine/passes/gpu_model.hpp"
 #include "engine/deformation/vertex_grid.hpp"
 #include "engine/vulkan/vulkan_context.hpp"
 

@@ -13,7 +13,7 @@
 
 #include "engine/deformation/deformation_field.hpp"
 #include "engine/vulkan/gpu_buffer.hpp"
-#include "engine/vulkan/gpu_model.hpp"
+#include "engine/passes/gpu_model.hpp"
 #include "engine/deformation/vertex_grid.hpp"
 
 namespace needle::engine {

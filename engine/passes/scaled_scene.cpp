@@ -34,16 +34,7 @@ VkRenderPass make_upscale_pass(VkDevice device, VkFormat format) {
   dependency.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
   dependency.dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
   dependency.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-  info.attachmentCount = 1;
-  info.pAttachments = &color;
-  info.subpassCount = 1;
-  info.pSubpasses = &subpass;
-  info.dependencyCount = 1;
-  info.pDependencies = &dependency;
-  VkRenderPass pass;
-  VK_CHECK(vkCreateRenderPass(device, &info, nullptr, &pass));
-  return pass;
+  return make_render_pass(device, {color}, subpass, {dependency});
 }
 
 }  // namespace
@@ -88,7 +79,7 @@ void ScaledScene::ensure(VkExtent2D extent, VkRenderPass scene_pass, const Targe
     framebuffer_ = VK_NULL_HANDLE;
     color_ = GpuImage(context_, {extent, color_format_, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT});
     depth_ = GpuImage(context_, {extent, depth_format_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_SAMPLE_COUNT_1_BIT,
-                                 VK_IMAGE_ASPECT_DEPTH_BIT});
+                                 VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT});
     framebuffer_ = make_framebuffer(device_, scene_pass, {color_.view(), depth_.view()}, extent);
     quad_.set_image(color_.view());
   }

@@ -40,6 +40,7 @@ class ScaledScene {
   void ensure(VkExtent2D extent, VkRenderPass scene_pass, const TargetImages& target);
   VkFramebuffer framebuffer() const { return framebuffer_; }
   VkExtent2D extent() const { return color_.spec().extent; }
+  VkImageView depth_view() const { return depth_.view(); }
 
   // (the scene's colour in SHADER_READ_ONLY_OPTIMAL, written by the scene's pass) => target image
   // `image` holding the scene spread over all of it, in COLOR_ATTACHMENT_OPTIMAL for the overlay.

@@ -29,6 +29,7 @@ float SceneRenderer::render_scale() const { return pass_->render_scale(); }
 
 void SceneRenderer::set_cull_cut_away(bool on) { pass_->set_cull_cut_away(on); }
 void SceneRenderer::set_specialized_pipelines(bool on) { pass_->set_specialized_pipelines(on); }
+void SceneRenderer::set_translucency(Translucency translucency) { pass_->set_translucency(translucency); }
 
 std::string SceneRenderer::render_scale_unsupported(const RenderTarget& target) const {
   return ScaledScene::unsupported(pass_->context(), target.images(), pass_->samples());

@@ -49,8 +49,8 @@ std::vector<IndexRange> visible_ranges(const std::vector<TriangleChunk>& chunks,
                                        const glm::vec3& eye, const std::vector<Sphere>& moved);
 
 // The index ranges to draw of a mesh cut by the section view (Cut): the fragments where
-// plane.xyz · p + plane.w > 0 (world space, plane.xyz unit) are discarded and the back faces seen
-// through the opening drawn, so no chunk is culled for its facing; the chunks lying wholly on that
+// plane.xyz · p + plane.w > 0 (world space, plane.xyz unit) are discarded and every face of the
+// rest is drawn for the cap (section_caps.hpp), so no chunk is culled for its facing; the chunks lying wholly on that
 // side (their box, through `model_to_world`) are left out, except those touching a
 // `moved` sphere (world space), whose vertices may have left the rest mesh. Adjacent ones merged.
 std::vector<IndexRange> ranges_kept_by_cut(const std::vector<TriangleChunk>& chunks, const glm::mat4& model_to_world,

@@ -1,6 +1,7 @@
 #include "engine/passes/viewport_quad.hpp"
 
 #include <array>
+#include <vector>
 
 #include "engine/vulkan/pipelines.hpp"
 #include "engine/vulkan/vk_check.hpp"
@@ -9,16 +10,19 @@
 namespace needle::engine {
 
 ViewportQuad::ViewportQuad(VkDevice device, const uint32_t* frag, size_t frag_bytes, VkRenderPass render_pass,
-                           VkSampleCountFlagBits samples)
-    : device_(device) {
+                           VkSampleCountFlagBits samples, uint32_t images, bool blended)
+    : device_(device), images_(images) {
   VkSamplerCreateInfo sampler{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   sampler.magFilter = VK_FILTER_LINEAR;
   sampler.minFilter = VK_FILTER_LINEAR;
   sampler.addressModeU = sampler.addressModeV = sampler.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   VK_CHECK(vkCreateSampler(device_, &sampler, nullptr, &sampler_));
 
-  set_layout_ = descriptor_set_layout(device_, {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}});
-  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
+  std::vector<VkDescriptorSetLayoutBinding> bindings;
+  for (uint32_t b = 0; b < images_; ++b)
+    bindings.push_back({b, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+  set_layout_ = descriptor_set_layout(device_, bindings);
+  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, images_};
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pool_info.maxSets = 1;
   pool_info.poolSizeCount = 1;
@@ -46,9 +50,7 @@ ViewportQuad::ViewportQuad(VkDevice device, const uint32_t* frag, size_t frag_by
   VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
   multisample.rasterizationSamples = samples;
   VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-  VkPipelineColorBlendAttachmentState blend_attachment{};
-  blend_attachment.colorWriteMask =
-      VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  const VkPipelineColorBlendAttachmentState blend_attachment = color_writes(blended);
   const GraphicsPipelineStates states{{stages.begin(), stages.end()}, &vertex_input, &assembly, &raster, &multisample,
                                       &depth, &blend_attachment, pipeline_layout_, render_pass};
   const VkResult r = create_graphics_pipeline(device_, states, &pipeline_);
@@ -65,13 +67,14 @@ ViewportQuad::~ViewportQuad() {
   vkDestroySampler(device_, sampler_, nullptr);
 }
 
-void ViewportQuad::set_image(VkImageView view) {
-  VkDescriptorImageInfo image{sampler_, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+void ViewportQuad::set_images(const std::vector<VkImageView>& views) {
+  std::vector<VkDescriptorImageInfo> images;
+  for (VkImageView view : views) images.push_back({sampler_, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
   VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
   write.dstSet = set_;
-  write.descriptorCount = 1;
+  write.descriptorCount = uint32_t(images.size());
   write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-  write.pImageInfo = &image;
+  write.pImageInfo = images.data();
   vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
 }
 

@@ -6,7 +6,7 @@
 
 #include "engine/deformation/deformation_pass.hpp"
 #include "engine/gltf_loader.hpp"
-#include "engine/vulkan/gpu_model.hpp"
+#include "engine/passes/gpu_model.hpp"
 #include "engine/deformation/needle_pose.hpp"
 #include "engine/passes/scene_pass.hpp"
 

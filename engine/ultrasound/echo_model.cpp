@@ -178,19 +178,13 @@ std::optional<NeedleHit> needle_hit(const EchoScene& scene, const UltrasoundProb
   const double x0 = glm::dot(tip, probe.lateral), z0 = glm::dot(tip, probe.direction), e0 = glm::dot(tip, e);
   const double al = glm::dot(a, probe.lateral), ad = glm::dot(a, probe.direction), ae = glm::dot(a, e);
   const double r = scene.needle.radius_m, length = scene.needle.length_m;
-  // Where the shaft lies within its radius of the line, laterally.
-  double t0 = 0.0, t1 = length;
-  if (std::abs(al) < 1e-9) {
-    if (std::abs(x0) > r) return std::nullopt;
-  } else {
-    const double ta = (x0 - r) / al, tb = (x0 + r) / al;
-    t0 = std::max(t0, std::min(ta, tb));
-    t1 = std::min(t1, std::max(ta, tb));
-    if (t0 > t1) return std::nullopt;
-  }
-  // There, the point nearest the image plane; along the plane, the one nearest the line.
-  const double t = std::abs(ae) > 1e-9 ? std::clamp(e0 / ae, t0, t1)
-                                        : std::clamp(std::abs(al) < 1e-9 ? t0 : x0 / al, t0, t1);
+  // The shaft's point nearest the line in the plane across the beam (lateral, elevation): the
+  // nearest approach of two lines, continuous as the needle turns through the image plane and so
+  // one straight line of walls across the image. It echoes when it lies within its radius of the
+  // line laterally; the elevation beam weighs its distance from the image plane.
+  const double across2 = al * al + ae * ae;
+  const double t = across2 > 1e-18 ? std::clamp((x0 * al + e0 * ae) / across2, 0.0, length) : 0.0;
+  if (std::abs(x0 - t * al) > r) return std::nullopt;
   const double elevation = e0 - t * ae;
   const double sigma = probe.slice_thickness_m / 2.3548200450309493;  // FWHM → σ
   const double tilt = std::asin(std::min(1.0, std::abs(ad)));         // from the beam's normal plane

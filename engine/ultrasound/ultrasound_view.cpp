@@ -2,11 +2,11 @@
 #include <cmath>
 
 #include "engine/gpu_device.hpp"
-#include "engine/passes/scene_pass.hpp"
 #include "engine/ultrasound.hpp"
 #include "engine/ultrasound/echo_model.hpp"
 #include "engine/ultrasound/ultrasound_display.hpp"
 #include "engine/ultrasound/ultrasound_pass.hpp"
+#include "engine/vulkan/command_buffer.hpp"
 #include "engine/vulkan/vulkan_context.hpp"
 
 namespace needle::engine {

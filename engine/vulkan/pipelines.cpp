@@ -47,14 +47,29 @@ VkPipeline compute_pipeline(VkDevice device, VkPipelineLayout layout, const uint
   return pipeline;
 }
 
+VkPipelineColorBlendAttachmentState color_writes(bool blended) {
+  VkPipelineColorBlendAttachmentState blend{};
+  blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  if (!blended) return blend;
+  blend.blendEnable = VK_TRUE;
+  blend.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+  blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  blend.colorBlendOp = VK_BLEND_OP_ADD;
+  blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+  blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  blend.alphaBlendOp = VK_BLEND_OP_ADD;
+  return blend;
+}
+
 VkResult create_graphics_pipeline(VkDevice device, const GraphicsPipelineStates& s, VkPipeline* pipeline) {
   VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
   viewport.viewportCount = 1;
   viewport.scissorCount = 1;
   VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-  blend.attachmentCount = 1;
+  blend.attachmentCount = s.color_attachments;
   blend.pAttachments = s.blend_attachment;
-  const std::array<VkDynamicState, 2> dynamic_states{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  std::vector<VkDynamicState> dynamic_states{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  dynamic_states.insert(dynamic_states.end(), s.more_dynamic_states.begin(), s.more_dynamic_states.end());
   VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
   dynamic.dynamicStateCount = uint32_t(dynamic_states.size());
   dynamic.pDynamicStates = dynamic_states.data();
@@ -72,6 +87,20 @@ VkResult create_graphics_pipeline(VkDevice device, const GraphicsPipelineStates&
   info.layout = s.layout;
   info.renderPass = s.render_pass;
   return vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, pipeline);
+}
+
+VkRenderPass make_render_pass(VkDevice device, const std::vector<VkAttachmentDescription>& attachments,
+                              const VkSubpassDescription& subpass, const std::vector<VkSubpassDependency>& dependencies) {
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.attachmentCount = uint32_t(attachments.size());
+  info.pAttachments = attachments.data();
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = uint32_t(dependencies.size());
+  info.pDependencies = dependencies.data();
+  VkRenderPass pass = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateRenderPass(device, &info, nullptr, &pass));
+  return pass;
 }
 
 VkFramebuffer make_framebuffer(VkDevice device, VkRenderPass render_pass, const std::vector<VkImageView>& attachments,

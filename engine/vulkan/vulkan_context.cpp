@@ -259,7 +259,8 @@ double VulkanContext::timestamp_period_ns() const {
 
 VkSampleCountFlagBits VulkanContext::max_msaa(int wanted) const {
   VkSampleCountFlags supported = properties_.limits.framebufferColorSampleCounts &
-                                 properties_.limits.framebufferDepthSampleCounts;
+                                 properties_.limits.framebufferDepthSampleCounts &
+                                 properties_.limits.framebufferStencilSampleCounts;
   for (int s = wanted; s > 1; s >>= 1) {
     if (supported & s) return static_cast<VkSampleCountFlagBits>(s);
   }

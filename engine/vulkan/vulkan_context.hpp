@@ -45,7 +45,7 @@ class VulkanContext {
   bool imports_host_memory() const { return imports_host_memory_; }
   // shaderStorageImageExtendedFormats is enabled (when the device offers it).
   bool storage_image_extended_formats() const { return storage_image_extended_formats_; }
-  // Highest sample count ≤ wanted supported for colour and depth attachments together.
+  // Highest sample count ≤ wanted supported for colour, depth and stencil attachments together.
   VkSampleCountFlagBits max_msaa(int wanted) const;
 
   // Records with `record` into a one-time command buffer, submits, and waits.

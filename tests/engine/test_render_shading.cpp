@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "engine/offscreen.hpp"
+#include "picture_geometry.hpp"
 #include "vulkan_fixture.hpp"
 
 namespace needle::test {
@@ -18,13 +19,6 @@ constexpr engine::Extent kSize{64, 48};
 // mesh.frag's specular term with n = l = v, roughness 1 (shininess 0), metallic 0:
 // F0 * (shininess + 8) / (8 pi) with F0 = 0.04.
 constexpr double kHeadOnSpecular = 0.04 * 8.0 / 25.1327;
-
-// IEC 61966-2-1 sRGB encoding of a linear value, as an 8-bit count.
-int srgb_count(double linear) {
-  linear = std::clamp(linear, 0.0, 1.0);
-  double encoded = linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
-  return int(std::lround(encoded * 255.0));
-}
 
 // A square of side 2*half in the plane z = z0, facing +z (counter-clockwise seen from +z).
 void add_quad(Model& model, float z0, float half, const Material& material) {

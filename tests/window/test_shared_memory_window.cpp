@@ -7,8 +7,8 @@
 
 #include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
-#include "engine/passes/scene_pass.hpp"  // CommandBuffer: the overlay's command buffer
 #include "engine/render_target.hpp"
+#include "engine/vulkan/command_buffer.hpp"  // the overlay's command buffer
 #include "engine/window.hpp"
 #include "window_frames.hpp"
 

@@ -58,7 +58,7 @@ tinygltf::Model make_tissue_block() {
   constexpr float half = 0.05f;  // m: a 10 cm square block
   // The layers dimple under the needle (docs/DEFORMATION.md): quads of at most 2 mm, so that a
   // dimple of a few millimetres has vertices. The bone plate too, although rigid: faces that touch
-  // must be triangulated alike, or the section view's caps fight in depth where they meet.
+  // are triangulated alike, so the deformation moves them alike and neither shows through the other.
   constexpr float cell = 0.002f;
   GltfBuilder b("tissue_block.bin");
   const int skin_texture = b.add_texture("tissue_block_skin.png", 64, 64, skin_texels(64));

@@ -80,6 +80,7 @@ struct Variant {
   bool specialized = true;     // specialized=off: every draw with the general mesh shader (to measure the specializing)
   std::optional<engine::WindowTarget::Presentation> presentation;  // present=...; none: the window's own
   std::optional<uint32_t> sweep_frames;  // sweep=N: the ultrasound image made over N frames; none: the window's own
+  engine::Translucency translucency = engine::Translucency::Blended;  // translucency=screen_door: the dither
 };
 
 std::vector<Variant> parse_variants(const std::string& list) {
@@ -114,9 +115,12 @@ std::vector<Variant> parse_variants(const std::string& list) {
         v.cut_culling = false;
       } else if (setting == "specialized=off") {
         v.specialized = false;
+      } else if (setting == "translucency=screen_door") {
+        v.translucency = engine::Translucency::ScreenDoor;
       } else {
         throw UsageError("--variants: unknown setting '" + setting +
-                         "' (default, scale=S, cut_culling=off, specialized=off, present=fifo|mailbox|immediate|shm, sweep=N)");
+                         "' (default, scale=S, cut_culling=off, specialized=off, translucency=screen_door, "
+                         "present=fifo|mailbox|immediate|shm, sweep=N)");
       }
     }
     variants.push_back(std::move(v));
@@ -187,6 +191,7 @@ std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget&
     frame.set_fixed_render_scale(options.variants[variant].scale ? options.variants[variant].scale : product_scale);
     frame.renderer().set_cull_cut_away(options.variants[variant].cut_culling);
     frame.renderer().set_specialized_pipelines(options.variants[variant].specialized);
+    frame.renderer().set_translucency(options.variants[variant].translucency);
     const std::optional<engine::WindowTarget::Presentation> presentation =
         options.variants[variant].presentation ? options.variants[variant].presentation : product_presentation;
     if (ultrasound) ultrasound->set_sweep_frames(options.variants[variant].sweep_frames.value_or(app::UltrasoundWindow::kSweepFrames));
@@ -229,9 +234,13 @@ int run_bench_frame(ArgList& args) {
   args.finish();
   if (options.frames < 10 || options.warmup < 0) throw UsageError("--frames: at least 10; --warmup: 0 or more");
   const bool section_view = views.find("section") != std::string::npos;
+  const bool translucent_view = views.find("translucent") != std::string::npos;
   const bool ultrasound_view = views.find("ultrasound") != std::string::npos;
-  if (views != "none" && views != "section" && views != "ultrasound" && views != "section,ultrasound" && views != "ultrasound,section")
-    throw UsageError("--views: expected none, section, ultrasound or section,ultrasound, got '" + views + "'");
+  if (views != "none" && views != "section" && views != "translucent" && views != "ultrasound" &&
+      views != "section,ultrasound" && views != "ultrasound,section" && views != "translucent,ultrasound" &&
+      views != "ultrasound,translucent")
+    throw UsageError("--views: expected none, section, translucent, ultrasound or one of the two sections with "
+                     "ultrasound, got '" + views + "'");
   if (ultrasound_view)
     for (const Content& c : contents)
       if (c.task.empty()) throw UsageError("--views ultrasound: " + c.name + " is no task (the ultrasound images a task's layers)");
@@ -284,6 +293,7 @@ int run_bench_frame(ArgList& args) {
           if (session) show.fixed_section = app::task_section(session->task(), engine::Section::Mode::Cut);
           ui::ViewState view;
           if (section_view) view.section = engine::Section::Mode::Cut;
+          if (translucent_view) view.section = engine::Section::Mode::Translucent;
           view.ultrasound = view.has_ultrasound = ultrasound_view;
           const app::FrameContent shown = app::with_views(show, view, frame.renderer(), target);
           const std::vector<FrameSample> samples =
@@ -341,7 +351,7 @@ const CommandRegistrar reg{
     {"bench frame",
      "needle-sim bench frame [--json FILE] [--contents penetrable_sphere,rigid_sphere,tissue:400]\n"
      "                       [--sizes 1280x720,1920x1080] [--targets window,offscreen] [--frames N] [--warmup N]\n"
-     "                       [--msaa N] [--no-timestamps] [--views none|section|ultrasound|section,ultrasound]\n"
+     "                       [--msaa N] [--no-timestamps] [--views none|section|translucent|ultrasound|section,ultrasound]\n"
      "                       [--render-scale auto|S] [--variants default;scale=S...]\n"
      "  --json FILE      also write the rows as JSON (keys: content, target, size, frame_ms_median, frame_ms_p95,\n"
      "                   passes: name -> median ms, ...)\n"
@@ -355,7 +365,8 @@ const CommandRegistrar reg{
      "  --no-timestamps  no device timings; otherwise frames with and without timestamps alternate in blocks\n"
      "                   of 8, the frame times are those without, the device times those with\n"
      "  --views LIST     the views open as in the window (default none): the section view cut through the needle\n"
-     "                   (or the task's plane), the ultrasound window with its 256 x 512 image swept over two\n"
+     "                   (or the task's plane), or translucent (the tissue see-through), the ultrasound window\n"
+     "                   with its 256 x 512 image swept over two\n"
      "                   frames, half its lines a frame, as the window does (its passes are in deformation_*, the\n"
      "                   work recorded before the scene's pass); key views\n"
      "  --render-scale X the frame's render scale, as run's (default auto: lowered on a CPU device while the\n"
@@ -364,7 +375,8 @@ const CommandRegistrar reg{
      "                   ',' between the settings of one: default (the frame's own), scale=S (a fixed render scale),\n"
      "                   cut_culling=off (the section's cut-away chunks drawn, as before they were culled),\n"
      "                   specialized=off (every draw with the general mesh shader, its discards and texture\n"
-     "                   fetch run masked, as before),\n"
+     "                   fetch run masked, as before), translucency=screen_door (the translucent view's\n"
+     "                   tissue on a dither instead of blended),\n"
      "                   present=fifo|mailbox|immediate (the window's swapchain and its present mode) or\n"
      "                   present=shm (a CPU device's frames through X11 shared memory); default: the window's own\n"
      "                   (shm where it is offered, else fifo; the window's line says which),\n"

@@ -1,4 +1,4 @@
-#include "engine/vulkan/gpu_model.hpp"
+#include "engine/passes/gpu_model.hpp"
 
 #include <array>
 #include <cstring>
@@ -36,6 +36,7 @@ GpuPrimitive upload_primitive(const VulkanContext& context, const Primitive& p) 
   glm::vec3 lo(p.vertices[0].position), hi = lo;
   for (const MeshVertex& v : p.vertices) lo = glm::min(lo, v.position), hi = glm::max(hi, v.position);
   gpu.bounds = {glm::dvec3((lo + hi) * 0.5f), double(glm::length(hi - lo) * 0.5f)};
+  gpu.box = {lo, hi};
   gpu.indices = GpuBuffer::device_local_with_data(context, all.data(), all.size() * sizeof(uint32_t),
                                                   VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
   return gpu;

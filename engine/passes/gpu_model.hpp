@@ -38,6 +38,7 @@ struct GpuPrimitive {
   uint32_t index_count = 0;  // of the full mesh
   std::vector<GpuLevel> levels;  // the full mesh, then Primitive::coarser_indices
   Sphere bounds;  // of the rest vertices, model space: how big the mesh looks, to choose a level
+  Bounds box;     // of the rest vertices, model space
 };
 
 // Uploads one primitive's vertices and indices to device-local buffers.
