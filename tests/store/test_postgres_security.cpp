@@ -63,9 +63,9 @@ TEST(PostgresRoles, AStationCannotSeeOrAlterAnotherStationsSessions) {
   EXPECT_EQ(b_raw.query("UPDATE sessions SET score = 100 WHERE id = ?", {a_done}, "").changes, 0);
   EXPECT_NE(message_of([&] { b_raw.query("DELETE FROM sessions WHERE id = ?", {a_done}, ""); }).find("permission denied"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { b_raw.query("INSERT INTO metrics VALUES (?, -1, 'forged', 1)", {a_done}, ""); })
-                .find("row-level security"),
-            std::string::npos);
+  const std::string forged = message_of([&] { b_raw.query("INSERT INTO metrics VALUES (?, -1, 'forged', 1)", {a_done}, ""); });
+  EXPECT_TRUE(forged.find("row-level security") != std::string::npos || forged.find("permission denied") != std::string::npos)
+      << forged;
   // Nor insert a session in another station's name.
   EXPECT_NE(message_of([&] { b.begin_session("ben", small_task(), "sim", "", "station-a"); }).find("row-level security"),
             std::string::npos);
