@@ -38,14 +38,15 @@ std::string with_folder(const fs::path& location) {
   return location.string();
 }
 
-// (options) => the store the session begins in: the one named, or, when that is a server that does
-// not answer (postgres_server_unreachable), this station's own file, with `offline` saying why (the
-// session is kept there for sync when it ends). Any other failure is an error, as before.
+// (options) => the store the session begins in: the one named, or, when that is a server that
+// cannot be reached at a known host (refused, or no answer within the connect timeout:
+// training::ServerUnreachable), this station's own file, with `offline` saying why (the session is
+// kept there for sync when it ends). Any other failure (an unknown host, a certificate or password
+// refused, a database the server lacks) is an error before the run.
 std::unique_ptr<training::SessionStore> open_store(const TaskSessionOptions& options, std::string& offline) {
   try {
     return std::make_unique<training::SessionStore>(with_folder(options.db));
-  } catch (const training::SessionStoreError& e) {
-    if (!training::is_postgres_uri(options.db.string()) || !training::postgres_server_unreachable(options.db.string())) throw;
+  } catch (const training::ServerUnreachable& e) {
     offline = e.what();
     return std::make_unique<training::SessionStore>(with_folder(local_db(options)));
   }
