@@ -12,6 +12,7 @@
 #include "haptics/realtime/task_space_step.hpp"
 #include "haptics/realtime/teleoperation_step.hpp"
 #include "haptics/recording/session_format.hpp"
+#include "training/sessions/recording_identity.hpp"
 #include "training/tasks/scripted_operator.hpp"
 
 namespace needle::app {
@@ -22,7 +23,8 @@ using nlohmann::json;
 
 constexpr const char* kReplayPrefix = "replay:";
 // 1: task (its file), device, scenario, coupling, safety_limits; 2: and task_text, the task file's
-// text as the session ran it.
+// text as the session ran it; and, added later without a new version (older readers ignore it, a
+// recording without it reads as before), session_uid, the uid of the session it was recorded for.
 constexpr int kContextVersion = 2;
 
 // The tool law's springs (issue 12), each added after recordings had been made without it: a
@@ -252,7 +254,8 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
                   {"device", recorded_device},
                   {"scenario", scenario_json},
                   {"coupling", coupling},
-                  {"safety_limits", limits_json(limits_)}}
+                  {"safety_limits", limits_json(limits_)},
+                  {training::kRecordingSessionKey, options.session_uid}}
                  .dump();
 }
 
