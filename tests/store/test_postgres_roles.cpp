@@ -11,6 +11,7 @@
 #include <set>
 #include <tuple>
 
+#include "store_errors.hpp"
 #include "tests/support/stored_sessions.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/support/test_postgres.hpp"
@@ -19,24 +20,6 @@ namespace needle::training {
 namespace {
 using test::a_result;
 using test::small_task;
-
-std::string roles_sql() {
-  std::ifstream in(test::source_dir() / "tools" / "postgres-roles.sql");
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "";
-}
-
-bool permission_error(const std::string& m) {
-  return m.find("permission denied") != std::string::npos || m.find("row-level security") != std::string::npos;
-}
 
 // A database owned by a new login `owner` (CREATEROLE when `createrole`, never a superuser), with
 // the schema its owner's first open makes when `schema`. Returns the owner's URI.
@@ -162,7 +145,8 @@ TEST_F(PostgresRoleScript, InstallsEveryGrantAndPolicyAndNothingElse) {
     EXPECT_NE(row.text(1).find("SESSION_USER"), std::string::npos) << row.text(0) << ": " << row.text(1);
 }
 
-// Issue 34's list, as station-01 on its own finished session and on everyone's trainees and tasks.
+// What a station could try, as station-01 on its own finished session and on everyone's trainees
+// and tasks.
 TEST_F(PostgresRoleScript, EveryTamperingStatementOfAStationIsAPermissionError) {
   PostgresConnection station(uri("station-01"), false);
   const std::string id = std::to_string(done_);

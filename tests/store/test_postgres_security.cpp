@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "store_errors.hpp"
 #include "tests/support/stored_sessions.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/support/test_postgres.hpp"
@@ -15,20 +16,6 @@ namespace needle::training {
 namespace {
 using test::a_result;
 using test::small_task;
-
-std::string roles_sql() {
-  std::ifstream in(test::source_dir() / "tools" / "postgres-roles.sql");
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "";
-}
 
 TEST(PostgresRoles, AStationCannotSeeOrAlterAnotherStationsSessions) {
   const std::string owner_uri = test::fresh_postgres_database("t_roles");

@@ -7,23 +7,13 @@
 #include <cmath>
 
 #include "store_engines.hpp"
+#include "store_errors.hpp"
 #include "tests/support/stored_sessions.hpp"
 
 namespace needle::training {
 namespace {
 using test::a_result;
 using test::small_task;
-
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "";
-}
-
-bool permission_error(const std::string& message) { return message.find("permission denied") != std::string::npos; }
 
 // Drops the triggers that keep a finished session final: what an owner who means to tamper can do
 // (SQLite: drop them; PostgreSQL: disable them on its own tables).
