@@ -22,7 +22,7 @@ namespace needle::training {
 // closed; TCP keepalives find a dead peer of an idle connection in kKeepaliveIdleSeconds +
 // kKeepaliveCount x kKeepaliveIntervalSeconds, and data left unacknowledged for kTcpUserTimeoutSeconds
 // ends it.
-inline constexpr int kConnectSeconds = 5;           // the acceptance's 10 s for a run's start, halved
+inline constexpr int kConnectSeconds = 5;           // half the 10 s a trainee may wait for a run to start
 inline constexpr int kStatementSeconds = 30;        // the slowest statement: a migration or a cohort's read
 inline constexpr int kAnswerMarginSeconds = 5;      // the server's own timeout speaks first
 inline constexpr int kKeepaliveIdleSeconds = 10;
