@@ -87,6 +87,11 @@ TEST(CliStoreRefusals, ARefusalStopsTheRunAndOnlyAnOutageRunsOffline) {
     const ProcessResult r = run_needle_sim(rigid_run_arguments(refusal.uri, dir));
     EXPECT_EQ(r.exit_code, 1) << refusal.name << "\n" << r.output;
     EXPECT_TRUE(says(r, refusal.reason)) << refusal.name << "\n" << r.output;
+    // One line says it: the line that has the reason is the error.
+    const size_t at = r.output.find(refusal.reason);
+    const size_t start = r.output.rfind('\n', at) == std::string::npos ? 0 : r.output.rfind('\n', at) + 1;
+    EXPECT_EQ(r.output.compare(start, 23, "needle-sim run: error: "), 0) << refusal.name << "\n" << r.output;
+    EXPECT_EQ(r.output.find('\n', at), r.output.size() - 1) << "nothing after that line\n" << r.output;
     EXPECT_FALSE(says(r, "could not be reached")) << refusal.name << "\n" << r.output;
     EXPECT_FALSE(says(r, "simulated")) << "stopped before the run\n" << r.output;
     EXPECT_FALSE(fs::exists(dir / "station.db")) << refusal.name << ": nothing kept for a server that refused";

@@ -25,8 +25,21 @@ bool succeeded(const PGresult* r) {
   return status == PGRES_COMMAND_OK || status == PGRES_TUPLES_OK;
 }
 
-// libpq's message without its trailing newline.
-std::string trimmed(const std::string& message) { return message.substr(0, message.find_last_not_of("\n ") + 1); }
+// libpq's message on one line: its trailing newline dropped, the lines of a message of several (a
+// host tried at each of its addresses, a hint) joined with "; ".
+std::string trimmed(const std::string& message) {
+  const std::string text = message.substr(0, message.find_last_not_of("\n\t ") + 1);
+  std::string out;
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '\n') {
+      out += text[i];
+      continue;
+    }
+    out += "; ";
+    while (i + 1 < text.size() && (text[i + 1] == '\t' || text[i + 1] == ' ')) ++i;
+  }
+  return out;
+}
 
 // Waits until `socket` can be written (`write`) or read, or `deadline` passes (false). A deadline of
 // Clock::time_point::max() waits without limit.
