@@ -14,6 +14,7 @@
 
 namespace needle::training {
 namespace {
+namespace fs = std::filesystem;
 using test::a_result;
 using test::small_task;
 
@@ -74,8 +75,44 @@ TEST(PostgresConnection, TlsSettingsArePassedToLibpqAsWritten) {
       message_of([] { PostgresConnection c(test::postgres_uri("postgres") + "&sslmode=bogus", false); });
   EXPECT_NE(error.find("sslmode"), std::string::npos) << error;
   EXPECT_NE(error.find("bogus"), std::string::npos) << error;
+  // A value libpq refuses is a refusal to fix, never an outage to run through.
+  EXPECT_THROW(PostgresConnection(test::postgres_uri("postgres") + "&sslmode=bogus", false), SessionStoreError);
+  try {
+    PostgresConnection c(test::postgres_uri("postgres") + "&sslmode=bogus", false);
+  } catch (const ServerUnreachable&) {
+    ADD_FAILURE() << "a bad sslmode taken for an unreachable server";
+  } catch (const SessionStoreError&) {
+  }
   // sslmode=disable over the socket connects (TLS is for TCP; libpq ignores it on a Unix socket).
   EXPECT_EQ(message_of([] { PostgresConnection c(test::postgres_uri("postgres") + "&sslmode=disable", false); }), "");
+}
+
+// What a run may go offline for: nothing there to answer (a socket folder without a server, a port
+// nothing listens on). A server that answered and refused (a password, a database it lacks) is not.
+TEST(PostgresConnection, OnlyAServerThatIsNotThereIsUnreachable) {
+  const fs::path empty = test::output_dir() / "no_server_here";
+  fs::create_directories(empty);
+  EXPECT_THROW(PostgresConnection("postgresql:///postgres?host=" + empty.string(), false), ServerUnreachable);
+  EXPECT_THROW(PostgresConnection("postgresql://needle@127.0.0.1:1/postgres", false), ServerUnreachable);
+  // A password refused over the socket, whose connection is made at once.
+  test::postgres_admin("DO $$ BEGIN CREATE ROLE needle_password LOGIN PASSWORD 'right'; "
+                       "EXCEPTION WHEN duplicate_object THEN NULL; END $$");
+  try {
+    PostgresConnection c(test::postgres_uri("postgres", "needle_password") + "&password=wrong", false);
+    ADD_FAILURE() << "connected with a wrong password";
+  } catch (const ServerUnreachable& e) {
+    ADD_FAILURE() << "a password refused taken for an unreachable server: " << e.what();
+  } catch (const SessionStoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("password authentication failed"), std::string::npos) << e.what();
+  }
+  try {
+    PostgresConnection c(test::postgres_uri("no_such_database"), false);
+    ADD_FAILURE() << "connected to a database that does not exist";
+  } catch (const ServerUnreachable& e) {
+    ADD_FAILURE() << "a database the server lacks taken for an unreachable server: " << e.what();
+  } catch (const SessionStoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("does not exist"), std::string::npos) << e.what();
+  }
 }
 
 TEST(StoreLocation, APasswordIsNeverShown) {

@@ -114,18 +114,30 @@ pg_conn* open_connection(const std::string& uri, const std::string& shown) {
   values.push_back(nullptr);
   pg_conn* conn = PQconnectStartParams(keywords.data(), values.data(), 1);
   if (!conn) throw SessionStoreError(connecting + "out of memory");
+  if (PQstatus(conn) == CONNECTION_BAD) {
+    // Failed before any wait: a value libpq does not take (sslmode=bogus), or the connection itself
+    // (no socket there, a port refused) tried at once, which no server could have answered yet.
+    // libpq names the second "connection to server ..." (its messages are English: this program
+    // sets no locale).
+    const std::string why = trimmed(PQerrorMessage(conn));
+    PQfinish(conn);
+    if (why.rfind("connection to server", 0) == 0) throw ServerUnreachable(connecting + why);
+    throw SessionStoreError(connecting + why);
+  }
   // Whether a server answered: libpq got past making the connection (the TCP handshake or the
   // socket's connect) at least once.
-  bool answered = false;
-  PostgresPollingStatusType polled = PQstatus(conn) == CONNECTION_BAD ? PGRES_POLLING_FAILED : PGRES_POLLING_WRITING;
+  const auto made = [](ConnStatusType status) {
+    return status != CONNECTION_STARTED && status != CONNECTION_NEEDED && status != CONNECTION_BAD;
+  };
+  bool answered = made(PQstatus(conn));  // a socket's connect is made at once, in PQconnectStartParams
+  PostgresPollingStatusType polled = PGRES_POLLING_WRITING;
   while (polled != PGRES_POLLING_OK && polled != PGRES_POLLING_FAILED) {
     if (PQsocket(conn) >= 0 && !wait_for(PQsocket(conn), polled == PGRES_POLLING_WRITING, deadline)) {
       PQfinish(conn);
       throw ServerUnreachable(connecting + "no answer within " + std::to_string(timeout_s) + " s (connect_timeout)");
     }
     polled = PQconnectPoll(conn);
-    const ConnStatusType status = PQstatus(conn);
-    answered = answered || (status != CONNECTION_STARTED && status != CONNECTION_NEEDED && status != CONNECTION_BAD);
+    answered = answered || made(PQstatus(conn));
   }
   if (polled == PGRES_POLLING_OK) return conn;
   const std::string why = trimmed(PQerrorMessage(conn));
