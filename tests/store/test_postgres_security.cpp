@@ -3,6 +3,7 @@
 // TLS settings passed to libpq as written, a URI's password never in a message.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <iterator>
 
@@ -113,6 +114,38 @@ TEST(PostgresConnection, OnlyAServerThatIsNotThereIsUnreachable) {
   } catch (const SessionStoreError& e) {
     EXPECT_NE(std::string(e.what()).find("does not exist"), std::string::npos) << e.what();
   }
+}
+
+// Results come in binary, each column read by its type: every type the store's and its tests'
+// queries return, against the values written in the SQL; a type it does not read is an error.
+TEST(PostgresConnection, ColumnsAreReadByTheirTypesBinaryForm) {
+  PostgresConnection c(test::postgres_uri("postgres"), true);
+  const SqlRow row = c.query("SELECT -2::int2, -70000::int4, -5000000000::int8, 4000000000::oid, true, false, 2.5::float4, "
+                             "-1.25e-300::float8, 12345678.0001::numeric, -0.0625::numeric, 0::numeric, 'text'::text, "
+                             "'name'::name, 'v'::varchar, 'c'::\"char\", '\\x00ff10'::bytea, NULL::numeric, ''::text",
+                             {}, "")
+                         .rows.at(0);
+  EXPECT_EQ(row.integer(0), -2);
+  EXPECT_EQ(row.integer(1), -70000);
+  EXPECT_EQ(row.integer(2), -5000000000);
+  EXPECT_EQ(row.integer(3), 4000000000);
+  EXPECT_EQ(row.integer(4), 1);
+  EXPECT_EQ(row.integer(5), 0);
+  EXPECT_EQ(row.real(6), 2.5);
+  EXPECT_EQ(row.real(7), -1.25e-300);
+  EXPECT_DOUBLE_EQ(row.real(8), 12345678.0001);
+  EXPECT_EQ(row.real(9), -0.0625);
+  EXPECT_EQ(row.real(10), 0.0);
+  EXPECT_EQ(row.text(11), "text");
+  EXPECT_EQ(row.text(12), "name");
+  EXPECT_EQ(row.text(13), "v");
+  EXPECT_EQ(row.text(14), "c");
+  EXPECT_EQ(row.blob(15), std::string("\x00\xff\x10", 3));
+  EXPECT_TRUE(std::isnan(row.real(16)));
+  EXPECT_EQ(row.text(17), "");
+  const std::string error = message_of([&] { c.query("SELECT now() AS started", {}, "reading the clock"); });
+  EXPECT_NE(error.find("reading the clock: column started is of a type the store does not read (OID 1184)"), std::string::npos)
+      << error;
 }
 
 TEST(StoreLocation, APasswordIsNeverShown) {

@@ -5,11 +5,13 @@
 #include <poll.h>
 
 #include <cerrno>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "training/sessions/store_location.hpp"
@@ -146,26 +148,48 @@ pg_conn* open_connection(const std::string& uri, const std::string& shown) {
   throw SessionStoreError(connecting + why);
 }
 
-// Type OIDs (PostgreSQL's pg_type.dat): what a text-format column is read as.
-constexpr Oid kBool = 16, kBytea = 17, kInt8 = 20, kInt2 = 21, kInt4 = 23, kFloat4 = 700, kFloat8 = 701, kNumeric = 1700;
+// Type OIDs (PostgreSQL's pg_type.dat) of the columns the store reads. Results come in binary (a
+// recording's bytes as they are, half the hex text's size, nothing to decode): each column is read
+// by its type, and a type not here is an error, never bytes taken for something else.
+constexpr Oid kBool = 16, kBytea = 17, kChar = 18, kName = 19, kInt8 = 20, kInt2 = 21, kInt4 = 23, kText = 25, kOid = 26,
+              kFloat4 = 700, kFloat8 = 701, kBpchar = 1042, kVarchar = 1043, kNumeric = 1700, kVoid = 2278;
 
-int hex_digit(char c) { return c <= '9' ? c - '0' : (c | 0x20) - 'a' + 10; }
+// A big-endian (network order) unsigned integer of `bytes` bytes at `p`.
+uint64_t big_endian(const char* p, int bytes) {
+  uint64_t v = 0;
+  for (int i = 0; i < bytes; ++i) v = (v << 8) | static_cast<unsigned char>(p[i]);
+  return v;
+}
 
-SqlValue column_value(const PGresult* r, int row, int c) {
-  if (PQgetisnull(r, row, c)) return SqlNull{};
-  const char* text = PQgetvalue(r, row, c);
+// NUMERIC's binary form: digit count, weight (of the first digit, a power of 10000), sign, display
+// scale, then the base-10000 digits.
+double numeric_value(const char* p, int length) {
+  if (length < 8) return std::nan("");
+  const int count = int(big_endian(p, 2)), weight = int(int16_t(big_endian(p + 2, 2))), sign = int(big_endian(p + 4, 2));
+  if (sign == 0xC000 || length < 8 + 2 * count) return std::nan("");
+  double v = 0.0;
+  for (int i = 0; i < count; ++i) v += double(big_endian(p + 8 + 2 * i, 2)) * std::pow(10000.0, weight - i);
+  return sign == 0x4000 ? -v : v;
+}
+
+// Column `c` of `row`, read as its type's binary form; nullopt for a type the store does not read.
+std::optional<SqlValue> column_value(const PGresult* r, int row, int c) {
+  if (PQgetisnull(r, row, c)) return SqlValue{SqlNull{}};
+  const char* p = PQgetvalue(r, row, c);
   const int length = PQgetlength(r, row, c);
   switch (PQftype(r, c)) {
-    case kInt8: case kInt2: case kInt4: return int64_t{std::strtoll(text, nullptr, 10)};
-    case kBool: return int64_t{text[0] == 't'};
-    case kFloat4: case kFloat8: case kNumeric: return std::strtod(text, nullptr);  // shortest exact text since PostgreSQL 12
-    case kBytea: {  // hex output: \x then two digits a byte
-      SqlBlob blob;
-      blob.bytes.reserve(size_t(length) / 2);
-      for (int i = 2; i + 1 < length; i += 2) blob.bytes += char(hex_digit(text[i]) * 16 + hex_digit(text[i + 1]));
-      return blob;
-    }
-    default: return std::string(text, size_t(length));
+    case kInt8: return SqlValue{int64_t(big_endian(p, 8))};
+    case kInt4: return SqlValue{int64_t{int32_t(uint32_t(big_endian(p, 4)))}};
+    case kInt2: return SqlValue{int64_t{int16_t(uint16_t(big_endian(p, 2)))}};
+    case kOid: return SqlValue{int64_t(big_endian(p, 4))};
+    case kBool: return SqlValue{int64_t{p[0] != 0}};
+    case kFloat8: return SqlValue{std::bit_cast<double>(big_endian(p, 8))};
+    case kFloat4: return SqlValue{double(std::bit_cast<float>(uint32_t(big_endian(p, 4))))};
+    case kNumeric: return SqlValue{numeric_value(p, length)};
+    case kBytea: return SqlValue{SqlBlob{std::string(p, size_t(length))}};
+    case kText: case kName: case kChar: case kBpchar: case kVarchar: return SqlValue{std::string(p, size_t(length))};
+    case kVoid: return SqlValue{SqlNull{}};
+    default: return std::nullopt;
   }
 }
 
@@ -269,14 +293,20 @@ SqlResult PostgresConnection::query(const std::string& sql, const std::vector<Sq
         params[i]);
   }
   const std::string numbered = numbered_placeholders(sql);
-  if (!PQsendQueryParams(conn_, numbered.c_str(), int(params.size()), nullptr, values.data(), lengths.data(), formats.data(), 0))
+  if (!PQsendQueryParams(conn_, numbered.c_str(), int(params.size()), nullptr, values.data(), lengths.data(), formats.data(), 1))
     fail(what);
   const Result r = await(what);
   if (!succeeded(r.get())) fail(what);
   SqlResult out;
   for (int row = 0; row < PQntuples(r.get()); ++row) {
     SqlRow values_of_row;
-    for (int c = 0; c < PQnfields(r.get()); ++c) values_of_row.values.push_back(column_value(r.get(), row, c));
+    for (int c = 0; c < PQnfields(r.get()); ++c) {
+      std::optional<SqlValue> value = column_value(r.get(), row, c);
+      if (!value)
+        throw SessionStoreError(shown_ + ": " + what + ": column " + PQfname(r.get(), c) + " is of a type the store does not read (OID " +
+                                std::to_string(PQftype(r.get(), c)) + ")");
+      values_of_row.values.push_back(std::move(*value));
+    }
     out.rows.push_back(std::move(values_of_row));
   }
   const char* changed = PQcmdTuples(r.get());
