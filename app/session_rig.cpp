@@ -13,6 +13,7 @@
 #include "haptics/realtime/teleoperation_step.hpp"
 #include "haptics/recording/session_format.hpp"
 #include "io/strict_json.hpp"
+#include "training/sessions/recording_identity.hpp"
 #include "training/tasks/scripted_operator.hpp"
 
 namespace needle::app {
@@ -23,7 +24,8 @@ using nlohmann::json;
 
 constexpr const char* kReplayPrefix = "replay:";
 // 1: task (its file), device, scenario, coupling, safety_limits; 2: and task_text, the task file's
-// text as the session ran it.
+// text as the session ran it; and, added later without a new version (older readers ignore it, a
+// recording without it reads as before), session_uid, the uid of the session it was recorded for.
 constexpr int kContextVersion = 2;
 
 // The tool law's springs and its passivity damper, each added after recordings had been made
@@ -255,7 +257,8 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
                   {"device", recorded_device},
                   {"scenario", scenario_json},
                   {"coupling", coupling},
-                  {"safety_limits", limits_json(limits_)}}
+                  {"safety_limits", limits_json(limits_)},
+                  {training::kRecordingSessionKey, options.session_uid}}
                  .dump();
 }
 

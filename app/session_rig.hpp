@@ -30,6 +30,8 @@ struct RigOptions {
   std::optional<double> rate_hz;        // default: the scenario's for sim, 1 kHz live, as recorded for replay
   std::filesystem::path out_dir;        // the scenario that runs is written here
   engine::Camera camera;                // the view the trainee sees: task-space devices move in its axes
+  std::string session_uid;              // the stored session's id (SessionInfo::uid), kept in the
+                                        // recording's context: a recording names its own session
 };
 
 // The task a session on `device` runs: for replay:FILE the task as its recording keeps it (the

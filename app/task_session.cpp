@@ -38,14 +38,15 @@ std::string with_folder(const fs::path& location) {
   return location.string();
 }
 
-// (options) => the store the session begins in: the one named, or, when that is a server that does
-// not answer (postgres_server_unreachable), this station's own file, with `offline` saying why (the
-// session is kept there for sync when it ends). Any other failure is an error, as before.
+// (options) => the store the session begins in: the one named, or, when that is a server that
+// cannot be reached at a known host (refused, or no answer within the connect timeout:
+// training::ServerUnreachable), this station's own file, with `offline` saying why (the session is
+// kept there for sync when it ends). Any other failure (an unknown host, a certificate or password
+// refused, a database the server lacks) is an error before the run.
 std::unique_ptr<training::SessionStore> open_store(const TaskSessionOptions& options, std::string& offline) {
   try {
     return std::make_unique<training::SessionStore>(with_folder(options.db));
-  } catch (const training::SessionStoreError& e) {
-    if (!training::is_postgres_uri(options.db.string()) || !training::postgres_server_unreachable(options.db.string())) throw;
+  } catch (const training::ServerUnreachable& e) {
     offline = e.what();
     return std::make_unique<training::SessionStore>(with_folder(local_db(options)));
   }
@@ -70,6 +71,12 @@ class ProgressBar {
   bool tty_;
   int shown_ = -1;
 };
+
+// `options` with the uid of the session it will store, which its recording names too.
+TaskSessionOptions with_session_uid(TaskSessionOptions options) {
+  if (options.rig.session_uid.empty()) options.rig.session_uid = training::new_session_uid();
+  return options;
+}
 
 TaskSessionOptions with_task_settings(TaskSessionOptions options, const engine::Scene& scene) {
   options.rig.out_dir = options.out_dir;
@@ -99,7 +106,7 @@ fs::path new_recording_path(const fs::path& db, const std::string& task_name) {
 }
 
 TaskSession::TaskSession(TaskSessionOptions options)
-    : options_(std::move(options)),
+    : options_(with_session_uid(std::move(options))),
       task_(session_task(options_.task, options_.rig.device)),
       scene_(engine::load_scene(task_.scene)),
       rig_(std::make_unique<SessionRig>(task_, with_task_settings(options_, scene_).rig)),
@@ -119,7 +126,7 @@ TaskSession::TaskSession(TaskSessionOptions options)
                              options_.rig.device, rig_->context()},
       loop_->samples(), [this](const haptics::TickSample& s) { feed_.consume(s); });
   new_session_ = {options_.trainee, task_.name, task_.title, task_.source, rig_->description(), recording_path_.string(),
-                  options_.station, training::new_session_uid(), training::utc_timestamp()};
+                  options_.station, options_.rig.session_uid, training::utc_timestamp()};
   session_ = store_->begin_session(new_session_);
   if (store_->engine() == training::SqlEngine::kPostgres)
     upload_ = std::make_unique<RecordingUpload>(options_.db.string(), session_, recording_path_);

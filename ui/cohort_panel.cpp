@@ -190,6 +190,7 @@ bool draw_cohort_panel(const training::CohortView& view, CohortPanelState& state
       ImGui::BeginChild("curves", ImVec2(0, room.y));
       PlotOptions plot;
       plot.marked_points = true;
+      plot.fit_legend = true;
       // Every task's two plots in the height when they fit in it (a title and a legend line each).
       plot.height = std::max(5.0f * line, room.y / float(2 * tasks.size()) - 3.2f * line);
       for (const std::string& task : tasks)
@@ -205,6 +206,7 @@ void draw_learning_curve_window(const training::Plot& plot, const PanelRect& at)
   if (begin_panel(plot.title.c_str(), at)) {
     PlotOptions o;
     o.marked_points = true;
+    o.fit_legend = true;
     o.height = std::max(80.0f, ImGui::GetContentRegionAvail().y - 2.0f * ImGui::GetTextLineHeightWithSpacing());
     draw_plot(plot, o);
   }

@@ -67,9 +67,9 @@ void draw_force_depth_plot(const training::ForceDepth& a, const training::ForceD
   draw_session(draw, f, a, kPlotLinesA, kPunctureA);
   if (b) draw_session(draw, f, *b, kPlotLinesB, kPunctureB);
   draw->PopClipRect();
-  std::vector<std::pair<std::string, ImU32>> legend{{b ? "axial force (A)" : "axial force", kPlotLinesA[0]},
-                                                    {b ? "punctures (A)" : "punctures", kPunctureA}};
-  if (b) legend.insert(legend.end(), {{"axial force (B)", kPlotLinesB[0]}, {"punctures (B)", kPunctureB}});
+  std::vector<LegendEntry> legend{{b ? "axial force (A)" : "axial force", {kPlotLinesA[0]}},
+                                  {b ? "punctures (A)" : "punctures", {kPunctureA}}};
+  if (b) legend.insert(legend.end(), {{"axial force (B)", {kPlotLinesB[0]}}, {"punctures (B)", {kPunctureB}}});
   draw_plot_legend(f, legend);
 }
 

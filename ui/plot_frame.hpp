@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -39,7 +40,38 @@ void draw_plot_frame(ImDrawList* draw, const PlotFrame& frame, const std::string
 // A dashed vertical line from top to bottom at x (pixels).
 void dashed_vertical(ImDrawList* draw, float x, float top, float bottom, ImU32 colour);
 
-// Ends the plot (its space taken) and draws one swatch and name per line below it.
-void draw_plot_legend(const PlotFrame& frame, const std::vector<std::pair<std::string, ImU32>>& entries);
+// How a line looks: its colour, its dash and the mark drawn at each of its points (kNone: none).
+enum class Dash { kSolid, kDashed, kDotted };
+enum class Mark { kNone, kCircle, kSquare, kTriangle };
+struct LineStyle {
+  ImU32 colour = kPlotLinesA[0];
+  Dash dash = Dash::kSolid;
+  Mark mark = Mark::kNone;
+};
+
+// Learning curves: line k's style, one of kTraineeStyles that differ pairwise (eight hues far
+// enough apart on the dark plot, each solid with circles, dashed with squares, dotted with
+// triangles), so that no two of up to 24 trainees look alike; from the 25th they repeat.
+inline constexpr size_t kTraineeStyles = 24;
+LineStyle trainee_style(size_t k);
+
+// The polyline through `points` in `style`'s colour and dash, and its mark at each point.
+void draw_styled_line(ImDrawList* draw, const std::vector<ImVec2>& points, const LineStyle& style, float width);
+void draw_mark(ImDrawList* draw, ImVec2 at, const LineStyle& style);
+
+// (each legend entry's width, the width there is, the gap between entries) => the row of each
+// entry, filled left to right: an entry goes on the next row when it would pass the width (one
+// wider than the width has a row of its own). Every entry gets a place.
+std::vector<int> legend_rows(const std::vector<float>& widths, float width, float gap);
+
+// A legend entry: a swatch of the line (a filled square for a plain line, else a piece of the line
+// with its mark) and the line's name.
+using LegendEntry = std::pair<std::string, LineStyle>;
+// The rows the legend of `entries` takes in the width there is at the cursor (legend_rows).
+int plot_legend_rows(const std::vector<LegendEntry>& entries);
+
+// Ends the plot (its space taken) and draws the legend below it, wrapped onto as many rows as it
+// needs (plot_legend_rows): every line named.
+void draw_plot_legend(const PlotFrame& frame, const std::vector<LegendEntry>& entries);
 
 }  // namespace needle::ui

@@ -74,6 +74,12 @@ void header_lines(const training::SessionReview& r) {
     ImGui::TextColored(kWarn, "INCOMPLETE: the run ended before the task did; no score, no metrics stored");
   } else {
     ImGui::TextColored(i.passed ? kGood : kBad, "Score %.1f / 100   %s", i.score, i.passed ? "PASSED" : "NOT PASSED");
+    const training::VerificationStatus v = training::verification_status(r.stored);
+    ImGui::PushStyleColor(ImGuiCol_Text, v.verdict == training::Verification::kVerified   ? kGood
+                                         : v.verdict == training::Verification::kMismatch ? kBad
+                                                                                          : kDim);
+    ImGui::TextWrapped("%s", v.line.c_str());
+    ImGui::PopStyleColor();
   }
   // The device holding the force back is said, never left silent (docs/SCORING.md, "Forces").
   const double limited = r.stored.overall.force_limited_s;
@@ -198,12 +204,12 @@ bool begin_panel(const char* title, const PanelRect& at, bool* open) {
 void draw_session_table(const std::vector<training::SessionInfo>& sessions, SessionTableState& state, const PanelRect& at) {
   if (begin_panel("Sessions", at)) {
     ImGui::SetNextItemWidth(-1.0f);
-    ImGui::InputTextWithHint("##filter", "filter: words in trainee, task, date, device, passed/failed/incomplete; -word excludes",
+    ImGui::InputTextWithHint("##filter", "filter: words in trainee, task, date, device, passed/failed/incomplete, verified/mismatch/unverified; -word excludes",
                              state.filter, sizeof state.filter);
     const ImGuiTableFlags flags = ImGuiTableFlags_Sortable | ImGuiTableFlags_SortMulti | ImGuiTableFlags_RowBg |
                                   ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX | ImGuiTableFlags_ScrollY |
                                   ImGuiTableFlags_SizingFixedFit;
-    if (ImGui::BeginTable("sessions", 8, flags)) {
+    if (ImGui::BeginTable("sessions", 9, flags)) {
       ImGui::TableSetupScrollFreeze(0, 1);
       ImGui::TableSetupColumn("ID", ImGuiTableColumnFlags_DefaultSort | ImGuiTableColumnFlags_PreferSortDescending, 0.0f,
                               ImGuiID(training::SessionColumn::kId));
@@ -213,6 +219,7 @@ void draw_session_table(const std::vector<training::SessionInfo>& sessions, Sess
       ImGui::TableSetupColumn("Score", ImGuiTableColumnFlags_PreferSortDescending, 0.0f, ImGuiID(training::SessionColumn::kScore));
       ImGui::TableSetupColumn("Duration", 0, 0.0f, ImGuiID(training::SessionColumn::kDuration));
       ImGui::TableSetupColumn("Result", 0, 0.0f, ImGuiID(training::SessionColumn::kResult));
+      ImGui::TableSetupColumn("Check", 0, 0.0f, ImGuiID(training::SessionColumn::kCheck));
       ImGui::TableSetupColumn("B", ImGuiTableColumnFlags_NoSort);
       ImGui::TableHeadersRow();
       if (ImGuiTableSortSpecs* specs = ImGui::TableGetSortSpecs(); specs && specs->SpecsDirty) {
@@ -249,6 +256,12 @@ void draw_session_table(const std::vector<training::SessionInfo>& sessions, Sess
         ImGui::TableNextColumn();
         const char* word = session_result_word(s);
         ImGui::TextColored(!s.complete ? kWarn : s.passed ? kGood : kBad, "%s", word);
+        ImGui::TableNextColumn();
+        if (s.complete) {  // an incomplete session has no score to verify
+          const training::Verification v = training::verification(s);
+          ImGui::TextColored(v == training::Verification::kVerified ? kGood : v == training::Verification::kMismatch ? kBad : kDim,
+                             "%s", training::verification_word(v));
+        }
         ImGui::TableNextColumn();
         if (s.id == state.compared) {
           ImGui::TextColored(kWarn, "B");

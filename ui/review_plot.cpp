@@ -12,10 +12,6 @@
 namespace needle::ui {
 namespace {
 
-// Learning curves: eight hues far enough apart to tell trainees apart on the dark plot.
-const ImU32 kTrainees[] = {IM_COL32(110, 190, 255, 255), IM_COL32(255, 160, 70, 255), IM_COL32(120, 220, 140, 255),
-                           IM_COL32(240, 90, 120, 255),  IM_COL32(200, 150, 255, 255), IM_COL32(240, 230, 90, 255),
-                           IM_COL32(90, 220, 220, 255),  IM_COL32(200, 200, 200, 255)};
 const ImU32 kCursor = IM_COL32(255, 255, 255, 230);
 
 struct Range {
@@ -67,14 +63,19 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
     ImGui::TextWrapped("%s", plot.missing.c_str());
     return;
   }
-  std::vector<std::pair<const training::Series*, ImU32>> lines;
+  std::vector<std::pair<const training::Series*, LineStyle>> lines;
   for (size_t i = 0; i < plot.lines.size(); ++i)
-    lines.push_back({&plot.lines[i], o.marked_points ? kTrainees[i % std::size(kTrainees)] : kPlotLinesA[i % 2]});
+    lines.push_back({&plot.lines[i], o.marked_points ? trainee_style(i) : LineStyle{kPlotLinesA[i % 2]}});
   if (o.other) {
-    for (size_t i = 0; i < o.other->lines.size(); ++i) lines.push_back({&o.other->lines[i], kPlotLinesB[i % 2]});
+    for (size_t i = 0; i < o.other->lines.size(); ++i) lines.push_back({&o.other->lines[i], LineStyle{kPlotLinesB[i % 2]}});
+  }
+  std::vector<LegendEntry> legend;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const bool b = i >= plot.lines.size();
+    legend.push_back({lines[i].first->name + (b ? " (B)" : o.other ? " (A)" : ""), lines[i].second});
   }
   Range x, y;
-  for (const auto& [series, colour] : lines) {
+  for (const auto& [series, style] : lines) {
     for (double t : series->t) x.add(t);
   }
   if (o.marked_points) x.lo -= 0.5, x.hi += 0.5;  // the first and last attempts' marks clear of the edges
@@ -82,10 +83,10 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
   const TimeSpan whole{x.lo, x.hi}, shown = o.span ? clamped(*o.span, whole) : whole;
   x.lo = shown.lo;
   x.hi = shown.hi;
-  std::vector<std::pair<training::Series, ImU32>> in_span;
+  std::vector<std::pair<training::Series, LineStyle>> in_span;
   y.add(0.0);  // every plotted quantity is read from zero
-  for (const auto& [series, colour] : lines) {
-    in_span.push_back({visible(*series, shown), colour});
+  for (const auto& [series, style] : lines) {
+    in_span.push_back({visible(*series, shown), style});
     for (size_t i = 0; i < in_span.back().first.t.size(); ++i) {
       const double t = in_span.back().first.t[i];
       if (t >= shown.lo && t <= shown.hi) y.add(in_span.back().first.v[i]);
@@ -95,7 +96,9 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
   if (shown.width() >= whole.width()) {
     for (const training::Guide& g : plot.guides) y.add(g.value);
   }
-  const PlotFrame f = plot_frame(x.lo, x.hi, y.lo, y.hi, o.height);
+  // The legend's rows past its first taken from the plot, when the height is the legend's too.
+  const int more_rows = o.fit_legend ? std::max(0, plot_legend_rows(legend) - 1) : 0;
+  const PlotFrame f = plot_frame(x.lo, x.hi, y.lo, y.hi, o.height - float(more_rows) * ImGui::GetTextLineHeightWithSpacing());
   const ImVec2 p0 = f.p0, p1 = f.p1;
   if (o.span) zoom_and_pan(plot, *o.span, shown, whole, p0, p1);
   ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -116,23 +119,16 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
     draw->AddText(ImVec2(p1.x - size.x - 2.0f, above < p0.y ? f.sy(g.value) + 1.0f : above), kPlotGuide, g.label.c_str());
   }
   std::vector<ImVec2> points;
-  for (const auto& [series, colour] : in_span) {
+  for (const auto& [series, style] : in_span) {
     const training::Series drawn = decimate(series, size_t(std::max(1.0f, p1.x - p0.x)));
     points.clear();
     for (size_t i = 0; i < drawn.t.size(); ++i) {
       if (std::isfinite(drawn.v[i])) points.push_back(ImVec2(f.sx(drawn.t[i]), f.sy(drawn.v[i])));
     }
-    if (points.size() > 1) draw->AddPolyline(points.data(), int(points.size()), colour, 0, 1.5f);
-    if (o.marked_points)
-      for (const ImVec2& p : points) draw->AddCircleFilled(p, 3.5f, colour);
+    draw_styled_line(draw, points, style, 1.5f);
   }
   if (o.cursor_s) draw->AddLine(ImVec2(f.sx(*o.cursor_s), p0.y), ImVec2(f.sx(*o.cursor_s), p1.y), kCursor, 1.5f);
   draw->PopClipRect();
-  std::vector<std::pair<std::string, ImU32>> legend;
-  for (size_t i = 0; i < lines.size(); ++i) {
-    const bool b = i >= plot.lines.size();
-    legend.push_back({lines[i].first->name + (b ? " (B)" : o.other ? " (A)" : ""), lines[i].second});
-  }
   draw_plot_legend(f, legend);
 }
 

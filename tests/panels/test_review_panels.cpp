@@ -1,5 +1,5 @@
-// The instructor's review panels drawn headless, against goldens: the session table, a
-// session's detail with its plots, a single plot, two sessions compared, and a replay frame of
+// The instructor's review panels drawn headless, against goldens: the session table (with its
+// sessions' checks against their recordings), a session's detail with its plots, a single plot, two sessions compared, and a replay frame of
 // the recorded session in the 3D view. The sessions are recorded closed-loop runs of the
 // penetrable task (good and sloppy operators) with their dates fixed, so the pictures are too; and
 // the layered tasks' force–depth plot (issue 14) of their recorded runs.
@@ -32,6 +32,13 @@ class ReviewPanels : public VulkanTest {
     training::SessionStore store(db_);
     const training::Task rigid = training::load_task(test::source_dir() / "assets/tasks/rigid_sphere.json");
     store.begin_session("cy", rigid, "sim", "");  // died mid-task, before recordings were kept
+    // The instructor's checks against the recordings (needle-sim verify): ana's verified, bo's not
+    // what its replay gives; the table marks each, the detail says when and by whom.
+    const training::StoredSession good = store.load(good_.id), sloppy = store.load(sloppy_.id);
+    store.record_check({good_.id, training::CheckOutcome::kVerified, good.info.score, training::result_digest(good), "",
+                        "2026-03-05T09:00:00Z", "dr-lee"});
+    store.record_check({sloppy_.id, training::CheckOutcome::kMismatch, sloppy.info.score, training::result_digest(sloppy),
+                        "score: stored 90, replay 38.6", "2026-03-05T09:00:00Z", "dr-lee"});
   }
   // The session as the panels show it, with the clock's fields fixed for the picture.
   static training::SessionReview review(int64_t id) {

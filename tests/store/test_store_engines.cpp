@@ -11,6 +11,7 @@
 #include <set>
 #include <thread>
 
+#include "store_engines.hpp"
 #include "tests/support/stored_sessions.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/support/test_postgres.hpp"
@@ -24,34 +25,6 @@ namespace fs = std::filesystem;
 using test::a_result;
 using test::expect_same_metrics;
 using test::small_task;
-
-std::string test_name() {
-  std::string name = testing::UnitTest::GetInstance()->current_test_info()->name();
-  for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? char(std::tolower(c)) : '_';
-  return name;
-}
-
-fs::path test_folder() {
-  const fs::path dir = test::output_dir() / "store" / test_name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-class StoreEngines : public testing::TestWithParam<SqlEngine> {
- protected:
-  // An empty database for this test: a new file, or a new database on the cluster.
-  std::string fresh() {
-    if (GetParam() == SqlEngine::kSqlite) return (test_folder() / "sessions.db").string();
-    if (test::postgres_dir().empty()) throw std::runtime_error("run through tests/support/with-postgres.sh (ctest does)");
-    return test::fresh_postgres_database("t_" + test_name().substr(0, 50));
-  }
-  // A connection of its own, for what an older program or another process writes.
-  static std::unique_ptr<SqlConnection> raw(const std::string& location) {
-    if (location.rfind("postgresql://", 0) == 0) return std::make_unique<PostgresConnection>(location, false);
-    return std::make_unique<SqliteConnection>(location, false);
-  }
-};
 
 INSTANTIATE_TEST_SUITE_P(Engines, StoreEngines, testing::Values(SqlEngine::kSqlite, SqlEngine::kPostgres),
                          [](const auto& info) { return info.param == SqlEngine::kSqlite ? "SQLite" : "PostgreSQL"; });
@@ -185,7 +158,7 @@ TEST_P(StoreEngines, MigratesASchemaTwoDatabase) {
     old.finish_session(old_id, a_result());
   }
   SessionStore store(db);
-  EXPECT_EQ(store.schema_version(), 3);
+  EXPECT_EQ(store.schema_version(), kSessionSchemaVersion);
   const StoredSession s = store.load(old_id);
   EXPECT_EQ(s.info.device, "falcon");
   EXPECT_EQ(s.info.station, "");

@@ -77,6 +77,21 @@ TEST(SessionExport, JsonHasScoreMetricsAndSteps) {
   EXPECT_DOUBLE_EQ(j["components"][0]["points"].get<double>(), 15.0);
 }
 
+// A session whose run ended before the task did was never scored: its export says so with null,
+// not with a score of 0 that failed (the store keeps 0 and 0 for it).
+TEST(SessionExport, AnIncompleteSessionHasNoScoreAndNoVerdict) {
+  StoredSession s;
+  s.info.id = 7;
+  s.info.complete = false;
+  const nlohmann::json j = session_json(s);
+  EXPECT_TRUE(j["score"].is_null()) << j.dump();
+  EXPECT_TRUE(j["passed"].is_null()) << j.dump();
+  EXPECT_FALSE(j["session"]["complete"].get<bool>());
+  s.info.complete = true;  // and a complete one with a score of 0 says 0, failed
+  EXPECT_EQ(session_json(s)["score"], 0.0);
+  EXPECT_EQ(session_json(s)["passed"], false);
+}
+
 TEST(SessionExport, ResultJsonCarriesWhatScoreJsonNeeds) {
   SessionResult r;
   r.steps = a_session().steps;

@@ -204,5 +204,25 @@ TEST(SessionStore, ReadOnlyCreatesNothingAndNeedsNoWriteAccess) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1) << "no -wal or -shm made";
 }
 
+// A healthy database where a run cannot write it (a read-only file system, or a folder where SQLite
+// cannot make its -wal and -shm files) is never called damaged: that would send a user to replace
+// good data. The error says what is wrong; a reader still reads it.
+TEST(SessionStore, AHealthyDatabaseAWriterCannotWriteIsNotCalledDamaged) {
+  const fs::path file = fresh_db();
+  fill(file, 1);
+  const test::ReadOnlyFolder folder(file.parent_path() / "read_only_writer");
+  fs::copy_file(file, folder.dir() / "sessions.db");
+  ASSERT_EQ(folder.make_read_only(), "");
+  const std::string error = open_error(folder.dir() / "sessions.db", false);
+  EXPECT_EQ(error.find("the session database is damaged"), std::string::npos) << error;
+  EXPECT_EQ(error.find("restore a copy"), std::string::npos) << error;
+  EXPECT_NE(error.find((folder.dir() / "sessions.db").string() + ": the session database cannot be written: "), std::string::npos)
+      << error;
+  const bool mounted = error.find("its file system is mounted read-only") != std::string::npos;
+  EXPECT_TRUE(mounted || error.find("may not write") != std::string::npos) << error;
+  EXPECT_NE(error.find("it is not damaged"), std::string::npos) << error;
+  EXPECT_EQ(SessionStore(folder.dir() / "sessions.db", kReadOnly).sessions().size(), 1u);
+}
+
 }  // namespace
 }  // namespace needle::training

@@ -4,20 +4,28 @@
 // each station then stores it again and again as fast as the store takes it: begin, the recording
 // in chunks of 50 ms of ticks (as a run sends it), finish. Rows for 1, 4 and 16 stations per
 // engine: sessions per minute, p99 latency of the finishing commit, database growth per session,
-// and the check that every session and every byte of every recording arrived once.
+// and the check that every session and every byte of every recording arrived once. Then a verify
+// row per engine: `verify --all` (app/session_verify.hpp) over a store of --verify copies of the
+// session, each with a recording that names it, in sessions per minute, beside the time the same
+// number of replays alone take, as many at once (what verify cannot beat).
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <set>
+#include <thread>
 
 #include "arg_list.hpp"
 #include "asset_path.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
+#include "app/recording_bytes.hpp"
+#include "app/session_verify.hpp"
 #include "app/task_session.hpp"
+#include "io/file_write.hpp"
 #include "sample_stats.hpp"
 #include "training/sessions/postgres_connection.hpp"
 #include "training/sessions/store_location.hpp"
@@ -118,9 +126,74 @@ Row measure(const std::string& location, const Workload& w, int stations, int pe
   return row;
 }
 
+struct VerifyRow {
+  double sessions_per_min = 0, seconds = 0;
+  int verified = 0, not_verified = 0;
+};
+
+// `count` copies of the session stored at `location` as station `station`, each with a recording
+// naming it (on the server in chunks; beside an SQLite file in `recordings`), then verified as
+// `verify --all` verifies them, `jobs` at a time.
+VerifyRow measure_verify(const std::string& location, const Workload& w, const haptics::Session& recorded, int count,
+                         int jobs, const std::string& station, const fs::path& recordings) {
+  std::vector<int64_t> ids;
+  {
+    training::SessionStore store(location);
+    const bool postgres = store.engine() == training::SqlEngine::kPostgres;
+    for (int k = 0; k < count; ++k) {
+      training::NewSession n = w.session;
+      n.station = station;
+      n.uid = training::new_session_uid();
+      haptics::Session copy = recorded;
+      copy.header.context = app::context_for_session(recorded.header.context, n.uid);
+      const std::string bytes = app::encode_session(copy);
+      if (!postgres) {
+        n.recording_path = (recordings / (n.uid + ".nrec")).string();
+        io::write_file(n.recording_path, bytes);
+      }
+      const int64_t id = store.begin_session(n);
+      if (postgres)
+        for (size_t offset = 0; offset < bytes.size(); offset += w.chunk_bytes)
+          store.append_recording(id, int64_t(offset), bytes.substr(offset, w.chunk_bytes));
+      store.finish_session(id, w.result);
+      ids.push_back(id);
+    }
+  }
+  const auto t0 = Clock::now();
+  const std::vector<app::VerifiedSession> checked = app::verify_sessions(location, ids, jobs, [](const app::VerifiedSession&) {});
+  VerifyRow row;
+  row.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  for (const app::VerifiedSession& v : checked) {
+    if (v.check.outcome == training::CheckOutcome::kVerified) ++row.verified;
+    else ++row.not_verified;
+  }
+  row.sessions_per_min = double(count) / row.seconds * 60.0;
+  return row;
+}
+
+// Seconds `jobs` threads take to replay `recording` `count` times between them (app::replay_result:
+// the file read and checked, the task rebuilt, every tick replayed and scored).
+double bare_replays_s(const std::string& recording, int count, int jobs, const fs::path& scratch) {
+  std::atomic<int> next{0};
+  const auto work = [&](int thread) {
+    const fs::path dir = scratch / ("replay_" + std::to_string(thread));
+    fs::create_directories(dir);
+    std::string task_name;
+    while (next++ < count) app::replay_result(recording, dir, task_name);
+  };
+  const auto t0 = Clock::now();
+  std::vector<std::thread> threads;
+  for (int j = 1; j < jobs; ++j) threads.emplace_back(work, j);
+  work(0);
+  for (std::thread& t : threads) t.join();
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
 int run_bench_store(ArgList& args) {
   const std::optional<std::string> server = args.value("--db");
   const int per_station = int(parse_whole(args.value("--sessions").value_or("8"), "--sessions", 1, 100000));
+  const int verify_count = int(parse_whole(args.value("--verify").value_or("100"), "--verify", 0, 100000));
+  const int jobs = int(std::max(1u, std::thread::hardware_concurrency()));
   const std::string task = args.value("--task").value_or((asset_dir() / "tasks" / "penetrable_sphere.json").string());
   const auto json = output_file(args, "--json");
   args.finish();
@@ -147,9 +220,16 @@ int run_bench_store(ArgList& args) {
     w.session = {"bench", run.task().name, run.task().title, run.task().source, "sim", run.recording_path().string(), "", "", ""};
     w.chunk_bytes = std::max<size_t>(1, size_t(double(w.recording.size()) / result->overall.duration_s * 0.05));
   }
+  // What verify cannot beat: the replays alone, the session's recording read from its file and
+  // replayed as many times as verify replays copies, as many at once, no store.
+  const haptics::Session recorded = haptics::read_session(w.session.recording_path);
+  const double replays_s = verify_count > 0 ? bare_replays_s(w.session.recording_path, verify_count, jobs, scratch) : 0.0;
 
-  BenchTable table({"engine", "stations", "sessions", "sessions_per_min", "p99_commit_ms", "bytes_per_session",
-                    "recording_bytes", "stored", "lost", "duplicated", "failed_stations"});
+  // Store rows: "stored", "lost" as said above. Verify rows: "stations" the jobs, "stored" the
+  // sessions verified, "lost" those not; "replays_s" the replays alone (bare_replays_s), "vs_replays"
+  // verify's time over theirs.
+  BenchTable table({"work", "engine", "stations", "sessions", "sessions_per_min", "p99_commit_ms", "bytes_per_session",
+                    "recording_bytes", "stored", "lost", "duplicated", "failed_stations", "replays_s", "vs_replays"});
   for (const bool postgres : {true, false}) {
     if (postgres && !server) {
       std::printf("note: no --db postgresql://...: PostgreSQL rows skipped\n");
@@ -160,28 +240,40 @@ int run_bench_store(ArgList& args) {
       const std::string location =
           postgres ? *server : (scratch / ("shared_" + std::to_string(stations) + ".db")).string();
       const Row r = measure(location, w, stations, per_station, prefix);
-      table.add_row({postgres ? "postgresql" : "sqlite", stations, stations * per_station, r.sessions_per_min, r.p99_ms,
-                     r.bytes_per_session, w.recording.size(), r.stored, r.lost, r.duplicated, r.failed_stations});
+      table.add_row({"store", postgres ? "postgresql" : "sqlite", stations, stations * per_station, r.sessions_per_min, r.p99_ms,
+                     r.bytes_per_session, w.recording.size(), r.stored, r.lost, r.duplicated, r.failed_stations, nullptr,
+                     nullptr});
     }
+    if (verify_count == 0) continue;
+    const std::string location = postgres ? *server : (scratch / "verify.db").string();
+    fs::create_directories(scratch / "recordings");
+    const VerifyRow v = measure_verify(location, w, recorded, verify_count, jobs,
+                                       "bench-" + std::to_string(::getpid()) + "-verify", scratch / "recordings");
+    table.add_row({"verify", postgres ? "postgresql" : "sqlite", jobs, verify_count, v.sessions_per_min, nullptr, nullptr,
+                   w.recording.size(), v.verified, v.not_verified, 0, 0, replays_s, v.seconds / replays_s});
   }
   fs::remove_all(scratch);
   table.emit("bench store: stations storing a " + std::to_string(w.result.overall.duration_s).substr(0, 4) +
-                 " s scripted session (" + std::to_string(per_station) + " each, recording in 50 ms chunks) at once",
+                 " s scripted session (" + std::to_string(per_station) + " each, recording in 50 ms chunks) at once; " +
+                 "verify --all over " + std::to_string(verify_count) + " stored copies, " + std::to_string(jobs) + " at a time",
              json);
   return 0;
 }
 
 const CommandRegistrar reg{
     {"bench store",
-     "needle-sim bench store [--db URI] [--sessions N] [--task FILE] [--json FILE]\n"
+     "needle-sim bench store [--db URI] [--sessions N] [--verify N] [--task FILE] [--json FILE]\n"
      "  --db URI        the PostgreSQL server to measure (a database of its own: the bench adds sessions of\n"
      "                  stations named bench-*); without it only the SQLite rows\n"
      "  --sessions N    sessions each station stores (default 8)\n"
+     "  --verify N      copies of the session stored, then verified as verify --all does (default 100;\n"
+     "                  0: no verify rows)\n"
      "  --task FILE     the task whose good script makes the session (default assets/tasks/penetrable_sphere.json)\n"
      "  --json FILE     also write the rows as JSON\n"
      "  rows: 1, 4 and 16 station processes on PostgreSQL, then on one SQLite file they share: sessions per\n"
      "  minute, p99 of the finishing commit (ms), database growth per session, and stored/lost/duplicated\n"
-     "  (every session complete with every byte of its recording, no uid twice)",
+     "  (every session complete with every byte of its recording, no uid twice); then per engine a verify\n"
+     "  row: sessions verified per minute, the same replays' time alone and verify's time over theirs",
      run_bench_store}};
 
 }  // namespace

@@ -1,19 +1,48 @@
 // The session database on a PostgreSQL server, through libpq's C API (Debian libpq-dev): a URI
 // as libpq takes it (credentials from it, PGPASSFILE or the environment; sslmode and the other
 // TLS parameters passed through as written). One connection; `?` placeholders become $1, $2, ...
-// and every value is sent apart from the SQL (PQexecParams), so no value is ever parsed as SQL.
+// and every value is sent apart from the SQL (PQsendQueryParams), so no value is ever parsed as
+// SQL. Every wait on the server is bounded (below): a server that does not answer never hangs a run.
 #pragma once
+
+#include <memory>
 
 #include "training/sessions/sql_connection.hpp"
 
 struct pg_conn;
+struct pg_result;
 
 namespace needle::training {
+
+// The store's waits on a server (docs/SESSIONS.md, "Timeouts"): design values for a training centre's
+// network, where a server answers in milliseconds. A station waits at most kConnectSeconds before a run
+// starts on without the server (a URI's own connect_timeout=N replaces it; 0 waits without limit, as
+// libpq's); a statement the server has not answered in its statement_timeout (kStatementSeconds unless
+// the URI's options, the role or the server set one) plus kAnswerMarginSeconds ends with the connection
+// closed; TCP keepalives find a dead peer of an idle connection in kKeepaliveIdleSeconds +
+// kKeepaliveCount x kKeepaliveIntervalSeconds, and data left unacknowledged for kTcpUserTimeoutSeconds
+// ends it.
+inline constexpr int kConnectSeconds = 5;           // half the 10 s a trainee may wait for a run to start
+inline constexpr int kStatementSeconds = 30;        // the slowest statement: a migration or a cohort's read
+inline constexpr int kAnswerMarginSeconds = 5;      // the server's own timeout speaks first
+inline constexpr int kKeepaliveIdleSeconds = 10;
+inline constexpr int kKeepaliveIntervalSeconds = 5;
+inline constexpr int kKeepaliveCount = 3;
+inline constexpr int kTcpUserTimeoutSeconds = 30;
+
+// The server could not be reached at a host that exists: nothing accepted the connection (refused,
+// no socket there) or nothing answered within the connect timeout. A run goes on without it (its
+// session kept for needle-sim sync). Any other failure to connect (an unknown host, a certificate
+// that does not verify, a password refused, a database the server lacks, a bad URI) is a plain
+// SessionStoreError: to be fixed, never worked around.
+struct ServerUnreachable : SessionStoreError {
+  using SessionStoreError::SessionStoreError;
+};
 
 class PostgresConnection final : public SqlConnection {
  public:
   // Connects; `read_only` makes every transaction read-only (review, report). Throws
-  // SessionStoreError naming the URI without its password.
+  // ServerUnreachable or SessionStoreError naming the URI without its password.
   PostgresConnection(const std::string& uri, bool read_only);
   ~PostgresConnection() override;
   PostgresConnection(const PostgresConnection&) = delete;
@@ -29,15 +58,19 @@ class PostgresConnection final : public SqlConnection {
 
  private:
   [[noreturn]] void fail(const std::string& what) const;
+  // The statement's results once the server has sent them all: the first that failed, else the
+  // last. No answer in the statement timeout and its margin closes the connection and throws.
+  struct ClearResult {
+    void operator()(pg_result* r) const;
+  };
+  using Result = std::unique_ptr<pg_result, ClearResult>;
+  Result await(const std::string& what);
 
   std::string shown_;
   pg_conn* conn_ = nullptr;
+  int answer_ms_ = (kStatementSeconds + kAnswerMarginSeconds) * 1000;
+  std::string closed_;  // why the connection was closed (no answer in time); "" while open
 };
-
-// True when no server answers at `uri` at all (down, or nothing listening there): libpq's PQping
-// says PQPING_NO_RESPONSE. A server that answers but refuses the login, lacks the database or is
-// given a bad URI is not unreachable: those are errors to fix, not to work around.
-bool postgres_server_unreachable(const std::string& uri);
 
 // `sql` with its `?` placeholders numbered $1, $2, ... (a '?' inside '...' or "..." is kept).
 std::string numbered_placeholders(const std::string& sql);

@@ -74,8 +74,9 @@ json session_json(const StoredSession& s) {
             {"recording_path", i.recording_path},
             {"station", i.station},
             {"uid", i.uid}}},
-          {"score", i.score},
-          {"passed", i.passed},
+          // An incomplete session was never scored: no score and no verdict, not 0 and failed.
+          {"score", i.complete ? json(i.score) : json(nullptr)},
+          {"passed", i.complete ? json(i.passed) : json(nullptr)},
           {"components", components_json(s.components)},
           {"metrics", metrics_json(s.overall)},
           {"steps", steps_json(s.steps)}};

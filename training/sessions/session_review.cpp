@@ -2,6 +2,7 @@
 
 #include "haptics/recording/session_format.hpp"
 #include "io/file_write.hpp"
+#include "training/sessions/recording_identity.hpp"
 
 namespace needle::training {
 namespace fs = std::filesystem;
@@ -23,6 +24,12 @@ fs::path fetch_stored_recording(const SessionStore& store, const SessionInfo& in
   return file;
 }
 
+fs::path locate_recording(const SessionStore& store, const fs::path& db_file, const SessionInfo& info, fs::path& fetched) {
+  // A server's session carries its recording; a file's names it beside the file.
+  if (store.engine() == SqlEngine::kPostgres) fetched = fetch_stored_recording(store, info);
+  return fetched.empty() ? resolve_recording(db_file, info.recording_path) : fetched;
+}
+
 SessionReview load_session_review(const SessionStore& store, const fs::path& db_file, int64_t id) {
   SessionReview r;
   r.stored = store.load(id);
@@ -42,13 +49,13 @@ SessionReview load_session_review(const SessionStore& store, const fs::path& db_
   } else {
     fs::path fetched;  // the server's copy, read then removed: the review keeps the samples
     try {
-      // A server's session carries its recording; a file's names it beside the file.
-      if (store.engine() == SqlEngine::kPostgres) r.recording_file = fetched = fetch_stored_recording(store, info);
-      if (r.recording_file.empty()) r.recording_file = resolve_recording(db_file, info.recording_path);
+      r.recording_file = locate_recording(store, db_file, info, fetched);
       haptics::Session session = haptics::read_session(r.recording_file.string());
+      const std::string unchecked = check_recording_identity(r.recording_file.string(), session.header, info);
       samples = std::move(session.records);
       r.recording_end = session.end;
       r.recording_notes = haptics::recording_notes(r.recording_file.string(), session.end, samples.size());
+      if (!unchecked.empty()) r.recording_notes.push_back(unchecked);
       r.loop = loop_health(samples, session.header.rate_hz);
       if (samples.empty()) r.recording_problem = r.recording_file.string() + ": the recording has no samples";
     } catch (const std::exception& e) {

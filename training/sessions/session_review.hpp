@@ -51,6 +51,12 @@ std::filesystem::path resolve_recording(const std::filesystem::path& db_file, co
 // an empty path when the database holds none. Throws SessionStoreError for a damaged chunk.
 std::filesystem::path fetch_stored_recording(const SessionStore& store, const SessionInfo& info);
 
+// Where session `info`'s recording is read: the database's copy (PostgreSQL; fetched into the
+// temporary folder, `fetched` then naming it for the caller to remove once read), else the file the
+// session names, resolved beside `db_file`. Throws SessionStoreError for a damaged chunk.
+std::filesystem::path locate_recording(const SessionStore& store, const std::filesystem::path& db_file,
+                                       const SessionInfo& info, std::filesystem::path& fetched);
+
 // Loads session `id` (SessionStoreError when there is none) with its task and recording: from the
 // database when it holds the recording (PostgreSQL; the fetched file is removed once read), else
 // the file the session names.

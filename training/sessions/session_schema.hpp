@@ -8,7 +8,7 @@
 
 namespace needle::training {
 
-inline constexpr int kSessionSchemaVersion = 3;
+inline constexpr int kSessionSchemaVersion = 4;
 
 // The database's schema version; 0 for an empty database (nothing of ours in it).
 int schema_version(SqlConnection& db);

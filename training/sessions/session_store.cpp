@@ -12,6 +12,7 @@
 #include "training/sessions/postgres_connection.hpp"
 #include "training/sessions/sqlite_connection.hpp"
 #include "training/sessions/store_location.hpp"
+#include "training/tasks/task.hpp"
 
 namespace needle::training {
 
@@ -31,12 +32,18 @@ std::unique_ptr<SqlConnection> connect(const std::string& location, bool read_on
   return std::make_unique<SqliteConnection>(location, read_only);
 }
 
-// The columns session_info() reads; a database before schema 3 has no station and no uid.
+// The columns session_info() reads; a database before schema 3 has no station and no uid, one
+// before schema 4 no checks.
 std::string session_select(int version) {
+  const char* latest_check = "(SELECT %s FROM session_checks c WHERE c.session_id = s.id ORDER BY c.id DESC LIMIT 1)";
+  char outcome[160], score[160];
+  std::snprintf(outcome, sizeof outcome, latest_check, "c.outcome");
+  std::snprintf(score, sizeof score, latest_check, "c.score");
   return std::string("SELECT s.id, r.name, t.name, coalesce(s.device, ''), s.started_at, coalesce(s.ended_at, ''), s.status, "
                      "coalesce(s.score, 0), coalesce(s.passed, 0), coalesce(s.duration_s, 0), "
                      "coalesce(s.recording_path, ''), t.title, t.source, ") +
-         (version >= 3 ? "coalesce(s.station, ''), coalesce(s.uid, '')" : "'', ''") +
+         (version >= 3 ? "coalesce(s.station, ''), coalesce(s.uid, '')" : "'', ''") + ", " +
+         (version >= 4 ? std::string(outcome) + ", " + score : "NULL, NULL") +
          " FROM sessions s JOIN trainees r ON r.id = s.trainee_id JOIN tasks t ON t.id = s.task_id ";
 }
 
@@ -57,6 +64,8 @@ SessionInfo session_info(const SqlRow& s) {
   i.task_source = s.text(12);
   i.station = s.text(13);
   i.uid = s.text(14);
+  if (CheckOutcome outcome; check_outcome_from_name(s.text(15), outcome)) i.check = outcome;
+  i.checked_score = s.real(16);
   return i;
 }
 
@@ -69,6 +78,36 @@ Metrics unrecorded_metrics() {
     if constexpr (std::is_floating_point_v<std::remove_reference_t<decltype(field)>>) field = kNotApplicable;
   });
   return m;
+}
+
+// A complete session's score and duration as no run stores them (a score outside 0-100, not a
+// number, a negative duration) are damage or an alteration, refused naming the session.
+void check_stored_numbers(const std::string& db, const SessionInfo& i) {
+  const auto refuse = [&](const std::string& what, double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    throw StoredValueError(db + ": session " + std::to_string(i.id) + ": the stored " + what + " " + text +
+                            " is outside what a run stores (" + (what == "score" ? "0 to 100" : "0 or more") +
+                            "): the store is damaged or was altered; needle-sim verify --session " + std::to_string(i.id) +
+                            " checks it against its recording");
+  };
+  if (!i.complete) return;
+  if (!(i.score >= 0.0 && i.score <= 100.0)) refuse("score", i.score);
+  if (!(i.duration_s >= 0.0 && std::isfinite(i.duration_s))) refuse("duration", i.duration_s);
+}
+
+// What a station's role was refused when it began a session in another name: the server says only
+// that a row broke a policy.
+std::string station_role_hint(SqlConnection& db, const std::string& station) {
+  if (db.engine() != SqlEngine::kPostgres) return "";
+  try {
+    const std::string role = db.query("SELECT session_user", {}, "reading the login role").rows.at(0).text(0);
+    if (role == station) return "";
+    return " (the station name \"" + station + "\" must be this station's login role, \"" + role +
+           "\": --station NAME, default the host name, names the role the server knows the station by)";
+  } catch (const SessionStoreError&) {
+    return "";
+  }
 }
 
 // Sets the field of `m` called `name`; false when no field has that name.
@@ -133,41 +172,41 @@ int64_t SessionStore::begin_session(const std::string& trainee, const Task& task
 
 int64_t SessionStore::begin_session(const NewSession& n) {
   const std::string what = "starting a session";
-  SqlTransaction transaction(*db_, what);
-  const int64_t trainee_id =
-      db_->query("INSERT INTO trainees(name) VALUES (?) ON CONFLICT(name) DO UPDATE SET name = excluded.name RETURNING id",
-                 {n.trainee}, what)
-          .rows.at(0)
-          .integer(0);
-  const int64_t task_id = db_->query("INSERT INTO tasks(name, title, source) VALUES (?, ?, ?) ON CONFLICT(name) DO UPDATE SET "
-                                     "title = excluded.title, source = excluded.source RETURNING id",
-                                     {n.task, n.task_title, n.task_source}, what)
-                              .rows.at(0)
-                              .integer(0);
-  std::vector<SqlValue> values{trainee_id, task_id, n.started_at.empty() ? utc_timestamp() : n.started_at, n.recording_path, n.device};
-  std::string sql = "INSERT INTO sessions(trainee_id, task_id, started_at, status, recording_path, device";
-  if (schema_version() >= 3) {  // tests make older databases through this program
-    sql += ", station, uid) VALUES (?, ?, ?, 'incomplete', ?, ?, ?, ?) RETURNING id";
-    values.emplace_back(n.station);
-    values.emplace_back(n.uid.empty() ? new_session_uid() : n.uid);
-  } else {
-    sql += ") VALUES (?, ?, ?, 'incomplete', ?, ?) RETURNING id";
+  try {
+    SqlTransaction transaction(*db_, what);
+    // A trainee or task already stored is left as it is: stations insert them, never change them.
+    const auto id_of = [&](const std::string& insert, const std::string& table, const std::vector<SqlValue>& values) {
+      db_->query(insert + " ON CONFLICT(name) DO NOTHING", values, what);
+      return db_->query("SELECT id FROM " + table + " WHERE name = ?", {values.at(0)}, what).rows.at(0).integer(0);
+    };
+    const int64_t trainee_id = id_of("INSERT INTO trainees(name) VALUES (?)", "trainees", {n.trainee});
+    const int64_t task_id =
+        id_of("INSERT INTO tasks(name, title, source) VALUES (?, ?, ?)", "tasks", {n.task, n.task_title, n.task_source});
+    std::vector<SqlValue> values{trainee_id, task_id, n.started_at.empty() ? utc_timestamp() : n.started_at, n.recording_path, n.device};
+    std::string sql = "INSERT INTO sessions(trainee_id, task_id, started_at, status, recording_path, device";
+    if (schema_version() >= 3) {  // tests make older databases through this program
+      sql += ", station, uid) VALUES (?, ?, ?, 'incomplete', ?, ?, ?, ?) RETURNING id";
+      values.emplace_back(n.station);
+      values.emplace_back(n.uid.empty() ? new_session_uid() : n.uid);
+    } else {
+      sql += ") VALUES (?, ?, ?, 'incomplete', ?, ?) RETURNING id";
+    }
+    const int64_t id = db_->query(sql, values, what).rows.at(0).integer(0);
+    transaction.commit();
+    return id;
+  } catch (const SessionStoreError& e) {
+    const std::string hint = station_role_hint(*db_, n.station);
+    if (hint.empty()) throw;
+    throw SessionStoreError(e.what() + hint);
   }
-  const int64_t id = db_->query(sql, values, what).rows.at(0).integer(0);
-  transaction.commit();
-  return id;
 }
 
 void SessionStore::finish_session(int64_t id, const SessionResult& result, const std::string& ended_at) {
   const std::string what = "finishing session " + std::to_string(id);
   SqlTransaction transaction(*db_, what);
-  const SqlResult done = db_->query(
-      "UPDATE sessions SET status = 'complete', ended_at = ?, score = ?, passed = ?, duration_s = ? "
-      "WHERE id = ? AND status = 'incomplete'",
-      {ended_at.empty() ? utc_timestamp() : ended_at, result.score.total, int64_t{result.score.passed},
-       result.overall.duration_s, id},
-      what);
-  if (done.changes != 1) throw SessionStoreError(db_->name() + ": " + what + ": no incomplete session with that id");
+  // Its rows first, then complete: once complete, the session takes no more rows.
+  const SqlResult open = db_->query("SELECT 1 FROM sessions WHERE id = ? AND status = 'incomplete'", {id}, what);
+  if (open.rows.empty()) throw SessionStoreError(db_->name() + ": " + what + ": no incomplete session with that id");
   const auto write_metrics = [&](int64_t index, const Metrics& m) {
     for_each_metric(m, [&](const char* name, auto value) {
       db_->query("INSERT INTO metrics VALUES (?, ?, ?, ?)", {id, index, std::string(name), static_cast<double>(value)}, what);
@@ -185,6 +224,13 @@ void SessionStore::finish_session(int64_t id, const SessionResult& result, const
     const ScoreComponent& c = result.score.components[i];
     db_->query("INSERT INTO score_components VALUES (?, ?, ?, ?, ?)", {id, int64_t(i), c.name, c.value, c.weight}, what);
   }
+  const SqlResult done = db_->query(
+      "UPDATE sessions SET status = 'complete', ended_at = ?, score = ?, passed = ?, duration_s = ? "
+      "WHERE id = ? AND status = 'incomplete'",
+      {ended_at.empty() ? utc_timestamp() : ended_at, result.score.total, int64_t{result.score.passed},
+       result.overall.duration_s, id},
+      what);
+  if (done.changes != 1) throw SessionStoreError(db_->name() + ": " + what + ": no incomplete session with that id");
   transaction.commit();
 }
 
@@ -230,12 +276,60 @@ StoredSession SessionStore::load(int64_t id) const {
          db_->query("SELECT name, value, weight FROM score_components WHERE session_id = ? ORDER BY position", {id}, what).rows)
       out.components.push_back({row.text(0), row.real(1), row.real(2)});
   }
+  if (version >= 4) {
+    const SqlResult c = db_->query("SELECT outcome, score, digest, detail, checked_at, checked_by FROM session_checks "
+                                   "WHERE session_id = ? ORDER BY id DESC LIMIT 1",
+                                   {id}, what);
+    if (!c.rows.empty()) {
+      SessionCheck check{id, CheckOutcome::kUnverifiable, c.rows[0].real(1), c.rows[0].text(2), c.rows[0].text(3),
+                         c.rows[0].text(4), c.rows[0].text(5)};
+      check_outcome_from_name(c.rows[0].text(0), check.outcome);
+      out.check = check;
+    }
+  }
   snapshot.commit();
+  check_stored_numbers(db_->name(), out.info);
   return out;
 }
 
+TraineeRename SessionStore::rename_trainee(const std::string& from, const std::string& to) {
+  const std::string what = "renaming trainee \"" + from + "\" to \"" + to + "\"";
+  if (to.empty() || to.size() > kMaxNameBytes)
+    throw SessionStoreError(db_->name() + ": " + what + ": a name has 1 to " + std::to_string(kMaxNameBytes) + " bytes");
+  SqlTransaction transaction(*db_, what);
+  if (!db_->query("SELECT 1 FROM trainees WHERE name = ?", {to}, what).rows.empty())
+    throw SessionStoreError(db_->name() + ": " + what + ": a trainee named \"" + to + "\" exists already");
+  if (db_->query("UPDATE trainees SET name = ? WHERE name = ?", {to, from}, what).changes != 1)
+    throw SessionStoreError(db_->name() + ": " + what + ": no trainee named \"" + from + "\"");
+  const SqlResult logged = db_->query(
+      "SELECT old_name, new_name, renamed_at, renamed_by FROM trainee_renames ORDER BY id DESC LIMIT 1", {}, what);
+  transaction.commit();
+  const SqlRow& row = logged.rows.at(0);
+  return {row.text(0), row.text(1), row.text(2), row.text(3)};
+}
+
+std::vector<TraineeRename> SessionStore::trainee_renames() const {
+  std::vector<TraineeRename> out;
+  for (const SqlRow& row : db_->query("SELECT old_name, new_name, renamed_at, renamed_by FROM trainee_renames ORDER BY id",
+                                      {}, "reading the trainees' renames")
+                               .rows)
+    out.push_back({row.text(0), row.text(1), row.text(2), row.text(3)});
+  return out;
+}
+
+void SessionStore::record_check(const SessionCheck& c) {
+  const std::string at = c.checked_at.empty() ? utc_timestamp() : c.checked_at;
+  const std::string what = "keeping the check of session " + std::to_string(c.session_id);
+  const std::string by = engine() == SqlEngine::kPostgres ? "session_user" : "?";
+  std::vector<SqlValue> values{c.session_id, at, std::string(check_outcome_name(c.outcome)), c.score, c.digest, c.detail};
+  if (engine() == SqlEngine::kSqlite) values.emplace_back(c.checked_by);
+  db_->query("INSERT INTO session_checks(session_id, checked_at, outcome, score, digest, detail, checked_by) "
+             "VALUES (?, ?, ?, ?, ?, ?, " + by + ")",
+             values, what);
+}
+
 std::optional<SessionInfo> SessionStore::find_uid(const std::string& uid) const {
-  const SqlResult r = db_->query(session_select(kSessionSchemaVersion) + "WHERE s.uid = ?", {uid}, "finding session " + uid);
+  const SqlResult r = db_->query(session_select(schema_version()) + "WHERE s.uid = ?", {uid}, "finding session " + uid);
   if (r.rows.empty()) return std::nullopt;
   return session_info(r.rows[0]);
 }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "training/scoring/session_scorer.hpp"
+#include "training/sessions/session_check.hpp"
 #include "training/sessions/session_schema.hpp"
 #include "training/sessions/sql_connection.hpp"
 
@@ -34,6 +35,10 @@ struct SessionInfo {
   std::string recording_path;  // "" when none
   std::string station;         // "" for sessions from schema 1-2
   std::string uid;             // the id its station made (sync), "" for sessions from schema 1-2
+  // Its latest check against its recording (needle-sim verify): none yet, or the outcome and the
+  // score it found stored (training/sessions/session_check.hpp, verification()).
+  std::optional<CheckOutcome> check;
+  double checked_score = NAN;
 };
 
 struct StoredSession {
@@ -41,6 +46,14 @@ struct StoredSession {
   std::vector<StepResult> steps;
   Metrics overall;
   std::vector<ScoreComponent> components;  // empty for sessions from schema 1
+  std::optional<SessionCheck> check;       // the latest check against its recording, if any
+};
+
+// A trainee's name corrected (SessionStore::rename_trainee), as the store logged it.
+struct TraineeRename {
+  std::string old_name, new_name;
+  std::string renamed_at;  // ISO 8601 UTC
+  std::string renamed_by;  // the login role on PostgreSQL; "" on SQLite (a file has no users)
 };
 
 // What a new session is. `uid` empty: one is made; `started_at` empty: now.
@@ -74,16 +87,20 @@ class SessionStore {
   const std::string& name() const { return db_->name(); }  // never with a password
   int schema_version() const;
 
-  // Inserts an incomplete session (and its trainee and task when new) and commits it at once.
+  // Inserts an incomplete session (and its trainee and task when new: an existing one is left as
+  // it is) and commits it at once. On PostgreSQL a station's role may begin sessions only in its own
+  // name: a refusal says when `station` is not the login role.
   int64_t begin_session(const NewSession& session);
   int64_t begin_session(const std::string& trainee, const Task& task, const std::string& device,
                         const std::string& recording_path, const std::string& station = "");
-  // Writes the steps, metrics and score and marks the session complete, in one transaction.
-  // `ended_at` empty: now.
+  // Writes the steps, metrics and score and then marks the session complete, in one transaction;
+  // from then on nothing of it can change (the schema's triggers refuse it). `ended_at` empty: now.
   void finish_session(int64_t id, const SessionResult& result, const std::string& ended_at = "");
 
   std::vector<SessionInfo> sessions() const;  // newest first
-  StoredSession load(int64_t id) const;       // throws if there is no such session
+  // Throws if there is no such session, or when what is stored cannot be a session's (a complete
+  // session's score outside 0-100 or not a number, a duration below 0): damaged or altered.
+  StoredSession load(int64_t id) const;
   std::optional<SessionInfo> find_uid(const std::string& uid) const;
 
   // The recording kept in the database (PostgreSQL): appended chunk by chunk as it is written,
@@ -93,6 +110,16 @@ class SessionStore {
   // The stored bytes, every chunk checked (its CRC, and that it starts where the one before ended);
   // nullopt when the session has none. Throws SessionStoreError naming the session and the offset.
   std::optional<std::string> recording(int64_t id) const;
+
+  // An instructor's correction of a trainee's name, logged by the store itself (trainee_renames,
+  // whatever program renames): throws when there is no trainee `from`, or `to` is empty, longer than
+  // kMaxNameBytes or another trainee's name.
+  TraineeRename rename_trainee(const std::string& from, const std::string& to);
+  std::vector<TraineeRename> trainee_renames() const;  // oldest first
+
+  // Keeps a check of a session against its recording (needle-sim verify); `checked_at` empty: now,
+  // `checked_by` on PostgreSQL: the login role whatever is given.
+  void record_check(const SessionCheck& check);
 
   // The outbox: sessions this station kept for the server `server` (shown form) it could not reach.
   void keep_for_server(int64_t id, const std::string& server);

@@ -31,6 +31,8 @@ int compare(const SessionInfo& a, const SessionInfo& b, SessionColumn column) {
       return three_way(a.duration_s, b.duration_s);
     case SessionColumn::kResult:
       return three_way(std::string(session_result_word(a)), std::string(session_result_word(b)));
+    case SessionColumn::kCheck:
+      return three_way(std::string(session_check_word(a)), std::string(session_check_word(b)));
   }
   return 0;
 }
@@ -42,9 +44,11 @@ const char* session_result_word(const SessionInfo& s) {
   return s.passed ? "passed" : "failed";
 }
 
+const char* session_check_word(const SessionInfo& s) { return s.complete ? verification_word(verification(s)) : ""; }
+
 bool session_matches(const SessionInfo& s, const std::string& filter) {
-  const std::string text =
-      lower(s.trainee + "\n" + s.task + "\n" + s.started_at + "\n" + s.device + "\n" + session_result_word(s));
+  const std::string text = lower(s.trainee + "\n" + s.task + "\n" + s.started_at + "\n" + s.device + "\n" +
+                                 session_result_word(s) + "\n" + session_check_word(s));
   std::istringstream terms(lower(filter));
   std::string term;
   while (terms >> term) {

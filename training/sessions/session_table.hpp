@@ -10,7 +10,7 @@
 
 namespace needle::training {
 
-enum class SessionColumn { kId, kTrainee, kTask, kDate, kScore, kDuration, kResult };
+enum class SessionColumn { kId, kTrainee, kTask, kDate, kScore, kDuration, kResult, kCheck };
 
 struct SessionSort {
   SessionColumn column = SessionColumn::kId;
@@ -20,8 +20,12 @@ struct SessionSort {
 // "passed", "failed" or "incomplete" (an incomplete session has no score).
 const char* session_result_word(const SessionInfo& s);
 
+// "verified", "mismatch" or "unverified" for a complete session (its latest check against its
+// recording, session_check.hpp), "" for an incomplete one.
+const char* session_check_word(const SessionInfo& s);
+
 // True when every whitespace-separated term of `filter` occurs (ignoring case) in the session's
-// trainee, task, date, device or result word, and no term written "-term" does. Empty: all.
+// trainee, task, date, device, result word or check word, and no term written "-term" does. Empty: all.
 bool session_matches(const SessionInfo& s, const std::string& filter);
 
 // Indices into `sessions` of the rows the filter keeps, ordered by the sort columns in priority

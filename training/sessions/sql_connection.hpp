@@ -17,6 +17,11 @@ struct SessionStoreError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A stored value no run stores (a score outside 0-100): the store was damaged or altered.
+struct StoredValueError : SessionStoreError {
+  using SessionStoreError::SessionStoreError;
+};
+
 struct SqlNull {};
 struct SqlBlob {
   std::string bytes;  // raw bytes (a recording's chunk)

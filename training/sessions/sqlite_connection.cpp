@@ -1,6 +1,8 @@
 #include "training/sessions/sqlite_connection.hpp"
 
 #include <sqlite3.h>
+#include <sys/statvfs.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -29,6 +31,23 @@ struct Finalize {
   void operator()(sqlite3_stmt* s) const { sqlite3_finalize(s); }
 };
 
+// What SQLite reads as the file damaged, a database it cannot read at all; anything else (a file it
+// cannot open, a folder it cannot write) says nothing of the file's health.
+bool is_damage(int rc) {
+  const int primary = rc & 0xff;
+  return primary == SQLITE_CORRUPT || primary == SQLITE_NOTADB;
+}
+
+// Why `file` cannot be written, for a writer's error: the file system, the file's or its folder's
+// permissions.
+std::string why_not_writable(const std::string& file) {
+  const std::filesystem::path folder = std::filesystem::absolute(file).parent_path();
+  struct statvfs fs{};
+  if (::statvfs(folder.c_str(), &fs) == 0 && (fs.f_flag & ST_RDONLY)) return "its file system is mounted read-only";
+  if (::access(file.c_str(), W_OK) != 0) return "this user may not write it";
+  return "this user may not write its folder, where SQLite keeps the -wal and -shm files beside it";
+}
+
 }  // namespace
 
 void SqliteConnection::open(int flags, const std::string& name) {
@@ -43,7 +62,7 @@ void SqliteConnection::open(int flags, const std::string& name) {
 
 // A damaged file (a zeroed page, a cut) is refused before anything reads or writes it: a run must
 // not simulate a whole task and then lose it, a report must not show a session with parts missing.
-void SqliteConnection::check_integrity() {
+void SqliteConnection::check_integrity(bool writer) {
   std::string problem;  // quick_check's first line that is not "ok", or why SQLite could not run it
   auto first_problem = [](void* out, int, char** values, char**) {
     auto& text = *static_cast<std::string*>(out);
@@ -51,9 +70,13 @@ void SqliteConnection::check_integrity() {
     return 0;
   };
   char* message = nullptr;
-  if (sqlite3_exec(db_, "PRAGMA quick_check", first_problem, &problem, &message) != SQLITE_OK) {
+  if (const int rc = sqlite3_exec(db_, "PRAGMA quick_check", first_problem, &problem, &message); rc != SQLITE_OK) {
     problem = message ? message : sqlite3_errmsg(db_);  // the file itself refused: "file is not a database", ...
     sqlite3_free(message);
+    if (!is_damage(sqlite3_extended_errcode(db_)))
+      throw SessionStoreError(file_ + ": the session database could not be read (" + problem +
+                              "): nothing says it is damaged" +
+                              (writer ? "; " + why_not_writable(file_) + " (a run needs to write it)" : std::string()));
   }
   if (!problem.empty())
     throw SessionStoreError(file_ + ": the session database is damaged (PRAGMA quick_check: " + problem +
@@ -76,7 +99,13 @@ SqliteConnection::SqliteConnection(const std::string& file, bool read_only) : fi
       db_ = nullptr;
       open(SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, file_uri(file_, "immutable=1"));
     }
-    check_integrity();
+    // A file SQLite could open only for reading (a read-only file system, a file not ours) is
+    // healthy as far as anyone knows: a writer is told why it cannot write, never that it is damaged.
+    if (!read_only && sqlite3_db_readonly(db_, "main") == 1)
+      throw SessionStoreError(file_ + ": the session database cannot be written: " + why_not_writable(file_) +
+                              "; it is not damaged (needle-sim report and review read it as it is): a run needs a "
+                              "database it can write (--db FILE)");
+    check_integrity(!read_only);
     if (!read_only) {
       script("PRAGMA foreign_keys = ON", "");
       if (journal_mode() != "wal") {

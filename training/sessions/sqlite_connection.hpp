@@ -30,7 +30,7 @@ class SqliteConnection final : public SqlConnection {
 
  private:
   void open(int flags, const std::string& name);  // name: the file, or an SQLite URI for it
-  void check_integrity();
+  void check_integrity(bool writer);
 
   std::string file_;
   sqlite3* db_ = nullptr;
