@@ -1,5 +1,6 @@
 #include "app/settings.hpp"
 
+#include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <nlohmann/json.hpp>
@@ -56,8 +57,10 @@ class SettingsReader : io::StrictJsonReader<SettingsError> {
 
   std::optional<float> render_scale(const json& v) const {
     if (v.is_string() && v == "auto") return std::nullopt;
-    if (!v.is_number()) fail("/render_scale", "expected \"auto\" or a number in [0.25, 1]");
-    return float(in_range(v, "/render_scale", kMinRenderScale, 1.0, "[0.25, 1]"));
+    char range[32];
+    std::snprintf(range, sizeof range, "[%g, %g]", engine::kMinRenderScale, engine::kMaxRenderScale);
+    if (!v.is_number()) fail("/render_scale", std::string("expected \"auto\" or a number in ") + range);
+    return float(in_range(v, "/render_scale", engine::kMinRenderScale, engine::kMaxRenderScale, range));
   }
 
   ViewSettings views(const json& v) const {

@@ -30,11 +30,10 @@ struct Settings {
   engine::Extent window{1280, 720};
   ViewSettings views;
   // "render_scale": "auto" (nullopt: lowered on a CPU device while the frame misses 60 fps) or a
-  // fixed scale of the 3D view's width and height in [0.25, 1] (docs/RENDERING.md, "Render scale").
+  // fixed scale of the 3D view's width and height in [engine::kMinRenderScale, 1] (docs/RENDERING.md,
+  // "Render scale").
   std::optional<float> render_scale;
 };
-
-inline constexpr float kMinRenderScale = 0.25f;
 
 // $XDG_CONFIG_HOME/needle-sim/settings.json, else ~/.config/needle-sim/settings.json.
 std::filesystem::path default_settings_file();

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "command.hpp"
+#include "engine/scene_renderer.hpp"
 
 namespace needle::cli {
 
@@ -99,7 +100,8 @@ int parse_msaa(const std::string& text, const std::string& flag) {
 std::optional<float> parse_render_scale(const std::string& text, const std::string& flag) {
   if (text == "auto") return std::nullopt;
   const double v = parse_number(text, flag);
-  if (!(v >= 0.25 && v <= 1.0)) throw UsageError(flag + ": expected auto or a scale in [0.25, 1], got '" + text + "'");
+  if (!(v >= engine::kMinRenderScale && v <= engine::kMaxRenderScale))
+    throw UsageError(flag + ": expected auto or a scale in [0.25, 1], got '" + text + "'");
   return float(v);
 }
 
