@@ -37,23 +37,27 @@ std::vector<GamepadInfo> present_gamepads() {
   return pads;
 }
 
-int gamepad_id(const std::string& spec) {
+int gamepad_id(const haptics::DeviceSpec& spec) {
   const std::vector<GamepadInfo> pads = present_gamepads();
-  if (spec == "gamepad") {
+  if (!spec.index) {
     if (pads.empty())
       throw std::runtime_error("gamepad: none connected (GLFW reports no gamepad with a standard mapping); connect one, "
                                "or choose the mouse or the keyboard");
     return pads.front().id;
   }
-  const int id = std::stoi(spec.substr(spec.find(':') + 1));
   for (const GamepadInfo& pad : pads)
-    if (pad.id == id) return id;
-  throw std::runtime_error(spec + ": no such gamepad connected (needle-sim lists the gamepads GLFW reports on its start screen)");
+    if (pad.id == *spec.index) return pad.id;
+  throw std::runtime_error(spec.text() + ": no such gamepad connected (needle-sim lists the gamepads GLFW reports on its start screen)");
+}
+
+void check_present(const haptics::DeviceSpec& spec) {
+  if (spec.kind == haptics::DeviceSpec::Kind::kGamepad) gamepad_id(spec);
 }
 
 DeskInput::DeskInput(haptics::DeskDevice& device) : device_(device) {
-  const std::string& spec = device.capabilities().name;
-  kind_ = spec == "mouse" ? Kind::kMouse : spec == "keyboard" ? Kind::kKeyboard : Kind::kGamepad;
+  using K = haptics::DeviceSpec::Kind;
+  const haptics::DeviceSpec& spec = device.spec();
+  kind_ = spec.kind == K::kMouse ? Kind::kMouse : spec.kind == K::kKeyboard ? Kind::kKeyboard : Kind::kGamepad;
   if (kind_ == Kind::kGamepad) {
     gamepad_ = true;
     gamepad_id_ = gamepad_id(spec);
@@ -117,9 +121,9 @@ void DeskInput::place_cursor(engine::Window& window, const engine::Camera& camer
   glfwSetCursorPos(window.handle(), at->x * width / pixels.width, at->y * height / pixels.height);
 }
 
-const char* DeskInput::help(const std::string& spec) {
-  if (spec == "mouse") return "cursor: move   wheel or Up/Down: in and out   right button held: turn about the tip";
-  if (spec == "keyboard") return "arrows: move   W/S: in and out   A/D, R/F: turn about the tip   Shift: fine";
+const char* DeskInput::help(haptics::DeviceSpec::Kind kind) {
+  if (kind == haptics::DeviceSpec::Kind::kMouse) return "cursor: move   wheel or Up/Down: in and out   right button held: turn about the tip";
+  if (kind == haptics::DeviceSpec::Kind::kKeyboard) return "arrows: move   W/S: in and out   A/D, R/F: turn about the tip   Shift: fine";
   return "left stick: move   triggers: in and out   right stick: turn about the tip   Start: reset a fault";
 }
 

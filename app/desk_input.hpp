@@ -12,6 +12,7 @@
 #include "engine/scene.hpp"
 #include "engine/window.hpp"
 #include "haptics/devices/desk_mapping.hpp"
+#include "haptics/devices/device_spec.hpp"
 
 namespace needle::app {
 
@@ -26,12 +27,15 @@ std::vector<GamepadInfo> present_gamepads();
 
 // The joystick id a gamepad spec names ("gamepad": the first present). Throws
 // std::runtime_error saying what to do when it is not there.
-int gamepad_id(const std::string& spec);
+int gamepad_id(const haptics::DeviceSpec& spec);
+// Before a session opens on `spec`: the gamepad it names is present (gamepad_id's error
+// otherwise); nothing to check for the other devices here (a Falcon is found when it opens).
+void check_present(const haptics::DeviceSpec& spec);
 
 class DeskInput {
  public:
-  // For the desk device `device`, whose capabilities' name is its spec (mouse, keyboard,
-  // gamepad[:N]). Throws std::runtime_error when a gamepad spec names none that is present.
+  // For the desk device `device` (mouse, keyboard, gamepad[:N]). Throws std::runtime_error when
+  // a gamepad spec names none that is present.
   explicit DeskInput(haptics::DeskDevice& device);
 
   // One frame of input: the window's cursor, wheel and gamepad, and the frame's key presses
@@ -45,7 +49,7 @@ class DeskInput {
   // True once after each press of the gamepad's reset button.
   bool take_fault_reset() { return gamepad_ && pad_.take_fault_reset(); }
   // What moves the needle, in one line for the panel.
-  static const char* help(const std::string& spec);
+  static const char* help(haptics::DeviceSpec::Kind kind);
 
  private:
   haptics::DeskDevice& device_;

@@ -95,7 +95,7 @@ TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices
   }
   engine::GpuScene scene(window.renderer(), session.scene());
   std::optional<TaskEnd> end;
-  const char* controls = desk ? DeskInput::help(session.desk()->capabilities().name) : nullptr;
+  const char* controls = desk ? DeskInput::help(session.desk()->spec().kind) : nullptr;
   std::vector<ui::Choice> choices;
   if (offer_choices) {
     choices = {{"Retry (R)", [&end] { end = TaskEnd::kRetry; }},
@@ -147,7 +147,7 @@ int run_scene_headless(const engine::Scene& scene, const WindowOptions& options,
 }
 
 int run_task_window(const TaskSessionOptions& task, const WindowOptions& options) {
-  if (task.rig.device.rfind("gamepad", 0) == 0) gamepad_id(task.rig.device);  // before a session is opened without it
+  check_present(task.rig.device);  // before a session is opened without it
   TaskSession session(task);
   SessionWindow window(options);
   run_task(window, session, false);

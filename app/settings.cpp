@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "haptics/devices/desk_device.hpp"
+#include "haptics/devices/device_spec.hpp"
 #include "io/strict_json.hpp"
 #include "io/file_write.hpp"
 
@@ -26,11 +26,7 @@ struct SettingsError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-bool known_device(const std::string& spec) {
-  if (haptics::is_desk_spec(spec) || spec == "falcon") return true;
-  return spec.rfind("falcon:", 0) == 0 && spec.size() > 7 && spec.size() <= 10 &&
-         spec.find_first_not_of("0123456789", 7) == std::string::npos;
-}
+constexpr const char* kTraineeDevices = "expected mouse, keyboard, gamepad[:N] or falcon[:N]";
 
 class SettingsReader : io::StrictJsonReader<SettingsError> {
  public:
@@ -41,8 +37,13 @@ class SettingsReader : io::StrictJsonReader<SettingsError> {
     Settings s;
     if (root.contains("trainee")) s.trainee = string(root["trainee"], "/trainee");
     if (root.contains("device")) {
-      s.device = string(root["device"], "/device");
-      if (!known_device(s.device)) fail("/device", "unknown device \"" + s.device + "\" (expected mouse, keyboard, gamepad[:N] or falcon[:N])");
+      const std::string text = string(root["device"], "/device");
+      try {
+        s.device = haptics::DeviceSpec::parse(text);
+      } catch (const haptics::DeviceSpecError&) {
+        fail("/device", "unknown device \"" + text + "\" (" + kTraineeDevices + ")");
+      }
+      if (!s.device.live()) fail("/device", "device \"" + text + "\" is no trainee's device (" + kTraineeDevices + ")");
     }
     if (root.contains("window")) {
       const json& w = root["window"];
@@ -142,7 +143,7 @@ void save_settings(const fs::path& file, const Settings& settings) {
   fs::create_directories(file.parent_path(), ec);
   if (ec) throw std::runtime_error(file.string() + ": cannot write: making its folder: " + ec.message());
   json j = {{"version", kSettingsVersion},
-            {"device", settings.device},
+            {"device", settings.device.text()},
             {"window", {{"width", settings.window.width}, {"height", settings.window.height}}},
             {"views",
              {{"section", section_name(settings.views.section)},

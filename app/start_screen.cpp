@@ -5,6 +5,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -62,7 +63,7 @@ class StartScreen {
     }
     ui::set_trainee_name(state_, settings.trainee);
     state_.focus_name = settings.trainee.empty();
-    scan_devices(settings.device);
+    scan_devices(settings.device.text());
     read_store();
   }
 
@@ -161,20 +162,21 @@ std::vector<training::SessionInfo> start_screen_sessions(const std::string& db) 
 }
 
 std::vector<ui::StartDevice> present_devices() {
-  std::vector<ui::StartDevice> devices = {{"mouse", "Mouse", DeskInput::help("mouse"), true},
-                                          {"keyboard", "Keyboard", DeskInput::help("keyboard"), true}};
+  using Kind = haptics::DeviceSpec::Kind;
+  std::vector<ui::StartDevice> devices = {{haptics::DeviceSpec{Kind::kMouse}.text(), "Mouse", DeskInput::help(Kind::kMouse), true},
+                                          {haptics::DeviceSpec{Kind::kKeyboard}.text(), "Keyboard", DeskInput::help(Kind::kKeyboard), true}};
   for (const GamepadInfo& pad : present_gamepads())
-    devices.push_back({"gamepad:" + std::to_string(pad.id), "Gamepad " + std::to_string(pad.id) + " (" + pad.name + ")",
-                       DeskInput::help("gamepad"), true});
+    devices.push_back({haptics::DeviceSpec{Kind::kGamepad, pad.id}.text(), "Gamepad " + std::to_string(pad.id) + " (" + pad.name + ")",
+                       DeskInput::help(Kind::kGamepad), true});
   const haptics::falcon::UsbPresence falcons = haptics::falcon::find_falcons();
-  for (int i = 0; i < falcons.count; ++i)
-    devices.push_back({"falcon:" + std::to_string(i), "Falcon " + std::to_string(i),
+  for (int i = 0; i < std::min(falcons.count, haptics::kMaxDeviceIndex + 1); ++i)
+    devices.push_back({haptics::DeviceSpec{Kind::kFalcon, i}.text(), "Falcon " + std::to_string(i),
                        "the Falcon's handle moves the tool and you feel the forces; it is homed when the task starts "
                        "(move the grip all the way out and back in); its firmware must have been loaded since it was powered on "
                        "(needle-sim run --device falcon --firmware FILE loads it)",
                        true});
   if (falcons.count == 0)
-    devices.push_back({"falcon", falcons.error.empty() ? "Falcon (none connected)" : "Falcon (USB not readable)",
+    devices.push_back({haptics::DeviceSpec{Kind::kFalcon}.text(), falcons.error.empty() ? "Falcon (none connected)" : "Falcon (USB not readable)",
                        falcons.error.empty() ? "no Falcon connected" : "the USB bus cannot be read: " + falcons.error, false});
   return devices;
 }
@@ -209,7 +211,7 @@ int run_start_screen(const StartScreenOptions& options) {
   while (!window.closed()) {
     if (choose(window, screen) != ui::StartAction::kStart) break;
     settings.trainee = ui::trainee_name(screen.state());
-    settings.device = screen.device().spec;
+    settings.device = haptics::DeviceSpec::parse(screen.device().spec);
     save();
     screen.state().notice.clear();
     // The chosen task, again on Retry, the next on Next task, until Back.
@@ -223,7 +225,7 @@ int run_start_screen(const StartScreenOptions& options) {
       task.out_dir = local_folder(options.db) / "runs" / screen.task().name;
       try {
         fs::create_directories(task.out_dir);
-        if (task.rig.device.rfind("gamepad", 0) == 0) gamepad_id(task.rig.device);
+        check_present(task.rig.device);
         TaskSession session(task);
         end = run_task(window, session, true);
       } catch (const std::exception& e) {

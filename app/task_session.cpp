@@ -110,13 +110,13 @@ TaskSession::TaskSession(TaskSessionOptions options)
   config.rate_hz = rig_->rate_hz();
   config.sample_capacity = 1 << 15;  // 33 s at 1 kHz: room for the recorder's worst stall
   loop_ = std::make_unique<haptics::HapticLoop>(rig_->device(), rig_->safety_limits(), config);
-  const bool replay = options_.rig.device.rfind("replay:", 0) == 0;
+  const bool replay = options_.rig.device.kind == haptics::DeviceSpec::Kind::kReplay;
   const uint64_t bound = static_cast<uint64_t>(std::llround(training::session_time_bound_s(task_) * rig_->rate_hz()));
   tick_budget_ = rig_->ticks() ? (replay ? *rig_->ticks() : std::min(*rig_->ticks(), bound)) : bound;
   recorder_ = std::make_unique<haptics::SessionRecorder>(
       recording_path_.string(),
       haptics::SessionHeader{haptics::kSessionFormatVersion, rig_->rate_hz(), static_cast<int64_t>(std::time(nullptr)),
-                             options_.rig.device, rig_->context()},
+                             options_.rig.device.text(), rig_->context()},
       loop_->samples(), [this](const haptics::TickSample& s) { feed_.consume(s); });
   new_session_ = {options_.trainee, task_.name, task_.title, task_.source, rig_->description(), recording_path_.string(),
                   options_.station, training::new_session_uid(), training::utc_timestamp()};
@@ -148,7 +148,7 @@ std::optional<double> TaskSession::duration_s() const {
 }
 
 void TaskSession::run_offline(const std::function<void(size_t)>& on_step_end) {
-  if (!rig_->ticks()) throw std::logic_error("a session on " + options_.rig.device + " runs only in real time, in a window");
+  if (!rig_->ticks()) throw std::logic_error("a session on " + options_.rig.device.text() + " runs only in real time, in a window");
   const uint64_t ticks = tick_budget_;
   loop_->submit(haptics::LoopCommand::start(ticks));
   ProgressBar progress(double(ticks) / rig_->rate_hz());

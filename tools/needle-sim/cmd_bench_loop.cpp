@@ -44,16 +44,16 @@ struct HapticRun {
   std::string realtime_line;
 };
 
-// The haptic loop as the app runs it: the device ("mouse", no step; or "sim:SCENARIO", the
-// simulated master with the controller), the safety monitor at the device's limits, snapshot
-// and sample ring, and the recorder thread writing the session to a temporary file.
-HapticRun time_haptic_loop(const std::string& device_spec, double rate_hz, double seconds) {
+// The haptic loop as the app runs it: the device (mouse, no step; or sim:SCENARIO, the simulated
+// master with the controller), the safety monitor at the device's limits, snapshot and sample
+// ring, and the recorder thread writing the session to a temporary file.
+HapticRun time_haptic_loop(const haptics::DeviceSpec& device_spec, double rate_hz, double seconds) {
   std::unique_ptr<haptics::SimSession> sim;
-  haptics::DeskDevice mouse("mouse");
+  haptics::DeskDevice mouse(haptics::DeviceSpec{haptics::DeviceSpec::Kind::kMouse});
   haptics::HapticDevice* device = &mouse;
   haptics::ServoStep* step = nullptr;
-  if (device_spec.rfind("sim:", 0) == 0) {
-    sim = std::make_unique<haptics::SimSession>(device_spec.substr(4), rate_hz);
+  if (device_spec.kind == haptics::DeviceSpec::Kind::kSim) {
+    sim = std::make_unique<haptics::SimSession>(device_spec.file, rate_hz);
     device = &sim->device();
     step = &sim->step();
   }
@@ -63,7 +63,7 @@ HapticRun time_haptic_loop(const std::string& device_spec, double rate_hz, doubl
   haptics::HapticLoop loop(*device, haptics::safety_limits_for(device->capabilities()), config);
   const std::string path = (std::filesystem::temp_directory_path() /
                             ("needle_bench_loop_" + std::to_string(::getpid()) + ".nsrec")).string();
-  haptics::SessionRecorder recorder(path, {haptics::kSessionFormatVersion, rate_hz, 0, device_spec}, loop.samples());
+  haptics::SessionRecorder recorder(path, {haptics::kSessionFormatVersion, rate_hz, 0, device_spec.text()}, loop.samples());
   HapticRun run;
   run.realtime_line = loop.launch();
   recorder.start();
@@ -114,11 +114,18 @@ int run_bench_loop(ArgList& args) {
   const std::vector<double> rates = parse_number_list(args.value("--rates").value_or("1000,2000,4000"), "--rates");
   const double seconds = parse_number(args.value("--seconds").value_or("30"), "--seconds");
   const bool with_load = args.flag("--render-load");
-  const std::string device_spec =
+  const std::string device_text =
       args.value("--device").value_or("sim:" + (asset_dir() / "scenarios" / "nonholonomic_needle.json").string());
   args.finish();
-  if (device_spec != "mouse" && device_spec.rfind("sim:", 0) != 0)
-    throw UsageError("--device: expected mouse or sim:SCENARIO.json, got " + device_spec);
+  haptics::DeviceSpec device_spec;
+  try {
+    device_spec = haptics::DeviceSpec::parse(device_text);
+  } catch (const haptics::DeviceSpecError& e) {
+    throw UsageError(std::string("--device: ") + e.what());
+  }
+  const bool sim_scenario = device_spec.kind == haptics::DeviceSpec::Kind::kSim && !device_spec.file.empty();
+  if (device_spec.kind != haptics::DeviceSpec::Kind::kMouse && !sim_scenario)
+    throw UsageError("--device: expected mouse or sim:SCENARIO.json, got " + device_text);
   if (!(seconds > 0.0 && seconds <= 3600.0)) throw UsageError("--seconds: expected a duration in (0, 3600]");
   for (double r : rates) {
     try {
@@ -144,7 +151,7 @@ int run_bench_loop(ArgList& args) {
     for (double rate : rates) {
       const HapticRun run = time_haptic_loop(device_spec, rate, seconds);
       realtime_line = run.realtime_line;
-      add("haptic", device_spec.substr(0, device_spec.find(':')), rate, load, run.stats);
+      add("haptic", device_spec.kind == haptics::DeviceSpec::Kind::kSim ? "sim" : "mouse", rate, load, run.stats);
       add("bare", "-", rate, load, time_bare_loop(rate, seconds, haptics::LoopConfig{}.realtime));
     }
   };

@@ -13,6 +13,7 @@
 #include "app/default_db.hpp"
 #include "app/session_window.hpp"
 #include "engine/window.hpp"
+#include "haptics/devices/device_spec.hpp"
 #include "haptics/realtime/haptic_loop.hpp"
 
 namespace needle::cli {
@@ -37,8 +38,14 @@ int run_run(ArgList& args) {
   if (auto scene = args.value("--scene")) options.scene = *scene;
   auto task = args.value("--task");
   if (options.scene && task) throw UsageError("give --task FILE or --scene FILE, not both");
-  options.task.rig.device = args.value("--device").value_or("sim");
-  const std::string& device = options.task.rig.device;
+  const std::string device_text = args.value("--device").value_or("sim");
+  try {
+    options.task.rig.device = haptics::DeviceSpec::parse(device_text);
+  } catch (const haptics::DeviceSpecError& e) {
+    throw UsageError(std::string("--device: ") + e.what() + "; needle-sim devices lists what is connected");
+  }
+  const haptics::DeviceSpec& device = options.task.rig.device;
+  using Kind = haptics::DeviceSpec::Kind;
   options.task.rig.firmware = args.value("--firmware").value_or("");
   if (auto rate = args.value("--rate")) options.task.rig.rate_hz = parse_number(*rate, "--rate");
   options.task.trainee = args.value("--trainee").value_or(default_trainee());
@@ -63,17 +70,14 @@ int run_run(ArgList& args) {
   options.window.hud = !args.flag("--no-hud");
   args.finish();
   if (options.window.screenshot && options.window.frames == 0) throw UsageError("--screenshot needs --frames N (the frame to capture)");
-  if (options.scene && (device != "sim" || operator_spec || options.task.rig.rate_hz || !options.task.rig.firmware.empty()))
+  if (options.scene && (device != haptics::DeviceSpec{} || operator_spec || options.task.rig.rate_hz || !options.task.rig.firmware.empty()))
     throw UsageError("--scene plays a scripted needle: --device, --operator, --rate and --firmware are for tasks");
-  const bool replay = device.rfind("replay:", 0) == 0;
-  const bool scripted = device == "sim" || replay;
-  if (!scripted && device != "mouse" && device != "falcon" && device.rfind("falcon:", 0) != 0)
-    throw UsageError("--device " + device +
-                     ": unknown device (expected sim, mouse, falcon, falcon:N or replay:FILE; needle-sim devices lists "
-                     "what is connected)");
-  if (operator_spec && device != "sim") throw UsageError("--operator: only the simulated device (--device sim) has a scripted operator");
+  const bool replay = device.kind == Kind::kReplay;
+  if (device.kind == Kind::kSim && !device.file.empty())
+    throw UsageError("--device " + device_text + ": a task's sim runs the task's own scenario (--device sim, --operator SCRIPT)");
+  if (operator_spec && device.kind != Kind::kSim) throw UsageError("--operator: only the simulated device (--device sim) has a scripted operator");
   if (replay && (task || options.task.rig.rate_hz))
-    throw UsageError("--device " + device + ": a replay runs the recording's own task at its rate; drop --task and --rate");
+    throw UsageError("--device " + device_text + ": a replay runs the recording's own task at its rate; drop --task and --rate");
   if (options.task.rig.rate_hz) {
     try {
       haptics::check_loop_rate(*options.task.rig.rate_hz);
@@ -89,8 +93,8 @@ int run_run(ArgList& args) {
     engine::Scene scene = engine::load_scene(*options.scene);
     return window ? app::run_scene_window(scene, options.window) : app::run_scene_headless(scene, options.window, options.out_dir);
   }
-  if (!window && !scripted) {
-    throw UsageError("--device " + device + ": a trainee's device needs the window" +
+  if (!window && device.live()) {
+    throw UsageError("--device " + device_text + ": a trainee's device needs the window" +
                      (headless ? " (drop --headless)" : " and there is no display"));
   }
   return window ? app::run_task_window(options.task, options.window)
