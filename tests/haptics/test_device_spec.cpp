@@ -16,12 +16,12 @@ TEST(DeviceSpec, EveryDocumentedFormParsesAndPrintsBack) {
     const char* text;
     DeviceSpec spec;
   };
-  for (const Case& c : {Case{"sim", {Kind::kSim}}, Case{"sim:a/b.json", {Kind::kSim, std::nullopt, "a/b.json"}},
-                        Case{"mouse", {Kind::kMouse}}, Case{"keyboard", {Kind::kKeyboard}},
-                        Case{"gamepad", {Kind::kGamepad}}, Case{"gamepad:0", {Kind::kGamepad, 0}},
-                        Case{"gamepad:15", {Kind::kGamepad, 15}}, Case{"falcon", {Kind::kFalcon}},
-                        Case{"falcon:2", {Kind::kFalcon, 2}},
-                        Case{"replay:/data/x:y.nrec", {Kind::kReplay, std::nullopt, "/data/x:y.nrec"}}}) {
+  for (const Case& c :
+       {Case{"sim", {Kind::kSim}}, Case{"sim:a/b.json", {Kind::kSim, std::nullopt, "a/b.json"}},
+        Case{"mouse", {Kind::kMouse}}, Case{"keyboard", {Kind::kKeyboard}}, Case{"gamepad", {Kind::kGamepad}},
+        Case{"gamepad:0", {Kind::kGamepad, 0}}, Case{"gamepad:15", {Kind::kGamepad, 15}},
+        Case{"falcon", {Kind::kFalcon}}, Case{"falcon:2", {Kind::kFalcon, 2}},
+        Case{"replay:/data/x:y.nrec", {Kind::kReplay, std::nullopt, "/data/x:y.nrec"}}}) {
     const DeviceSpec parsed = DeviceSpec::parse(c.text);
     EXPECT_EQ(parsed, c.spec) << c.text;
     EXPECT_EQ(parsed.text(), c.text);
@@ -47,15 +47,15 @@ TEST(DeviceSpec, AnythingElseIsRefusedNamingTheTextAndTheForms) {
     const char* text;
     const char* says;
   };
-  for (const Case& c : {Case{"", "empty"}, Case{"phantom", "unknown device"}, Case{"Mouse", "unknown device"},
-                        Case{"replay:", "expected a recording file after replay:"},
-                        Case{"replay", "expected a recording file after replay:"},
-                        Case{"sim:", "expected a scenario file after sim:"},
-                        Case{"gamepad:", "an index from 0 to 15"}, Case{"gamepad:x", "an index from 0 to 15"},
-                        Case{"gamepad:16", "an index from 0 to 15"}, Case{"gamepad:-1", "an index from 0 to 15"},
-                        Case{"gamepad:01", "an index from 0 to 15"}, Case{"falcon:123", "an index from 0 to 15"},
-                        Case{"falcon: 1", "an index from 0 to 15"}, Case{"mouse:1", "mouse takes nothing after ':'"},
-                        Case{"keyboard:", "keyboard takes nothing after ':'"}}) {
+  for (const Case& c :
+       {Case{"", "empty"}, Case{"phantom", "unknown device"}, Case{"Mouse", "unknown device"},
+        Case{"replay:", "expected a recording file after replay:"},
+        Case{"replay", "expected a recording file after replay:"}, Case{"sim:", "expected a scenario file after sim:"},
+        Case{"gamepad:", "an index from 0 to 15"}, Case{"gamepad:x", "an index from 0 to 15"},
+        Case{"gamepad:16", "an index from 0 to 15"}, Case{"gamepad:-1", "an index from 0 to 15"},
+        Case{"gamepad:01", "an index from 0 to 15"}, Case{"falcon:123", "an index from 0 to 15"},
+        Case{"falcon: 1", "an index from 0 to 15"}, Case{"mouse:1", "mouse takes nothing after ':'"},
+        Case{"keyboard:", "keyboard takes nothing after ':'"}}) {
     try {
       DeviceSpec::parse(c.text);
       ADD_FAILURE() << "accepted '" << c.text << "'";

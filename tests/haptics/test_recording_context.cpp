@@ -27,7 +27,8 @@ json current_context() {
           {"task", "t.json"},
           {"task_text", "{}"},
           {"device", "mouse"},
-          {"scenario", {{"gains", {{"law", "tool"}, {"lateral_stiffness_N_per_m", 40.0}, {"axial_stiffness_N_per_m", 5.0}}}}},
+          {"scenario",
+           {{"gains", {{"law", "tool"}, {"lateral_stiffness_N_per_m", 40.0}, {"axial_stiffness_N_per_m", 5.0}}}}},
           {"coupling", {{"workspace_scale", 1.0}, {"wrist", true}}},
           {"safety_limits", {{"max_force_n", 3.3}}}};
 }
@@ -62,12 +63,13 @@ TEST(RecordingContext, AContextThatCannotRebuildItsSessionIsRefusedNamingTheFile
   wrong_version["version"] = "2";
   json no_text = current_context();
   no_text.erase("task_text");
-  for (const Case& c : {Case{header_with(current_context().dump(), 2), "r.nrec: header: format version 2 has no checksums"},
-                        Case{header_with(""), "r.nrec: header: context: none (recorded by another program)"},
-                        Case{header_with("{not json"), "r.nrec: header: context: not valid JSON"},
-                        Case{header_with("[1]"), "r.nrec: header: context: expected version 2"},
-                        Case{header_with(wrong_version.dump()), "r.nrec: header: context: expected version 2"},
-                        Case{header_with(no_text.dump()), "r.nrec: header: context: missing \"task_text\""}}) {
+  for (const Case& c :
+       {Case{header_with(current_context().dump(), 2), "r.nrec: header: format version 2 has no checksums"},
+        Case{header_with(""), "r.nrec: header: context: none (recorded by another program)"},
+        Case{header_with("{not json"), "r.nrec: header: context: not valid JSON"},
+        Case{header_with("[1]"), "r.nrec: header: context: expected version 2"},
+        Case{header_with(wrong_version.dump()), "r.nrec: header: context: expected version 2"},
+        Case{header_with(no_text.dump()), "r.nrec: header: context: missing \"task_text\""}}) {
     try {
       read_recording_context("r.nrec", c.header);
       ADD_FAILURE() << c.says;

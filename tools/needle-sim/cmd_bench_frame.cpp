@@ -17,11 +17,11 @@
 #include "app/ultrasound_window.hpp"
 #include "app/trainee_frame.hpp"
 #include "app/window_frames.hpp"
-#include "arg_list.hpp"
 #include "asset-gen/assets.hpp"
 #include "asset_path.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
+#include "flag_ranges.hpp"
 #include "engine/gltf_loader.hpp"
 #include "engine/offscreen.hpp"
 #include "sample_stats.hpp"
@@ -44,13 +44,9 @@ struct Content {
 
 std::vector<Content> parse_contents(const std::string& list) {
   std::vector<Content> contents;
-  for (size_t start = 0; start <= list.size();) {
-    const size_t end = std::min(list.find(',', start), list.size());
-    const std::string item = list.substr(start, end - start);
-    start = end + 1;
+  for (const std::string& item : split_list(list, "--contents", kMaxListItems)) {
     if (item.rfind(kTissuePrefix, 0) == 0) {
-      const double n = parse_number(item.substr(std::string(kTissuePrefix).size()), "--contents");
-      if (n < 3 || n > 2000 || n != double(int(n))) throw UsageError("--contents: tissue:N takes N in 3..2000");
+      const long long n = parse_whole(item.substr(std::string(kTissuePrefix).size()), "--contents tissue:N", kDeformSpheres);
       contents.push_back({item, {}, int(n)});
       continue;
     }
@@ -63,11 +59,7 @@ std::vector<Content> parse_contents(const std::string& list) {
 
 std::vector<engine::Extent> parse_sizes(const std::string& list) {
   std::vector<engine::Extent> sizes;
-  for (size_t start = 0; start <= list.size();) {
-    const size_t end = std::min(list.find(',', start), list.size());
-    sizes.push_back(parse_size(list.substr(start, end - start), "--sizes"));
-    start = end + 1;
-  }
+  for (const std::string& item : split_list(list, "--sizes", kMaxListItems)) sizes.push_back(parse_size(item, "--sizes"));
   return sizes;
 }
 
@@ -88,6 +80,8 @@ std::vector<Variant> parse_variants(const std::string& list) {
     const size_t end = std::min(list.find(';', start), list.size());
     Variant v{list.substr(start, end - start)};
     start = end + 1;
+    if (variants.size() == kMaxListItems)
+      throw UsageError("--variants: expected at most " + std::to_string(kMaxListItems) + " variants");
     for (size_t k = 0; k <= v.name.size() && v.name != "default";) {
       const size_t stop = std::min(v.name.find(',', k), v.name.size());
       const std::string setting = v.name.substr(k, stop - k);
@@ -95,9 +89,7 @@ std::vector<Variant> parse_variants(const std::string& list) {
       const size_t eq = setting.find('=');
       const std::string key = setting.substr(0, eq), value = eq == std::string::npos ? "" : setting.substr(eq + 1);
       if (key == "scale") {
-        const double scale = parse_number(value, "--variants scale");
-        if (!(scale > 0.0 && scale <= 1.0)) throw UsageError("--variants: scale=S takes S in (0, 1]");
-        v.scale = float(scale);
+        v.scale = float(parse_number(value, "--variants scale=S", {engine::kMinRenderScale, engine::kMaxRenderScale}));
       } else if (setting == "present=fifo" || setting == "present=mailbox" || setting == "present=immediate" ||
                  setting == "present=shm") {
         using P = engine::WindowTarget::Presentation;
@@ -106,10 +98,7 @@ std::vector<Variant> parse_variants(const std::string& list) {
                          : setting == "present=shm"       ? P::SharedMemory
                                                           : P::Fifo;
       } else if (key == "sweep") {
-        const double frames = parse_number(value, "--variants sweep");
-        if (!(frames >= 1.0 && frames <= 16.0 && frames == double(int(frames))))
-          throw UsageError("--variants: sweep=N takes N in 1..16");
-        v.sweep_frames = uint32_t(frames);
+        v.sweep_frames = uint32_t(parse_whole(value, "--variants sweep=N", kSweepFrames));
       } else if (setting == "cut_culling=off") {
         v.cut_culling = false;
       } else if (setting == "specialized=off") {
@@ -211,27 +200,31 @@ std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget&
   return samples;
 }
 
-int run_bench_frame(ArgList& args) {
-  const auto json = args.value("--json");
-  const std::vector<Content> contents =
-      parse_contents(args.value("--contents").value_or("penetrable_sphere,rigid_sphere,tissue:400"));
-  const std::vector<engine::Extent> sizes = parse_sizes(args.value("--sizes").value_or("1280x720,1920x1080"));
-  const std::string targets_arg = args.value("--targets").value_or("window,offscreen");
-  RowOptions options;
-  options.frames = long(parse_number(args.value("--frames").value_or("300"), "--frames"));
-  options.warmup = long(parse_number(args.value("--warmup").value_or("30"), "--warmup"));
+struct FrameFlags {
+  std::optional<std::string> json;
+  std::string contents = "penetrable_sphere,rigid_sphere,tissue:400", sizes = "1280x720,1920x1080";
+  std::string targets = "window,offscreen", variants = "default", views = "none";
+  long long frames = 300, warmup = 30;
   std::optional<int> msaa;
-  if (auto m = args.value("--msaa")) msaa = parse_msaa(*m, "--msaa");
-  options.timestamps = !args.flag("--no-timestamps");
-  options.variants = parse_variants(args.value("--variants").value_or("default"));
-  const std::optional<float> render_scale = parse_render_scale(args.value("--render-scale").value_or("auto"), "--render-scale");
-  const std::string views = args.value("--views").value_or("none");
-  args.finish();
-  if (options.frames < 10 || options.warmup < 0) throw UsageError("--frames: at least 10; --warmup: 0 or more");
+  bool no_timestamps = false;
+  std::optional<float> render_scale;
+};
+
+int run(const FrameFlags& f) {
+  const std::vector<Content> contents = parse_contents(f.contents);
+  const std::vector<engine::Extent> sizes = parse_sizes(f.sizes);
+  const std::string& targets_arg = f.targets;
+  RowOptions options;
+  options.frames = long(f.frames);
+  options.warmup = long(f.warmup);
+  const std::optional<int> msaa = f.msaa;
+  options.timestamps = !f.no_timestamps;
+  options.variants = parse_variants(f.variants);
+  const std::optional<float> render_scale = f.render_scale;
+  const std::string& views = f.views;
+  const std::optional<std::string>& json = f.json;
   const bool section_view = views.find("section") != std::string::npos;
   const bool ultrasound_view = views.find("ultrasound") != std::string::npos;
-  if (views != "none" && views != "section" && views != "ultrasound" && views != "section,ultrasound" && views != "ultrasound,section")
-    throw UsageError("--views: expected none, section, ultrasound or section,ultrasound, got '" + views + "'");
   if (ultrasound_view)
     for (const Content& c : contents)
       if (c.task.empty()) throw UsageError("--views ultrasound: " + c.name + " is no task (the ultrasound images a task's layers)");
@@ -337,39 +330,44 @@ int run_bench_frame(ArgList& args) {
   return 0;
 }
 
-const CommandRegistrar reg{
-    {"bench frame",
-     "needle-sim bench frame [--json FILE] [--contents penetrable_sphere,rigid_sphere,tissue:400]\n"
-     "                       [--sizes 1280x720,1920x1080] [--targets window,offscreen] [--frames N] [--warmup N]\n"
-     "                       [--msaa N] [--no-timestamps] [--views none|section|ultrasound|section,ultrasound]\n"
-     "                       [--render-scale auto|S] [--variants default;scale=S...]\n"
-     "  --json FILE      also write the rows as JSON (keys: content, target, size, frame_ms_median, frame_ms_p95,\n"
-     "                   passes: name -> median ms, ...)\n"
-     "  --contents LIST  what the frame shows: a task (a name in assets/tasks or a file) run in real time by its\n"
-     "                   scripted good operator on the simulated device, as `run` shows it; tissue:N, the N x N\n"
-     "                   sphere with its levels of detail under the scripted needle, as `run --scene` shows it\n"
-     "  --sizes LIST     frame sizes (default 1280x720,1920x1080)\n"
-     "  --targets LIST   window (needs a display: xvfb-run), offscreen, or both (default)\n"
-     "  --frames N       measured frames of each kind per row (default 300), after --warmup N (default 30)\n"
-     "  --msaa N         MSAA samples (default: as the window, 1 on a CPU device, else 4)\n"
-     "  --no-timestamps  no device timings; otherwise frames with and without timestamps alternate in blocks\n"
-     "                   of 8, the frame times are those without, the device times those with\n"
-     "  --views LIST     the views open as in the window (default none): the section view cut through the needle\n"
-     "                   (or the task's plane), the ultrasound window with its 256 x 512 image swept over two\n"
-     "                   frames, half its lines a frame, as the window does (its passes are in deformation_*, the\n"
-     "                   work recorded before the scene's pass); key views\n"
-     "  --render-scale X the frame's render scale, as run's (default auto: lowered on a CPU device while the\n"
-     "                   frame misses 60 fps); key render_scale (the median of the frames'), upscale_device\n"
-     "  --variants LIST  settings compared within each row, block by block in turn, ';' between variants and\n"
-     "                   ',' between the settings of one: default (the frame's own), scale=S (a fixed render scale),\n"
-     "                   cut_culling=off (the section's cut-away chunks drawn, as before they were culled),\n"
-     "                   specialized=off (every draw with the general mesh shader, its discards and texture\n"
-     "                   fetch run masked, as before),\n"
-     "                   present=fifo|mailbox|immediate (the window's swapchain and its present mode) or\n"
-     "                   present=shm (a CPU device's frames through X11 shared memory); default: the window's own\n"
-     "                   (shm where it is offered, else fifo; the window's line says which),\n"
-     "                   sweep=N (the ultrasound image made over N frames, 1: whole every frame; default 2)",
-     run_bench_frame}};
+const CommandRegistrar reg{{"bench frame", "the trainee's whole frame as run draws it, pass by pass, in a window and offscreen",
+                            [](CLI::App& app) -> Runner {
+  auto f = std::make_shared<FrameFlags>();
+  add_output_file(app, "--json", f->json, "FILE",
+                  "also write the rows as JSON (keys: content, target, size, frame_ms_median, frame_ms_p95,\n"
+                  "passes: name -> median ms, ...)");
+  add_text(app, "--contents", f->contents, "LIST",
+           "what the frame shows: a task (a name in assets/tasks or a file) run in real time by its\n"
+           "scripted good operator on the simulated device, as `run` shows it; tissue:N (N from 3 to 2000),\n"
+           "the N x N sphere with its levels of detail under the scripted needle, as `run --scene` shows it");
+  add_text(app, "--sizes", f->sizes, "LIST", "frame sizes, each WxH");
+  add_text(app, "--targets", f->targets, "LIST", "window (needs a display: xvfb-run), offscreen, or both");
+  add_whole(app, "--frames", f->frames, kFrameBenchFrames, "N", "measured frames of each kind per row");
+  add_whole(app, "--warmup", f->warmup, kFrameBenchWarmup, "N", "frames drawn before the measured ones");
+  add_msaa(app, "--msaa", f->msaa, "MSAA samples, by default as the window has them: 1 on a CPU device, else 4");
+  add_flag(app, "--no-timestamps", f->no_timestamps,
+           "no device timings; otherwise frames with and without timestamps alternate in blocks\n"
+           "of 8, the frame times are those without, the device times those with");
+  add_choice(app, "--views", f->views, {"none", "section", "ultrasound", "section,ultrasound", "ultrasound,section"},
+             "the views open as in the window: the section view cut through the needle\n"
+             "(or the task's plane), the ultrasound window with its 256 x 512 image swept over two\n"
+             "frames, half its lines a frame, as the window does (its passes are in deformation_*, the\n"
+             "work recorded before the scene's pass); key views");
+  add_render_scale(app, "--render-scale", f->render_scale,
+                   "the frame's render scale, as run's (auto: lowered on a CPU device while the\n"
+                   "frame misses 60 fps); key render_scale (the median of the frames'), upscale_device");
+  add_text(app, "--variants", f->variants, "LIST",
+           "settings compared within each row, block by block in turn, ';' between variants and\n"
+           "',' between the settings of one: default (the frame's own), scale=S (a fixed render scale),\n"
+           "cut_culling=off (the section's cut-away chunks drawn, as before they were culled),\n"
+           "specialized=off (every draw with the general mesh shader, its discards and texture\n"
+           "fetch run masked, as before),\n"
+           "present=fifo|mailbox|immediate (the window's swapchain and its present mode) or\n"
+           "present=shm (a CPU device's frames through X11 shared memory); default: the window's own\n"
+           "(shm where it is offered, else fifo; the window's line says which),\n"
+           "sweep=N (the ultrasound image made over N frames, N from 1 to 16, 1: whole every frame; default 2)");
+  return [f] { return run(*f); };
+}}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -9,9 +9,9 @@
 #include <memory>
 #include <thread>
 
-#include "arg_list.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
+#include "flag_ranges.hpp"
 #include "asset_path.hpp"
 #include "haptics/devices/desk_device.hpp"
 #include "haptics/realtime/haptic_loop.hpp"
@@ -109,14 +109,18 @@ LoopStatsSummary time_bare_loop(double rate_hz, double seconds, const haptics::R
 
 double us(double ns) { return ns / 1000.0; }
 
-int run_bench_loop(ArgList& args) {
-  const auto json = output_file(args, "--json");
-  const std::vector<double> rates = parse_number_list(args.value("--rates").value_or("1000,2000,4000"), "--rates");
-  const double seconds = parse_number(args.value("--seconds").value_or("30"), "--seconds");
-  const bool with_load = args.flag("--render-load");
-  const std::string device_text =
-      args.value("--device").value_or("sim:" + (asset_dir() / "scenarios" / "nonholonomic_needle.json").string());
-  args.finish();
+struct LoopFlags {
+  std::optional<std::string> json, device;
+  std::vector<double> rates{1000, 2000, 4000};
+  double seconds = 30.0;
+  bool render_load = false;
+};
+
+int run(const LoopFlags& f) {
+  const std::vector<double>& rates = f.rates;
+  const double seconds = f.seconds;
+  const bool with_load = f.render_load;
+  const std::string device_text = f.device.value_or("sim:" + (asset_dir() / "scenarios" / "nonholonomic_needle.json").string());
   haptics::DeviceSpec device_spec;
   try {
     device_spec = haptics::DeviceSpec::parse(device_text);
@@ -126,14 +130,6 @@ int run_bench_loop(ArgList& args) {
   const bool sim_scenario = device_spec.kind == haptics::DeviceSpec::Kind::kSim && !device_spec.file.empty();
   if (device_spec.kind != haptics::DeviceSpec::Kind::kMouse && !sim_scenario)
     throw UsageError("--device: expected mouse or sim:SCENARIO.json, got " + device_text);
-  if (!(seconds > 0.0 && seconds <= 3600.0)) throw UsageError("--seconds: expected a duration in (0, 3600]");
-  for (double r : rates) {
-    try {
-      haptics::check_loop_rate(r);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--rates: ") + e.what());
-    }
-  }
   if (with_load && render_load() == nullptr)
     throw UsageError("--render-load: this build registers no renderer load (see render_load_hook.hpp)");
 
@@ -168,22 +164,24 @@ int run_bench_loop(ArgList& args) {
     std::printf("render load: %ld trainee frames in %.1f s (%.1f per second)\n", frames, s, double(frames) / s);
   }
   std::printf("%s\n", realtime_line.c_str());
-  table.emit("haptic loop vs bare clock_nanosleep loop (period error = |period - nominal|)", json);
+  table.emit("haptic loop vs bare clock_nanosleep loop (period error = |period - nominal|)", f.json);
   return 0;
 }
 
-const CommandRegistrar reg{
-    {"bench loop",
-     "needle-sim bench loop [--rates 1000,2000,4000] [--seconds 30] [--device sim:FILE|mouse] [--render-load]\n"
-     "                      [--json FILE]\n"
-     "  --rates        loop rates in Hz, each 250..10000\n"
-     "  --device       sim:SCENARIO.json (default: the nonholonomic scenario, master simulated, controller\n"
-     "                 stepping) or mouse (no step: the loop's own machinery only)\n"
-     "  --seconds      measuring time per row (after 0.2 s of settling)\n"
-     "  --render-load  repeat every row while the trainee's frame (the penetrable task's scene, panels and\n"
-     "                 guidance, 1280x720 offscreen) is drawn as fast as it can\n"
-     "  --json FILE    also write the rows as JSON",
-     run_bench_loop}};
+const CommandRegistrar reg{{"bench loop", "the haptic loop's timing against a bare clock_nanosleep loop, with and without rendering",
+                            [](CLI::App& app) -> Runner {
+  auto f = std::make_shared<LoopFlags>();
+  add_number_list(app, "--rates", f->rates, kLoopRates_hz, "LIST", "loop rates in Hz");
+  add_number(app, "--seconds", f->seconds, kLoopSeconds, "S", "measuring time per row (after 0.2 s of settling)");
+  add_text(app, "--device", f->device, "sim:FILE|mouse",
+           "sim:SCENARIO.json (default: the nonholonomic scenario, master simulated, controller\n"
+           "stepping) or mouse (no step: the loop's own machinery only)");
+  add_flag(app, "--render-load", f->render_load,
+           "repeat every row while the trainee's frame (the penetrable task's scene, panels and\n"
+           "guidance, 1280x720 offscreen) is drawn as fast as it can");
+  add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON");
+  return [f] { return run(*f); };
+}}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -4,22 +4,23 @@
 #include <cmath>
 #include <cstdio>
 
-#include "arg_list.hpp"
 #include "asset_path.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
+#include "flag_ranges.hpp"
 #include "haptics/sim/closed_loop.hpp"
 #include "haptics/sim/stress_cases.hpp"
 
 namespace needle::cli {
 namespace {
 
-int run_bench_stability(ArgList& args) {
-  const auto sustained_text = args.value("--sustained");
-  const auto json = output_file(args, "--json");
-  args.finish();
-  const double sustained = sustained_text ? parse_number(*sustained_text, "--sustained") : 3600.0;
-  if (!(sustained >= 10.0)) throw UsageError("--sustained must be at least 10 s");
+struct StabilityFlags {
+  std::optional<std::string> json;
+  double sustained_s = 3600.0;
+};
+
+int run(const StabilityFlags& f) {
+  const double sustained = f.sustained_s;
   const auto dir = asset_dir() / "scenarios";
   const haptics::Scenario h = haptics::load_scenario((dir / "holonomic_sphere.json").string());
   const haptics::Scenario nh = haptics::load_scenario((dir / "nonholonomic_needle.json").string());
@@ -47,19 +48,22 @@ int run_bench_stability(ArgList& args) {
   table.emit("closed-loop stress (energy bound " + std::to_string(h.energy_bound_J) + " J, divergence bound " +
                  std::to_string(h.divergence_bound_m) + " m; K_crit = 2b/T = " +
                  std::to_string(haptics::passivity_stiffness_bound(h)) + " N/m)",
-             json);
+             f.json);
   return 0;
 }
 
-const CommandRegistrar reg{{"bench stability",
-                            "needle-sim bench stability [--sustained S] [--json FILE]\n"
-                            "  --sustained S  length of the sustained-contact run (default 3600 s: about two minutes of wall time)\n"
-                            "  --json FILE    also write the rows as JSON\n"
-                            "  sweeps: gains x0.1..x100, period x1..x8, singular poses, 2x force-limit push, sustained contact,\n"
-                            "  penalty stiffness across K_crit = 2(b - |B|)/T; in the layered scenarios (tissue_block_layers,\n"
-                            "  lumbar_epidural, liver_biopsy): puncture force, friction and stiffness x0.1..x10, period x1..x8,\n"
-                            "  a push onto bone at 2x the force limit (where the tissue has bone)",
-                            run_bench_stability}};
+const CommandRegistrar reg{{"bench stability", "stress sweeps of the closed loop: each run bounded or a latched fault",
+                            [](CLI::App& app) -> Runner {
+  auto f = std::make_shared<StabilityFlags>();
+  add_number(app, "--sustained", f->sustained_s, kSustained_s, "S",
+             "simulated seconds of the sustained-contact run (3600 s: about two minutes of wall time)");
+  add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON");
+  app.footer("sweeps: gains x0.1..x100, period x1..x8, singular poses, 2x force-limit push, sustained contact,\n"
+             "penalty stiffness across K_crit = 2(b - |B|)/T; in the layered scenarios (tissue_block_layers,\n"
+             "lumbar_epidural, liver_biopsy): puncture force, friction and stiffness x0.1..x10, period x1..x8,\n"
+             "a push onto bone at 2x the force limit (where the tissue has bone)");
+  return [f] { return run(*f); };
+}}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -13,10 +13,10 @@
 #include <fstream>
 #include <set>
 
-#include "arg_list.hpp"
 #include "asset_path.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
+#include "flag_ranges.hpp"
 #include "app/task_session.hpp"
 #include "sample_stats.hpp"
 #include "training/sessions/postgres_connection.hpp"
@@ -118,12 +118,15 @@ Row measure(const std::string& location, const Workload& w, int stations, int pe
   return row;
 }
 
-int run_bench_store(ArgList& args) {
-  const std::optional<std::string> server = args.value("--db");
-  const int per_station = int(parse_whole(args.value("--sessions").value_or("8"), "--sessions", 1, 100000));
-  const std::string task = args.value("--task").value_or((asset_dir() / "tasks" / "penetrable_sphere.json").string());
-  const auto json = output_file(args, "--json");
-  args.finish();
+struct StoreFlags {
+  std::optional<std::string> db, task, json;
+  long long sessions = 8;
+};
+
+int run(const StoreFlags& f) {
+  const std::optional<std::string>& server = f.db;
+  const int per_station = int(f.sessions);
+  const std::string task = f.task.value_or((asset_dir() / "tasks" / "penetrable_sphere.json").string());
   if (server && !training::is_postgres_uri(*server)) throw UsageError("--db: a postgresql:// URI, the server to measure");
 
   const fs::path scratch = fs::temp_directory_path() / ("needle_bench_store_" + std::to_string(::getpid()));
@@ -167,22 +170,24 @@ int run_bench_store(ArgList& args) {
   fs::remove_all(scratch);
   table.emit("bench store: stations storing a " + std::to_string(w.result.overall.duration_s).substr(0, 4) +
                  " s scripted session (" + std::to_string(per_station) + " each, recording in 50 ms chunks) at once",
-             json);
+             f.json);
   return 0;
 }
 
-const CommandRegistrar reg{
-    {"bench store",
-     "needle-sim bench store [--db URI] [--sessions N] [--task FILE] [--json FILE]\n"
-     "  --db URI        the PostgreSQL server to measure (a database of its own: the bench adds sessions of\n"
-     "                  stations named bench-*); without it only the SQLite rows\n"
-     "  --sessions N    sessions each station stores (default 8)\n"
-     "  --task FILE     the task whose good script makes the session (default assets/tasks/penetrable_sphere.json)\n"
-     "  --json FILE     also write the rows as JSON\n"
-     "  rows: 1, 4 and 16 station processes on PostgreSQL, then on one SQLite file they share: sessions per\n"
-     "  minute, p99 of the finishing commit (ms), database growth per session, and stored/lost/duplicated\n"
-     "  (every session complete with every byte of its recording, no uid twice)",
-     run_bench_store}};
+const CommandRegistrar reg{{"bench store", "stations storing scripted sessions at once, on PostgreSQL and on one SQLite file",
+                            [](CLI::App& app) -> Runner {
+  auto f = std::make_shared<StoreFlags>();
+  add_text(app, "--db", f->db, "URI",
+           "the PostgreSQL server to measure (a database of its own: the bench adds sessions of\n"
+           "stations named bench-*); without it only the SQLite rows");
+  add_whole(app, "--sessions", f->sessions, kStoreSessions, "N", "sessions each station stores");
+  add_text(app, "--task", f->task, "FILE", "the task whose good script makes the session (default assets/tasks/penetrable_sphere.json)");
+  add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON");
+  app.footer("rows: 1, 4 and 16 station processes on PostgreSQL, then on one SQLite file they share: sessions per\n"
+             "minute, p99 of the finishing commit (ms), database growth per session, and stored/lost/duplicated\n"
+             "(every session complete with every byte of its recording, no uid twice)");
+  return [f] { return run(*f); };
+}}};
 
 }  // namespace
 }  // namespace needle::cli
