@@ -32,7 +32,7 @@ const CommandRegistrar reg{{"review", "the instructor's review window: sessions,
   add_flag(app, "--class", f->window.class_view, "open on the Class tab: the class view of report --cohort, with its filters and export");
   add_size(app, "--size", f->window.size, "window size");
   add_whole(app, "--frames", f->frames, kWindowFrames, "N", "close after N frames");
-  add_output_file(app, "--screenshot", f->window.screenshot, "FILE", "save frame N as presented (needs --frames)");
+  add_text(app, "--screenshot", f->window.screenshot, "FILE", "save frame N as presented (needs --frames)");
   app.footer("Needs a display; without one, needle-sim report exports a session's review headless.");
   return [f] { return run(*f); };
 }}};

@@ -120,7 +120,7 @@ const CommandRegistrar reg{{"run", "the main job: a guided needle task through t
                    "over it, the panels at full resolution; auto: on a CPU device, lowered step by step\n"
                    "(0.7, 0.5) while the frame misses 60 fps, raised when it fits");
   add_whole(app, "--frames", o->frames, kWindowFrames, "N", "window: close after N frames");
-  add_output_file(app, "--screenshot", o->window.screenshot, "FILE", "window: save frame N as presented (needs --frames)");
+  add_text(app, "--screenshot", o->window.screenshot, "FILE", "window: save frame N as presented (needs --frames)");
   add_flag(app, "--no-hud", o->no_hud, "window: no panels");
   add_choice(app, "--section", o->section, {"cut", "translucent"},
              "the tissue cut along the needle's plane (cut) or see-through (translucent), in the\n"
