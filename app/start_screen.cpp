@@ -2,9 +2,6 @@
 
 #include "app/default_db.hpp"
 
-#include <GLFW/glfw3.h>
-#include <imgui.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -18,6 +15,7 @@
 #include "training/sessions/store_location.hpp"
 #include "training/sessions/trainee_history.hpp"
 #include "training/tasks/task_catalog.hpp"
+#include "ui/input_focus.hpp"
 
 namespace needle::app {
 namespace {
@@ -26,18 +24,17 @@ namespace fs = std::filesystem;
 
 constexpr auto kRescan = std::chrono::seconds(2);  // devices plugged in or out show up this soon
 
-std::optional<ui::StartKey> start_key_of(int key) {
+std::optional<ui::StartKey> start_key_of(engine::Key key) {
   switch (key) {
-    case GLFW_KEY_UP: return ui::StartKey::kUp;
-    case GLFW_KEY_DOWN: return ui::StartKey::kDown;
-    case GLFW_KEY_LEFT: return ui::StartKey::kLeft;
-    case GLFW_KEY_RIGHT: return ui::StartKey::kRight;
-    case GLFW_KEY_PAGE_UP: return ui::StartKey::kPageUp;
-    case GLFW_KEY_PAGE_DOWN: return ui::StartKey::kPageDown;
-    case GLFW_KEY_TAB: return ui::StartKey::kTab;
-    case GLFW_KEY_ENTER:
-    case GLFW_KEY_KP_ENTER: return ui::StartKey::kEnter;
-    case GLFW_KEY_ESCAPE: return ui::StartKey::kEscape;
+    case engine::Key::kUp: return ui::StartKey::kUp;
+    case engine::Key::kDown: return ui::StartKey::kDown;
+    case engine::Key::kLeft: return ui::StartKey::kLeft;
+    case engine::Key::kRight: return ui::StartKey::kRight;
+    case engine::Key::kPageUp: return ui::StartKey::kPageUp;
+    case engine::Key::kPageDown: return ui::StartKey::kPageDown;
+    case engine::Key::kTab: return ui::StartKey::kTab;
+    case engine::Key::kEnter: return ui::StartKey::kEnter;
+    case engine::Key::kEscape: return ui::StartKey::kEscape;
     default: return std::nullopt;
   }
 }
@@ -95,7 +92,7 @@ class StartScreen {
     try {
       sessions_ = start_screen_sessions(options_.db);
     } catch (const std::exception& e) {  // no records shown; the trainee can still run (the run says what fails)
-      std::fprintf(stderr, "needle-sim: %s\n", e.what());
+      options_.messages.warn(e.what());
       state_.notice = e.what();
     }
     state_.known_trainees = training::known_trainees(sessions_);
@@ -141,7 +138,7 @@ ui::StartAction choose(SessionWindow& window, StartScreen& screen) {
                   },
                   [&](engine::Window& w) {
                     w.take_scroll();
-                    const bool typing = ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput;
+                    const bool typing = ui::typing();
                     for (const engine::Window::KeyPress& press : w.take_key_presses()) {
                       const std::optional<ui::StartKey> key = start_key_of(press.key);
                       if (!key) continue;
@@ -165,7 +162,7 @@ std::vector<ui::StartDevice> present_devices() {
   using Kind = haptics::DeviceSpec::Kind;
   std::vector<ui::StartDevice> devices = {{haptics::DeviceSpec{Kind::kMouse}.text(), "Mouse", DeskInput::help(Kind::kMouse), true},
                                           {haptics::DeviceSpec{Kind::kKeyboard}.text(), "Keyboard", DeskInput::help(Kind::kKeyboard), true}};
-  for (const GamepadInfo& pad : present_gamepads())
+  for (const engine::GamepadInfo& pad : engine::Window::gamepads())
     devices.push_back({haptics::DeviceSpec{Kind::kGamepad, pad.id}.text(), "Gamepad " + std::to_string(pad.id) + " (" + pad.name + ")",
                        DeskInput::help(Kind::kGamepad), true});
   const haptics::falcon::UsbPresence falcons = haptics::falcon::find_falcons();
@@ -183,7 +180,7 @@ std::vector<ui::StartDevice> present_devices() {
 
 int run_start_screen(const StartScreenOptions& options) {
   LoadedSettings loaded = load_settings(options.settings);
-  if (!loaded.notice.empty()) std::fprintf(stderr, "needle-sim: %s\n", loaded.notice.c_str());
+  if (!loaded.notice.empty()) options.messages.warn(loaded.notice);
   Settings& settings = loaded.settings;
   WindowOptions window_options;
   window_options.size = settings.window;
@@ -191,6 +188,7 @@ int run_start_screen(const StartScreenOptions& options) {
   window_options.ultrasound = settings.views.ultrasound;
   window_options.probe = settings.views.probe;
   window_options.render_scale = settings.render_scale;
+  window_options.messages = options.messages;
   SessionWindow window(window_options);
   StartScreen screen(options, settings);
   if (!loaded.notice.empty())
@@ -203,7 +201,7 @@ int run_start_screen(const StartScreenOptions& options) {
     try {
       save_settings(options.settings, settings);
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "needle-sim: %s\n", e.what());
+      options.messages.warn(e.what());
       screen.state().notice = e.what();
     }
   };
@@ -223,13 +221,14 @@ int run_start_screen(const StartScreenOptions& options) {
       task.db = options.db;
       task.station = options.station;
       task.out_dir = local_folder(options.db) / "runs" / screen.task().name;
+      task.messages = options.messages;
       try {
         fs::create_directories(task.out_dir);
         check_present(task.rig.device);
         TaskSession session(task);
         end = run_task(window, session, true);
       } catch (const std::exception& e) {
-        std::fprintf(stderr, "needle-sim: %s\n", e.what());
+        options.messages.warn(e.what());
         screen.state().notice = e.what();
         end = TaskEnd::kBack;
       }

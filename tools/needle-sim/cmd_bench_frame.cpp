@@ -22,6 +22,7 @@
 #include "bench_table.hpp"
 #include "command.hpp"
 #include "flag_ranges.hpp"
+#include "printed_messages.hpp"
 #include "engine/gltf_loader.hpp"
 #include "engine/offscreen.hpp"
 #include "sample_stats.hpp"
@@ -261,6 +262,7 @@ int run(const FrameFlags& f) {
           task.trainee = "bench";
           task.db = scratch / "sessions.db";
           task.out_dir = scratch;
+          task.messages = printed_messages("needle-sim bench frame");
           session = std::make_unique<app::TaskSession>(task);
         }
         auto make_scene = [&](const engine::SceneRenderer& renderer) {
@@ -309,7 +311,7 @@ int run(const FrameFlags& f) {
           timestamp_period_ns = device.timestamp_period_ns();
         };
         if (target_name == "window") {
-          app::GpuWindow vw("needle-sim bench frame", size);
+          app::GpuWindow vw("needle-sim bench frame", size, printed_messages("needle-sim bench frame"));
           run_row(vw.device, vw.target, &vw.window, &vw.target);
         } else {
           engine::DeviceOptions quiet;

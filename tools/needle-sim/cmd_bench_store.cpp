@@ -17,6 +17,7 @@
 #include "bench_table.hpp"
 #include "command.hpp"
 #include "flag_ranges.hpp"
+#include "printed_messages.hpp"
 #include "app/task_session.hpp"
 #include "sample_stats.hpp"
 #include "training/sessions/postgres_connection.hpp"
@@ -140,6 +141,7 @@ int run(const StoreFlags& f) {
     options.station = "bench";
     options.db = scratch / "run.db";
     options.out_dir = scratch;
+    options.messages = printed_messages("needle-sim bench store");
     app::TaskSession run(options);
     run.run_offline([](size_t) {});
     const training::SessionResult* result = run.finish();

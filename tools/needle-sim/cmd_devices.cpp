@@ -1,7 +1,6 @@
 // needle-sim devices: what is connected and what each device backend needs.
 #include <cstdio>
 
-#include "app/desk_input.hpp"
 #include "command.hpp"
 #include "engine/window.hpp"
 #include "haptics/devices/device_catalog.hpp"
@@ -12,10 +11,10 @@ namespace {
 // With a display, the gamepads GLFW reports now (as the start screen lists them).
 std::string gamepads_present(const std::string& without_display) {
   if (!engine::Window::display_available()) return without_display;
-  const std::vector<app::GamepadInfo> pads = app::present_gamepads();
+  const std::vector<engine::GamepadInfo> pads = engine::Window::gamepads();
   if (pads.empty()) return "none connected (GLFW reports no gamepad with a standard mapping)";
   std::string line = std::to_string(pads.size()) + " connected:";
-  for (const app::GamepadInfo& pad : pads) line += " " + haptics::DeviceSpec{haptics::DeviceSpec::Kind::kGamepad, pad.id}.text() + " (" + pad.name + ")";
+  for (const engine::GamepadInfo& pad : pads) line += " " + haptics::DeviceSpec{haptics::DeviceSpec::Kind::kGamepad, pad.id}.text() + " (" + pad.name + ")";
   return line;
 }
 

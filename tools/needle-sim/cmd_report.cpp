@@ -8,6 +8,7 @@
 #include "app/session_report.hpp"
 #include "command.hpp"
 #include "flag_ranges.hpp"
+#include "printed_messages.hpp"
 
 namespace needle::cli {
 namespace {
@@ -29,7 +30,7 @@ int run(const ReportFlags& f) {
     } catch (const std::invalid_argument& e) {
       throw UsageError(e.what());
     }
-    return app::write_cohort_report(db, f.filter, *f.out);
+    return app::write_cohort_report(db, f.filter, *f.out, printed_messages("needle-sim report"));
   }
   if (!f.session) throw UsageError("--session is required (or --cohort)");
   const training::CohortFilter none;
@@ -40,7 +41,7 @@ int run(const ReportFlags& f) {
     plots.hi = f.to.value_or(std::numeric_limits<double>::infinity());
     if (!(plots.hi > plots.lo)) throw UsageError("--to must be later than --from");
   }
-  return app::write_session_report(db, *f.session, *f.out, f.at, plots);
+  return app::write_session_report(db, *f.session, *f.out, f.at, plots, printed_messages("needle-sim report"));
 }
 
 const CommandRegistrar reg{{"report", "one session's review exported headless, or with --cohort the class view",
@@ -56,9 +57,7 @@ const CommandRegistrar reg{{"report", "one session's review exported headless, o
            "cohort.json, cohort_curves.csv, cohort_failed_steps.csv, cohort_percentiles.csv and the\n"
            "learning curves, cohort_TASK_score.png and cohort_TASK_time_to_target.png")
       ->required();
-  add_text(app, "--db", f->db, "FILE|URI",
-           "session database, an SQLite file or postgresql://... (default: $NEEDLE_DB, else\n"
-           "$XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)");
+  add_db(app, f->db);
   add_number(app, "--at", f->at, kRecordingTimes_s, "SECONDS", "the moment the replay picture shows, by default the end of the recording");
   add_number(app, "--from", f->from, kRecordingTimes_s, "SECONDS", "the start of the time range the plots show, by default the recording's");
   add_number(app, "--to", f->to, kRecordingTimes_s, "SECONDS", "the end of the time range the plots show, by default the recording's");

@@ -3,6 +3,7 @@
 #include "app/review_window.hpp"
 #include "command.hpp"
 #include "flag_ranges.hpp"
+#include "printed_messages.hpp"
 
 namespace needle::cli {
 namespace {
@@ -18,6 +19,7 @@ int run(const ReviewFlags& f) {
   options.db = app::db_location(f.db);
   if (f.session) options.session = *f.session;
   if (f.frames) options.frames = long(*f.frames);
+  options.messages = printed_messages("needle-sim review");
   if (options.screenshot && options.frames == 0) throw UsageError("--screenshot needs --frames N (the frame to capture)");
   return app::run_review_window(options);
 }
@@ -25,9 +27,7 @@ int run(const ReviewFlags& f) {
 const CommandRegistrar reg{{"review", "the instructor's review window: sessions, metrics, plots, replay; the class view",
                             [](CLI::App& app) -> Runner {
   auto f = std::make_shared<ReviewFlags>();
-  add_text(app, "--db", f->db, "FILE|URI",
-           "session database, an SQLite file or postgresql://... (default: $NEEDLE_DB, else\n"
-           "$XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)");
+  add_db(app, f->db);
   add_whole(app, "--session", f->session, kSessionIds, "ID", "the session to open first");
   add_flag(app, "--class", f->window.class_view, "open on the Class tab: the class view of report --cohort, with its filters and export");
   add_size(app, "--size", f->window.size, "window size");

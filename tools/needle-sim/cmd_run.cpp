@@ -14,6 +14,7 @@
 #include "engine/window.hpp"
 #include "flag_ranges.hpp"
 #include "haptics/devices/device_spec.hpp"
+#include "printed_messages.hpp"
 
 namespace needle::cli {
 namespace {
@@ -74,6 +75,7 @@ int run(const RunOptions& o) {
   task.station = app::station_name(o.station);
   if (o.local) task.local_db = *o.local;
   task.out_dir = o.out_dir;
+  task.messages = window.messages = printed_messages("needle-sim run");
 
   const bool in_window = !o.headless && engine::Window::display_available();
   if (!o.headless && !in_window) std::printf("no display: running headless\n");
@@ -99,9 +101,7 @@ const CommandRegistrar reg{{"run", "the main job: a guided needle task through t
            "gamepad[:N] (N from 0 to 15) or falcon[:N]: the trainee's own device, in the window; replay:FILE:\n"
            "a recorded session played back with its own task (needle-sim devices lists them)");
   add_text(app, "--trainee", o->trainee, "NAME", "whose session it is (default: $USER)");
-  add_text(app, "--db", o->db, "FILE|URI",
-           "session database: an SQLite file or postgresql://USER@HOST/DBNAME[?sslmode=...]\n"
-           "(default: $NEEDLE_DB, else $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)");
+  add_db(app, o->db);
   add_text(app, "--station", o->station, "NAME", "the station the session ran on (default: the host name)");
   add_text(app, "--local", o->local, "FILE",
            "with a server: this station's own file, where a session is kept when the server is\n"

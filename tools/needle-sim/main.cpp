@@ -14,6 +14,7 @@
 #include "asset_path.hpp"
 #include "command.hpp"
 #include "engine/window.hpp"
+#include "printed_messages.hpp"
 
 namespace needle::cli {
 namespace {
@@ -125,7 +126,7 @@ int start_screen(const StartScreenOptions& options, const CLI::App& root) {
     return 2;
   }
   return app::run_start_screen({asset_dir() / "tasks", app::db_location(options.db), app::station_name(options.station),
-                                app::default_settings_file()});
+                                app::default_settings_file(), printed_messages("needle-sim")});
 }
 
 int run_command(const CLI::App* command, const Runner& runner) {

@@ -16,6 +16,12 @@ std::string number_text(double v) {
   return text;
 }
 
+// A name, file or location: anything but empty.
+const std::string& non_empty(const std::string& text, const std::string& flag, const std::string& form) {
+  if (text.empty()) throw UsageError(flag + ": expected " + form + ", got ''");
+  return text;
+}
+
 // "help (range; default D)", the parts left out that are empty.
 std::string described(const std::string& help, const std::string& range, const std::string& default_text) {
   std::string extra = range;
@@ -130,10 +136,7 @@ CLI::Option* add_text(CLI::App& app, const std::string& flag, std::string& value
                       const std::string& help) {
   return option(
       app, flag,
-      [&value, flag, form](const std::string& t) {
-        if (t.empty()) throw UsageError(flag + ": expected " + form + ", got ''");
-        value = t;
-      },
+      [&value, flag, form](const std::string& t) { value = non_empty(t, flag, form); },
       form, described(help, "", value));
 }
 
@@ -141,10 +144,7 @@ CLI::Option* add_text(CLI::App& app, const std::string& flag, std::optional<std:
                       const std::string& form, const std::string& help) {
   return option(
       app, flag,
-      [&value, flag, form](const std::string& t) {
-        if (t.empty()) throw UsageError(flag + ": expected " + form + ", got ''");
-        value = t;
-      },
+      [&value, flag, form](const std::string& t) { value = non_empty(t, flag, form); },
       form, help);
 }
 
@@ -173,8 +173,7 @@ CLI::Option* add_output_file(CLI::App& app, const std::string& flag, std::option
   return option(
       app, flag,
       [&value, flag, form](const std::string& t) {
-        if (t.empty()) throw UsageError(flag + ": expected " + form + ", got ''");
-        const std::filesystem::path folder = std::filesystem::absolute(t).parent_path();
+        const std::filesystem::path folder = std::filesystem::absolute(non_empty(t, flag, form)).parent_path();
         if (!std::filesystem::is_directory(folder))
           throw UsageError(flag + ": folder " + folder.string() + " does not exist");
         value = t;
@@ -258,6 +257,12 @@ CLI::Option* add_whole_list(CLI::App& app, const std::string& flag, std::vector<
           value.push_back(parse_whole(item, flag, each));
       },
       form, described(help, "each " + range_text(each) + ", at most " + std::to_string(kMaxListItems), shown));
+}
+
+CLI::Option* add_db(CLI::App& app, std::optional<std::string>& value) {
+  return add_text(app, "--db", value, "FILE|URI",
+                  "session database: an SQLite file or postgresql://USER@HOST/DBNAME[?sslmode=...]\n"
+                  "(default: $NEEDLE_DB, else $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)");
 }
 
 CLI::Option* add_flag(CLI::App& app, const std::string& flag, bool& value, const std::string& help) {

@@ -84,6 +84,8 @@ CLI::Option* add_number_list(CLI::App& app, const std::string& flag, std::vector
                              const std::string& form, const std::string& help, size_t max_items = kMaxListItems);
 CLI::Option* add_whole_list(CLI::App& app, const std::string& flag, std::vector<long long>& value, WholeRange each,
                             const std::string& form, const std::string& help);
+// --db FILE|URI: the session database of run, review and report (app::db_location gives the default).
+CLI::Option* add_db(CLI::App& app, std::optional<std::string>& value);
 // A flag without a value.
 CLI::Option* add_flag(CLI::App& app, const std::string& flag, bool& value, const std::string& help);
 
