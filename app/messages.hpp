@@ -12,8 +12,8 @@
 namespace needle::app {
 
 struct Messages {
-  std::function<void(const std::string&)> line;     // a line of what is happening or was done
-  std::function<void(const std::string&)> warning;  // something wrong that did not stop the work
+  std::function<void(const std::string&)> line;                 // a line of what is happening or was done
+  std::function<void(const std::string&)> warning;              // something wrong that did not stop the work
   std::function<void(double done_s, double total_s)> progress;  // simulated seconds of a headless run
 
   void say(const std::string& text) const {

@@ -28,7 +28,8 @@ engine::ScreenRect draw_ultrasound_panel(const engine::UltrasoundProbe& shown, b
               1000.0 * shown.width_m);
   ImGui::Dummy(ImVec2(width, height));
   const ImVec2 lo = ImGui::GetItemRectMin();
-  ImGui::TextUnformatted(follows_needle ? "probe follows the needle" : "move the probe: J L along, I K across, [ ] turn");
+  ImGui::TextUnformatted(follows_needle ? "probe follows the needle"
+                                        : "move the probe: J L along, I K across, [ ] turn");
   ImGui::End();
   return engine::ScreenRect{lo.x, lo.y, width, height};
 }

@@ -7,18 +7,20 @@
 #include "asset-gen/assets.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
-#include "flag_ranges.hpp"
 #include "engine/deformation_bench.hpp"
 #include "engine/gltf_loader.hpp"
 #include "engine/gpu_device.hpp"
 #include "engine/scripted_needle.hpp"
+#include "flag_ranges.hpp"
 #include "sample_stats.hpp"
 
 namespace needle::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
 
 // Frame f of the scripted experiment between the press (2 s) and the end of the second
 // insertion (9.5 s): the field changes every frame, so every frame dispatches.
@@ -39,8 +41,8 @@ int run(const DeformFlags& f) {
                     "max_abs_error_m"});
   for (const long long r : f.spheres) {
     const int n = int(r);
-    engine::DeformationBench bench(device, engine::convert_gltf(asset_gen::make_sphere(n, n), "sphere_" + std::to_string(n)),
-                                   tissue);
+    engine::DeformationBench bench(
+        device, engine::convert_gltf(asset_gen::make_sphere(n, n), "sphere_" + std::to_string(n)), tissue);
     std::vector<double> gpu_ms, cpu_ms, processed;
     for (int frame = 0; frame < int(f.frames); ++frame) {
       bench.set_needle(needle_at_frame(frame, int(f.frames)));
@@ -64,14 +66,16 @@ int run(const DeformFlags& f) {
   return 0;
 }
 
-const CommandRegistrar reg{{"bench deform", "the GPU deformation pass against the same field on the CPU",
-                            [](CLI::App& app) -> Runner {
+// The options of bench deform, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
   auto f = std::make_shared<DeformFlags>();
   add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON");
   add_whole_list(app, "--spheres", f->spheres, kDeformSpheres, "LIST", "sphere resolutions p = m ((p+1)^2 vertices)");
   add_whole(app, "--frames", f->frames, kDeformFrames, "N", "frames of the scripted press-insert-pivot per sphere");
   return [f] { return run(*f); };
-}}};
+}
+
+const CommandRegistrar reg{{"bench deform", "the GPU deformation pass against the same field on the CPU", declare}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -30,12 +30,14 @@ int run(const FeelFlags& f) {
   if (f.scenario) {
     paths.push_back(*f.scenario);
   } else {
-    for (const char* name : {"holonomic_sphere", "nonholonomic_needle", "tissue_block_layers", "lumbar_epidural", "liver_biopsy"})
+    for (const char* name :
+         {"holonomic_sphere", "nonholonomic_needle", "tissue_block_layers", "lumbar_epidural", "liver_biopsy"})
       paths.push_back((asset_dir() / "scenarios" / (std::string(name) + ".json")).string());
   }
 
   BenchTable table({"scenario", "law", "phase", "seconds", "free_force_rest_N", "force_band_rms_N", "force_hf_rms_N",
-                    "max_lateral_speed_mps", "tracking_rms_m", "run_s", "faults", "hand_work_min_J", "world_dissipated_min_J"});
+                    "max_lateral_speed_mps", "tracking_rms_m", "run_s", "faults", "hand_work_min_J",
+                    "world_dissipated_min_J"});
   for (const std::string& path : paths) {
     haptics::Scenario scenario = haptics::load_scenario(path);
     for (haptics::ControlLaw law : laws) {
@@ -49,32 +51,41 @@ int run(const FeelFlags& f) {
         const bool free = p.phase == haptics::FeelPhase::Free;
         table.add_row({scenario.name, haptics::control_law_name(law), haptics::feel_phase_name(p.phase), p.seconds,
                        free ? nlohmann::json(rest) : nlohmann::json(nullptr), p.force_band_rms_N, p.force_hf_rms_N,
-                       number_or_null(p.max_lateral_speed_mps), p.tracking_rms_m, run_s, faults, run.summary.hand_work_min_J,
-                       run.summary.world_dissipated_min_J});
+                       number_or_null(p.max_lateral_speed_mps), p.tracking_rms_m, run_s, faults,
+                       run.summary.hand_work_min_J, run.summary.world_dissipated_min_J});
       }
     }
   }
-  table.emit("what the hand feels: |F_h| band 3-50 Hz and above 50 Hz (zero-phase Butterworth), tissue from 0.3 s after "
-             "entry, lateral speed from 1 s after entry; free_force_rest_N: mean |F_h| held still at the first waypoint",
-             f.json);
+  table.emit(
+      "what the hand feels: |F_h| band 3-50 Hz and above 50 Hz (zero-phase Butterworth), tissue from 0.3 s after "
+      "entry, lateral speed from 1 s after entry; free_force_rest_N: mean |F_h| held still at the first waypoint",
+      f.json);
   return 0;
 }
 
-const CommandRegistrar reg{{"bench feel", "what the hand feels, per scenario, controller and phase of contact",
-                            [](CLI::App& app) -> Runner {
+// The options of bench feel, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
   auto f = std::make_shared<FeelFlags>();
-  add_text(app, "--scenario", f->scenario, "FILE", "one scenario (default: the two thesis scenarios and the layered ones)");
-  add_choice(app, "--law", f->law, {haptics::control_law_name(haptics::ControlLaw::Thesis), haptics::control_law_name(haptics::ControlLaw::Tool), "both"},
+  add_text(app, "--scenario", f->scenario, "FILE",
+           "one scenario (default: the two thesis scenarios and the layered ones)");
+  add_choice(app, "--law", f->law,
+             {haptics::control_law_name(haptics::ControlLaw::Thesis),
+              haptics::control_law_name(haptics::ControlLaw::Tool), "both"},
              "the controller: thesis (as the thesis prints it, corrected), tool, or both side by side");
   add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON");
   app.footer(
       "per scenario, law and phase (free, rigid contact, tissue): free_force_rest_N, force_band_rms_N (3-50 Hz),\n"
-      "force_hf_rms_N (> 50 Hz), max_lateral_speed_mps, tracking_rms_m, run_s (wall time of the closed-loop run);\n"
-      "per run: hand_work_min_J (least work of the hand on the stylus), world_dissipated_min_J (least of that work\n"
+      "force_hf_rms_N (> 50 Hz), max_lateral_speed_mps, tracking_rms_m, run_s (wall time of the closed-loop "
+      "run);\n"
+      "per run: hand_work_min_J (least work of the hand on the stylus), world_dissipated_min_J (least of that "
+      "work\n"
       "minus the change of the energy the world stores: < 0 means the world gave the hand energy it had not\n"
       "stored, docs/CONTROLLER.md)");
   return [f] { return run(*f); };
-}}};
+}
+
+const CommandRegistrar reg{
+    {"bench feel", "what the hand feels, per scenario, controller and phase of contact", declare}};
 
 }  // namespace
 }  // namespace needle::cli

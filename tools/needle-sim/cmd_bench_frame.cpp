@@ -14,17 +14,17 @@
 
 #include "app/session_window.hpp"
 #include "app/task_session.hpp"
-#include "app/ultrasound_window.hpp"
 #include "app/trainee_frame.hpp"
+#include "app/ultrasound_window.hpp"
 #include "app/window_frames.hpp"
 #include "asset-gen/assets.hpp"
 #include "asset_path.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
-#include "flag_ranges.hpp"
-#include "printed_messages.hpp"
 #include "engine/gltf_loader.hpp"
 #include "engine/offscreen.hpp"
+#include "flag_ranges.hpp"
+#include "printed_messages.hpp"
 #include "sample_stats.hpp"
 
 namespace needle::cli {
@@ -39,15 +39,16 @@ constexpr const char* kTissuePrefix = "tissue:";
 // the N x N sphere (with its levels of detail) under the scripted needle.
 struct Content {
   std::string name;
-  fs::path task;     // a task file, or
-  int tissue = 0;    // the sphere's resolution
+  fs::path task;   // a task file, or
+  int tissue = 0;  // the sphere's resolution
 };
 
 std::vector<Content> parse_contents(const std::string& list) {
   std::vector<Content> contents;
   for (const std::string& item : split_list(list, "--contents", kMaxListItems)) {
     if (item.rfind(kTissuePrefix, 0) == 0) {
-      const long long n = parse_whole(item.substr(std::string(kTissuePrefix).size()), "--contents tissue:N", kDeformSpheres);
+      const long long n =
+          parse_whole(item.substr(std::string(kTissuePrefix).size()), "--contents tissue:N", kDeformSpheres);
       contents.push_back({item, {}, int(n)});
       continue;
     }
@@ -60,7 +61,8 @@ std::vector<Content> parse_contents(const std::string& list) {
 
 std::vector<engine::Extent> parse_sizes(const std::string& list) {
   std::vector<engine::Extent> sizes;
-  for (const std::string& item : split_list(list, "--sizes", kMaxListItems)) sizes.push_back(parse_size(item, "--sizes"));
+  for (const std::string& item : split_list(list, "--sizes", kMaxListItems))
+    sizes.push_back(parse_size(item, "--sizes"));
   return sizes;
 }
 
@@ -105,8 +107,9 @@ std::vector<Variant> parse_variants(const std::string& list) {
       } else if (setting == "specialized=off") {
         v.specialized = false;
       } else {
-        throw UsageError("--variants: unknown setting '" + setting +
-                         "' (default, scale=S, cut_culling=off, specialized=off, present=fifo|mailbox|immediate|shm, sweep=N)");
+        throw UsageError(
+            "--variants: unknown setting '" + setting +
+            "' (default, scale=S, cut_culling=off, specialized=off, present=fifo|mailbox|immediate|shm, sweep=N)");
       }
     }
     variants.push_back(std::move(v));
@@ -156,8 +159,9 @@ struct RowOptions {
 // through the variants, untimed and (with timestamps) timed. The first frame of each block
 // carries the switch from the block before and is left out. A variant without a fixed scale
 // leaves the frame's own (automatic or fixed) render scale to it.
-std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget& target, engine::WindowTarget* window_target,
-                                 engine::GpuScene& scene, const app::FrameContent& content, engine::Window* window,
+std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget& target,
+                                 engine::WindowTarget* window_target, engine::GpuScene& scene,
+                                 const app::FrameContent& content, engine::Window* window,
                                  app::UltrasoundWindow* ultrasound, const RowOptions& options) {
   const std::optional<float> product_scale = frame.fixed_render_scale();
   const std::optional<engine::WindowTarget::Presentation> product_presentation =
@@ -179,9 +183,12 @@ std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget&
     frame.renderer().set_specialized_pipelines(options.variants[variant].specialized);
     const std::optional<engine::WindowTarget::Presentation> presentation =
         options.variants[variant].presentation ? options.variants[variant].presentation : product_presentation;
-    if (ultrasound) ultrasound->set_sweep_frames(options.variants[variant].sweep_frames.value_or(app::UltrasoundWindow::kSweepFrames));
+    if (ultrasound)
+      ultrasound->set_sweep_frames(
+          options.variants[variant].sweep_frames.value_or(app::UltrasoundWindow::kSweepFrames));
     if (window_target && presentation && !window_target->set_presentation(*presentation))
-      throw std::runtime_error("--variants " + options.variants[variant].name + ": the window's surface does not offer it");
+      throw std::runtime_error("--variants " + options.variants[variant].name +
+                               ": the window's surface does not offer it");
     const Clock::time_point now = Clock::now();
     if (counting) samples.back().period_ms = std::chrono::duration<double, std::milli>(now - previous).count();
     previous = now;
@@ -228,7 +235,8 @@ int run(const FrameFlags& f) {
   const bool ultrasound_view = views.find("ultrasound") != std::string::npos;
   if (ultrasound_view)
     for (const Content& c : contents)
-      if (c.task.empty()) throw UsageError("--views ultrasound: " + c.name + " is no task (the ultrasound images a task's layers)");
+      if (c.task.empty())
+        throw UsageError("--views ultrasound: " + c.name + " is no task (the ultrasound images a task's layers)");
   std::vector<std::string> targets;
   for (const char* t : {"window", "offscreen"})
     if (targets_arg.find(t) != std::string::npos) targets.push_back(t);
@@ -243,15 +251,17 @@ int run(const FrameFlags& f) {
   const fs::path scratch = fs::temp_directory_path() / ("needle_bench_frame_" + std::to_string(::getpid()));
   fs::create_directories(scratch);
   BenchTable table({"content", "target", "size", "variant", "msaa", "render_scale", "frames", "frame_ms_median",
-                    "frame_ms_p95", "frame_ms_p99", "fps_median", "fps_p95", "frame_ms_median_timed", "passes", "views"});
+                    "frame_ms_p95", "frame_ms_p99", "fps_median", "fps_p95", "frame_ms_median_timed", "passes",
+                    "views"});
   BenchTable pass_table({"content", "target", "size", "variant", "pass", "ms_median", "ms_p95"});
   std::string device_line;
   double timestamp_period_ns = 0.0;
 
   for (const Content& content : contents) {
-    const engine::Model tissue = content.tissue
-        ? engine::convert_gltf(asset_gen::make_sphere(content.tissue, content.tissue, {2, 4}), content.name)
-        : engine::Model{};
+    const engine::Model tissue =
+        content.tissue
+            ? engine::convert_gltf(asset_gen::make_sphere(content.tissue, content.tissue, {2, 4}), content.name)
+            : engine::Model{};
     for (const std::string& target_name : targets) {
       for (const engine::Extent& size : sizes) {
         // A task runs its session in real time, as `run` does, into a scratch database.
@@ -266,12 +276,14 @@ int run(const FrameFlags& f) {
           session = std::make_unique<app::TaskSession>(task);
         }
         auto make_scene = [&](const engine::SceneRenderer& renderer) {
-          return session ? engine::GpuScene(renderer, session->scene())
-                         : engine::GpuScene(renderer, tissue, engine::framing_view(tissue, size), engine::TissueParams{});
+          return session
+                     ? engine::GpuScene(renderer, session->scene())
+                     : engine::GpuScene(renderer, tissue, engine::framing_view(tissue, size), engine::TissueParams{});
         };
         auto run_row = [&](const engine::GpuDevice& device, engine::RenderTarget& target, engine::Window* window,
                            engine::WindowTarget* window_target) {
-          app::TraineeFrame frame(device, target, {msaa.value_or(device.is_cpu_device() ? 1 : 4), true, render_scale}, window);
+          app::TraineeFrame frame(device, target, {msaa.value_or(device.is_cpu_device() ? 1 : 4), true, render_scale},
+                                  window);
           engine::GpuScene scene = make_scene(frame.renderer());
           // The views as the window shows them (app::with_views): the section cut, the ultrasound window open.
           app::Show show{session ? app::task_content(*session) : app::scripted_content(scene)};
@@ -283,7 +295,8 @@ int run(const FrameFlags& f) {
           const app::FrameContent shown = app::with_views(show, view, frame.renderer(), target);
           const std::vector<FrameSample> samples =
               measure(frame, target, window_target, scene, shown, window, show.ultrasound.get(), options);
-          const std::string size_text = std::to_string(target.extent().width) + "x" + std::to_string(target.extent().height);
+          const std::string size_text =
+              std::to_string(target.extent().width) + "x" + std::to_string(target.extent().height);
           for (size_t v = 0; v < options.variants.size(); ++v) {
             std::vector<double> untimed, timed, scales;
             std::map<std::string, std::vector<double>> parts;
@@ -299,13 +312,15 @@ int run(const FrameFlags& f) {
             nlohmann::json passes = nlohmann::json::object();
             for (const auto& [name, ms] : parts) {
               passes[name] = percentile(ms, 0.5);
-              pass_table.add_row({content.name, target_name, size_text, variant, name, percentile(ms, 0.5), percentile(ms, 0.95)});
+              pass_table.add_row(
+                  {content.name, target_name, size_text, variant, name, percentile(ms, 0.5), percentile(ms, 0.95)});
             }
             const double median = percentile(untimed, 0.5), p95 = percentile(untimed, 0.95);
             table.add_row({content.name, target_name, size_text, variant, frame.renderer().msaa_samples(),
                            percentile(scales, 0.5), long(untimed.size()), median, p95, percentile(untimed, 0.99),
                            1000.0 / median, 1000.0 / p95,
-                           timed.empty() ? nlohmann::json(nullptr) : nlohmann::json(percentile(timed, 0.5)), passes, views});
+                           timed.empty() ? nlohmann::json(nullptr) : nlohmann::json(percentile(timed, 0.5)), passes,
+                           views});
           }
           device_line = device.device_description();
           timestamp_period_ns = device.timestamp_period_ns();
@@ -324,16 +339,17 @@ int run(const FrameFlags& f) {
     }
   }
   fs::remove_all(scratch);
-  pass_table.print("bench frame: the frame's parts (ms; *_cpu: recording on the CPU, *_device: timestamps, *_wait: "
-                   "waiting), medians and p95 over the frames");
+  pass_table.print(
+      "bench frame: the frame's parts (ms; *_cpu: recording on the CPU, *_device: timestamps, *_wait: "
+      "waiting), medians and p95 over the frames");
   table.emit("bench frame: the trainee's frame on " + device_line + " (timestamp period " +
                  (timestamp_period_ns > 0.0 ? std::to_string(timestamp_period_ns) + " ns" : std::string("none")) + ")",
              json);
   return 0;
 }
 
-const CommandRegistrar reg{{"bench frame", "the trainee's whole frame as run draws it, pass by pass, in a window and offscreen",
-                            [](CLI::App& app) -> Runner {
+// The options of bench frame, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
   auto f = std::make_shared<FrameFlags>();
   add_output_file(app, "--json", f->json, "FILE",
                   "also write the rows as JSON (keys: content, target, size, frame_ms_median, frame_ms_p95,\n"
@@ -369,7 +385,10 @@ const CommandRegistrar reg{{"bench frame", "the trainee's whole frame as run dra
            "(shm where it is offered, else fifo; the window's line says which),\n"
            "sweep=N (the ultrasound image made over N frames, N from 1 to 16, 1: whole every frame; default 2)");
   return [f] { return run(*f); };
-}}};
+}
+
+const CommandRegistrar reg{
+    {"bench frame", "the trainee's whole frame as run draws it, pass by pass, in a window and offscreen", declare}};
 
 }  // namespace
 }  // namespace needle::cli

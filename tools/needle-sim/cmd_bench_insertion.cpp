@@ -78,7 +78,8 @@ int run(const InsertionFlags& f) {
   if (dir.norm() < 1e-12) throw UsageError("--dir: must not be the zero vector");
   if (2.0 * depth / speed + hold > io::kMaxSessionSeconds)
     throw UsageError("--depth, --speed, --hold: the drive would last " + std::to_string(2.0 * depth / speed + hold) +
-                     " s, over the " + std::to_string(int(io::kMaxSessionSeconds)) + " s a run may (2 depth / speed + hold)");
+                     " s, over the " + std::to_string(int(io::kMaxSessionSeconds)) +
+                     " s a run may (2 depth / speed + hold)");
   const std::string& scenario_path = *f.scenario;
   const auto& json_path = f.json;
   const auto& plot_path = f.plot;
@@ -98,7 +99,8 @@ int run(const InsertionFlags& f) {
   const auto boundaries = haptics::layer_boundaries(scenario.scene.tissue, plan.from, plan.dir, reached);
 
   BenchTable table({"layer", "depth_m", "peak_force_N"});
-  for (const auto& p : run.punctures) table.add_row({layer_name(scenario.scene.tissue, p.layer), p.depth_m, p.peak_force_N});
+  for (const auto& p : run.punctures)
+    table.add_row({layer_name(scenario.scene.tissue, p.layer), p.depth_m, p.peak_force_N});
   table.print("bench insertion: " + scenario.name + ", punctures (" + std::to_string(run.samples.size()) +
               " ticks of " + std::to_string(scenario.period_s * 1e3) + " ms)");
   if (run.hard_stop)
@@ -114,16 +116,18 @@ int run(const InsertionFlags& f) {
   return 0;
 }
 
-const CommandRegistrar reg{{"bench insertion", "the tissue model's own force-depth curve along a line, in and out",
-                            [](CLI::App& app) -> Runner {
+// The options of bench insertion, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
   auto f = std::make_shared<InsertionFlags>();
   // A point or a direction in the world: metres, within a kilometre of the origin (a design bound).
   const NumberRange coordinate{-1000.0, 1000.0};
-  add_text(app, "--scenario", f->scenario, "FILE", "a scenario with a tissue (assets/scenarios/*.json); only its tissue and period are used")
+  add_text(app, "--scenario", f->scenario, "FILE",
+           "a scenario with a tissue (assets/scenarios/*.json); only its tissue and period are used")
       ->required();
   add_number_list(app, "--from", f->from, coordinate, "X,Y,Z", "the tip's start, world frame (m)", 3)->required();
   add_number_list(app, "--dir", f->dir, coordinate, "DX,DY,DZ", "insertion direction (normalized)", 3)->required();
-  add_number(app, "--depth", f->depth, kInsertionDepth_m, "M", "how far along dir the tip is driven (m); a rigid layer on the way stops it")
+  add_number(app, "--depth", f->depth, kInsertionDepth_m, "M",
+             "how far along dir the tip is driven (m); a rigid layer on the way stops it")
       ->required();
   add_number(app, "--speed", f->speed, kInsertionSpeed_mps, "MPS", "constant speed in and out (m/s)")->required();
   add_number(app, "--hold", f->hold, kInsertionHold_s, "S", "seconds held at the deepest point");
@@ -134,7 +138,10 @@ const CommandRegistrar reg{{"bench insertion", "the tissue model's own force-dep
   app.footer("The whole drive, in, held and out (2 depth / speed + hold), lasts at most " +
              std::to_string(int(io::kMaxSessionSeconds)) + " s of simulated time.");
   return [f] { return run(*f); };
-}}};
+}
+
+const CommandRegistrar reg{
+    {"bench insertion", "the tissue model's own force-depth curve along a line, in and out", declare}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -9,10 +9,10 @@
 #include <memory>
 #include <thread>
 
+#include "asset_path.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
 #include "flag_ranges.hpp"
-#include "asset_path.hpp"
 #include "haptics/devices/desk_device.hpp"
 #include "haptics/realtime/haptic_loop.hpp"
 #include "haptics/realtime/periodic_timer.hpp"
@@ -61,9 +61,11 @@ HapticRun time_haptic_loop(const haptics::DeviceSpec& device_spec, double rate_h
   haptics::LoopConfig config;
   config.rate_hz = rate_hz;
   haptics::HapticLoop loop(*device, haptics::safety_limits_for(device->capabilities()), config);
-  const std::string path = (std::filesystem::temp_directory_path() /
-                            ("needle_bench_loop_" + std::to_string(::getpid()) + ".nsrec")).string();
-  haptics::SessionRecorder recorder(path, {haptics::kSessionFormatVersion, rate_hz, 0, device_spec.text()}, loop.samples());
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("needle_bench_loop_" + std::to_string(::getpid()) + ".nsrec"))
+          .string();
+  haptics::SessionRecorder recorder(path, {haptics::kSessionFormatVersion, rate_hz, 0, device_spec.text()},
+                                    loop.samples());
   HapticRun run;
   run.realtime_line = loop.launch();
   recorder.start();
@@ -120,7 +122,8 @@ int run(const LoopFlags& f) {
   const std::vector<double>& rates = f.rates;
   const double seconds = f.seconds;
   const bool with_load = f.render_load;
-  const std::string device_text = f.device.value_or("sim:" + (asset_dir() / "scenarios" / "nonholonomic_needle.json").string());
+  const std::string device_text =
+      f.device.value_or("sim:" + (asset_dir() / "scenarios" / "nonholonomic_needle.json").string());
   haptics::DeviceSpec device_spec;
   try {
     device_spec = haptics::DeviceSpec::parse(device_text);
@@ -133,14 +136,14 @@ int run(const LoopFlags& f) {
   if (with_load && render_load() == nullptr)
     throw UsageError("--render-load: this build registers no renderer load (see render_load_hook.hpp)");
 
-  BenchTable table({"loop", "device", "rate_hz", "render_load", "seconds", "ticks", "period_err_p50_us", "period_err_p99_us",
-                    "period_err_p999_us", "period_err_max_us", "overruns", "compute_p50_us", "compute_p99_us",
-                    "rate_measured_hz", "fault"});
+  BenchTable table({"loop", "device", "rate_hz", "render_load", "seconds", "ticks", "period_err_p50_us",
+                    "period_err_p99_us", "period_err_p999_us", "period_err_max_us", "overruns", "compute_p50_us",
+                    "compute_p99_us", "rate_measured_hz", "fault"});
   std::string realtime_line;
   auto add = [&](const char* loop, const std::string& device, double rate, bool load, const LoopStatsSummary& s) {
-    table.add_row({loop, device, rate, load, seconds, s.period_error.count, us(s.period_error.p50_ns), us(s.period_error.p99_ns),
-                   us(s.period_error.p999_ns), us(s.period_error.max_ns), s.overruns, us(s.compute.p50_ns),
-                   us(s.compute.p99_ns), s.rate_hz,
+    table.add_row({loop, device, rate, load, seconds, s.period_error.count, us(s.period_error.p50_ns),
+                   us(s.period_error.p99_ns), us(s.period_error.p999_ns), us(s.period_error.max_ns), s.overruns,
+                   us(s.compute.p50_ns), us(s.compute.p99_ns), s.rate_hz,
                    haptics::fault_cause_name(static_cast<haptics::FaultCause>(s.fault))});
   };
   auto run_all = [&](bool load) {
@@ -168,8 +171,8 @@ int run(const LoopFlags& f) {
   return 0;
 }
 
-const CommandRegistrar reg{{"bench loop", "the haptic loop's timing against a bare clock_nanosleep loop, with and without rendering",
-                            [](CLI::App& app) -> Runner {
+// The options of bench loop, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
   auto f = std::make_shared<LoopFlags>();
   add_number_list(app, "--rates", f->rates, kLoopRates_hz, "LIST", "loop rates in Hz");
   add_number(app, "--seconds", f->seconds, kLoopSeconds, "S", "measuring time per row (after 0.2 s of settling)");
@@ -181,7 +184,11 @@ const CommandRegistrar reg{{"bench loop", "the haptic loop's timing against a ba
            "guidance, 1280x720 offscreen) is drawn as fast as it can");
   add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON");
   return [f] { return run(*f); };
-}}};
+}
+
+const CommandRegistrar reg{{"bench loop",
+                            "the haptic loop's timing against a bare clock_nanosleep loop, with and without rendering",
+                            declare}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -9,12 +9,12 @@
 #include "asset-gen/assets.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
-#include "flag_ranges.hpp"
 #include "engine/gltf_loader.hpp"
 #include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/offscreen.hpp"
 #include "engine/render_target.hpp"
+#include "flag_ranges.hpp"
 #include "sample_stats.hpp"
 
 namespace needle::cli {
@@ -100,8 +100,8 @@ int run(const RenderBenchFlags& f) {
   return 0;
 }
 
-const CommandRegistrar reg{{"bench render", "frame time of the scene pass for the thesis sphere at growing resolutions",
-                            [](CLI::App& app) -> Runner {
+// The options of bench render, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
   auto f = std::make_shared<RenderBenchFlags>();
   add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON");
   add_size(app, "--size", f->size, "frame size");
@@ -113,7 +113,10 @@ const CommandRegistrar reg{{"bench render", "frame time of the scene pass for th
            "culled (chunks facing away left out), lod (the level of detail for the size),\n"
            "lod+culled (both: the renderer's default)");
   return [f] { return run(*f); };
-}}};
+}
+
+const CommandRegistrar reg{
+    {"bench render", "frame time of the scene pass for the thesis sphere at growing resolutions", declare}};
 
 }  // namespace
 }  // namespace needle::cli

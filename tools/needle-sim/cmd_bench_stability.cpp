@@ -26,13 +26,14 @@ int run(const StabilityFlags& f) {
   const haptics::Scenario nh = haptics::load_scenario((dir / "nonholonomic_needle.json").string());
   std::vector<haptics::StressCase> cases = haptics::stress_cases(h, nh, sustained);
   for (const char* name : {"tissue_block_layers", "lumbar_epidural", "liver_biopsy"}) {
-    std::vector<haptics::StressCase> layered = haptics::layered_stress_cases(haptics::load_scenario((dir / (std::string(name) + ".json")).string()));
+    std::vector<haptics::StressCase> layered =
+        haptics::layered_stress_cases(haptics::load_scenario((dir / (std::string(name) + ".json")).string()));
     cases.insert(cases.end(), std::make_move_iterator(layered.begin()), std::make_move_iterator(layered.end()));
   }
 
-  BenchTable table({"sweep", "value", "outcome", "simulated_s", "max_abs_energy_J", "energy_error_J", "position_max_contact_m",
-                    "force_max_N", "max_penetration_m", "max_lateral_speed_mps", "wall_s", "punctures", "tissue_work_J",
-                    "world_dissipated_min_J"});
+  BenchTable table({"sweep", "value", "outcome", "simulated_s", "max_abs_energy_J", "energy_error_J",
+                    "position_max_contact_m", "force_max_N", "max_penetration_m", "max_lateral_speed_mps", "wall_s",
+                    "punctures", "tissue_work_J", "world_dissipated_min_J"});
   for (const haptics::StressCase& c : cases) {
     double max_energy = 0;
     const auto t0 = std::chrono::steady_clock::now();
@@ -41,29 +42,33 @@ int run(const StabilityFlags& f) {
     });
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const haptics::SimSummary& s = r.summary;
-    table.add_row({c.name, c.value, s.faults.empty() ? std::string("bounded") : s.faults.front(), r.simulated_s, max_energy,
-                   s.energy_error_J, s.position_max_contact_m, s.force_max_N, s.max_penetration_m, s.max_lateral_speed_mps, wall,
-                   s.punctures.size(), s.tissue_work_J, s.world_dissipated_min_J});
+    table.add_row({c.name, c.value, s.faults.empty() ? std::string("bounded") : s.faults.front(), r.simulated_s,
+                   max_energy, s.energy_error_J, s.position_max_contact_m, s.force_max_N, s.max_penetration_m,
+                   s.max_lateral_speed_mps, wall, s.punctures.size(), s.tissue_work_J, s.world_dissipated_min_J});
   }
   table.emit("closed-loop stress (energy bound " + std::to_string(h.energy_bound_J) + " J, divergence bound " +
-                 std::to_string(h.divergence_bound_m) + " m; K_crit = 2b/T = " +
-                 std::to_string(haptics::passivity_stiffness_bound(h)) + " N/m)",
+                 std::to_string(h.divergence_bound_m) +
+                 " m; K_crit = 2b/T = " + std::to_string(haptics::passivity_stiffness_bound(h)) + " N/m)",
              f.json);
   return 0;
 }
 
-const CommandRegistrar reg{{"bench stability", "stress sweeps of the closed loop: each run bounded or a latched fault",
-                            [](CLI::App& app) -> Runner {
+// The options of bench stability, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
   auto f = std::make_shared<StabilityFlags>();
   add_number(app, "--sustained", f->sustained_s, kSustained_s, "S",
              "simulated seconds of the sustained-contact run (3600 s: about two minutes of wall time)");
   add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON");
-  app.footer("sweeps: gains x0.1..x100, period x1..x8, singular poses, 2x force-limit push, sustained contact,\n"
-             "penalty stiffness across K_crit = 2(b - |B|)/T; in the layered scenarios (tissue_block_layers,\n"
-             "lumbar_epidural, liver_biopsy): puncture force, friction and stiffness x0.1..x10, period x1..x8,\n"
-             "a push onto bone at 2x the force limit (where the tissue has bone)");
+  app.footer(
+      "sweeps: gains x0.1..x100, period x1..x8, singular poses, 2x force-limit push, sustained contact,\n"
+      "penalty stiffness across K_crit = 2(b - |B|)/T; in the layered scenarios (tissue_block_layers,\n"
+      "lumbar_epidural, liver_biopsy): puncture force, friction and stiffness x0.1..x10, period x1..x8,\n"
+      "a push onto bone at 2x the force limit (where the tissue has bone)");
   return [f] { return run(*f); };
-}}};
+}
+
+const CommandRegistrar reg{
+    {"bench stability", "stress sweeps of the closed loop: each run bounded or a latched fault", declare}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -13,12 +13,12 @@
 #include <fstream>
 #include <set>
 
+#include "app/task_session.hpp"
 #include "asset_path.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
 #include "flag_ranges.hpp"
 #include "printed_messages.hpp"
-#include "app/task_session.hpp"
 #include "sample_stats.hpp"
 #include "training/sessions/postgres_connection.hpp"
 #include "training/sessions/store_location.hpp"
@@ -30,10 +30,10 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 struct Workload {
-  training::NewSession session;   // station and uid set per copy
+  training::NewSession session;  // station and uid set per copy
   training::SessionResult result;
-  std::string recording;          // the bytes the run recorded
-  size_t chunk_bytes = 0;         // 50 ms of ticks
+  std::string recording;   // the bytes the run recorded
+  size_t chunk_bytes = 0;  // 50 ms of ticks
 };
 
 // One station: `count` copies of the session, the finishing commit's latency (ms) of each written
@@ -128,7 +128,8 @@ int run(const StoreFlags& f) {
   const std::optional<std::string>& server = f.db;
   const int per_station = int(f.sessions);
   const std::string task = f.task.value_or((asset_dir() / "tasks" / "penetrable_sphere.json").string());
-  if (server && !training::is_postgres_uri(*server)) throw UsageError("--db: a postgresql:// URI, the server to measure");
+  if (server && !training::is_postgres_uri(*server))
+    throw UsageError("--db: a postgresql:// URI, the server to measure");
 
   const fs::path scratch = fs::temp_directory_path() / ("needle_bench_store_" + std::to_string(::getpid()));
   fs::remove_all(scratch);
@@ -149,7 +150,9 @@ int run(const StoreFlags& f) {
     w.result = *result;
     std::ifstream in(run.recording_path(), std::ios::binary);
     w.recording.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    w.session = {"bench", run.task().name, run.task().title, run.task().source, "sim", run.recording_path().string(), "", "", ""};
+    w.session = {
+        "bench", run.task().name, run.task().title, run.task().source, "sim", run.recording_path().string(), "", "",
+        ""};
     w.chunk_bytes = std::max<size_t>(1, size_t(double(w.recording.size()) / result->overall.duration_s * 0.05));
   }
 
@@ -176,20 +179,25 @@ int run(const StoreFlags& f) {
   return 0;
 }
 
-const CommandRegistrar reg{{"bench store", "stations storing scripted sessions at once, on PostgreSQL and on one SQLite file",
-                            [](CLI::App& app) -> Runner {
+// The options of bench store, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
   auto f = std::make_shared<StoreFlags>();
   add_text(app, "--db", f->db, "URI",
            "the PostgreSQL server to measure (a database of its own: the bench adds sessions of\n"
            "stations named bench-*); without it only the SQLite rows");
   add_whole(app, "--sessions", f->sessions, kStoreSessions, "N", "sessions each station stores");
-  add_text(app, "--task", f->task, "FILE", "the task whose good script makes the session (default assets/tasks/penetrable_sphere.json)");
+  add_text(app, "--task", f->task, "FILE",
+           "the task whose good script makes the session (default assets/tasks/penetrable_sphere.json)");
   add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON");
-  app.footer("rows: 1, 4 and 16 station processes on PostgreSQL, then on one SQLite file they share: sessions per\n"
-             "minute, p99 of the finishing commit (ms), database growth per session, and stored/lost/duplicated\n"
-             "(every session complete with every byte of its recording, no uid twice)");
+  app.footer(
+      "rows: 1, 4 and 16 station processes on PostgreSQL, then on one SQLite file they share: sessions per\n"
+      "minute, p99 of the finishing commit (ms), database growth per session, and stored/lost/duplicated\n"
+      "(every session complete with every byte of its recording, no uid twice)");
   return [f] { return run(*f); };
-}}};
+}
+
+const CommandRegistrar reg{
+    {"bench store", "stations storing scripted sessions at once, on PostgreSQL and on one SQLite file", declare}};
 
 }  // namespace
 }  // namespace needle::cli

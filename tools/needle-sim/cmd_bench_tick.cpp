@@ -22,7 +22,8 @@ struct TickFlags {
 };
 
 int run(const TickFlags& f) {
-  const std::string scenario_path = f.scenario.value_or((asset_dir() / "scenarios" / "nonholonomic_needle.json").string());
+  const std::string scenario_path =
+      f.scenario.value_or((asset_dir() / "scenarios" / "nonholonomic_needle.json").string());
   const long ticks = long(f.ticks);
   const double settle = f.settle_s;
 
@@ -42,20 +43,26 @@ int run(const TickFlags& f) {
     for (double u : us) worst = std::max(worst, u);
     table.add_row({substeps, ticks, percentile(us, 0.5), percentile(us, 0.99), worst});
   }
-  table.emit("servo tick in nonholonomic contact (" + scenario.name + " at t = " + std::to_string(settle) + " s, T = " + std::to_string(scenario.period_s * 1e3) + " ms)", f.json);
+  table.emit("servo tick in nonholonomic contact (" + scenario.name + " at t = " + std::to_string(settle) +
+                 " s, T = " + std::to_string(scenario.period_s * 1e3) + " ms)",
+             f.json);
   return 0;
 }
 
-const CommandRegistrar reg{{"bench tick", "the cost of one full servo tick in nonholonomic contact", [](CLI::App& app) -> Runner {
+// The options of bench tick, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
   auto f = std::make_shared<TickFlags>();
   add_text(app, "--scenario", f->scenario, "FILE",
            "a scenario reaching the tissue by t = S (default assets/scenarios/nonholonomic_needle.json)");
-  add_number(app, "--settle", f->settle_s, kSettle_s, "S", "the scenario is played S seconds, then its last tick is timed");
+  add_number(app, "--settle", f->settle_s, kSettle_s, "S",
+             "the scenario is played S seconds, then its last tick is timed");
   add_whole(app, "--ticks", f->ticks, kTimedTicks, "N", "ticks timed per configuration");
   add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON (median_us, p99_us, max_us, ...)");
   app.footer("rows: 1, 2 and 4 virtual sub-steps per tick (the scenarios use 1)");
   return [f] { return run(*f); };
-}}};
+}
+
+const CommandRegistrar reg{{"bench tick", "the cost of one full servo tick in nonholonomic contact", declare}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -19,8 +19,8 @@
 #include "asset_path.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
-#include "flag_ranges.hpp"
 #include "engine/gpu_device.hpp"
+#include "flag_ranges.hpp"
 #include "sample_stats.hpp"
 
 namespace needle::cli {
@@ -184,13 +184,16 @@ int run(const UltrasoundFlags& f) {
   return 0;
 }
 
-const CommandRegistrar reg{{"bench ultrasound", "the ultrasound image's compute passes against the scan-line CPU reference",
-                            [](CLI::App& app) -> Runner {
+// The options of bench ultrasound, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
   auto f = std::make_shared<UltrasoundFlags>();
   add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON");
   add_whole(app, "--frames", f->frames, kUltrasoundFrames, "N", "images timed per scene and size");
   return [f] { return run(*f); };
-}}};
+}
+
+const CommandRegistrar reg{
+    {"bench ultrasound", "the ultrasound image's compute passes against the scan-line CPU reference", declare}};
 
 }  // namespace
 }  // namespace needle::cli

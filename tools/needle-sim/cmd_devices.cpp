@@ -14,7 +14,8 @@ std::string gamepads_present(const std::string& without_display) {
   const std::vector<engine::GamepadInfo> pads = engine::Window::gamepads();
   if (pads.empty()) return "none connected (GLFW reports no gamepad with a standard mapping)";
   std::string line = std::to_string(pads.size()) + " connected:";
-  for (const engine::GamepadInfo& pad : pads) line += " " + haptics::DeviceSpec{haptics::DeviceSpec::Kind::kGamepad, pad.id}.text() + " (" + pad.name + ")";
+  for (const engine::GamepadInfo& pad : pads)
+    line += " " + haptics::DeviceSpec{haptics::DeviceSpec::Kind::kGamepad, pad.id}.text() + " (" + pad.name + ")";
   return line;
 }
 
@@ -27,11 +28,15 @@ int run() {
   return 0;
 }
 
-const CommandRegistrar reg{{"devices", "the device backends, what is connected now and what each needs", [](CLI::App& app) -> Runner {
-  app.footer("Lists the device backends (falcon, mouse, keyboard, gamepad, replay, sim), what is connected now\n"
-             "(gamepads when there is a display) and what each needs (udev rule, firmware file, window).");
+// The options of devices, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
+  app.footer(
+      "Lists the device backends (falcon, mouse, keyboard, gamepad, replay, sim), what is connected now\n"
+      "(gamepads when there is a display) and what each needs (udev rule, firmware file, window).");
   return run;
-}}};
+}
+
+const CommandRegistrar reg{{"devices", "the device backends, what is connected now and what each needs", declare}};
 
 }  // namespace
 }  // namespace needle::cli

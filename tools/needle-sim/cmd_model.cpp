@@ -17,7 +17,8 @@ struct ModelFlags {
 haptics::VecN joint_vector(const std::vector<double>& values, int dof, const std::string& flag) {
   if (values.empty()) return haptics::VecN::Zero(dof);
   if (static_cast<int>(values.size()) != dof)
-    throw UsageError(flag + " has " + std::to_string(values.size()) + " values, the robot has " + std::to_string(dof) + " joints");
+    throw UsageError(flag + " has " + std::to_string(values.size()) + " values, the robot has " + std::to_string(dof) +
+                     " joints");
   return Eigen::Map<const Eigen::VectorXd>(values.data(), dof);
 }
 
@@ -26,11 +27,14 @@ int run(const ModelFlags& f) {
   const int n = model.dof();
   if (f.q.empty()) throw UsageError("--q is required");
   const haptics::VecN q = joint_vector(f.q, n, "--q");
-  std::printf("%s\n", haptics::model_report(model, q, joint_vector(f.dq, n, "--dq"), joint_vector(f.ddq, n, "--ddq")).dump(2).c_str());
+  std::printf(
+      "%s\n",
+      haptics::model_report(model, q, joint_vector(f.dq, n, "--dq"), joint_vector(f.ddq, n, "--ddq")).dump(2).c_str());
   return 0;
 }
 
-const CommandRegistrar reg{{"model", "a robot model's pose, Jacobian and dynamics at one state, as JSON", [](CLI::App& app) -> Runner {
+// The options of model, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
   auto f = std::make_shared<ModelFlags>();
   // A joint's angle, speed or acceleration: any finite number (the model says when a state is not finite).
   const NumberRange joint{-std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
@@ -41,7 +45,9 @@ const CommandRegistrar reg{{"model", "a robot model's pose, Jacobian and dynamic
   add_number_list(app, "--ddq", f->ddq, joint, "LIST", "joint accelerations in rad/s² (default 0)", joints);
   app.footer("prints JSON: pose {p, R}, J, H, Cdq, g, gravity, tau_id (SI units, base frame)");
   return [f] { return run(*f); };
-}}};
+}
+
+const CommandRegistrar reg{{"model", "a robot model's pose, Jacobian and dynamics at one state, as JSON", declare}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -33,15 +33,19 @@ int run(const RenderFlags& f) {
   return 0;
 }
 
-const CommandRegistrar reg{{"render", "one frame of a scene file or a glTF model, offscreen, to a PNG", [](CLI::App& app) -> Runner {
+// The options of render, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
   auto f = std::make_shared<RenderFlags>();
-  CLI::Option* scene = add_text(app, "--scene", f->scene, "FILE", "scene file (JSON): assets with roles, camera, lights");
+  CLI::Option* scene =
+      add_text(app, "--scene", f->scene, "FILE", "scene file (JSON): assets with roles, camera, lights");
   add_text(app, "--gltf", f->gltf, "FILE", "a .gltf or .glb model, framed by an automatic camera")->excludes(scene);
   add_output_file(app, "--out", f->out, "OUT.png", "where to write the image")->required();
   add_size(app, "--size", f->size, "image size in pixels");
   add_msaa(app, "--msaa", f->msaa, "MSAA samples, capped at the device's; by default 4");
   return [f] { return run(*f); };
-}}};
+}
+
+const CommandRegistrar reg{{"render", "one frame of a scene file or a glTF model, offscreen, to a PNG", declare}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -24,7 +24,8 @@ struct ReportFlags {
 int run(const ReportFlags& f) {
   const std::string db = app::db_location(f.db);
   if (f.cohort) {
-    if (f.session || f.at || f.from || f.to) throw UsageError("--cohort reports the class: --session, --at, --from and --to are for one session");
+    if (f.session || f.at || f.from || f.to)
+      throw UsageError("--cohort reports the class: --session, --at, --from and --to are for one session");
     try {
       training::check_cohort_filter(f.filter);
     } catch (const std::invalid_argument& e) {
@@ -44,10 +45,11 @@ int run(const ReportFlags& f) {
   return app::write_session_report(db, *f.session, *f.out, f.at, plots, printed_messages("needle-sim report"));
 }
 
-const CommandRegistrar reg{{"report", "one session's review exported headless, or with --cohort the class view",
-                            [](CLI::App& app) -> Runner {
+// The options of report, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
   auto f = std::make_shared<ReportFlags>();
-  CLI::Option* session = add_whole(app, "--session", f->session, kSessionIds, "ID", "the session to export (needle-sim review lists them)");
+  CLI::Option* session = add_whole(app, "--session", f->session, kSessionIds, "ID",
+                                   "the session to export (needle-sim review lists them)");
   add_flag(app, "--cohort", f->cohort,
            "the class view of every complete session: per trainee and task the score over attempts,\n"
            "first-pass success, time to target; the steps most failed; percentiles of every metric")
@@ -58,16 +60,24 @@ const CommandRegistrar reg{{"report", "one session's review exported headless, o
            "learning curves, cohort_TASK_score.png and cohort_TASK_time_to_target.png")
       ->required();
   add_db(app, f->db);
-  add_number(app, "--at", f->at, kRecordingTimes_s, "SECONDS", "the moment the replay picture shows, by default the end of the recording");
-  add_number(app, "--from", f->from, kRecordingTimes_s, "SECONDS", "the start of the time range the plots show, by default the recording's");
-  add_number(app, "--to", f->to, kRecordingTimes_s, "SECONDS", "the end of the time range the plots show, by default the recording's");
+  add_number(app, "--at", f->at, kRecordingTimes_s, "SECONDS",
+             "the moment the replay picture shows, by default the end of the recording");
+  add_number(app, "--from", f->from, kRecordingTimes_s, "SECONDS",
+             "the start of the time range the plots show, by default the recording's");
+  add_number(app, "--to", f->to, kRecordingTimes_s, "SECONDS",
+             "the end of the time range the plots show, by default the recording's");
   add_text(app, "--task", f->filter.task, "NAME", "--cohort: only this task's sessions");
   add_text(app, "--trainee", f->filter.trainee, "NAME", "--cohort: only this trainee's sessions");
   add_text(app, "--station", f->filter.station, "NAME", "--cohort: only the sessions of this station");
-  add_text(app, "--since", f->filter.since, "YYYY-MM-DD", "--cohort: only the sessions started on this day (UTC) or later");
-  add_text(app, "--until", f->filter.until, "YYYY-MM-DD", "--cohort: only the sessions started on this day (UTC) or before");
+  add_text(app, "--since", f->filter.since, "YYYY-MM-DD",
+           "--cohort: only the sessions started on this day (UTC) or later");
+  add_text(app, "--until", f->filter.until, "YYYY-MM-DD",
+           "--cohort: only the sessions started on this day (UTC) or before");
   return [f] { return run(*f); };
-}}};
+}
+
+const CommandRegistrar reg{
+    {"report", "one session's review exported headless, or with --cohort the class view", declare}};
 
 }  // namespace
 }  // namespace needle::cli

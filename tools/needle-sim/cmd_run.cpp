@@ -53,16 +53,19 @@ int run(const RunOptions& o) {
   app::WindowOptions window = o.window;
   if (o.frames) window.frames = long(*o.frames);
   window.hud = !o.no_hud;
-  if (!o.section.empty()) window.section = o.section == "cut" ? engine::Section::Mode::Cut : engine::Section::Mode::Translucent;
+  if (!o.section.empty())
+    window.section = o.section == "cut" ? engine::Section::Mode::Cut : engine::Section::Mode::Translucent;
   if (window.screenshot && window.frames == 0) throw UsageError("--screenshot needs --frames N (the frame to capture)");
   if (o.scene && (o.device_text || o.operator_spec || o.rate_hz || !o.firmware.empty()))
     throw UsageError("--scene plays a scripted needle: --device, --operator, --rate and --firmware are for tasks");
   if (device.kind == Kind::kSim && !device.file.empty())
-    throw UsageError("--device " + device_text + ": a task's sim runs the task's own scenario (--device sim, --operator SCRIPT)");
+    throw UsageError("--device " + device_text +
+                     ": a task's sim runs the task's own scenario (--device sim, --operator SCRIPT)");
   if (o.operator_spec && device.kind != Kind::kSim)
     throw UsageError("--operator: only the simulated device (--device sim) has a scripted operator");
   if (device.kind == Kind::kReplay && (o.task || o.rate_hz))
-    throw UsageError("--device " + device_text + ": a replay runs the recording's own task at its rate; drop --task and --rate");
+    throw UsageError("--device " + device_text +
+                     ": a replay runs the recording's own task at its rate; drop --task and --rate");
 
   app::TaskSessionOptions task;
   task.task = o.task.value_or((asset_dir() / "tasks" / "penetrable_sphere.json").string());  // a replay's is its own
@@ -90,11 +93,13 @@ int run(const RunOptions& o) {
                    : app::run_task_headless(task, window.size, window.msaa.value_or(4), window.section);
 }
 
-const CommandRegistrar reg{{"run", "the main job: a guided needle task through the haptic loop, recorded, scored, stored",
-                            [](CLI::App& app) -> Runner {
+// The options of run, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
   auto o = std::make_shared<RunOptions>();
-  CLI::Option* task = add_text(app, "--task", o->task, "FILE", "guided task (default: assets/tasks/penetrable_sphere.json)");
-  add_text(app, "--scene", o->scene, "FILE", "show a scene instead, a scripted needle inserting into its first deformable tissue")
+  CLI::Option* task =
+      add_text(app, "--task", o->task, "FILE", "guided task (default: assets/tasks/penetrable_sphere.json)");
+  add_text(app, "--scene", o->scene, "FILE",
+           "show a scene instead, a scripted needle inserting into its first deformable tissue")
       ->excludes(task);
   add_text(app, "--device", o->device_text, "sim|mouse|keyboard|gamepad[:N]|falcon[:N]|replay:FILE",
            "sim: the simulated master and a scripted operator (default); mouse, keyboard,\n"
@@ -126,7 +131,10 @@ const CommandRegistrar reg{{"run", "the main job: a guided needle task through t
              "the tissue cut along the needle's plane (cut) or see-through (translucent), in the\n"
              "pictures and at the window's start (there X cycles off, cut, translucent)");
   return [o] { return run(*o); };
-}}};
+}
+
+const CommandRegistrar reg{
+    {"run", "the main job: a guided needle task through the haptic loop, recorded, scored, stored", declare}};
 
 }  // namespace
 }  // namespace needle::cli

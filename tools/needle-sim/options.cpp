@@ -135,17 +135,14 @@ CLI::Option* add_number(CLI::App& app, const std::string& flag, std::optional<do
 CLI::Option* add_text(CLI::App& app, const std::string& flag, std::string& value, const std::string& form,
                       const std::string& help) {
   return option(
-      app, flag,
-      [&value, flag, form](const std::string& t) { value = non_empty(t, flag, form); },
-      form, described(help, "", value));
+      app, flag, [&value, flag, form](const std::string& t) { value = non_empty(t, flag, form); }, form,
+      described(help, "", value));
 }
 
 CLI::Option* add_text(CLI::App& app, const std::string& flag, std::optional<std::string>& value,
                       const std::string& form, const std::string& help) {
   return option(
-      app, flag,
-      [&value, flag, form](const std::string& t) { value = non_empty(t, flag, form); },
-      form, help);
+      app, flag, [&value, flag, form](const std::string& t) { value = non_empty(t, flag, form); }, form, help);
 }
 
 CLI::Option* add_choice(CLI::App& app, const std::string& flag, std::string& value,
