@@ -155,11 +155,15 @@ TEST(CliRunDevices, ABadRecordingIsAnErrorNamingTheFile) {
 TEST(CliRunDevices, TheMouseMovesTheNeedleAlongTheViewsRightAxis) {
   const fs::path dir = test_output_dir("cli_run_devices") / "mouse";
   const std::string run = mouse_session(dir, "--size 400x300 --frames 600");
-  // Centre the cursor, then move it 100 px left: two thirds of half the height, -6.7 cm.
+  const fs::path log = test_output_dir("cli_run_devices") / "mouse.log";
+  // Once the loop runs (its real-time line, on the first frame: a loaded machine may take seconds
+  // to get there), centre the cursor, then move it 100 px left: two thirds of half the height, -6.7 cm.
   const std::string drive =
+      "for i in \\$(seq 300); do grep -q '^real-time' " + quoted(log) + " && break; sleep 0.1; done; "
       "id=\\$(xdotool search --sync --name '^needle-sim\\$' | head -1); xdotool mousemove --window \\$id 200 150; sleep 0.5; "
       "xdotool mousemove --window \\$id 100 150; sleep 1";
-  ProcessResult r = run_on_virtual_display(run + " & " + drive + "; wait");
+  ProcessResult r = run_on_virtual_display(run + " > " + quoted(log) + " 2>&1 & " + drive + "; wait \\$!; rc=\\$?; cat " +
+                                           quoted(log) + "; exit \\$rc");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
 
