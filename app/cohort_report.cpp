@@ -1,6 +1,5 @@
 #include "app/cohort_report.hpp"
 
-#include <cstdio>
 #include <set>
 
 #include "app/default_db.hpp"
@@ -10,15 +9,17 @@
 #include "training/sessions/cohort_plot.hpp"
 #include "ui/panel_picture.hpp"
 #include "ui/cohort_panel.hpp"
+#include "ui/review_window_frame.hpp"
 
 namespace needle::app {
 
-int write_cohort_report(const std::string& db, const training::CohortFilter& filter, const std::filesystem::path& out) {
+int write_cohort_report(const std::string& db, const training::CohortFilter& filter, const std::filesystem::path& out,
+                        const Messages& messages) {
   const std::unique_ptr<training::SessionStore> store = open_existing_db(db);
   const training::CohortView view = training::cohort_view(*store, filter);
   training::export_cohort(view, out);
-  std::printf("%zu complete sessions, %zu learning curves: wrote %s and its CSV tables\n", view.sessions, view.curves.size(),
-              (out / "cohort.json").c_str());
+  messages.say(formatted("%zu complete sessions, %zu learning curves: wrote %s and its CSV tables", view.sessions,
+                         view.curves.size(), (out / "cohort.json").c_str()));
   std::set<std::string> tasks;
   for (const training::LearningCurve& c : view.curves) tasks.insert(c.task);
   if (tasks.empty()) return 0;
@@ -30,9 +31,9 @@ int write_cohort_report(const std::string& db, const training::CohortFilter& fil
       const std::filesystem::path file =
           out / ("cohort_" + file_name_part(task) + (time_to_target ? "_time_to_target.png" : "_score.png"));
       engine::write_png(file, ui::panel_picture(device, size, [&] {
-                          ui::draw_learning_curve_window(plot, {ImVec2(0, 0), ImVec2(float(size.width), float(size.height))});
+                          ui::draw_learning_curve_window(plot, ui::rect(0, 0, float(size.width), float(size.height)));
                         }));
-      std::printf("wrote %s\n", file.c_str());
+      messages.say("wrote " + file.string());
     }
   return 0;
 }

@@ -5,13 +5,15 @@
 #include <filesystem>
 #include <string>
 
+#include "app/messages.hpp"
 #include "training/sessions/cohort_view.hpp"
 
 namespace needle::app {
 
 // Writes OUT/cohort.json, the CSV tables and OUT/cohort_<task>_score.png and
-// OUT/cohort_<task>_time_to_target.png (a line per trainee over attempts). Returns 0; throws a
-// runtime error naming the database when it is missing or unreadable.
-int write_cohort_report(const std::string& db, const training::CohortFilter& filter, const std::filesystem::path& out);
+// OUT/cohort_<task>_time_to_target.png (a line per trainee over attempts), saying what it wrote to
+// `messages`. Returns 0; throws a runtime error naming the database when it is missing or unreadable.
+int write_cohort_report(const std::string& db, const training::CohortFilter& filter, const std::filesystem::path& out,
+                        const Messages& messages);
 
 }  // namespace needle::app

@@ -1,7 +1,7 @@
 // The window's side of the desk devices (docs/DEVICES.md, "Desk devices"): each frame the app
-// reads the mouse, the keys or a gamepad through GLFW and hands plain values to the device's
-// mapping (haptics/devices/desk_mapping.hpp), whose pose goes to the device lock-free. GLFW stays
-// in app/; the mappings below it are tested without a display.
+// reads the mouse, the keys or a gamepad through engine::Window and hands plain values to the
+// device's mapping (haptics/devices/desk_mapping.hpp), whose pose goes to the device lock-free. The
+// mappings below it are tested without a display.
 #pragma once
 
 #include <chrono>
@@ -12,26 +12,21 @@
 #include "engine/scene.hpp"
 #include "engine/window.hpp"
 #include "haptics/devices/desk_mapping.hpp"
+#include "haptics/devices/device_spec.hpp"
 
 namespace needle::app {
 
-// A gamepad GLFW reports with a standard mapping.
-struct GamepadInfo {
-  int id = 0;        // GLFW's joystick id: the N of gamepad:N
-  std::string name;  // as GLFW names it
-};
-
-// The gamepads present now. GLFW must be initialised (engine::Window::display_available() does it).
-std::vector<GamepadInfo> present_gamepads();
-
-// The joystick id a gamepad spec names ("gamepad": the first present). Throws
+// The gamepad slot a gamepad spec names ("gamepad": the first present, engine::Window::gamepads()). Throws
 // std::runtime_error saying what to do when it is not there.
-int gamepad_id(const std::string& spec);
+int gamepad_id(const haptics::DeviceSpec& spec);
+// Before a session opens on `spec`: the gamepad it names is present (gamepad_id's error
+// otherwise); nothing to check for the other devices here (a Falcon is found when it opens).
+void check_present(const haptics::DeviceSpec& spec);
 
 class DeskInput {
  public:
-  // For the desk device `device`, whose capabilities' name is its spec (mouse, keyboard,
-  // gamepad[:N]). Throws std::runtime_error when a gamepad spec names none that is present.
+  // For the desk device `device` (mouse, keyboard, gamepad[:N]). Throws std::runtime_error when
+  // a gamepad spec names none that is present.
   explicit DeskInput(haptics::DeskDevice& device);
 
   // One frame of input: the window's cursor, wheel and gamepad, and the frame's key presses
@@ -45,7 +40,7 @@ class DeskInput {
   // True once after each press of the gamepad's reset button.
   bool take_fault_reset() { return gamepad_ && pad_.take_fault_reset(); }
   // What moves the needle, in one line for the panel.
-  static const char* help(const std::string& spec);
+  static const char* help(haptics::DeviceSpec::Kind kind);
 
  private:
   haptics::DeskDevice& device_;
@@ -54,7 +49,7 @@ class DeskInput {
   haptics::KeyboardMapping keys_;
   haptics::GamepadMapping pad_;
   bool turning_ = false;          // the mouse's turning button is held
-  double turn_from_[2] = {0, 0};  // where the cursor was when it went down, screen coordinates
+  engine::Window::Cursor turn_from_;  // where the cursor was when it went down
   bool gamepad_ = false;
   int gamepad_id_ = 0;
   std::optional<std::chrono::steady_clock::time_point> last_frame_;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <memory>
 
 #include "app/default_db.hpp"
@@ -17,6 +16,7 @@
 #include "ui/cohort_panel.hpp"
 #include "ui/review_panels.hpp"
 #include "ui/review_replay.hpp"
+#include "ui/review_window_frame.hpp"
 #include "ui/status_panel.hpp"
 
 namespace needle::app {
@@ -65,28 +65,6 @@ engine::RgbaImage cropped(const engine::RgbaImage& image, const ui::PanelRect& a
   return out;
 }
 
-// The two tabs across the top of the window; returns whether the Class tab is the one shown.
-// `select_class` chooses it on the first frame (--class).
-bool draw_tabs(float width, bool& select_class) {
-  ImGui::SetNextWindowPos(ImVec2(0, 0));
-  ImGui::SetNextWindowSize(ImVec2(width, 0));
-  ImGui::Begin("##tabs", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                   ImGuiWindowFlags_AlwaysAutoResize);
-  bool class_tab = false;
-  if (ImGui::BeginTabBar("view")) {
-    if (ImGui::BeginTabItem("Sessions")) ImGui::EndTabItem();
-    if (ImGui::BeginTabItem("Class", nullptr, select_class ? ImGuiTabItemFlags_SetSelected : 0)) {
-      class_tab = true;
-      ImGui::EndTabItem();
-    }
-    ImGui::EndTabBar();
-  }
-  select_class = false;
-  ImGui::End();
-  return class_tab;
-}
-
 }  // namespace
 
 int run_review_window(const ReviewOptions& options) {
@@ -95,7 +73,7 @@ int run_review_window(const ReviewOptions& options) {
         "no display: the review is a window; for a headless export use needle-sim report --session ID --out DIR");
   }
   const std::unique_ptr<training::SessionStore> store = open_existing_db(options.db.string());
-  GpuWindow vw("needle-sim review", options.size);
+  GpuWindow vw("needle-sim review", options.size, options.messages);
   engine::Window& window = vw.window;
   engine::WindowTarget& target = vw.target;
   engine::SceneRenderer renderer(vw.device, target, {vw.default_msaa_samples()});
@@ -126,7 +104,7 @@ int run_review_window(const ReviewOptions& options) {
   bool select_class = options.class_view;
   std::optional<fs::path> class_picture;  // the Class tab's PNG, written from the frame drawn next
 
-  WindowFrames frames(options.frames, options.screenshot);
+  WindowFrames frames(options.frames, options.screenshot, options.messages);
   while (!window.should_close()) {
     window.poll_events();
     const float dt = clock.tick();
@@ -147,7 +125,7 @@ int run_review_window(const ReviewOptions& options) {
           const training::Task& task = *a.review->task;
           if (task.ultrasound_probe || layers_have_acoustics(task)) ultrasound = std::make_unique<UltrasoundWindow>(vw.device, task);
         } catch (const std::exception& e) {
-          std::fprintf(stderr, "no ultrasound replay: %s\n", e.what());
+          options.messages.warn(std::string("no ultrasound replay: ") + e.what());
         }
       }
       const fs::path wanted = a.review && a.review->task ? a.review->task->scene : fs::path();
@@ -173,9 +151,10 @@ int run_review_window(const ReviewOptions& options) {
     const engine::Extent extent = target.extent();
     const float w = float(extent.width), h = float(extent.height), left = kPanelsFraction * w, bar = 64.0f;
     ui_pass.begin_frame(extent, dt);
-    const bool class_tab = draw_tabs(left, select_class);
-    const float top = ImGui::GetFrameHeightWithSpacing() + 2.0f * ImGui::GetStyle().WindowPadding.y;
-    const ui::PanelRect class_rect{ImVec2(0, top), ImVec2(w, h - top)};
+    const ui::ReviewTabs tabs = ui::draw_review_tabs(left, select_class);
+    const bool class_tab = tabs.class_tab;
+    const float top = tabs.height;
+    const ui::PanelRect class_rect = ui::rect(0, top, w, h - top);
     if (class_tab) {
       class_view.update(*store, sessions);
       if (ui::draw_cohort_panel(class_view.view, class_view.state, class_rect)) {
@@ -189,8 +168,8 @@ int run_review_window(const ReviewOptions& options) {
         }
       }
     } else {
-      ui::draw_session_table(sessions, table, {ImVec2(0, top), ImVec2(left, 0.32f * h - top)});
-      const ui::PanelRect below{ImVec2(0, 0.32f * h), ImVec2(left, 0.68f * h)};
+      ui::draw_session_table(sessions, table, ui::rect(0, top, left, 0.32f * h - top));
+      const ui::PanelRect below = ui::rect(0, 0.32f * h, left, 0.68f * h);
       if (a.review) {
         detail.cursor_s = t;
         if (ui::draw_session_detail(*a.review, detail, below)) {
@@ -201,26 +180,18 @@ int run_review_window(const ReviewOptions& options) {
             detail.export_message = e.what();
           }
         }
-        playing = ui::draw_replay_bar(*a.review, t, playing, {ImVec2(left, h - bar), ImVec2(w - left, bar)});
-        if (!scene_error.empty()) {
-          ImGui::SetNextWindowPos(ImVec2(left + 10.0f, 10.0f));
-          ImGui::Begin("3D view", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
-          ImGui::TextWrapped("no replay: %s", scene_error.c_str());
-          ImGui::End();
-        }
+        playing = ui::draw_replay_bar(*a.review, t, playing, ui::rect(left, h - bar, w - left, bar));
+        if (!scene_error.empty()) ui::draw_note("3D view", ui::rect(left + 10.0f, 10.0f, 0, 0), "no replay: " + scene_error);
         if (b.review) {
           bool open = true;
-          ui::draw_comparison(*a.review, *b.review, {ImVec2(left, 0), ImVec2(w - left, h - bar)}, &open, &span);
+          ui::draw_comparison(*a.review, *b.review, ui::rect(left, 0, w - left, h - bar), &open, &span);
           if (!open) table.compared = 0;
         }
       } else {
-        ImGui::SetNextWindowPos(below.pos);
-        ImGui::SetNextWindowSize(below.size);
-        ImGui::Begin("Session", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
-        ImGui::TextWrapped("%s", !a.error.empty()   ? a.error.c_str()
-                                 : sessions.empty() ? "The database has no sessions yet: needle-sim run makes them."
-                                                    : "Click a session to review it; B picks one to compare it with.");
-        ImGui::End();
+        ui::draw_note("Session", below,
+                      !a.error.empty()   ? a.error
+                      : sessions.empty() ? "The database has no sessions yet: needle-sim run makes them."
+                                         : "Click a session to review it; B picks one to compare it with.");
       }
     }
     const bool replaying = !class_tab && a.review && a.review->has_recording() && scene_error.empty() && !b.review;
@@ -250,7 +221,7 @@ int run_review_window(const ReviewOptions& options) {
     });
   }
   renderer.wait_idle();
-  std::printf("presented %ld frames\n", frames.drawn());
+  options.messages.say(formatted("presented %ld frames", frames.drawn()));
   return 0;
 }
 

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "app/messages.hpp"
 #include "engine/extent.hpp"
 
 namespace needle::app {
@@ -20,6 +21,7 @@ struct ReviewOptions {
   bool class_view = false;  // open on the Class tab
   long frames = 0;      // close after this many frames (0: when the user closes it)
   std::optional<std::string> screenshot;
+  Messages messages;  // what the window tells its user (how frames reach it, the frames presented, ...)
 };
 
 // Needs a display and an existing database (runtime_error naming it otherwise). Returns 0.

@@ -11,8 +11,8 @@
 #include "haptics/realtime/haptic_loop.hpp"
 #include "haptics/realtime/task_space_step.hpp"
 #include "haptics/realtime/teleoperation_step.hpp"
+#include "haptics/recording/recording_context.hpp"
 #include "haptics/recording/session_format.hpp"
-#include "io/strict_json.hpp"
 #include "training/sessions/recording_identity.hpp"
 #include "training/tasks/scripted_operator.hpp"
 
@@ -22,14 +22,8 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-constexpr const char* kReplayPrefix = "replay:";
-// 1: task (its file), device, scenario, coupling, safety_limits; 2: and task_text, the task file's
-// text as the session ran it; and, added later without a new version (older readers ignore it, a
-// recording without it reads as before), session_uid, the uid of the session it was recorded for.
-constexpr int kContextVersion = 2;
-
-// The tool law's springs and its passivity damper, each added after recordings had been made
-// without it: a recording that names one was made with it, one that does not replays without it.
+// The tool law's springs and its passivity controller: a recording keeps the values its session ran
+// with, so a replay runs with them whatever the defaults become.
 struct ToolLawSpring {
   const char* key;
   double (*get)(const haptics::TeleoperationGains&);
@@ -39,8 +33,6 @@ constexpr ToolLawSpring kToolLawSprings[] = {
     {"axial_stiffness_N_per_m", [](const haptics::TeleoperationGains& g) { return g.axial_stiffness_N_per_m; }},
     {"passivity_max_damping_per_tick",
      [](const haptics::TeleoperationGains& g) { return g.passivity.max_damping_per_tick; }}};
-
-bool is_replay(const std::string& device) { return device.rfind(kReplayPrefix, 0) == 0; }
 
 // The trainee moves a task-space device in the plane of the screen and pushes into it: device x
 // goes to the view's right, y to its up, and z to `depth_sign` times the viewing direction.
@@ -58,9 +50,9 @@ Eigen::Matrix3d screen_axes(const engine::Camera& camera, double depth_sign) {
 // turns the needle about its tip, held to the wrist by a stiffer direction spring than the
 // Falcon's start direction: at 0.5 N m/rad the tip spring wins a few degrees off the target in
 // free space, at 5 N m/rad the needle settles on it (tests/haptics/test_realtime_task_space.cpp).
-haptics::TaskCoupling coupling_for(const std::string& device, const engine::Camera& camera) {
+haptics::TaskCoupling coupling_for(const haptics::DeviceSpec& device, const engine::Camera& camera) {
   haptics::TaskCoupling coupling;
-  const bool desk = haptics::is_desk_spec(device);
+  const bool desk = device.desk();
   coupling.device_to_scene = screen_axes(camera, desk ? 1.0 : -1.0);
   coupling.workspace_scale = desk ? 1.0 : 2.5;
   if (desk) {
@@ -94,7 +86,7 @@ haptics::TaskCoupling coupling_from(const json& j) {
   c.orientation_stiffness_nm_per_rad = j.at("orientation_stiffness_nm_per_rad").get<double>();
   c.joint_damping_nms_per_rad = j.at("joint_damping_nms_per_rad").get<double>();
   c.force_scale = j.at("force_scale").get<double>();
-  c.wrist = j.value("wrist", false);  // recorded before the desk devices had a wrist: none
+  c.wrist = j.at("wrist").get<bool>();
   return c;
 }
 
@@ -110,31 +102,6 @@ haptics::SafetyLimits limits_from(const json& j) {
   if (torque.size() != haptics::kMaxDeviceJoints) throw std::invalid_argument("max_torque_nm: wrong length");
   std::copy(torque.begin(), torque.end(), limits.max_torque_nm);
   return limits;
-}
-
-std::string replay_path(const std::string& device) { return device.substr(std::string(kReplayPrefix).size()); }
-
-// The recording's context, checked: a recording from another program, an older build or a
-// damaged file is an error naming the file, never a replay of something else.
-json read_context(const std::string& path, const haptics::SessionHeader& header) {
-  auto fail = [&path](const std::string& what) { return haptics::RecordingError(path + ": header: context: " + what); };
-  if (header.version < 3)
-    throw haptics::RecordingError(path + ": header: format version " + std::to_string(header.version) +
-                                  " has no checksums and does not keep its task: it can be reviewed (needle-sim report, "
-                                  "review) but not replayed");
-  if (header.context.empty()) throw fail("none (recorded by another program): cannot rebuild its task");
-  json context;
-  try {
-    context = io::parse_json_text(header.context);
-  } catch (const io::JsonTextError& e) {
-    throw fail(e.what());
-  }
-  if (!context.is_object() || context.value("version", 0) != kContextVersion)
-    throw fail("expected version " + std::to_string(kContextVersion));
-  for (const char* key : {"task", "task_text", "scenario", "safety_limits"})
-    if (!context.contains(key)) throw fail(std::string("missing \"") + key + "\"");
-  if (!context["task"].is_string() || !context["task_text"].is_string()) throw fail("task and task_text are not text");
-  return context;
 }
 
 // What a replay should say about its recording, and whether its session may be stored complete:
@@ -157,109 +124,109 @@ std::vector<std::string> replay_notes(const std::string& path, const haptics::Re
 
 }  // namespace
 
-training::Task session_task(const fs::path& task_file, const std::string& device) {
-  if (!is_replay(device)) return training::load_task(task_file);
-  const std::string path = replay_path(device);
-  const json context = read_context(path, haptics::read_header(path));
+training::Task session_task(const fs::path& task_file, const haptics::DeviceSpec& device) {
+  if (device.kind != haptics::DeviceSpec::Kind::kReplay) return training::load_task(task_file);
+  const json context = haptics::read_recording_context(device.file, haptics::read_header(device.file));
   return training::parse_task(context["task_text"].get<std::string>(), context["task"].get<std::string>());
 }
 
 SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
   if (options.rate_hz) haptics::check_loop_rate(*options.rate_hz);
-  const fs::path scenario_file = options.out_dir / "scenario.json";
-  json scenario_json;
-  json coupling = nullptr;  // joint to joint
-  const std::string& spec = options.device;
-
-  if (spec == "sim") {
-    const fs::path script = training::operator_script_path(task, options.operator_spec);
-    haptics::Scenario scenario = training::scenario_with_operator(task, script, scenario_file);
-    rate_hz_ = options.rate_hz.value_or(1.0 / scenario.period_s);
-    sim_ = std::make_unique<haptics::SimSession>(std::move(scenario), rate_hz_);
-    device_ = &sim_->device();
-    step_ = &sim_->step();
-    ticks_ = static_cast<uint64_t>(std::llround(sim_->scenario().duration_s * rate_hz_));
-    description_ = "sim (" + script.stem().string() + ")";
-    scenario_json = json::parse(std::ifstream(scenario_file));
-  } else if (is_replay(spec)) {
-    const std::string path = replay_path(spec);
-    auto replay = std::make_unique<haptics::ReplayDevice>(path);
-    replay->open();
-    const json context = read_context(path, replay->header());
-    if (replay->length() == 0)
-      throw haptics::RecordingError(path + ": no ticks recorded (its run stopped before its first tick): nothing to replay");
-    notes_ = replay_notes(path, *replay, context, complete_);
-    try {
-      scenario_json = context.at("scenario");
-      if (scenario_json.contains("gains")) {
-        json& gains = scenario_json["gains"];
-        // Recorded before issue 13's tool law existed: replayed with the law it was recorded with.
-        if (!gains.contains("law")) gains["law"] = haptics::control_law_name(haptics::ControlLaw::Thesis);
-        // Recorded before a tool law's spring or its passivity damper: replayed without it.
-        for (const ToolLawSpring& spring : kToolLawSprings)
-          if (!gains.contains(spring.key)) gains[spring.key] = 0.0;
-      }
-      coupling = context.value("coupling", json(nullptr));
-      limits_ = limits_from(context.at("safety_limits"));
-      scenario_ = std::make_unique<haptics::Scenario>(training::write_scenario(scenario_json, scenario_file));
-      rate_hz_ = replay->header().rate_hz;
-      owned_step_ = coupling.is_null() ? std::unique_ptr<haptics::ServoStep>(
-                                             std::make_unique<haptics::TeleoperationStep>(*scenario_, 1.0 / rate_hz_))
-                                       : std::make_unique<haptics::TaskSpaceStep>(*scenario_, coupling_from(coupling));
-    } catch (const json::exception& e) {
-      throw haptics::RecordingError(path + ": header: context: " + e.what());
-    } catch (const std::invalid_argument& e) {
-      throw haptics::RecordingError(path + ": header: context: " + e.what());
-    }
-    ticks_ = replay->length();
-    description_ = "replay of " + replay->header().device + " (" + fs::path(path).filename().string() + ")";
-    owned_device_ = std::move(replay);
-  } else {
-    haptics::DeviceOptions device_options;
-    device_options.firmware_path = options.firmware;
-    if (haptics::is_desk_spec(spec)) {
-      auto desk = std::make_unique<haptics::DeskDevice>(spec);
-      desk_ = desk.get();
-      owned_device_ = std::move(desk);
-    } else {
-      owned_device_ = haptics::make_device(spec, device_options);  // DeviceError for an unknown spec
-    }
-    owned_device_->open();
-    owned_device_->home();
-    scenario_json = training::task_scenario_json(task);
-    scenario_ = std::make_unique<haptics::Scenario>(training::write_scenario(scenario_json, scenario_file));
-    rate_hz_ = options.rate_hz.value_or(1000.0);
-    const haptics::TaskCoupling task_coupling = coupling_for(spec, options.camera);
-    coupling = coupling_json(task_coupling);
-    auto task_space = std::make_unique<haptics::TaskSpaceStep>(*scenario_, task_coupling);
-    task_space_ = task_space.get();
-    owned_step_ = std::move(task_space);
-    description_ = spec;
-  }
+  using Kind = haptics::DeviceSpec::Kind;
+  const bool replay = options.device.kind == Kind::kReplay;
+  Recorded recorded = options.device.kind == Kind::kSim ? make_sim(task, options)
+                      : replay                          ? make_replay(options)
+                                                        : make_live(task, options);
   if (owned_device_) device_ = owned_device_.get();
   if (owned_step_) step_ = owned_step_.get();
-  if (!is_replay(spec)) limits_ = haptics::safety_limits_for(device_->capabilities());
-  if (spec == "sim") device_->open();
+  if (!replay) limits_ = haptics::safety_limits_for(device_->capabilities());
+  if (sim_) device_->open();
 
-  // The law and the tool law's springs are part of what the recording replays with (their
+  // The law, the tool law's springs and its passivity controller are part of what the recording replays with (their
   // defaults may change again).
-  if (scenario_json.contains("gains")) {
-    json& gains = scenario_json["gains"];
+  if (recorded.scenario.contains("gains")) {
+    json& gains = recorded.scenario["gains"];
     const haptics::TeleoperationGains defaults;
     if (!gains.contains("law")) gains["law"] = haptics::control_law_name(defaults.law);
     for (const ToolLawSpring& spring : kToolLawSprings)
       if (!gains.contains(spring.key)) gains[spring.key] = spring.get(defaults);
   }
-  const std::string recorded_device = is_replay(spec) ? description_ : spec;
-  context_ = json{{"version", kContextVersion},
+  context_ = json{{"version", haptics::kRecordingContextVersion},
                   {"task", fs::absolute(task.source).string()},
                   {"task_text", task.text},
-                  {"device", recorded_device},
-                  {"scenario", scenario_json},
-                  {"coupling", coupling},
+                  {"device", replay ? description_ : options.device.text()},
+                  {"scenario", recorded.scenario},
+                  {"coupling", recorded.coupling},
                   {"safety_limits", limits_json(limits_)},
                   {training::kRecordingSessionKey, options.session_uid}}
                  .dump();
+}
+
+// sim: the task's scenario with the scripted operator's hand, device and step in one.
+SessionRig::Recorded SessionRig::make_sim(const training::Task& task, const RigOptions& options) {
+  if (!options.device.file.empty())
+    throw haptics::DeviceError("device " + options.device.text() +
+                               ": a task's sim runs the task's own scenario (--device sim, --operator SCRIPT)");
+  const fs::path scenario_file = options.out_dir / "scenario.json";
+  const fs::path script = training::operator_script_path(task, options.operator_spec);
+  haptics::Scenario scenario = training::scenario_with_operator(task, script, scenario_file);
+  rate_hz_ = options.rate_hz.value_or(1.0 / scenario.period_s);
+  sim_ = std::make_unique<haptics::SimSession>(std::move(scenario), rate_hz_);
+  device_ = &sim_->device();
+  step_ = &sim_->step();
+  ticks_ = static_cast<uint64_t>(std::llround(sim_->scenario().duration_s * rate_hz_));
+  description_ = "sim (" + script.stem().string() + ")";
+  return {json::parse(std::ifstream(scenario_file)), nullptr};
+}
+
+// replay:FILE: the recorded readings through the step its context names, at its rate, on the
+// task it keeps.
+SessionRig::Recorded SessionRig::make_replay(const RigOptions& options) {
+  const std::string& path = options.device.file;
+  auto replay = std::make_unique<haptics::ReplayDevice>(path);
+  replay->open();
+  const json context = haptics::read_recording_context(path, replay->header());
+  if (replay->length() == 0)
+    throw haptics::RecordingError(path + ": no ticks recorded (its run stopped before its first tick): nothing to replay");
+  notes_ = replay_notes(path, *replay, context, complete_);
+  Recorded recorded{context["scenario"], context["coupling"]};
+  try {
+    limits_ = limits_from(context.at("safety_limits"));
+    scenario_ = std::make_unique<haptics::Scenario>(training::write_scenario(recorded.scenario, options.out_dir / "scenario.json"));
+    rate_hz_ = replay->header().rate_hz;
+    owned_step_ = recorded.coupling.is_null()
+                      ? std::unique_ptr<haptics::ServoStep>(std::make_unique<haptics::TeleoperationStep>(*scenario_, 1.0 / rate_hz_))
+                      : std::make_unique<haptics::TaskSpaceStep>(*scenario_, coupling_from(recorded.coupling));
+  } catch (const json::exception& e) {
+    throw haptics::RecordingError(path + ": header: context: " + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw haptics::RecordingError(path + ": header: context: " + e.what());
+  }
+  ticks_ = replay->length();
+  description_ = "replay of " + replay->header().device + " (" + fs::path(path).filename().string() + ")";
+  owned_device_ = std::move(replay);
+  return recorded;
+}
+
+// A live device (mouse, keyboard, gamepad, Falcon): opened and homed, coupled in task space along
+// the trainee's view, at 1 kHz unless told otherwise.
+SessionRig::Recorded SessionRig::make_live(const training::Task& task, const RigOptions& options) {
+  haptics::DeviceOptions device_options;
+  device_options.firmware_path = options.firmware;
+  owned_device_ = haptics::make_device(options.device, device_options);
+  desk_ = dynamic_cast<haptics::DeskDevice*>(owned_device_.get());
+  owned_device_->open();
+  owned_device_->home();
+  Recorded recorded{training::task_scenario_json(task), nullptr};
+  scenario_ = std::make_unique<haptics::Scenario>(training::write_scenario(recorded.scenario, options.out_dir / "scenario.json"));
+  rate_hz_ = options.rate_hz.value_or(1000.0);
+  const haptics::TaskCoupling task_coupling = coupling_for(options.device, options.camera);
+  recorded.coupling = coupling_json(task_coupling);
+  auto task_space = std::make_unique<haptics::TaskSpaceStep>(*scenario_, task_coupling);
+  task_space_ = task_space.get();
+  owned_step_ = std::move(task_space);
+  description_ = options.device.text();
+  return recorded;
 }
 
 std::optional<Eigen::Vector3d> SessionRig::tool_start() const {

@@ -1,19 +1,21 @@
-// What a task session runs on: the device a --device spec names, the servo step that couples it
-// to the virtual robot (joint to joint for `sim`, in task space for `falcon` and the desk devices
-// `mouse`, `keyboard`, `gamepad[:N]`), the
-// scenario both use, and the recording context that lets `replay:FILE` rebuild exactly this
-// (docs/TASKS.md, "Devices").
+// What a task session runs on: the device a spec names (haptics::DeviceSpec), the servo step that
+// couples it to the virtual robot (joint to joint for `sim`, in task space for `falcon` and the
+// desk devices `mouse`, `keyboard`, `gamepad[:N]`), the scenario both use, and the recording
+// context that lets `replay:FILE` rebuild exactly this (docs/TASKS.md, "Devices"). One factory
+// per kind of device builds them: the simulated master, a replay, a live device.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "engine/scene.hpp"
 #include "haptics/devices/desk_device.hpp"
+#include "haptics/devices/device_spec.hpp"
 #include "haptics/realtime/servo_step.hpp"
 #include "haptics/realtime/task_space_step.hpp"
 #include "haptics/realtime/sim_session.hpp"
@@ -24,7 +26,7 @@
 namespace needle::app {
 
 struct RigOptions {
-  std::string device = "sim";           // sim | mouse | keyboard | gamepad[:N] | falcon[:N] | replay:FILE
+  haptics::DeviceSpec device;           // sim (default) | mouse | keyboard | gamepad[:N] | falcon[:N] | replay:FILE
   std::string operator_spec = "good";   // sim: good | sloppy | a script file
   std::string firmware;                 // falcon: Novint's firmware image
   std::optional<double> rate_hz;        // default: the scenario's for sim, 1 kHz live, as recorded for replay
@@ -37,12 +39,13 @@ struct RigOptions {
 // The task a session on `device` runs: for replay:FILE the task as its recording keeps it (the
 // file's text then, not the file as it is now), else `task_file`. Throws haptics::RecordingError
 // naming the recording when it has no usable context, training::TaskError for the task.
-training::Task session_task(const std::filesystem::path& task_file, const std::string& device);
+training::Task session_task(const std::filesystem::path& task_file, const haptics::DeviceSpec& device);
 
 class SessionRig {
  public:
   // Builds and opens the device (homing a Falcon) and its step. Throws haptics::DeviceError,
-  // RecordingError, ScenarioError or training::TaskError naming what is wrong.
+  // RecordingError, ScenarioError or training::TaskError naming what is wrong; DeviceError for
+  // sim:SCENARIO (a task's sim runs the task's own scenario).
   SessionRig(const training::Task& task, const RigOptions& options);
   ~SessionRig();
   SessionRig(const SessionRig&) = delete;
@@ -72,6 +75,16 @@ class SessionRig {
   bool can_complete() const { return complete_; }
 
  private:
+  // What a factory hands the recording's context: the scenario that runs, the coupling (null:
+  // joint to joint).
+  struct Recorded {
+    nlohmann::json scenario;
+    nlohmann::json coupling;
+  };
+  Recorded make_sim(const training::Task& task, const RigOptions& options);
+  Recorded make_replay(const RigOptions& options);
+  Recorded make_live(const training::Task& task, const RigOptions& options);
+
   std::unique_ptr<haptics::SimSession> sim_;     // sim: scenario, device and step in one
   std::unique_ptr<haptics::Scenario> scenario_;  // the others: their device and step refer to it
   std::unique_ptr<haptics::HapticDevice> owned_device_;

@@ -44,7 +44,7 @@ struct ScratchFolder {
 
 training::SessionResult replay_result(const fs::path& recording, const fs::path& scratch, std::string& task_name) {
   RigOptions options;
-  options.device = "replay:" + recording.string();
+  options.device = {haptics::DeviceSpec::Kind::kReplay, std::nullopt, recording.string()};
   options.out_dir = scratch;
   const training::Task task = session_task({}, options.device);
   task_name = task.name;

@@ -1,15 +1,12 @@
 #include "app/session_window.hpp"
 
-#include <GLFW/glfw3.h>
-#include <imgui.h>
-
 #include <chrono>
-#include <cstdio>
 #include <memory>
 
 #include "app/desk_input.hpp"
 #include "engine/gpu_device.hpp"
 #include "engine/render_target.hpp"
+#include "ui/input_focus.hpp"
 
 namespace needle::app {
 namespace {
@@ -18,8 +15,6 @@ namespace fs = std::filesystem;
 
 // The moment of the script a headless scene run shows: the needle pivoted in the tissue.
 constexpr double kHeadlessMoment_s = 7.0;
-
-bool pointer_on_panel() { return ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse; }
 
 }  // namespace
 
@@ -47,10 +42,10 @@ FrameContent with_views(const Show& show, ui::ViewState& view, const engine::Sce
 
 SessionWindow::SessionWindow(const WindowOptions& options)
     : options_(options),
-      vw_("needle-sim", options.size),
+      vw_("needle-sim", options.size, options.messages),
       frame_(vw_.device, vw_.target, {options.msaa.value_or(vw_.default_msaa_samples()), options.hud, options.render_scale},
              &vw_.window),
-      frames_(options.frames, options.screenshot),
+      frames_(options.frames, options.screenshot, options.messages),
       view_{options.section, options.ultrasound},
       probe_(options.probe) {}
 
@@ -95,7 +90,7 @@ TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices
   }
   engine::GpuScene scene(window.renderer(), session.scene());
   std::optional<TaskEnd> end;
-  const char* controls = desk ? DeskInput::help(session.desk()->capabilities().name) : nullptr;
+  const char* controls = desk ? DeskInput::help(session.desk()->spec().kind) : nullptr;
   std::vector<ui::Choice> choices;
   if (offer_choices) {
     choices = {{"Retry (R)", [&end] { end = TaskEnd::kRetry; }},
@@ -110,18 +105,18 @@ TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices
                [&] { session.draw_panel(std::nullopt, controls, session.finished() ? choices : offer_choices ? stop : std::vector<ui::Choice>{}); },
                [&](engine::Window& w) {
                  const std::vector<engine::Window::KeyPress> keys = w.take_key_presses();
-                 const bool typing = ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput;
+                 const bool typing = ui::typing();
                  for (const engine::Window::KeyPress& press : keys) {
                    if (!offer_choices || typing) break;
-                   if (press.key == GLFW_KEY_ESCAPE) end = TaskEnd::kBack;
-                   if (session.finished() && press.key == GLFW_KEY_R) end = TaskEnd::kRetry;
-                   if (session.finished() && press.key == GLFW_KEY_N) end = TaskEnd::kNextTask;
+                   if (press.key == engine::Key::kEscape) end = TaskEnd::kBack;
+                   if (session.finished() && press.key == engine::Key::kR) end = TaskEnd::kRetry;
+                   if (session.finished() && press.key == engine::Key::kN) end = TaskEnd::kNextTask;
                  }
                  if (!desk || session.finished()) {
                    w.take_scroll();
                    return;
                  }
-                 desk->frame(w, keys, pointer_on_panel());
+                 desk->frame(w, keys, ui::pointer_on_panel());
                  if (desk->take_fault_reset()) session.reset_fault();
                }),
            std::make_shared<UltrasoundWindow>(window.device(), session.task()),
@@ -142,16 +137,16 @@ int run_scene_headless(const engine::Scene& scene, const WindowOptions& options,
   renderer.draw(target, params, &image);
   const fs::path out = out_dir / "scene.png";
   engine::write_png(out, image);
-  std::printf("wrote %s (%ux%u)\n", out.c_str(), image.width, image.height);
+  options.messages.say(formatted("wrote %s (%ux%u)", out.c_str(), image.width, image.height));
   return 0;
 }
 
 int run_task_window(const TaskSessionOptions& task, const WindowOptions& options) {
-  if (task.rig.device.rfind("gamepad", 0) == 0) gamepad_id(task.rig.device);  // before a session is opened without it
+  check_present(task.rig.device);  // before a session is opened without it
   TaskSession session(task);
   SessionWindow window(options);
   run_task(window, session, false);
-  std::printf("presented %ld frames\n", window.frames_drawn());
+  options.messages.say(formatted("presented %ld frames", window.frames_drawn()));
   return 0;
 }
 
@@ -159,7 +154,7 @@ int run_scene_window(const engine::Scene& scene, const WindowOptions& options) {
   SessionWindow window(options);
   engine::GpuScene gpu_scene(window.renderer(), scene);
   window.run(gpu_scene, Show{scripted_content(gpu_scene)});
-  std::printf("presented %ld frames\n", window.frames_drawn());
+  options.messages.say(formatted("presented %ld frames", window.frames_drawn()));
   return 0;
 }
 

@@ -34,6 +34,7 @@ struct WindowOptions {
   std::optional<engine::Section::Mode> section;  // the section view at the start (X and the view panel change it)
   bool ultrasound = false;                       // the ultrasound window open at the start, in a task that has one
   ProbeOffset probe;                             // the keys' moves of a task's probe at the start
+  Messages messages;                             // what the window tells its user (how frames reach it, ...)
 };
 
 // What the window shows each frame: where the needle is, and a panel beside the status panel;
@@ -94,11 +95,13 @@ enum class TaskEnd { kWindowClosed, kRetry, kNextTask, kBack };
 // recording is kept).
 TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices);
 
-// `run` in a window: the task until the window closes, the score on screen once it ends. Returns 0.
+// `run` in a window: the task until the window closes, the score on screen once it ends. Returns 0,
+// saying the frames presented.
 int run_task_window(const TaskSessionOptions& task, const WindowOptions& options);
-// The scene with the scripted needle, in the window until it closes. Returns 0.
+// The scene with the scripted needle, in the window until it closes. Returns 0, saying the frames
+// presented.
 int run_scene_window(const engine::Scene& scene, const WindowOptions& options);
-// The scene with the scripted needle pivoted in the tissue, as OUT/scene.png. Returns 0.
+// The scene with the scripted needle pivoted in the tissue, as OUT/scene.png. Returns 0, saying so.
 int run_scene_headless(const engine::Scene& scene, const WindowOptions& options, const std::filesystem::path& out_dir);
 
 }  // namespace needle::app

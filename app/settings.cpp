@@ -1,11 +1,12 @@
 #include "app/settings.hpp"
 
+#include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "haptics/devices/desk_device.hpp"
+#include "haptics/devices/device_spec.hpp"
 #include "io/strict_json.hpp"
 #include "io/file_write.hpp"
 
@@ -25,11 +26,7 @@ struct SettingsError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-bool known_device(const std::string& spec) {
-  if (haptics::is_desk_spec(spec) || spec == "falcon") return true;
-  return spec.rfind("falcon:", 0) == 0 && spec.size() > 7 && spec.size() <= 10 &&
-         spec.find_first_not_of("0123456789", 7) == std::string::npos;
-}
+constexpr const char* kTraineeDevices = "expected mouse, keyboard, gamepad[:N] or falcon[:N]";
 
 class SettingsReader : io::StrictJsonReader<SettingsError> {
  public:
@@ -40,8 +37,13 @@ class SettingsReader : io::StrictJsonReader<SettingsError> {
     Settings s;
     if (root.contains("trainee")) s.trainee = string(root["trainee"], "/trainee");
     if (root.contains("device")) {
-      s.device = string(root["device"], "/device");
-      if (!known_device(s.device)) fail("/device", "unknown device \"" + s.device + "\" (expected mouse, keyboard, gamepad[:N] or falcon[:N])");
+      const std::string text = string(root["device"], "/device");
+      try {
+        s.device = haptics::DeviceSpec::parse(text);
+      } catch (const haptics::DeviceSpecError&) {
+        fail("/device", "unknown device \"" + text + "\" (" + kTraineeDevices + ")");
+      }
+      if (!s.device.live()) fail("/device", "device \"" + text + "\" is no trainee's device (" + kTraineeDevices + ")");
     }
     if (root.contains("window")) {
       const json& w = root["window"];
@@ -56,8 +58,9 @@ class SettingsReader : io::StrictJsonReader<SettingsError> {
 
   std::optional<float> render_scale(const json& v) const {
     if (v.is_string() && v == "auto") return std::nullopt;
-    if (!v.is_number()) fail("/render_scale", "expected \"auto\" or a number in [0.25, 1]");
-    return float(in_range(v, "/render_scale", {kMinRenderScale, 1.0, false, ""}));
+    const io::Range range{engine::kMinRenderScale, engine::kMaxRenderScale, false, ""};
+    if (!v.is_number()) fail("/render_scale", "expected \"auto\" or a number in " + range.text());
+    return float(in_range(v, "/render_scale", range));
   }
 
   ViewSettings views(const json& v) const {
@@ -139,7 +142,7 @@ void save_settings(const fs::path& file, const Settings& settings) {
   fs::create_directories(file.parent_path(), ec);
   if (ec) throw std::runtime_error(file.string() + ": cannot write: making its folder: " + ec.message());
   json j = {{"version", kSettingsVersion},
-            {"device", settings.device},
+            {"device", settings.device.text()},
             {"window", {{"width", settings.window.width}, {"height", settings.window.height}}},
             {"views",
              {{"section", section_name(settings.views.section)},

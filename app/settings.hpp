@@ -11,6 +11,7 @@
 #include "app/probe_offset.hpp"
 #include "engine/extent.hpp"
 #include "engine/scene_renderer.hpp"
+#include "haptics/devices/device_spec.hpp"
 
 namespace needle::app {
 
@@ -26,15 +27,14 @@ struct ViewSettings {
 
 struct Settings {
   std::string trainee;           // the last trainee; empty before the first
-  std::string device = "mouse";  // the last device spec (mouse, keyboard, gamepad[:N], falcon[:N])
+  haptics::DeviceSpec device{haptics::DeviceSpec::Kind::kMouse};  // the last device: mouse, keyboard, gamepad[:N], falcon[:N]
   engine::Extent window{1280, 720};
   ViewSettings views;
   // "render_scale": "auto" (nullopt: lowered on a CPU device while the frame misses 60 fps) or a
-  // fixed scale of the 3D view's width and height in [0.25, 1] (docs/RENDERING.md, "Render scale").
+  // fixed scale of the 3D view's width and height in [engine::kMinRenderScale, 1] (docs/RENDERING.md,
+  // "Render scale").
   std::optional<float> render_scale;
 };
-
-inline constexpr float kMinRenderScale = 0.25f;
 
 // $XDG_CONFIG_HOME/needle-sim/settings.json, else ~/.config/needle-sim/settings.json.
 std::filesystem::path default_settings_file();

@@ -2,9 +2,7 @@
 
 #include "app/default_db.hpp"
 
-#include <GLFW/glfw3.h>
-#include <imgui.h>
-
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -17,6 +15,7 @@
 #include "training/sessions/store_location.hpp"
 #include "training/sessions/trainee_history.hpp"
 #include "training/tasks/task_catalog.hpp"
+#include "ui/input_focus.hpp"
 
 namespace needle::app {
 namespace {
@@ -25,18 +24,17 @@ namespace fs = std::filesystem;
 
 constexpr auto kRescan = std::chrono::seconds(2);  // devices plugged in or out show up this soon
 
-std::optional<ui::StartKey> start_key_of(int key) {
+std::optional<ui::StartKey> start_key_of(engine::Key key) {
   switch (key) {
-    case GLFW_KEY_UP: return ui::StartKey::kUp;
-    case GLFW_KEY_DOWN: return ui::StartKey::kDown;
-    case GLFW_KEY_LEFT: return ui::StartKey::kLeft;
-    case GLFW_KEY_RIGHT: return ui::StartKey::kRight;
-    case GLFW_KEY_PAGE_UP: return ui::StartKey::kPageUp;
-    case GLFW_KEY_PAGE_DOWN: return ui::StartKey::kPageDown;
-    case GLFW_KEY_TAB: return ui::StartKey::kTab;
-    case GLFW_KEY_ENTER:
-    case GLFW_KEY_KP_ENTER: return ui::StartKey::kEnter;
-    case GLFW_KEY_ESCAPE: return ui::StartKey::kEscape;
+    case engine::Key::kUp: return ui::StartKey::kUp;
+    case engine::Key::kDown: return ui::StartKey::kDown;
+    case engine::Key::kLeft: return ui::StartKey::kLeft;
+    case engine::Key::kRight: return ui::StartKey::kRight;
+    case engine::Key::kPageUp: return ui::StartKey::kPageUp;
+    case engine::Key::kPageDown: return ui::StartKey::kPageDown;
+    case engine::Key::kTab: return ui::StartKey::kTab;
+    case engine::Key::kEnter: return ui::StartKey::kEnter;
+    case engine::Key::kEscape: return ui::StartKey::kEscape;
     default: return std::nullopt;
   }
 }
@@ -62,7 +60,7 @@ class StartScreen {
     }
     ui::set_trainee_name(state_, settings.trainee);
     state_.focus_name = settings.trainee.empty();
-    scan_devices(settings.device);
+    scan_devices(settings.device.text());
     read_store();
   }
 
@@ -94,7 +92,7 @@ class StartScreen {
     try {
       sessions_ = start_screen_sessions(options_.db);
     } catch (const std::exception& e) {  // no records shown; the trainee can still run (the run says what fails)
-      std::fprintf(stderr, "needle-sim: %s\n", e.what());
+      options_.messages.warn(e.what());
       state_.notice = e.what();
     }
     state_.known_trainees = training::known_trainees(sessions_);
@@ -140,7 +138,7 @@ ui::StartAction choose(SessionWindow& window, StartScreen& screen) {
                   },
                   [&](engine::Window& w) {
                     w.take_scroll();
-                    const bool typing = ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput;
+                    const bool typing = ui::typing();
                     for (const engine::Window::KeyPress& press : w.take_key_presses()) {
                       const std::optional<ui::StartKey> key = start_key_of(press.key);
                       if (!key) continue;
@@ -161,27 +159,28 @@ std::vector<training::SessionInfo> start_screen_sessions(const std::string& db) 
 }
 
 std::vector<ui::StartDevice> present_devices() {
-  std::vector<ui::StartDevice> devices = {{"mouse", "Mouse", DeskInput::help("mouse"), true},
-                                          {"keyboard", "Keyboard", DeskInput::help("keyboard"), true}};
-  for (const GamepadInfo& pad : present_gamepads())
-    devices.push_back({"gamepad:" + std::to_string(pad.id), "Gamepad " + std::to_string(pad.id) + " (" + pad.name + ")",
-                       DeskInput::help("gamepad"), true});
+  using Kind = haptics::DeviceSpec::Kind;
+  std::vector<ui::StartDevice> devices = {{haptics::DeviceSpec{Kind::kMouse}.text(), "Mouse", DeskInput::help(Kind::kMouse), true},
+                                          {haptics::DeviceSpec{Kind::kKeyboard}.text(), "Keyboard", DeskInput::help(Kind::kKeyboard), true}};
+  for (const engine::GamepadInfo& pad : engine::Window::gamepads())
+    devices.push_back({haptics::DeviceSpec{Kind::kGamepad, pad.id}.text(), "Gamepad " + std::to_string(pad.id) + " (" + pad.name + ")",
+                       DeskInput::help(Kind::kGamepad), true});
   const haptics::falcon::UsbPresence falcons = haptics::falcon::find_falcons();
-  for (int i = 0; i < falcons.count; ++i)
-    devices.push_back({"falcon:" + std::to_string(i), "Falcon " + std::to_string(i),
+  for (int i = 0; i < std::min(falcons.count, haptics::kMaxDeviceIndex + 1); ++i)
+    devices.push_back({haptics::DeviceSpec{Kind::kFalcon, i}.text(), "Falcon " + std::to_string(i),
                        "the Falcon's handle moves the tool and you feel the forces; it is homed when the task starts "
                        "(move the grip all the way out and back in); its firmware must have been loaded since it was powered on "
                        "(needle-sim run --device falcon --firmware FILE loads it)",
                        true});
   if (falcons.count == 0)
-    devices.push_back({"falcon", falcons.error.empty() ? "Falcon (none connected)" : "Falcon (USB not readable)",
+    devices.push_back({haptics::DeviceSpec{Kind::kFalcon}.text(), falcons.error.empty() ? "Falcon (none connected)" : "Falcon (USB not readable)",
                        falcons.error.empty() ? "no Falcon connected" : "the USB bus cannot be read: " + falcons.error, false});
   return devices;
 }
 
 int run_start_screen(const StartScreenOptions& options) {
   LoadedSettings loaded = load_settings(options.settings);
-  if (!loaded.notice.empty()) std::fprintf(stderr, "needle-sim: %s\n", loaded.notice.c_str());
+  if (!loaded.notice.empty()) options.messages.warn(loaded.notice);
   Settings& settings = loaded.settings;
   WindowOptions window_options;
   window_options.size = settings.window;
@@ -189,6 +188,7 @@ int run_start_screen(const StartScreenOptions& options) {
   window_options.ultrasound = settings.views.ultrasound;
   window_options.probe = settings.views.probe;
   window_options.render_scale = settings.render_scale;
+  window_options.messages = options.messages;
   SessionWindow window(window_options);
   StartScreen screen(options, settings);
   if (!loaded.notice.empty())
@@ -201,7 +201,7 @@ int run_start_screen(const StartScreenOptions& options) {
     try {
       save_settings(options.settings, settings);
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "needle-sim: %s\n", e.what());
+      options.messages.warn(e.what());
       screen.state().notice = e.what();
     }
   };
@@ -209,7 +209,7 @@ int run_start_screen(const StartScreenOptions& options) {
   while (!window.closed()) {
     if (choose(window, screen) != ui::StartAction::kStart) break;
     settings.trainee = ui::trainee_name(screen.state());
-    settings.device = screen.device().spec;
+    settings.device = haptics::DeviceSpec::parse(screen.device().spec);
     save();
     screen.state().notice.clear();
     // The chosen task, again on Retry, the next on Next task, until Back.
@@ -221,13 +221,14 @@ int run_start_screen(const StartScreenOptions& options) {
       task.db = options.db;
       task.station = options.station;
       task.out_dir = local_folder(options.db) / "runs" / screen.task().name;
+      task.messages = options.messages;
       try {
         fs::create_directories(task.out_dir);
-        if (task.rig.device.rfind("gamepad", 0) == 0) gamepad_id(task.rig.device);
+        check_present(task.rig.device);
         TaskSession session(task);
         end = run_task(window, session, true);
       } catch (const std::exception& e) {
-        std::fprintf(stderr, "needle-sim: %s\n", e.what());
+        options.messages.warn(e.what());
         screen.state().notice = e.what();
         end = TaskEnd::kBack;
       }

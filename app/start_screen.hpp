@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/messages.hpp"
 #include "training/sessions/session_store.hpp"
 #include "ui/start_screen.hpp"
 
@@ -18,6 +19,7 @@ struct StartScreenOptions {
   std::string db;                  // the session store: an SQLite file or a postgresql:// URI (app/default_db.hpp)
   std::string station;             // this station's name, stored with its sessions
   std::filesystem::path settings;  // the settings file
+  Messages messages;               // what the screen and its tasks tell the user (a store it cannot read, scores)
 };
 
 // The sessions the start screen reads the trainee's records from: those of the store `db` (with a
@@ -25,9 +27,9 @@ struct StartScreenOptions {
 // made or migrated as a run would; throws SessionStoreError naming the store (never its password).
 std::vector<training::SessionInfo> start_screen_sessions(const std::string& db);
 
-// The devices a trainee can choose now: the mouse and the keyboard always, every gamepad GLFW
-// reports, every Falcon on the USB bus (or one entry saying none is connected, or why the bus
-// cannot be read). GLFW must be initialised.
+// The devices a trainee can choose now: the mouse and the keyboard always, every gamepad the
+// window system reports, every Falcon on the USB bus (or one entry saying none is connected, or
+// why the bus cannot be read). engine::Window::display_available() first.
 std::vector<ui::StartDevice> present_devices();
 
 // Opens the window on the start screen; returns 0 when the trainee quits or closes the window.

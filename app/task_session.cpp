@@ -4,7 +4,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <ctime>
 #include <cctype>
 
@@ -52,26 +51,6 @@ std::unique_ptr<training::SessionStore> open_store(const TaskSessionOptions& opt
   }
 }
 
-// A progress bar on a terminal; on a pipe (CI, logs), a line every quarter.
-class ProgressBar {
- public:
-  explicit ProgressBar(double total) : total_(total), tty_(isatty(STDERR_FILENO)) {}
-  void show(double done) {
-    const int percent = int(100.0 * std::min(done / total_, 1.0));
-    if (percent == shown_ || (!tty_ && percent % 25 != 0)) return;
-    shown_ = percent;
-    const int filled = percent / 5;
-    std::fprintf(stderr, "%s  [%.*s%*s] %3d%%  %.1f of %.1f s simulated%s", tty_ ? "\r" : "", filled,
-                 "####################", 20 - filled, "", percent, done, total_, tty_ ? "" : "\n");
-    if (tty_ && percent == 100) std::fputc('\n', stderr);
-  }
-
- private:
-  double total_;
-  bool tty_;
-  int shown_ = -1;
-};
-
 // `options` with the uid of the session it will store, which its recording names too.
 TaskSessionOptions with_session_uid(TaskSessionOptions options) {
   if (options.rig.session_uid.empty()) options.rig.session_uid = training::new_session_uid();
@@ -117,13 +96,13 @@ TaskSession::TaskSession(TaskSessionOptions options)
   config.rate_hz = rig_->rate_hz();
   config.sample_capacity = 1 << 15;  // 33 s at 1 kHz: room for the recorder's worst stall
   loop_ = std::make_unique<haptics::HapticLoop>(rig_->device(), rig_->safety_limits(), config);
-  const bool replay = options_.rig.device.rfind("replay:", 0) == 0;
+  const bool replay = options_.rig.device.kind == haptics::DeviceSpec::Kind::kReplay;
   const uint64_t bound = static_cast<uint64_t>(std::llround(training::session_time_bound_s(task_) * rig_->rate_hz()));
   tick_budget_ = rig_->ticks() ? (replay ? *rig_->ticks() : std::min(*rig_->ticks(), bound)) : bound;
   recorder_ = std::make_unique<haptics::SessionRecorder>(
       recording_path_.string(),
       haptics::SessionHeader{haptics::kSessionFormatVersion, rig_->rate_hz(), static_cast<int64_t>(std::time(nullptr)),
-                             options_.rig.device, rig_->context()},
+                             options_.rig.device.text(), rig_->context()},
       loop_->samples(), [this](const haptics::TickSample& s) { feed_.consume(s); });
   new_session_ = {options_.trainee, task_.name, task_.title, task_.source, rig_->description(), recording_path_.string(),
                   options_.station, options_.rig.session_uid, training::utc_timestamp()};
@@ -133,18 +112,19 @@ TaskSession::TaskSession(TaskSessionOptions options)
   loop_->submit(haptics::LoopCommand::set_step(&rig_->step()));
   std::error_code ignored;
   fs::remove(options_.out_dir / "score.json", ignored);  // never an earlier run's score beside this run's pictures
-  std::printf("task %s on %s, trainee %s, station %s: session %lld in %s\nrecording %s\n", task_.name.c_str(),
-              rig_->description().c_str(), options_.trainee.c_str(), options_.station.c_str(),
-              static_cast<long long>(session_), store_->name().c_str(), recording_path_.c_str());
+  const Messages& say = options_.messages;
+  say.say(formatted("task %s on %s, trainee %s, station %s: session %lld in %s", task_.name.c_str(), rig_->description().c_str(),
+                    options_.trainee.c_str(), options_.station.c_str(), static_cast<long long>(session_),
+                    store_->name().c_str()));
+  say.say("recording " + recording_path_.string());
   if (!offline_.empty())
-    std::printf("note: the server could not be reached (%s): the session is kept in this station's file for needle-sim sync\n",
-                offline_.c_str());
-  for (const std::string& note : rig_->notes()) std::printf("note: %s\n", note.c_str());
+    say.say("note: the server could not be reached (" + offline_ +
+            "): the session is kept in this station's file for needle-sim sync");
+  for (const std::string& note : rig_->notes()) say.say("note: " + note);
   if (rig_->ticks() && tick_budget_ < *rig_->ticks())
-    std::printf("note: the operator script runs %.1f s, past the latest end of the task (%.1f s: its steps' time limits "
-                "plus %.0f s): the run stops there\n",
-                *duration_s(), double(tick_budget_) / rig_->rate_hz(), training::kTaskEndMargin_s);
-  std::fflush(stdout);  // before the progress bar on stderr
+    say.say(formatted("note: the operator script runs %.1f s, past the latest end of the task (%.1f s: its steps' time "
+                      "limits plus %.0f s): the run stops there",
+                      *duration_s(), double(tick_budget_) / rig_->rate_hz(), training::kTaskEndMargin_s));
 }
 
 TaskSession::~TaskSession() { stop_threads(false); }
@@ -155,10 +135,9 @@ std::optional<double> TaskSession::duration_s() const {
 }
 
 void TaskSession::run_offline(const std::function<void(size_t)>& on_step_end) {
-  if (!rig_->ticks()) throw std::logic_error("a session on " + options_.rig.device + " runs only in real time, in a window");
+  if (!rig_->ticks()) throw std::logic_error("a session on " + options_.rig.device.text() + " runs only in real time, in a window");
   const uint64_t ticks = tick_budget_;
   loop_->submit(haptics::LoopCommand::start(ticks));
-  ProgressBar progress(double(ticks) / rig_->rate_hz());
   // One tick and one recorder pass at a time, so a step's picture shows the tick that ended it.
   // With a server, the recording goes to it every RecordingUpload::kPeriod of session time.
   const uint64_t upload_ticks = std::max<uint64_t>(1, uint64_t(rig_->rate_hz() * RecordingUpload::kPeriod.count() / 1000.0));
@@ -167,7 +146,7 @@ void TaskSession::run_offline(const std::function<void(size_t)>& on_step_end) {
     recorder_->drain();
     if (upload_ && (k + 1) % upload_ticks == 0) upload_->send_new();
     for (size_t step : feed_.take_ended_steps()) on_step_end(step);
-    progress.show(double(k + 1) / rig_->rate_hz());
+    options_.messages.advance(double(k + 1) / rig_->rate_hz(), double(ticks) / rig_->rate_hz());
   }
 }
 
@@ -226,11 +205,12 @@ const training::SessionResult* TaskSession::finish() {
   stop_threads(rig_->can_complete());  // a replay that stays incomplete records that it did
   if (!recorder_->error().empty()) throw std::runtime_error("recording stopped: " + recorder_->error());
   if (recorder_->dropped() > 0)
-    std::printf("warning: the recorder fell behind and %llu ticks were dropped from the recording and the score\n",
-                static_cast<unsigned long long>(recorder_->dropped()));
+    options_.messages.say(formatted("warning: the recorder fell behind and %llu ticks were dropped from the recording and "
+                                    "the score",
+                                    static_cast<unsigned long long>(recorder_->dropped())));
   if (!rig_->can_complete()) {
-    std::printf("session %lld stays incomplete: no score is stored and no score.json written\n",
-                static_cast<long long>(session_));
+    options_.messages.say(formatted("session %lld stays incomplete: no score is stored and no score.json written",
+                                    static_cast<long long>(session_)));
     return nullptr;
   }
   result_ = feed_.result();
@@ -253,11 +233,11 @@ const training::SessionResult* TaskSession::finish() {
     throw std::runtime_error(std::string(e.what()) + "; and the session could not be stored: " + store_error +
                              " (its recording is " + recording_path_.string() + ")");
   }
-  std::printf("score %.0f / 100: %s\n", result_->score.total, result_->score.passed ? "passed" : "not passed");
-  for (const std::string& why : result_->score.reasons_failed) std::printf("  %s\n", why.c_str());
-  std::printf("wrote %s\n", score_file.c_str());
-  if (!kept.empty()) std::printf("note: %s\n", kept.c_str());
-  std::fflush(stdout);  // a window's run goes on: whoever reads the output sees the score now
+  const Messages& say = options_.messages;
+  say.say(formatted("score %.0f / 100: %s", result_->score.total, result_->score.passed ? "passed" : "not passed"));
+  for (const std::string& why : result_->score.reasons_failed) say.say("  " + why);
+  say.say("wrote " + score_file.string());
+  if (!kept.empty()) say.say("note: " + kept);
   if (!store_error.empty())
     throw std::runtime_error("the session could not be stored: " + store_error + "; its score is in " +
                              score_file.string() + " and its recording is " + recording_path_.string());
@@ -331,7 +311,7 @@ int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa,
   shoot("final");
   sonogram("ultrasound_final");
   if (run.finish()) shoot("score_panel");
-  std::printf("wrote the pictures of the run in %s\n", out_dir.c_str());
+  run.messages().say("wrote the pictures of the run in " + out_dir.string());
   return 0;
 }
 

@@ -14,6 +14,7 @@
 
 #include "engine/extent.hpp"
 #include "engine/scene_renderer.hpp"
+#include "app/messages.hpp"
 #include "app/recording_upload.hpp"
 #include "app/session_feed.hpp"
 #include "engine/scene.hpp"
@@ -34,6 +35,7 @@ struct TaskSessionOptions {
   std::filesystem::path local_db;  // with a server: this station's own file, where a session the
                                    // server missed is kept for sync (default: default_db())
   std::filesystem::path out_dir;
+  Messages messages;  // what the session tells its user (the start, notes, the score)
 };
 
 class TaskSession {
@@ -78,6 +80,7 @@ class TaskSession {
   void draw_panel(std::optional<size_t> step = std::nullopt, const char* controls = nullptr,
                   const std::vector<ui::Choice>& choices = {});
   const std::filesystem::path& recording_path() const { return recording_path_; }
+  const Messages& messages() const { return options_.messages; }
   int64_t session_id() const { return session_; }
   // Samples scored so far (every tick the recorder has handed on).
   uint64_t samples() const { return feed_.samples(); }

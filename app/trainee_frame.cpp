@@ -1,10 +1,7 @@
 #include "app/trainee_frame.hpp"
 
-#include <imgui.h>
-
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <memory>
 #include <utility>
 
@@ -44,10 +41,7 @@ FrameContent task_content(TaskSession& session, std::function<void()> panel, std
   auto started = std::make_shared<bool>(false);
   if (!panel) panel = [&session] { session.draw_panel(); };
   return {[&session, started](double) -> std::optional<engine::NeedleLoad> {
-            if (!*started) {
-              std::printf("%s\n", session.start_realtime().c_str());
-              std::fflush(stdout);
-            }
+            if (!*started) session.messages().say(session.start_realtime());
             *started = true;
             if (session.over()) session.finish();
             return session.needle();

@@ -1,7 +1,5 @@
 #include "app/ultrasound_window.hpp"
 
-#include <imgui.h>
-
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -40,37 +38,16 @@ engine::UltrasoundProbe UltrasoundWindow::probe(const engine::NeedleLoad& needle
 }
 
 void UltrasoundWindow::draw_panel(const engine::NeedleLoad& needle, const engine::Camera& camera) {
-  const ImGuiIO& io = ImGui::GetIO();
-  if (!io.WantCaptureKeyboard && !plan_.follow_needle) {
+  if (const ui::ProbeKeys keys = ui::probe_keys(); keys.any() && !plan_.follow_needle) {
     const engine::UltrasoundProbe& p = plan_.probe;
-    glm::dvec3 move(0.0);
-    if (ImGui::IsKeyPressed('J')) move -= kStep_m * p.lateral;
-    if (ImGui::IsKeyPressed('L')) move += kStep_m * p.lateral;
-    if (ImGui::IsKeyPressed('K')) move -= kStep_m * p.elevation();
-    if (ImGui::IsKeyPressed('I')) move += kStep_m * p.elevation();
-    double turn = 0.0;
-    if (ImGui::IsKeyPressed('[')) turn -= kTurn_rad;
-    if (ImGui::IsKeyPressed(']')) turn += kTurn_rad;
-    if (turn != 0.0 || move != glm::dvec3(0.0)) {
-      // In the task probe's frame, so that the offset can be kept (app/probe_offset.hpp).
-      set_offset({offset_.along_m + glm::dot(move, task_probe_.lateral), offset_.across_m + glm::dot(move, task_probe_.elevation()),
-                  offset_.turn_rad + turn});
-    }
+    const glm::dvec3 move = kStep_m * (double(keys.along) * p.lateral + double(keys.across) * p.elevation());
+    // In the task probe's frame, so that the offset can be kept (app/probe_offset.hpp).
+    set_offset({offset_.along_m + glm::dot(move, task_probe_.lateral), offset_.across_m + glm::dot(move, task_probe_.elevation()),
+                offset_.turn_rad + double(keys.turn) * kTurn_rad});
   }
   const engine::UltrasoundProbe shown = probe(needle);
   ui::draw_probe(shown, camera);
-  const float height = std::round(0.45f * io.DisplaySize.y);
-  const float width = std::round(height * float(shown.width_m / shown.depth_m));
-  // By default on the left, between the status panel above and the view panel below; the task's is on the right.
-  const Placement at = placement_.value_or(Placement{10.0f, 0.5f * io.DisplaySize.y, 0.0f, 0.5f});
-  ImGui::SetNextWindowPos(ImVec2(at.x, at.y), ImGuiCond_Always, ImVec2(at.pivot_x, at.pivot_y));
-  ImGui::Begin("Ultrasound", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
-  ImGui::Text("%.1f MHz linear, %.0f mm deep, %.0f mm wide", shown.frequency_MHz, 1000.0 * shown.depth_m, 1000.0 * shown.width_m);
-  ImGui::Dummy(ImVec2(width, height));
-  const ImVec2 lo = ImGui::GetItemRectMin();
-  rect_ = engine::ScreenRect{lo.x, lo.y, width, height};
-  ImGui::TextUnformatted(plan_.follow_needle ? "probe follows the needle" : "move the probe: J L along, I K across, [ ] turn");
-  ImGui::End();
+  rect_ = ui::draw_ultrasound_panel(shown, plan_.follow_needle, placement_);
 }
 
 engine::UltrasoundView& UltrasoundWindow::view() {

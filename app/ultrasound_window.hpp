@@ -1,4 +1,4 @@
-// The ultrasound image beside the 3D view: an ImGui window keeping the room for the image, the
+// The ultrasound image beside the 3D view: a panel keeping the room for the image (ui/ultrasound_panel.hpp), the
 // image made by the compute passes before the scene's render pass, swept over kSweepFrames frames
 // (half its lines a frame), and drawn into that room after the panels. The probe is the task's,
 // moved with keys (J/L along the array, I/K across it, [ and ] turning it about the beam, always
@@ -12,6 +12,7 @@
 #include "app/echo_scene.hpp"
 #include "app/probe_offset.hpp"
 #include "engine/ultrasound.hpp"
+#include "ui/ultrasound_panel.hpp"
 
 namespace needle::app {
 
@@ -35,9 +36,9 @@ class UltrasoundWindow {
   void set_offset(const ProbeOffset& offset);
   // Where the window goes: its corner `pivot` (0 to 1 of its size) at (x, y) pixels; by default
   // its left edge's middle at (10, half the height).
-  void place(float x, float y, float pivot_x, float pivot_y) { placement_ = {x, y, pivot_x, pivot_y}; }
-  // Inside an ImGui frame: the window and its keys (when ImGui does not want the keyboard), and
-  // the probe over the 3D view seen by `camera` (ui/probe_overlay.hpp).
+  void place(float x, float y, float pivot_x, float pivot_y) { placement_ = ui::PanelPlacement{x, y, pivot_x, pivot_y}; }
+  // Inside a UI frame: the panel and its keys (when no panel has the keyboard), and the probe over
+  // the 3D view seen by `camera` (ui/probe_overlay.hpp).
   void draw_panel(const engine::NeedleLoad& needle, const engine::Camera& camera);
   // This frame's image (params.before_pass) and its drawing into the window (params.overlay,
   // after what is there). Call after the UI pass's end_frame.
@@ -58,10 +59,7 @@ class UltrasoundWindow {
   std::unique_ptr<engine::UltrasoundView> view_;  // made when first shown
   engine::UltrasoundView& view();
   std::optional<engine::ScreenRect> rect_;        // where the window kept room, this frame
-  struct Placement {
-    float x, y, pivot_x, pivot_y;
-  };
-  std::optional<Placement> placement_;
+  std::optional<ui::PanelPlacement> placement_;
 };
 
 }  // namespace needle::app

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
@@ -29,19 +28,18 @@ std::vector<std::string> lines_of(const std::string& detail) {
   return out;
 }
 
-void print(const VerifiedSession& v) {
+void report_session(const Messages& messages, const VerifiedSession& v) {
   const training::SessionCheck& c = v.check;
-  const std::vector<std::string> lines = lines_of(c.detail);
-  std::printf("session %lld: %s", static_cast<long long>(c.session_id),
-              c.outcome == training::CheckOutcome::kMismatch ? "MISMATCH" : training::check_outcome_name(c.outcome));
+  const std::string head = formatted("session %lld: %s", static_cast<long long>(c.session_id),
+                                     c.outcome == training::CheckOutcome::kMismatch ? "MISMATCH"
+                                                                                     : training::check_outcome_name(c.outcome));
   if (c.outcome == training::CheckOutcome::kUnverifiable) {
-    std::printf(": %s\n", c.detail.c_str());
+    messages.say(head + ": " + c.detail);
   } else {
-    std::printf(" (checked in %.1f s)\n", v.replay_s);
-    for (const std::string& line : lines) std::printf("  %s\n", line.c_str());
+    messages.say(head + formatted(" (checked in %.1f s)", v.replay_s));
+    for (const std::string& line : lines_of(c.detail)) messages.say("  " + line);
   }
-  for (const std::string& note : v.notes) std::printf("  note: %s\n", note.c_str());
-  std::fflush(stdout);
+  for (const std::string& note : v.notes) messages.say("  note: " + note);
 }
 
 }  // namespace
@@ -61,12 +59,12 @@ int write_verify_report(const VerifyOptions& options) {
     if (options.session && ids.empty())
       throw std::runtime_error(store->name() + ": no session " + std::to_string(*options.session));
     std::sort(ids.begin(), ids.end());
-    std::printf("verifying %zu complete session%s of %s against their recordings, %d at a time\n", ids.size(),
-                ids.size() == 1 ? "" : "s", store->name().c_str(), options.jobs);
-    std::fflush(stdout);
+    options.messages.say(formatted("verifying %zu complete session%s of %s against their recordings, %d at a time",
+                                   ids.size(), ids.size() == 1 ? "" : "s", store->name().c_str(), options.jobs));
   }
   const auto t0 = std::chrono::steady_clock::now();
-  const std::vector<VerifiedSession> results = verify_sessions(options.db, ids, options.jobs, print);
+  const std::vector<VerifiedSession> results = verify_sessions(
+      options.db, ids, options.jobs, [&](const VerifiedSession& v) { report_session(options.messages, v); });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   size_t counts[3] = {0, 0, 0};
@@ -116,10 +114,11 @@ int write_verify_report(const VerifyOptions& options) {
   } catch (const std::exception& e) {
     kept = std::string("the checks could not be kept in the store: ") + e.what();
   }
-  std::printf("%zu verified, %zu mismatch, %zu unverifiable of %zu complete session%s in %.1f s (%.1f sessions per minute); "
-              "wrote %s and %s; %s\n",
-              counts[0], counts[1], counts[2], results.size(), results.size() == 1 ? "" : "s", seconds, per_minute,
-              (options.out / "verify.json").c_str(), (options.out / "verify_mismatches.csv").c_str(), kept.c_str());
+  options.messages.say(formatted(
+      "%zu verified, %zu mismatch, %zu unverifiable of %zu complete session%s in %.1f s (%.1f sessions per minute); "
+      "wrote %s and %s; %s",
+      counts[0], counts[1], counts[2], results.size(), results.size() == 1 ? "" : "s", seconds, per_minute,
+      (options.out / "verify.json").c_str(), (options.out / "verify_mismatches.csv").c_str(), kept.c_str()));
   return counts[0] == results.size() ? 0 : 1;
 }
 

@@ -1,12 +1,10 @@
 #include "app/window_frames.hpp"
 
-#include <cstdio>
-
 namespace needle::app {
 
-GpuWindow::GpuWindow(const std::string& title, engine::Extent size)
+GpuWindow::GpuWindow(const std::string& title, engine::Extent size, const Messages& messages)
     : window(title, int(size.width), int(size.height)), device(window), target(device, window) {
-  std::printf("Window: %s\n", target.presentation_note().c_str());
+  messages.say("Window: " + target.presentation_note());
 }
 
 void WindowFrames::draw(engine::Window& window, const std::function<bool(engine::RgbaImage*)>& draw_frame) {
@@ -20,7 +18,7 @@ void WindowFrames::draw(engine::Window& window, const std::function<bool(engine:
   if (!last) return;
   if (screenshot_) {
     engine::write_png(*screenshot_, shot);
-    std::printf("wrote %s (%ux%u)\n", screenshot_->c_str(), shot.width, shot.height);
+    messages_.say(formatted("wrote %s (%ux%u)", screenshot_->c_str(), shot.width, shot.height));
   }
   window.request_close();
 }

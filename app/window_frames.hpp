@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "app/messages.hpp"
 #include "engine/extent.hpp"
 #include "engine/gpu_device.hpp"
 #include "engine/render_target.hpp"
@@ -17,7 +18,8 @@
 namespace needle::app {
 
 struct GpuWindow {
-  GpuWindow(const std::string& title, engine::Extent size);
+  // Says how frames reach the window ("Window: ...") to `messages`.
+  GpuWindow(const std::string& title, engine::Extent size, const Messages& messages);
   // The MSAA samples an interactive window asks for: on a CPU device (lavapipe) 4x costs 1.8 to
   // 3.3x the frame time (docs/BENCHMARKS.md), so there it keeps its frame rate instead.
   int default_msaa_samples() const { return device.is_cpu_device() ? 1 : 4; }
@@ -29,7 +31,9 @@ struct GpuWindow {
 
 class WindowFrames {
  public:
-  WindowFrames(long frames, std::optional<std::string> screenshot) : frames_(frames), screenshot_(std::move(screenshot)) {}
+  // The screenshot's "wrote FILE (WxH)" goes to `messages`.
+  WindowFrames(long frames, std::optional<std::string> screenshot, Messages messages)
+      : frames_(frames), screenshot_(std::move(screenshot)), messages_(std::move(messages)) {}
 
   // Draws one frame with `draw_frame` (which reads it back into its argument when that is set,
   // and says whether the target took a frame); when nothing could be drawn (minimised, resizing)
@@ -40,6 +44,7 @@ class WindowFrames {
  private:
   long frames_;  // 0: until the user closes the window
   std::optional<std::string> screenshot_;
+  Messages messages_;
   long drawn_ = 0;
 };
 

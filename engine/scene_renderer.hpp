@@ -71,6 +71,13 @@ enum class Translucency {
   ScreenDoor,  // 5 of 16 fragments kept on a fixed dither: cheaper, coarse (docs/BENCHMARKS.md)
 };
 
+// The render scales the renderer draws at: a fraction of the target's width and height from
+// kMinRenderScale to 1 (RendererSettings::render_scale). Below a quarter the view is too coarse to
+// aim a needle in (a 1280x720 window's view under 320x180 pixels); a design value, the one range
+// the renderer, the settings file and the command line use.
+inline constexpr float kMinRenderScale = 0.25f;
+inline constexpr float kMaxRenderScale = 1.0f;
+
 struct RendererSettings {
   // MSAA samples (1, 2, 4, 8): the highest count up to this that the device supports for colour
   // and depth together is used.
@@ -83,7 +90,8 @@ struct RendererSettings {
   // With cull_chunks, a sectioned item's chunks wholly on the section's cut-away side are left
   // out (the same picture). Off only to measure what it saves (`bench frame --variants`).
   bool cull_cut_away = true;
-  // The scene's meshes drawn at this fraction of the target's width and height, in (0, 1], then
+  // The scene's meshes drawn at this fraction of the target's width and height, in
+  // [kMinRenderScale, kMaxRenderScale], then
   // upscaled over the target with linear filtering before the overlay, drawn at full resolution:
   // fewer pixels to shade where they cost the frame (a CPU device). Below 1 it needs MSAA 1 and a
   // colour format the device samples with linear filtering (std::invalid_argument naming what is

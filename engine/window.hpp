@@ -1,7 +1,10 @@
-// A GLFW window with no client API: the engine presents to it (a GpuDevice made for it, then a
-// WindowTarget), and reads its input.
+// A window of the window system with no client API: the engine presents to it (a GpuDevice made
+// for it, then a WindowTarget), and reads its input in plain types (keys, cursor, wheel, mouse
+// buttons, gamepads), so that no caller needs the window system's own headers.
 #pragma once
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,17 +14,38 @@ struct GLFWwindow;
 
 namespace needle::engine {
 
+// The keys the application acts on. Keys it does not name arrive as kOther.
+enum class Key {
+  kOther,
+  kUp, kDown, kLeft, kRight, kPageUp, kPageDown, kTab, kEnter, kEscape,
+  kA, kB, kC, kD, kE, kF, kG, kH, kI, kJ, kK, kL, kM, kN, kO, kP, kQ, kR, kS, kT, kU, kV, kW, kX, kY, kZ,
+};
+
+// A gamepad with a standard mapping (the window system's), as plain values.
+struct GamepadInfo {
+  int id = 0;        // its slot: the N of gamepad:N
+  std::string name;  // as the system names it
+};
+// Its state in the standard layout: axes left x, left y, right x, right y (in [-1, 1], y down),
+// left and right trigger (-1 released to 1 pulled); buttons A, B, X, Y, left and right bumper,
+// back, start, guide, left and right thumb, pad up, right, down, left (1 pressed).
+struct GamepadReading {
+  std::array<float, 6> axes{};
+  std::array<unsigned char, 15> buttons{};
+};
+
 class Window {
  public:
-  // Throws std::runtime_error when there is no display or GLFW cannot make a window.
+  // Throws std::runtime_error when there is no display or the system cannot make a window.
   Window(const std::string& title, int width, int height);
   ~Window();
   Window(const Window&) = delete;
   Window& operator=(const Window&) = delete;
 
-  // True when GLFW can reach a display (X11 or Wayland); cheap, and safe to call first.
+  // True when a display can be reached (X11 or Wayland); cheap, and safe to call first.
   static bool display_available();
 
+  // The window system's handle, for the engine's own passes (presentation, the UI backend).
   GLFWwindow* handle() const { return window_; }
   bool should_close() const;
   void request_close();
@@ -30,23 +54,35 @@ class Window {
   void wait_events() const;
   // Framebuffer size in pixels; 0x0 while minimised.
   Extent framebuffer_extent() const;
+  // The window's size in screen coordinates (the cursor's), 0x0 while minimised.
+  Extent size() const;
   // True once after the framebuffer was resized.
   bool take_resized();
-  // The cursor in normalised window coordinates: x right and y up, (0, 0) at the centre,
-  // +-1 at the edges (beyond them when the cursor is outside).
-  void cursor_normalized(double& x, double& y) const;
+  // The cursor in the window's screen coordinates, (0, 0) at the top left; and put there.
+  struct Cursor {
+    double x = 0.0, y = 0.0;
+  };
+  Cursor cursor() const;
+  void set_cursor(const Cursor& at);
+  // The right mouse button held now.
+  bool right_button_down() const;
   // Scroll-wheel notches since the last call, forward positive; the Up and Down arrow keys
   // count as one notch each, for trackpads and keyboards.
   double take_scroll();
-  // A key going down, or repeating while held (the system's key repeat): GLFW's key code.
+  // A key going down, or repeating while held (the system's key repeat).
   struct KeyPress {
-    int key = 0;
+    Key key = Key::kOther;
     bool shift = false;
   };
   // The key presses since the last call, in order (none is lost between two frames, however
   // short). At most kMaxKeyPresses wait; later ones are dropped until they are taken.
   std::vector<KeyPress> take_key_presses();
   static constexpr size_t kMaxKeyPresses = 256;
+
+  // The gamepads present now; display_available() first.
+  static std::vector<GamepadInfo> gamepads();
+  // Gamepad `id`'s state; nullopt when it is gone.
+  static std::optional<GamepadReading> gamepad(int id);
 
  private:
   GLFWwindow* window_ = nullptr;

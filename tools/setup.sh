@@ -11,7 +11,7 @@ packages=(
   cmake ninja-build g++ pkg-config ccache
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libglfw3-dev libx11-dev libxext-dev libxrandr-dev libglm-dev libeigen3-dev libtinygltf-dev libimgui-dev libstb-dev
-  libusb-1.0-0-dev libgtest-dev nlohmann-json3-dev liburdfdom-dev libsqlite3-dev sqlite3
+  libusb-1.0-0-dev libgtest-dev nlohmann-json3-dev liburdfdom-dev libsqlite3-dev sqlite3 libcli11-dev
   postgresql libpq-dev
   xvfb xauth xdotool
   clang libclang-rt-14-dev llvm-14

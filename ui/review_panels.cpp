@@ -14,44 +14,27 @@ namespace {
 const ImVec4 kGood(0.35f, 0.8f, 0.4f, 1.0f), kBad(0.9f, 0.3f, 0.25f, 1.0f), kDim(0.6f, 0.6f, 0.6f, 1.0f),
     kWarn(0.95f, 0.7f, 0.3f, 1.0f);
 
-// How a metric is shown: label, unit and the factor from its stored SI value.
+// A metric as the panels show it (training::MetricLabel), by its name in training::for_each_metric.
 struct MetricDisplay {
-  const char* name;
-  const char* label;
-  const char* unit;
-  double scale;
-};
-const MetricDisplay kMetrics[] = {
-    {"duration_s", "duration", "s", 1.0},          {"tip_error_m", "tip to target", "mm", 1000.0},
-    {"axis_deviation_deg", "off axis", "deg", 1.0}, {"lateral_load_Ns", "lateral load", "N s", 1.0},
-    {"lateral_peak_N", "lateral peak", "N", 1.0},   {"peak_hand_force_N", "peak force at the hand", "N", 1.0},
-    {"peak_axial_force_N", "peak along the needle", "N", 1.0}, {"peak_force_N", "peak rigid contact", "N", 1.0},
-    {"force_limited_s", "at the device's limit", "s", 1.0}, {"passivity_damped_s", "passivity damper on", "s", 1.0},
-    {"force_sd_N", "force SD", "N", 1.0},          {"path_length_m", "path", "mm", 1000.0},
-    {"ideal_path_m", "ideal path", "mm", 1000.0},  {"normalized_jerk", "normalized jerk", "-", 1.0},
-    {"withdrawals", "withdrawals", "count", 1.0},  {"reinsertions", "re-insertions", "count", 1.0},
-    {"rigid_contacts", "rigid contacts", "count", 1.0}, {"faults", "safety faults", "count", 1.0},
-    {"first_fault", "first fault", "cause", 1.0},
-};
-// Shown for a session on a layered tissue (issue 14) after those above.
-const MetricDisplay kLayeredMetrics[] = {
-    {"punctures", "punctures", "count", 1.0},         {"overshoot_m", "overshoot", "mm", 1000.0},
-    {"bone_contacts", "bone contacts", "count", 1.0}, {"bone_peak_force_N", "bone peak force", "N", 1.0},
-    {"redirections", "redirections", "count", 1.0},   {"forbidden_punctures", "forbidden punctures", "count", 1.0},
+  std::string name;
+  training::MetricLabel shown;
 };
 
-// The metrics a session's tables show: the layered ones too on a layered tissue.
+// The metrics a session's tables show, in the list's order: the layered tissue's too on one.
 std::vector<MetricDisplay> shown_metrics(bool layered) {
-  std::vector<MetricDisplay> out(std::begin(kMetrics), std::end(kMetrics));
-  if (layered) out.insert(out.end(), std::begin(kLayeredMetrics), std::end(kLayeredMetrics));
+  std::vector<MetricDisplay> out;
+  const training::Metrics none;
+  training::for_each_metric(none, [&](const char* name, const auto&, const training::MetricLabel& shown) {
+    if (shown.label && (layered || !shown.layered)) out.push_back({name, shown});
+  });
   return out;
 }
 
-// The value of metric `name` in display units; NaN when it does not apply.
+// The value of metric `d` in display units; NaN when it does not apply.
 double shown_value(const training::Metrics& m, const MetricDisplay& d) {
   double out = training::kNotApplicable;
-  for_each_metric(m, [&](const char* name, const auto& value) {
-    if (std::string(name) == d.name) out = double(value) * d.scale;
+  training::for_each_metric(m, [&](const char* name, const auto& value) {
+    if (d.name == name) out = double(value) * d.shown.scale;
   });
   return out;
 }
@@ -110,7 +93,7 @@ void steps_table(const training::StoredSession& s, bool layered) {
   }
   const ImGuiTableFlags flags =
       ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX;
-  const float rows = 19.5f + (layered ? float(std::size(kLayeredMetrics)) : 0.0f);
+  const float rows = 19.5f + float(shown_metrics(layered).size() - shown_metrics(false).size());
   if (!ImGui::BeginTable("steps", columns, flags, ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * rows))) return;
   ImGui::TableSetupColumn("metric");
   for (const training::StepResult& step : s.steps) ImGui::TableSetupColumn(step.id.c_str());
@@ -137,7 +120,7 @@ void steps_table(const training::StoredSession& s, bool layered) {
   for (const MetricDisplay& d : shown_metrics(layered)) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
-    ImGui::Text("%s (%s)", d.label, d.unit);
+    ImGui::Text("%s (%s)", d.shown.label, d.shown.unit);
     for (const training::StepResult& step : s.steps) {
       ImGui::TableNextColumn();
       value_cell(shown_value(step.metrics, d));
@@ -354,7 +337,7 @@ void draw_comparison(const training::SessionReview& a, const training::SessionRe
       };
       row("score", ia.complete ? ia.score : training::kNotApplicable, ib.complete ? ib.score : training::kNotApplicable);
       for (const MetricDisplay& d : shown_metrics(a.layered())) {
-        const std::string label = std::string(d.label) + " (" + d.unit + ")";
+        const std::string label = std::string(d.shown.label) + " (" + d.shown.unit + ")";
         row(label.c_str(), shown_value(a.stored.overall, d), shown_value(b.stored.overall, d));
       }
       ImGui::EndTable();

@@ -14,7 +14,7 @@ void next_section_mode(ViewState& view) {
 void draw_view_panel(ViewState& view) {
   using Mode = engine::Section::Mode;
   const ImGuiIO& io = ImGui::GetIO();
-  // The GLFW backend of ImGui 1.86 indexes keys by GLFW's codes, which are ASCII for letters.
+  // ImGui 1.86's window-system backend indexes keys by the system's codes, ASCII for letters.
   if (!io.WantCaptureKeyboard) {
     if (ImGui::IsKeyPressed('X', false)) next_section_mode(view);
     if (view.has_ultrasound && ImGui::IsKeyPressed('U', false)) view.ultrasound = !view.ultrasound;

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -60,7 +61,11 @@ ScenePass::~ScenePass() {
 }
 
 void ScenePass::set_render_scale(const TargetImages& target, float scale) {
-  if (!(scale > 0.0f && scale <= 1.0f)) throw std::invalid_argument("render scale " + std::to_string(scale) + " is not in (0, 1]");
+  if (!(scale >= kMinRenderScale && scale <= kMaxRenderScale)) {
+    char what[96];
+    std::snprintf(what, sizeof what, "render scale %g is not in [%g, %g]", scale, kMinRenderScale, kMaxRenderScale);
+    throw std::invalid_argument(what);
+  }
   if (scale < 1.0f && !scaled_) {
     if (const std::string why = ScaledScene::unsupported(context_, target, attachments_.samples); !why.empty())
       throw std::invalid_argument("render scale " + std::to_string(scale) + ": " + why);

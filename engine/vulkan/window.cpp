@@ -5,7 +5,9 @@
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <iterator>
 #include <stdexcept>
 
 #include "engine/vulkan/vk_check.hpp"
@@ -13,6 +15,24 @@
 
 namespace needle::engine {
 namespace {
+
+// The application's name of a GLFW key code.
+Key key_of(int key) {
+  if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z) return Key(int(Key::kA) + (key - GLFW_KEY_A));
+  switch (key) {
+    case GLFW_KEY_UP: return Key::kUp;
+    case GLFW_KEY_DOWN: return Key::kDown;
+    case GLFW_KEY_LEFT: return Key::kLeft;
+    case GLFW_KEY_RIGHT: return Key::kRight;
+    case GLFW_KEY_PAGE_UP: return Key::kPageUp;
+    case GLFW_KEY_PAGE_DOWN: return Key::kPageDown;
+    case GLFW_KEY_TAB: return Key::kTab;
+    case GLFW_KEY_ENTER:
+    case GLFW_KEY_KP_ENTER: return Key::kEnter;
+    case GLFW_KEY_ESCAPE: return Key::kEscape;
+    default: return Key::kOther;
+  }
+}
 
 // GLFW is initialised once per process and torn down at exit.
 bool glfw_ready() {
@@ -60,7 +80,7 @@ Window::Window(const std::string& title, int width, int height) {
     if (action == GLFW_RELEASE) return;
     auto* self = static_cast<Window*>(glfwGetWindowUserPointer(w));
     if (key == GLFW_KEY_UP || key == GLFW_KEY_DOWN) self->scroll_ += key == GLFW_KEY_UP ? 1.0 : -1.0;
-    if (self->key_presses_.size() < kMaxKeyPresses) self->key_presses_.push_back({key, (mods & GLFW_MOD_SHIFT) != 0});
+    if (self->key_presses_.size() < kMaxKeyPresses) self->key_presses_.push_back({key_of(key), (mods & GLFW_MOD_SHIFT) != 0});
   });
 }
 
@@ -85,13 +105,41 @@ Extent Window::framebuffer_extent() const {
   return {uint32_t(w), uint32_t(h)};
 }
 
-void Window::cursor_normalized(double& x, double& y) const {
-  double px = 0.0, py = 0.0;
-  int w = 1, h = 1;
-  glfwGetCursorPos(window_, &px, &py);
+Extent Window::size() const {
+  int w = 0, h = 0;
   glfwGetWindowSize(window_, &w, &h);
-  x = w > 0 ? 2.0 * px / w - 1.0 : 0.0;
-  y = h > 0 ? 1.0 - 2.0 * py / h : 0.0;
+  return {uint32_t(std::max(w, 0)), uint32_t(std::max(h, 0))};
+}
+
+Window::Cursor Window::cursor() const {
+  Cursor at;
+  glfwGetCursorPos(window_, &at.x, &at.y);
+  return at;
+}
+
+void Window::set_cursor(const Cursor& at) { glfwSetCursorPos(window_, at.x, at.y); }
+
+bool Window::right_button_down() const { return glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS; }
+
+std::vector<GamepadInfo> Window::gamepads() {
+  std::vector<GamepadInfo> pads;
+  for (int id = GLFW_JOYSTICK_1; id <= GLFW_JOYSTICK_LAST; ++id) {
+    if (!glfwJoystickIsGamepad(id)) continue;
+    const char* name = glfwGetGamepadName(id);
+    pads.push_back({id, name ? name : "gamepad"});
+  }
+  return pads;
+}
+
+std::optional<GamepadReading> Window::gamepad(int id) {
+  GLFWgamepadstate state;
+  if (glfwGetGamepadState(id, &state) != GLFW_TRUE) return std::nullopt;
+  GamepadReading reading;
+  static_assert(sizeof state.axes / sizeof state.axes[0] == std::tuple_size_v<decltype(reading.axes)>);
+  static_assert(sizeof state.buttons == std::tuple_size_v<decltype(reading.buttons)>);
+  std::copy(std::begin(state.axes), std::end(state.axes), reading.axes.begin());
+  std::copy(std::begin(state.buttons), std::end(state.buttons), reading.buttons.begin());
+  return reading;
 }
 
 double Window::take_scroll() {

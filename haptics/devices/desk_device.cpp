@@ -27,8 +27,9 @@ DeskPose DeskWorkspace::clamp(const DeskPose& pose) const noexcept {
   return out;
 }
 
-DeskDevice::DeskDevice(std::string name, const DeskWorkspace& workspace) : workspace_(workspace) {
-  caps_.name = std::move(name);
+DeskDevice::DeskDevice(const DeviceSpec& spec, const DeskWorkspace& workspace) : spec_(spec), workspace_(workspace) {
+  if (!spec.desk()) throw DeviceError("device " + spec.text() + ": not a desk device (mouse, keyboard, gamepad[:N])");
+  caps_.name = spec.text();
   caps_.command_space = CommandSpace::kNone;
   caps_.joint_count = 2;  // the virtual wrist
   for (int i = 0; i < 3; ++i) {
@@ -63,12 +64,6 @@ void DeskDevice::read(DeviceReading& out) noexcept {
   for (int i = 0; i < 3; ++i) out.position_m[i] = in.pose.position_m[i];
   out.joint_rad[0] = in.pose.wrist_rad[0];
   out.joint_rad[1] = in.pose.wrist_rad[1];
-}
-
-bool is_desk_spec(const std::string& spec) {
-  if (spec == "mouse" || spec == "keyboard" || spec == "gamepad") return true;
-  if (spec.rfind("gamepad:", 0) != 0 || spec.size() == 8 || spec.size() > 10) return false;
-  return spec.find_first_not_of("0123456789", 8) == std::string::npos;
 }
 
 }  // namespace needle::haptics

@@ -7,8 +7,7 @@
 // target direction about its tip (TaskCoupling::wrist).
 #pragma once
 
-#include <string>
-
+#include "haptics/devices/device_spec.hpp"
 #include "haptics/devices/haptic_device.hpp"
 #include "haptics/sync/seqlock.hpp"
 
@@ -39,8 +38,9 @@ struct DeskWorkspace {
 
 class DeskDevice : public HapticDevice {
  public:
-  // `name` is the device spec it stands for: "mouse", "keyboard", "gamepad" or "gamepad:N".
-  explicit DeskDevice(std::string name, const DeskWorkspace& workspace = {});
+  // The desk device `spec` names (mouse, keyboard, gamepad[:N]), its capabilities' name the
+  // spec's text. Throws DeviceError for a spec of another kind.
+  explicit DeskDevice(const DeviceSpec& spec, const DeskWorkspace& workspace = {});
 
   // The app's input thread (one writer), lock-free. The pose is clamped to the workspace.
   void set_pose(const DeskPose& pose) noexcept;
@@ -48,6 +48,7 @@ class DeskDevice : public HapticDevice {
   // False while the input is gone (a gamepad unplugged): the loop latches a disconnection fault.
   void set_connected(bool connected) noexcept;
   const DeskWorkspace& workspace() const noexcept { return workspace_; }
+  const DeviceSpec& spec() const noexcept { return spec_; }
 
   void open() override {}
   void close() noexcept override {}
@@ -64,14 +65,12 @@ class DeskDevice : public HapticDevice {
     uint32_t connected = 1;
   };
 
+  DeviceSpec spec_;
   DeskWorkspace workspace_;
   DeviceCapabilities caps_;
   Input writer_copy_;  // writer thread only
   SeqLock<Input> input_;
   uint64_t sequence_ = 0;
 };
-
-// True for the specs a DeskDevice stands for: mouse, keyboard, gamepad, gamepad:N.
-bool is_desk_spec(const std::string& spec);
 
 }  // namespace needle::haptics

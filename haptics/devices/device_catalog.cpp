@@ -5,35 +5,23 @@
 #include "haptics/devices/replay_device.hpp"
 
 namespace needle::haptics {
-namespace {
 
-constexpr const char* kKnown = "expected falcon, falcon:N, mouse, keyboard, gamepad, gamepad:N or replay:FILE";
-
-bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
-
-int parse_index(const std::string& spec, const std::string& digits) {
-  if (digits.empty() || digits.size() > 3 || digits.find_first_not_of("0123456789") != std::string::npos)
-    throw DeviceError("device " + spec + ": falcon index must be a number, e.g. falcon:1");
-  return std::stoi(digits);
-}
-
-}  // namespace
-
-std::unique_ptr<HapticDevice> make_device(const std::string& spec, const DeviceOptions& options) {
-  if (is_desk_spec(spec)) return std::make_unique<DeskDevice>(spec);
-  if (spec == "falcon" || starts_with(spec, "falcon:")) {
-    falcon::FalconOptions falcon_options;
-    falcon_options.firmware_path = options.firmware_path;
-    if (spec != "falcon") falcon_options.index = parse_index(spec, spec.substr(7));
-    return std::make_unique<falcon::FalconDevice>(falcon_options);
+std::unique_ptr<HapticDevice> make_device(const DeviceSpec& spec, const DeviceOptions& options) {
+  switch (spec.kind) {
+    case DeviceSpec::Kind::kMouse:
+    case DeviceSpec::Kind::kKeyboard:
+    case DeviceSpec::Kind::kGamepad: return std::make_unique<DeskDevice>(spec);
+    case DeviceSpec::Kind::kFalcon: {
+      falcon::FalconOptions falcon_options;
+      falcon_options.firmware_path = options.firmware_path;
+      falcon_options.index = spec.index.value_or(0);
+      return std::make_unique<falcon::FalconDevice>(falcon_options);
+    }
+    case DeviceSpec::Kind::kReplay: return std::make_unique<ReplayDevice>(spec.file);
+    case DeviceSpec::Kind::kSim: break;
   }
-  if (starts_with(spec, "replay:")) {
-    if (spec.size() == 7) throw DeviceError("device replay:: expected a recording file after replay:");
-    return std::make_unique<ReplayDevice>(spec.substr(7));
-  }
-  if (spec == "sim" || starts_with(spec, "sim:"))
-    throw DeviceError("device " + spec + ": built with its controller step from a scenario by haptics::SimSession, not by make_device");
-  throw DeviceError("device " + spec + ": unknown, " + kKnown);
+  throw DeviceError("device " + spec.text() +
+                    ": built with its controller step from a scenario by haptics::SimSession, not by make_device");
 }
 
 std::vector<BackendStatus> list_backends() {

@@ -1,12 +1,12 @@
-// Device specs as the user types them ("falcon", "falcon:1", "mouse", "keyboard", "gamepad:0",
-// "replay:FILE") and what each backend needs, for `needle-sim devices` and the app's --device
-// option.
+// The device a spec names (haptics/devices/device_spec.hpp), built; and what each backend needs,
+// for `needle-sim devices`.
 #pragma once
 
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "haptics/devices/device_spec.hpp"
 #include "haptics/devices/haptic_device.hpp"
 
 namespace needle::haptics {
@@ -15,10 +15,9 @@ struct DeviceOptions {
   std::string firmware_path;  // falcon: Novint's firmware image, loaded at open()
 };
 
-// Builds (does not open) the device for a spec. Throws DeviceError naming the spec and the
-// known backends when it is not one of them. `sim` is not built here: it needs the master
-// model and the scene, so the app constructs it (docs/DEVICES.md).
-std::unique_ptr<HapticDevice> make_device(const std::string& spec, const DeviceOptions& options);
+// Builds (does not open) the device a spec names. `sim` is not built here: it needs the master
+// model and the scene, so haptics::SimSession builds it with its step (DeviceError).
+std::unique_ptr<HapticDevice> make_device(const DeviceSpec& spec, const DeviceOptions& options);
 
 struct BackendStatus {
   std::string spec;    // how to ask for it

@@ -47,7 +47,7 @@ DeskRun run_desk(const std::string& device, uint64_t input_ticks, Input input, c
   const fs::path dir = process_folder(output_dir() / "desk_sessions" / (device + "_" + task_name));
   const training::Task task = training::load_task(source_dir() / "assets/tasks" / (task_name + ".json"));
   app::RigOptions options;
-  options.device = device;
+  options.device = haptics::DeviceSpec::parse(device);
   options.camera = engine::load_scene(task.scene).camera;
   options.out_dir = dir;
   app::SessionRig rig(task, options);

@@ -41,13 +41,13 @@ TEST(Settings, RoundTripAndDefaultsWithoutAFile) {
   const app::LoadedSettings none = app::load_settings(file);
   EXPECT_TRUE(none.notice.empty());
   EXPECT_TRUE(none.writable);
-  EXPECT_EQ(none.settings.device, "mouse");
+  EXPECT_EQ(none.settings.device.text(), "mouse");
   EXPECT_EQ(none.settings.window.width, 1280u);
   EXPECT_TRUE(none.settings.trainee.empty());
 
   app::Settings s;
   s.trainee = "Ana María";
-  s.device = "gamepad:1";
+  s.device = haptics::DeviceSpec::parse("gamepad:1");
   s.window = {1920, 1080};
   app::save_settings(file, s);  // makes the folder
   const std::string text = text_of(file);
@@ -56,7 +56,7 @@ TEST(Settings, RoundTripAndDefaultsWithoutAFile) {
   const app::LoadedSettings back = app::load_settings(file);
   EXPECT_TRUE(back.notice.empty()) << back.notice;
   EXPECT_EQ(back.settings.trainee, "Ana María");
-  EXPECT_EQ(back.settings.device, "gamepad:1");
+  EXPECT_EQ(back.settings.device.text(), "gamepad:1");
   EXPECT_EQ(back.settings.window.width, 1920u);
   EXPECT_EQ(back.settings.window.height, 1080u);
   for (const fs::directory_entry& e : fs::directory_iterator(file.parent_path()))
@@ -110,6 +110,8 @@ TEST(Settings, ADamagedFileIsSetAsideWithAMessageNamingIt) {
   for (const Case& c : {Case{"{\"version\": 1, \"trainee\": \"ana\"", "not valid JSON"},
                         Case{"{\"version\": 1, \"colour\": \"red\"}", "/colour: unknown key"},
                         Case{"{\"version\": 1, \"device\": \"phantom\"}", "/device: unknown device \"phantom\""},
+                        Case{"{\"version\": 1, \"device\": \"gamepad:16\"}", "/device: unknown device \"gamepad:16\""},
+                        Case{"{\"version\": 1, \"device\": \"sim\"}", "/device: device \"sim\" is no trainee's device"},
                         Case{"{\"version\": 1, \"window\": {\"width\": 10, \"height\": 720}}", "/window/width"},
                         Case{"{\"version\": 1, \"views\": {\"xray\": true}}", "/views/xray: unknown key"},
                         Case{"{\"version\": 1, \"views\": {\"section\": \"sliced\"}}", "/views/section: \"sliced\": expected off, cut or translucent"},

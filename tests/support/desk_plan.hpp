@@ -62,7 +62,7 @@ inline DeskStart desk_start(app::SessionRig& rig) {
 inline DeskStart desk_start(const std::filesystem::path& task_file, const std::string& device, const std::filesystem::path& dir) {
   const training::Task task = training::load_task(task_file);
   app::RigOptions options;
-  options.device = device;
+  options.device = haptics::DeviceSpec::parse(device);
   options.camera = engine::load_scene(task.scene).camera;
   options.out_dir = dir;
   app::SessionRig rig(task, options);

@@ -155,11 +155,15 @@ TEST(CliRunDevices, ABadRecordingIsAnErrorNamingTheFile) {
 TEST(CliRunDevices, TheMouseMovesTheNeedleAlongTheViewsRightAxis) {
   const fs::path dir = test_output_dir("cli_run_devices") / "mouse";
   const std::string run = mouse_session(dir, "--size 400x300 --frames 600");
-  // Centre the cursor, then move it 100 px left: two thirds of half the height, -6.7 cm.
+  const fs::path log = test_output_dir("cli_run_devices") / "mouse.log";
+  // Once the loop runs (its real-time line, on the first frame: a loaded machine may take seconds
+  // to get there), centre the cursor, then move it 100 px left: two thirds of half the height, -6.7 cm.
   const std::string drive =
+      "for i in \\$(seq 300); do grep -q '^real-time' " + quoted(log) + " && break; sleep 0.1; done; "
       "id=\\$(xdotool search --sync --name '^needle-sim\\$' | head -1); xdotool mousemove --window \\$id 200 150; sleep 0.5; "
       "xdotool mousemove --window \\$id 100 150; sleep 1";
-  ProcessResult r = run_on_virtual_display(run + " & " + drive + "; wait");
+  ProcessResult r = run_on_virtual_display(run + " > " + quoted(log) + " 2>&1 & " + drive + "; wait \\$!; rc=\\$?; cat " +
+                                           quoted(log) + "; exit \\$rc");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
 
@@ -189,6 +193,130 @@ TEST(CliRunDevices, TheMouseMovesTheNeedleAlongTheViewsRightAxis) {
   for (int i = 0; i < 3; ++i) along_right += (last.state.needle_tip_m[i] - first.state.needle_tip_m[i]) * right[i] / right_norm;
   EXPECT_LT(along_right, -0.045) << "the tip should follow the cursor most of the 6.7 cm (coupling spring, virtual robot's lag)";
   EXPECT_GT(along_right, -0.072);
+}
+
+// The --device values `run --help` documents, each with a test below: the help cannot offer a
+// value this suite does not try.
+TEST(CliRunDevices, TheHelpListsExactlyTheDevicesTestedHere) {
+  const ProcessResult help = run_needle_sim("run --help");
+  ASSERT_EQ(help.exit_code, 0) << help.output;
+  EXPECT_NE(help.output.find("--device sim|mouse|keyboard|gamepad[:N]|falcon[:N]|replay:FILE"), std::string::npos)
+      << help.output;
+}
+
+// Headless, a device a trainee moves is refused as a usage error saying it needs the window,
+// before anything is stored; an index out of range or a replay without its file is refused too.
+TEST(CliRunDevices, EveryTraineeDeviceIsRefusedHeadlessSayingItNeedsTheWindow) {
+  const fs::path dir = test_output_dir("cli_run_devices") / "headless_refusals";
+  fs::remove_all(dir);
+  for (const char* device : {"mouse", "keyboard", "gamepad", "gamepad:1", "falcon", "falcon:1"}) {
+    const ProcessResult r = run_needle_sim(std::string("run --headless --device ") + device + " --out " + quoted(dir) +
+                                           " --db " + quoted(dir / "s.db"));
+    EXPECT_EQ(r.exit_code, 2) << device << "\n" << r.output;
+    EXPECT_NE(r.output.find(std::string("--device ") + device + ": a trainee's device needs the window (drop --headless)"),
+              std::string::npos)
+        << r.output;
+  }
+  EXPECT_FALSE(fs::exists(dir / "s.db")) << "nothing stored for a refused run";
+  struct Case {
+    const char* device;
+    const char* says;
+  };
+  for (const Case& c : {Case{"gamepad:16", "an index from 0 to 15"}, Case{"falcon:x", "an index from 0 to 15"},
+                        Case{"replay:", "expected a recording file after replay:"}, Case{"keyboard:1", "keyboard takes nothing"},
+                        Case{"sim:x.json", "a task's sim runs the task's own scenario"}}) {
+    const ProcessResult r = run_needle_sim(std::string("run --headless --device ") + c.device);
+    EXPECT_EQ(r.exit_code, 2) << c.device << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.says), std::string::npos) << r.output;
+  }
+}
+
+// `run --device keyboard` in the window: xdotool's key presses reach the device, one step of the
+// pose a press (1 mm, 1 degree), as the recording shows. No panels: the keys are the device's.
+TEST(CliRunDevices, TheKeyboardMovesTheNeedleInTheWindow) {
+  const fs::path dir = test_output_dir("cli_run_devices") / "keyboard";
+  fs::remove_all(dir);
+  const std::string run = test::needle_sim_exe().string() + " run --device keyboard --no-hud --size 400x300 --frames 600 --out " +
+                          quoted(dir) + " --db " + quoted(dir / "sessions.db");
+  // The pointer over the window: without a window manager the keys go to the window under it.
+  const std::string drive =
+      "id=\\$(xdotool search --sync --name '^needle-sim\\$' | head -1); xdotool mousemove --window \\$id 200 150; sleep 1; "
+      "xdotool key --delay 100 Left Left Right w w w d; sleep 1";
+  const ProcessResult r = run_on_virtual_display(run + " & " + drive + "; wait");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  training::SessionStore store(dir / "sessions.db");
+  ASSERT_EQ(store.sessions().size(), 1u);
+  EXPECT_EQ(store.sessions()[0].device, "keyboard");
+  const haptics::Session recording = haptics::read_session(store.sessions()[0].recording_path);
+  EXPECT_EQ(recording.header.device, "keyboard");
+  ASSERT_FALSE(recording.records.empty());
+  const haptics::DeviceReading& last = recording.records.back().reading;
+  EXPECT_NEAR(last.position_m[0], -0.001, 1e-9) << "Left, Left, Right";
+  EXPECT_NEAR(last.position_m[1], 0.0, 1e-9);
+  EXPECT_NEAR(last.position_m[2], 0.103, 1e-9) << "W pushes in, from the reach's centre at 0.1 m";
+  EXPECT_NEAR(last.joint_rad[0], 3.141592653589793 / 180.0, 1e-9) << "D swings";
+}
+
+// `run --device DEVICE` for each device in one virtual display (one xvfb-run: its clean-up can
+// fail when many run at once), each command's exit code after its output as "exit N".
+std::string run_each_in_the_window(const std::vector<std::string>& devices, const fs::path& dir) {
+  std::string script;
+  for (const std::string& device : devices)
+    script += test::needle_sim_exe().string() + " run --device " + device + " --size 200x150 --frames 5 --out " +
+              quoted(dir) + " --db " + quoted(dir / "sessions.db") + "; echo exit \\$?; ";
+  return run_on_virtual_display(script).output;
+}
+
+// The output has a line holding `says` from a command that exited with 1.
+bool refused_with(const std::string& output, const std::string& says) {
+  const size_t at = output.find(says);
+  return at != std::string::npos && output.find("\nexit 1\n", at) == output.find('\n', at);
+}
+
+// `run --device gamepad[:N]` in the window with no pad present (the virtual display has none):
+// refused before a session begins, naming what is missing.
+TEST(CliRunDevices, AGamepadThatIsNotThereIsRefusedNamingIt) {
+  const fs::path dir = test_output_dir("cli_run_devices") / "gamepad";
+  fs::remove_all(dir);
+  const std::string output = run_each_in_the_window({"gamepad", "gamepad:3"}, dir);
+  EXPECT_TRUE(refused_with(output, "needle-sim run: error: gamepad: none connected (no gamepad with a standard mapping is present)"))
+      << output;
+  EXPECT_TRUE(refused_with(output, "needle-sim run: error: gamepad:3: no such gamepad connected")) << output;
+  EXPECT_FALSE(fs::exists(dir / "sessions.db")) << "no session begun for a device that is not there";
+}
+
+// `run --device falcon[:N]` in the window with no Falcon on the bus: refused naming the device,
+// before a session begins.
+TEST(CliRunDevices, AFalconThatIsNotThereIsRefusedNamingIt) {
+  const fs::path dir = test_output_dir("cli_run_devices") / "falcon";
+  fs::remove_all(dir);
+  const std::string output = run_each_in_the_window({"falcon", "falcon:1"}, dir);
+  const size_t second = output.find("exit ");
+  ASSERT_NE(second, std::string::npos) << output;
+  EXPECT_TRUE(refused_with(output.substr(0, second + 7), "needle-sim run: error: falcon: ")) << "falcon\n" << output;
+  EXPECT_TRUE(refused_with(output.substr(second), "needle-sim run: error: falcon: ")) << "falcon:1\n" << output;
+  EXPECT_FALSE(fs::exists(dir / "sessions.db"));
+}
+
+// `run --device replay:FILE` in the window: the recording plays in real time, closed after a few
+// frames its session stays incomplete.
+TEST(CliRunDevices, AReplayPlaysInTheWindow) {
+  const fs::path dir = test_output_dir("cli_run_devices") / "replay_window";
+  fs::remove_all(dir);
+  const RunOutput live = run_headless("--task " + quoted(source_dir() / "assets/tasks/rigid_sphere.json"), dir / "live",
+                                      dir / "sessions.db");
+  ASSERT_TRUE(live.score.contains("recording"));
+  const std::string recording = live.score["recording"].get<std::string>();
+  const ProcessResult r = run_on_virtual_display(test::needle_sim_exe().string() + " run --device " +
+                                                 quoted(fs::path("replay:" + recording)) + " --size 200x150 --frames 5 --out " +
+                                                 quoted(dir / "replay") + " --db " + quoted(dir / "sessions.db"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("presented 5 frames"), std::string::npos) << r.output;
+  training::SessionStore store(dir / "sessions.db");
+  ASSERT_EQ(store.sessions().size(), 2u);
+  EXPECT_EQ(store.sessions()[0].device.rfind("replay of sim", 0), 0u) << store.sessions()[0].device;
+  EXPECT_FALSE(store.sessions()[0].complete) << "closed before its end";
 }
 
 // A run killed mid-task (SIGKILL: no destructor, no last pass) leaves an incomplete session, a

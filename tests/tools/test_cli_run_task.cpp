@@ -156,7 +156,8 @@ TEST(CliRunTask, UnknownOperatorAndDeviceAreClearErrors) {
   // A device nobody knows is said to be unknown, with the list, not that it "needs the window".
   const ProcessResult nonsense = run_needle_sim("run --headless --device nonsense");
   EXPECT_EQ(nonsense.exit_code, 2) << nonsense.output;
-  EXPECT_NE(nonsense.output.find("--device nonsense: unknown device (expected sim, mouse, falcon, falcon:N or replay:FILE"),
+  EXPECT_NE(nonsense.output.find("--device: device 'nonsense': unknown device (expected sim, mouse, keyboard, gamepad[:N], "
+                                 "falcon[:N] or replay:FILE)"),
             std::string::npos)
       << nonsense.output;
   // A script with a hand mass of 0: the error names the script and the pointer in it.

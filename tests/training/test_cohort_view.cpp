@@ -132,6 +132,14 @@ TEST_F(CohortViewTest, FiltersByTaskTraineeStationAndDates) {
   EXPECT_THROW(cohort_view(*store_, {"", "", "", "1 Nov", ""}), std::invalid_argument);
 }
 
+// A date is a day of the calendar, not any digits in its shape.
+TEST(CohortFilter, DatesAreDaysOfTheCalendar) {
+  for (const char* day : {"2026-01-31", "2024-02-29", "2000-02-29", "2026-12-31"})
+    EXPECT_NO_THROW(check_cohort_filter({"", "", "", day, ""})) << day;
+  for (const char* day : {"2026-13-45", "2026-02-30", "2026-02-29", "1900-02-29", "2026-04-31", "2026-00-10", "2026-01-00"})
+    EXPECT_THROW(check_cohort_filter({"", "", "", "", day}), std::invalid_argument) << day;
+}
+
 TEST_F(CohortViewTest, ExportsOneRowPerValue) {
   const CohortView v = cohort_view(*store_, {});
   const std::string curves = learning_curves_csv(v);

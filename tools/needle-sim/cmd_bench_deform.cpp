@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cstdio>
 
-#include "arg_list.hpp"
 #include "asset-gen/assets.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
@@ -12,13 +11,16 @@
 #include "engine/gltf_loader.hpp"
 #include "engine/gpu_device.hpp"
 #include "engine/scripted_needle.hpp"
+#include "flag_ranges.hpp"
 #include "sample_stats.hpp"
 
 namespace needle::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
 
 // Frame f of the scripted experiment between the press (2 s) and the end of the second
 // insertion (9.5 s): the field changes every frame, so every frame dispatches.
@@ -26,26 +28,24 @@ engine::NeedleLoad needle_at_frame(int f, int frames) {
   return engine::scripted_needle(engine::ScriptedSphere{}, 2.0 + 7.5 * double(f) / double(frames - 1));
 }
 
-int run_bench_deform(ArgList& args) {
-  auto json = output_file(args, "--json");
-  std::vector<double> resolutions = parse_number_list(args.value("--spheres").value_or("100,316,400,1000"), "--spheres");
-  const long frames = static_cast<long>(parse_whole(args.value("--frames").value_or("60"), "--frames", 2, 100000));
-  args.finish();
-  for (double r : resolutions) {
-    if (r < 3 || r > 2000 || r != double(long(r))) throw UsageError("--spheres: each resolution a whole number in 3..2000");
-  }
+struct DeformFlags {
+  std::optional<std::string> json;
+  std::vector<long long> spheres{100, 316, 400, 1000};
+  long long frames = 60;
+};
 
+int run(const DeformFlags& f) {
   engine::GpuDevice device;
   const engine::TissueParams tissue;
   BenchTable table({"sphere", "vertices", "processed", "skipped", "gpu_ms", "gpu_ms_p95", "cpu_ms", "cpu_over_gpu",
                     "max_abs_error_m"});
-  for (double r : resolutions) {
+  for (const long long r : f.spheres) {
     const int n = int(r);
-    engine::DeformationBench bench(device, engine::convert_gltf(asset_gen::make_sphere(n, n), "sphere_" + std::to_string(n)),
-                                   tissue);
+    engine::DeformationBench bench(
+        device, engine::convert_gltf(asset_gen::make_sphere(n, n), "sphere_" + std::to_string(n)), tissue);
     std::vector<double> gpu_ms, cpu_ms, processed;
-    for (int f = 0; f < int(frames); ++f) {
-      bench.set_needle(needle_at_frame(f, int(frames)));
+    for (int frame = 0; frame < int(f.frames); ++frame) {
+      bench.set_needle(needle_at_frame(frame, int(f.frames)));
       auto start = Clock::now();
       const size_t processed_now = bench.deform_on_gpu();
       gpu_ms.push_back(ms_since(start));
@@ -62,16 +62,20 @@ int run_bench_deform(ArgList& args) {
   }
   table.emit("bench deform: deformation pass per frame on " + device.device_description() +
                  " (processed: median over frames; cpu: the same vertices, one thread, double)",
-             json);
+             f.json);
   return 0;
 }
 
-const CommandRegistrar reg{{"bench deform",
-                            "needle-sim bench deform [--json FILE] [--spheres 100,316,400,1000] [--frames N]\n"
-                            "  --json FILE     also write the rows as JSON\n"
-                            "  --spheres LIST  sphere resolutions p = m ((p+1)^2 vertices; default 100,316,400,1000)\n"
-                            "  --frames N      frames of the scripted press-insert-pivot per sphere (default 60)",
-                            run_bench_deform}};
+// The options of bench deform, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
+  auto f = std::make_shared<DeformFlags>();
+  add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON");
+  add_whole_list(app, "--spheres", f->spheres, kDeformSpheres, "LIST", "sphere resolutions p = m ((p+1)^2 vertices)");
+  add_whole(app, "--frames", f->frames, kDeformFrames, "N", "frames of the scripted press-insert-pivot per sphere");
+  return [f] { return run(*f); };
+}
+
+const CommandRegistrar reg{{"bench deform", "the GPU deformation pass against the same field on the CPU", declare}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -14,16 +14,17 @@
 
 #include "app/session_window.hpp"
 #include "app/task_session.hpp"
-#include "app/ultrasound_window.hpp"
 #include "app/trainee_frame.hpp"
+#include "app/ultrasound_window.hpp"
 #include "app/window_frames.hpp"
-#include "arg_list.hpp"
 #include "asset-gen/assets.hpp"
 #include "asset_path.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
 #include "engine/gltf_loader.hpp"
 #include "engine/offscreen.hpp"
+#include "flag_ranges.hpp"
+#include "printed_messages.hpp"
 #include "sample_stats.hpp"
 
 namespace needle::cli {
@@ -38,19 +39,16 @@ constexpr const char* kTissuePrefix = "tissue:";
 // the N x N sphere (with its levels of detail) under the scripted needle.
 struct Content {
   std::string name;
-  fs::path task;     // a task file, or
-  int tissue = 0;    // the sphere's resolution
+  fs::path task;   // a task file, or
+  int tissue = 0;  // the sphere's resolution
 };
 
 std::vector<Content> parse_contents(const std::string& list) {
   std::vector<Content> contents;
-  for (size_t start = 0; start <= list.size();) {
-    const size_t end = std::min(list.find(',', start), list.size());
-    const std::string item = list.substr(start, end - start);
-    start = end + 1;
+  for (const std::string& item : split_list(list, "--contents", kMaxListItems)) {
     if (item.rfind(kTissuePrefix, 0) == 0) {
-      const double n = parse_number(item.substr(std::string(kTissuePrefix).size()), "--contents");
-      if (n < 3 || n > 2000 || n != double(int(n))) throw UsageError("--contents: tissue:N takes N in 3..2000");
+      const long long n =
+          parse_whole(item.substr(std::string(kTissuePrefix).size()), "--contents tissue:N", kDeformSpheres);
       contents.push_back({item, {}, int(n)});
       continue;
     }
@@ -63,11 +61,8 @@ std::vector<Content> parse_contents(const std::string& list) {
 
 std::vector<engine::Extent> parse_sizes(const std::string& list) {
   std::vector<engine::Extent> sizes;
-  for (size_t start = 0; start <= list.size();) {
-    const size_t end = std::min(list.find(',', start), list.size());
-    sizes.push_back(parse_size(list.substr(start, end - start), "--sizes"));
-    start = end + 1;
-  }
+  for (const std::string& item : split_list(list, "--sizes", kMaxListItems))
+    sizes.push_back(parse_size(item, "--sizes"));
   return sizes;
 }
 
@@ -89,6 +84,8 @@ std::vector<Variant> parse_variants(const std::string& list) {
     const size_t end = std::min(list.find(';', start), list.size());
     Variant v{list.substr(start, end - start)};
     start = end + 1;
+    if (variants.size() == kMaxListItems)
+      throw UsageError("--variants: expected at most " + std::to_string(kMaxListItems) + " variants");
     for (size_t k = 0; k <= v.name.size() && v.name != "default";) {
       const size_t stop = std::min(v.name.find(',', k), v.name.size());
       const std::string setting = v.name.substr(k, stop - k);
@@ -96,9 +93,7 @@ std::vector<Variant> parse_variants(const std::string& list) {
       const size_t eq = setting.find('=');
       const std::string key = setting.substr(0, eq), value = eq == std::string::npos ? "" : setting.substr(eq + 1);
       if (key == "scale") {
-        const double scale = parse_number(value, "--variants scale");
-        if (!(scale > 0.0 && scale <= 1.0)) throw UsageError("--variants: scale=S takes S in (0, 1]");
-        v.scale = float(scale);
+        v.scale = float(parse_number(value, "--variants scale=S", {engine::kMinRenderScale, engine::kMaxRenderScale}));
       } else if (setting == "present=fifo" || setting == "present=mailbox" || setting == "present=immediate" ||
                  setting == "present=shm") {
         using P = engine::WindowTarget::Presentation;
@@ -107,10 +102,7 @@ std::vector<Variant> parse_variants(const std::string& list) {
                          : setting == "present=shm"       ? P::SharedMemory
                                                           : P::Fifo;
       } else if (key == "sweep") {
-        const double frames = parse_number(value, "--variants sweep");
-        if (!(frames >= 1.0 && frames <= 16.0 && frames == double(int(frames))))
-          throw UsageError("--variants: sweep=N takes N in 1..16");
-        v.sweep_frames = uint32_t(frames);
+        v.sweep_frames = uint32_t(parse_whole(value, "--variants sweep=N", kSweepFrames));
       } else if (setting == "cut_culling=off") {
         v.cut_culling = false;
       } else if (setting == "specialized=off") {
@@ -170,8 +162,9 @@ struct RowOptions {
 // through the variants, untimed and (with timestamps) timed. The first frame of each block
 // carries the switch from the block before and is left out. A variant without a fixed scale
 // leaves the frame's own (automatic or fixed) render scale to it.
-std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget& target, engine::WindowTarget* window_target,
-                                 engine::GpuScene& scene, const app::FrameContent& content, engine::Window* window,
+std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget& target,
+                                 engine::WindowTarget* window_target, engine::GpuScene& scene,
+                                 const app::FrameContent& content, engine::Window* window,
                                  app::UltrasoundWindow* ultrasound, const RowOptions& options) {
   const std::optional<float> product_scale = frame.fixed_render_scale();
   const std::optional<engine::WindowTarget::Presentation> product_presentation =
@@ -194,9 +187,12 @@ std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget&
     frame.renderer().set_translucency(options.variants[variant].translucency);
     const std::optional<engine::WindowTarget::Presentation> presentation =
         options.variants[variant].presentation ? options.variants[variant].presentation : product_presentation;
-    if (ultrasound) ultrasound->set_sweep_frames(options.variants[variant].sweep_frames.value_or(app::UltrasoundWindow::kSweepFrames));
+    if (ultrasound)
+      ultrasound->set_sweep_frames(
+          options.variants[variant].sweep_frames.value_or(app::UltrasoundWindow::kSweepFrames));
     if (window_target && presentation && !window_target->set_presentation(*presentation))
-      throw std::runtime_error("--variants " + options.variants[variant].name + ": the window's surface does not offer it");
+      throw std::runtime_error("--variants " + options.variants[variant].name +
+                               ": the window's surface does not offer it");
     const Clock::time_point now = Clock::now();
     if (counting) samples.back().period_ms = std::chrono::duration<double, std::milli>(now - previous).count();
     previous = now;
@@ -216,34 +212,36 @@ std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget&
   return samples;
 }
 
-int run_bench_frame(ArgList& args) {
-  const auto json = args.value("--json");
-  const std::vector<Content> contents =
-      parse_contents(args.value("--contents").value_or("penetrable_sphere,rigid_sphere,tissue:400"));
-  const std::vector<engine::Extent> sizes = parse_sizes(args.value("--sizes").value_or("1280x720,1920x1080"));
-  const std::string targets_arg = args.value("--targets").value_or("window,offscreen");
-  RowOptions options;
-  options.frames = long(parse_number(args.value("--frames").value_or("300"), "--frames"));
-  options.warmup = long(parse_number(args.value("--warmup").value_or("30"), "--warmup"));
+struct FrameFlags {
+  std::optional<std::string> json;
+  std::string contents = "penetrable_sphere,rigid_sphere,tissue:400", sizes = "1280x720,1920x1080";
+  std::string targets = "window,offscreen", variants = "default", views = "none";
+  long long frames = 300, warmup = 30;
   std::optional<int> msaa;
-  if (auto m = args.value("--msaa")) msaa = parse_msaa(*m, "--msaa");
-  options.timestamps = !args.flag("--no-timestamps");
-  options.variants = parse_variants(args.value("--variants").value_or("default"));
-  const std::optional<float> render_scale = parse_render_scale(args.value("--render-scale").value_or("auto"), "--render-scale");
-  const std::string views = args.value("--views").value_or("none");
-  args.finish();
-  if (options.frames < 10 || options.warmup < 0) throw UsageError("--frames: at least 10; --warmup: 0 or more");
+  bool no_timestamps = false;
+  std::optional<float> render_scale;
+};
+
+int run(const FrameFlags& f) {
+  const std::vector<Content> contents = parse_contents(f.contents);
+  const std::vector<engine::Extent> sizes = parse_sizes(f.sizes);
+  const std::string& targets_arg = f.targets;
+  RowOptions options;
+  options.frames = long(f.frames);
+  options.warmup = long(f.warmup);
+  const std::optional<int> msaa = f.msaa;
+  options.timestamps = !f.no_timestamps;
+  options.variants = parse_variants(f.variants);
+  const std::optional<float> render_scale = f.render_scale;
+  const std::string& views = f.views;
+  const std::optional<std::string>& json = f.json;
   const bool section_view = views.find("section") != std::string::npos;
   const bool translucent_view = views.find("translucent") != std::string::npos;
   const bool ultrasound_view = views.find("ultrasound") != std::string::npos;
-  if (views != "none" && views != "section" && views != "translucent" && views != "ultrasound" &&
-      views != "section,ultrasound" && views != "ultrasound,section" && views != "translucent,ultrasound" &&
-      views != "ultrasound,translucent")
-    throw UsageError("--views: expected none, section, translucent, ultrasound or one of the two sections with "
-                     "ultrasound, got '" + views + "'");
   if (ultrasound_view)
     for (const Content& c : contents)
-      if (c.task.empty()) throw UsageError("--views ultrasound: " + c.name + " is no task (the ultrasound images a task's layers)");
+      if (c.task.empty())
+        throw UsageError("--views ultrasound: " + c.name + " is no task (the ultrasound images a task's layers)");
   std::vector<std::string> targets;
   for (const char* t : {"window", "offscreen"})
     if (targets_arg.find(t) != std::string::npos) targets.push_back(t);
@@ -258,15 +256,17 @@ int run_bench_frame(ArgList& args) {
   const fs::path scratch = fs::temp_directory_path() / ("needle_bench_frame_" + std::to_string(::getpid()));
   fs::create_directories(scratch);
   BenchTable table({"content", "target", "size", "variant", "msaa", "render_scale", "frames", "frame_ms_median",
-                    "frame_ms_p95", "frame_ms_p99", "fps_median", "fps_p95", "frame_ms_median_timed", "passes", "views"});
+                    "frame_ms_p95", "frame_ms_p99", "fps_median", "fps_p95", "frame_ms_median_timed", "passes",
+                    "views"});
   BenchTable pass_table({"content", "target", "size", "variant", "pass", "ms_median", "ms_p95"});
   std::string device_line;
   double timestamp_period_ns = 0.0;
 
   for (const Content& content : contents) {
-    const engine::Model tissue = content.tissue
-        ? engine::convert_gltf(asset_gen::make_sphere(content.tissue, content.tissue, {2, 4}), content.name)
-        : engine::Model{};
+    const engine::Model tissue =
+        content.tissue
+            ? engine::convert_gltf(asset_gen::make_sphere(content.tissue, content.tissue, {2, 4}), content.name)
+            : engine::Model{};
     for (const std::string& target_name : targets) {
       for (const engine::Extent& size : sizes) {
         // A task runs its session in real time, as `run` does, into a scratch database.
@@ -277,15 +277,18 @@ int run_bench_frame(ArgList& args) {
           task.trainee = "bench";
           task.db = scratch / "sessions.db";
           task.out_dir = scratch;
+          task.messages = printed_messages("needle-sim bench frame");
           session = std::make_unique<app::TaskSession>(task);
         }
         auto make_scene = [&](const engine::SceneRenderer& renderer) {
-          return session ? engine::GpuScene(renderer, session->scene())
-                         : engine::GpuScene(renderer, tissue, engine::framing_view(tissue, size), engine::TissueParams{});
+          return session
+                     ? engine::GpuScene(renderer, session->scene())
+                     : engine::GpuScene(renderer, tissue, engine::framing_view(tissue, size), engine::TissueParams{});
         };
         auto run_row = [&](const engine::GpuDevice& device, engine::RenderTarget& target, engine::Window* window,
                            engine::WindowTarget* window_target) {
-          app::TraineeFrame frame(device, target, {msaa.value_or(device.is_cpu_device() ? 1 : 4), true, render_scale}, window);
+          app::TraineeFrame frame(device, target, {msaa.value_or(device.is_cpu_device() ? 1 : 4), true, render_scale},
+                                  window);
           engine::GpuScene scene = make_scene(frame.renderer());
           // The views as the window shows them (app::with_views): the section cut, the ultrasound window open.
           app::Show show{session ? app::task_content(*session) : app::scripted_content(scene)};
@@ -298,7 +301,8 @@ int run_bench_frame(ArgList& args) {
           const app::FrameContent shown = app::with_views(show, view, frame.renderer(), target);
           const std::vector<FrameSample> samples =
               measure(frame, target, window_target, scene, shown, window, show.ultrasound.get(), options);
-          const std::string size_text = std::to_string(target.extent().width) + "x" + std::to_string(target.extent().height);
+          const std::string size_text =
+              std::to_string(target.extent().width) + "x" + std::to_string(target.extent().height);
           for (size_t v = 0; v < options.variants.size(); ++v) {
             std::vector<double> untimed, timed, scales;
             std::map<std::string, std::vector<double>> parts;
@@ -314,19 +318,21 @@ int run_bench_frame(ArgList& args) {
             nlohmann::json passes = nlohmann::json::object();
             for (const auto& [name, ms] : parts) {
               passes[name] = percentile(ms, 0.5);
-              pass_table.add_row({content.name, target_name, size_text, variant, name, percentile(ms, 0.5), percentile(ms, 0.95)});
+              pass_table.add_row(
+                  {content.name, target_name, size_text, variant, name, percentile(ms, 0.5), percentile(ms, 0.95)});
             }
             const double median = percentile(untimed, 0.5), p95 = percentile(untimed, 0.95);
             table.add_row({content.name, target_name, size_text, variant, frame.renderer().msaa_samples(),
                            percentile(scales, 0.5), long(untimed.size()), median, p95, percentile(untimed, 0.99),
                            1000.0 / median, 1000.0 / p95,
-                           timed.empty() ? nlohmann::json(nullptr) : nlohmann::json(percentile(timed, 0.5)), passes, views});
+                           timed.empty() ? nlohmann::json(nullptr) : nlohmann::json(percentile(timed, 0.5)), passes,
+                           views});
           }
           device_line = device.device_description();
           timestamp_period_ns = device.timestamp_period_ns();
         };
         if (target_name == "window") {
-          app::GpuWindow vw("needle-sim bench frame", size);
+          app::GpuWindow vw("needle-sim bench frame", size, printed_messages("needle-sim bench frame"));
           run_row(vw.device, vw.target, &vw.window, &vw.target);
         } else {
           engine::DeviceOptions quiet;
@@ -339,49 +345,56 @@ int run_bench_frame(ArgList& args) {
     }
   }
   fs::remove_all(scratch);
-  pass_table.print("bench frame: the frame's parts (ms; *_cpu: recording on the CPU, *_device: timestamps, *_wait: "
-                   "waiting), medians and p95 over the frames");
+  pass_table.print(
+      "bench frame: the frame's parts (ms; *_cpu: recording on the CPU, *_device: timestamps, *_wait: "
+      "waiting), medians and p95 over the frames");
   table.emit("bench frame: the trainee's frame on " + device_line + " (timestamp period " +
                  (timestamp_period_ns > 0.0 ? std::to_string(timestamp_period_ns) + " ns" : std::string("none")) + ")",
              json);
   return 0;
 }
 
+// The options of bench frame, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
+  auto f = std::make_shared<FrameFlags>();
+  add_output_file(app, "--json", f->json, "FILE",
+                  "also write the rows as JSON (keys: content, target, size, frame_ms_median, frame_ms_p95,\n"
+                  "passes: name -> median ms, ...)");
+  add_text(app, "--contents", f->contents, "LIST",
+           "what the frame shows: a task (a name in assets/tasks or a file) run in real time by its\n"
+           "scripted good operator on the simulated device, as `run` shows it; tissue:N (N from 3 to 2000),\n"
+           "the N x N sphere with its levels of detail under the scripted needle, as `run --scene` shows it");
+  add_text(app, "--sizes", f->sizes, "LIST", "frame sizes, each WxH");
+  add_text(app, "--targets", f->targets, "LIST", "window (needs a display: xvfb-run), offscreen, or both");
+  add_whole(app, "--frames", f->frames, kFrameBenchFrames, "N", "measured frames of each kind per row");
+  add_whole(app, "--warmup", f->warmup, kFrameBenchWarmup, "N", "frames drawn before the measured ones");
+  add_msaa(app, "--msaa", f->msaa, "MSAA samples, by default as the window has them: 1 on a CPU device, else 4");
+  add_flag(app, "--no-timestamps", f->no_timestamps,
+           "no device timings; otherwise frames with and without timestamps alternate in blocks\n"
+           "of 8, the frame times are those without, the device times those with");
+  add_choice(app, "--views", f->views, {"none", "section", "ultrasound", "section,ultrasound", "ultrasound,section"},
+             "the views open as in the window: the section view cut through the needle\n"
+             "(or the task's plane), the ultrasound window with its 256 x 512 image swept over two\n"
+             "frames, half its lines a frame, as the window does (its passes are in deformation_*, the\n"
+             "work recorded before the scene's pass); key views");
+  add_render_scale(app, "--render-scale", f->render_scale,
+                   "the frame's render scale, as run's (auto: lowered on a CPU device while the\n"
+                   "frame misses 60 fps); key render_scale (the median of the frames'), upscale_device");
+  add_text(app, "--variants", f->variants, "LIST",
+           "settings compared within each row, block by block in turn, ';' between variants and\n"
+           "',' between the settings of one: default (the frame's own), scale=S (a fixed render scale),\n"
+           "cut_culling=off (the section's cut-away chunks drawn, as before they were culled),\n"
+           "specialized=off (every draw with the general mesh shader, its discards and texture\n"
+           "fetch run masked, as before),\n"
+           "present=fifo|mailbox|immediate (the window's swapchain and its present mode) or\n"
+           "present=shm (a CPU device's frames through X11 shared memory); default: the window's own\n"
+           "(shm where it is offered, else fifo; the window's line says which),\n"
+           "sweep=N (the ultrasound image made over N frames, N from 1 to 16, 1: whole every frame; default 2)");
+  return [f] { return run(*f); };
+}
+
 const CommandRegistrar reg{
-    {"bench frame",
-     "needle-sim bench frame [--json FILE] [--contents penetrable_sphere,rigid_sphere,tissue:400]\n"
-     "                       [--sizes 1280x720,1920x1080] [--targets window,offscreen] [--frames N] [--warmup N]\n"
-     "                       [--msaa N] [--no-timestamps] [--views none|section|translucent|ultrasound|section,ultrasound]\n"
-     "                       [--render-scale auto|S] [--variants default;scale=S...]\n"
-     "  --json FILE      also write the rows as JSON (keys: content, target, size, frame_ms_median, frame_ms_p95,\n"
-     "                   passes: name -> median ms, ...)\n"
-     "  --contents LIST  what the frame shows: a task (a name in assets/tasks or a file) run in real time by its\n"
-     "                   scripted good operator on the simulated device, as `run` shows it; tissue:N, the N x N\n"
-     "                   sphere with its levels of detail under the scripted needle, as `run --scene` shows it\n"
-     "  --sizes LIST     frame sizes (default 1280x720,1920x1080)\n"
-     "  --targets LIST   window (needs a display: xvfb-run), offscreen, or both (default)\n"
-     "  --frames N       measured frames of each kind per row (default 300), after --warmup N (default 30)\n"
-     "  --msaa N         MSAA samples (default: as the window, 1 on a CPU device, else 4)\n"
-     "  --no-timestamps  no device timings; otherwise frames with and without timestamps alternate in blocks\n"
-     "                   of 8, the frame times are those without, the device times those with\n"
-     "  --views LIST     the views open as in the window (default none): the section view cut through the needle\n"
-     "                   (or the task's plane), or translucent (the tissue see-through), the ultrasound window\n"
-     "                   with its 256 x 512 image swept over two\n"
-     "                   frames, half its lines a frame, as the window does (its passes are in deformation_*, the\n"
-     "                   work recorded before the scene's pass); key views\n"
-     "  --render-scale X the frame's render scale, as run's (default auto: lowered on a CPU device while the\n"
-     "                   frame misses 60 fps); key render_scale (the median of the frames'), upscale_device\n"
-     "  --variants LIST  settings compared within each row, block by block in turn, ';' between variants and\n"
-     "                   ',' between the settings of one: default (the frame's own), scale=S (a fixed render scale),\n"
-     "                   cut_culling=off (the section's cut-away chunks drawn, as before they were culled),\n"
-     "                   specialized=off (every draw with the general mesh shader, its discards and texture\n"
-     "                   fetch run masked, as before), translucency=screen_door (the translucent view's\n"
-     "                   tissue on a dither instead of blended),\n"
-     "                   present=fifo|mailbox|immediate (the window's swapchain and its present mode) or\n"
-     "                   present=shm (a CPU device's frames through X11 shared memory); default: the window's own\n"
-     "                   (shm where it is offered, else fifo; the window's line says which),\n"
-     "                   sweep=N (the ultrasound image made over N frames, 1: whole every frame; default 2)",
-     run_bench_frame}};
+    {"bench frame", "the trainee's whole frame as run draws it, pass by pass, in a window and offscreen", declare}};
 
 }  // namespace
 }  // namespace needle::cli

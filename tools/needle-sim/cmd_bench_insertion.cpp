@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "arg_list.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
+#include "flag_ranges.hpp"
 #include "haptics/sim/scenario.hpp"
 #include "haptics/tissue/kinematic_insertion.hpp"
 #include "io/file_write.hpp"
@@ -17,17 +17,12 @@
 namespace needle::cli {
 namespace {
 
-Eigen::Vector3d parse_vec3(const std::string& text, const std::string& flag) {
-  const std::vector<double> v = parse_number_list(text, flag);
-  if (v.size() != 3) throw UsageError(flag + ": expected three numbers X,Y,Z, got '" + text + "'");
-  return {v[0], v[1], v[2]};
-}
-
-double parse_positive(const std::string& text, const std::string& flag) {
-  const double v = parse_number(text, flag);
-  if (!(v > 0.0)) throw UsageError(flag + ": must be > 0, got '" + text + "'");
-  return v;
-}
+struct InsertionFlags {
+  std::optional<std::string> scenario, json, plot;
+  std::vector<double> from, dir;
+  std::optional<double> depth, speed;
+  double hold = 0.0;
+};
 
 std::string layer_name(const haptics::TissueModel& model, int layer) {
   return layer < 0 ? "" : model.layer(layer).name;
@@ -74,18 +69,20 @@ void write_plot(const std::string& file, const std::string& title, const haptics
   engine::write_png(file, ui::draw_line_chart(chart, 1200, 700));
 }
 
-int run_bench_insertion(ArgList& args) {
-  const std::string scenario_path = args.required("--scenario");
-  const Eigen::Vector3d from_world = parse_vec3(args.required("--from"), "--from");
-  const Eigen::Vector3d dir = parse_vec3(args.required("--dir"), "--dir");
-  const double depth = parse_positive(args.required("--depth"), "--depth");
-  const double speed = parse_positive(args.required("--speed"), "--speed");
-  const double hold = parse_number(args.value("--hold").value_or("0"), "--hold");
-  const auto json_path = output_file(args, "--json");
-  const auto plot_path = output_file(args, "--plot");
-  args.finish();
-  if (hold < 0.0) throw UsageError("--hold: must be >= 0");
+int run(const InsertionFlags& f) {
+  if (f.from.size() != 3) throw UsageError("--from: expected three numbers X,Y,Z");
+  if (f.dir.size() != 3) throw UsageError("--dir: expected three numbers DX,DY,DZ");
+  const Eigen::Vector3d from_world(f.from[0], f.from[1], f.from[2]);
+  const Eigen::Vector3d dir(f.dir[0], f.dir[1], f.dir[2]);
+  const double depth = *f.depth, speed = *f.speed, hold = f.hold;
   if (dir.norm() < 1e-12) throw UsageError("--dir: must not be the zero vector");
+  if (2.0 * depth / speed + hold > io::kMaxSessionSeconds)
+    throw UsageError("--depth, --speed, --hold: the drive would last " + std::to_string(2.0 * depth / speed + hold) +
+                     " s, over the " + std::to_string(int(io::kMaxSessionSeconds)) +
+                     " s a run may (2 depth / speed + hold)");
+  const std::string& scenario_path = *f.scenario;
+  const auto& json_path = f.json;
+  const auto& plot_path = f.plot;
 
   const haptics::Scenario scenario = haptics::load_scenario(scenario_path);
   if (scenario.scene.tissue.empty()) throw UsageError("--scenario: " + scenario_path + " has no tissue");
@@ -102,7 +99,8 @@ int run_bench_insertion(ArgList& args) {
   const auto boundaries = haptics::layer_boundaries(scenario.scene.tissue, plan.from, plan.dir, reached);
 
   BenchTable table({"layer", "depth_m", "peak_force_N"});
-  for (const auto& p : run.punctures) table.add_row({layer_name(scenario.scene.tissue, p.layer), p.depth_m, p.peak_force_N});
+  for (const auto& p : run.punctures)
+    table.add_row({layer_name(scenario.scene.tissue, p.layer), p.depth_m, p.peak_force_N});
   table.print("bench insertion: " + scenario.name + ", punctures (" + std::to_string(run.samples.size()) +
               " ticks of " + std::to_string(scenario.period_s * 1e3) + " ms)");
   if (run.hard_stop)
@@ -118,20 +116,32 @@ int run_bench_insertion(ArgList& args) {
   return 0;
 }
 
+// The options of bench insertion, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
+  auto f = std::make_shared<InsertionFlags>();
+  // A point or a direction in the world: metres, within a kilometre of the origin (a design bound).
+  const NumberRange coordinate{-1000.0, 1000.0};
+  add_text(app, "--scenario", f->scenario, "FILE",
+           "a scenario with a tissue (assets/scenarios/*.json); only its tissue and period are used")
+      ->required();
+  add_number_list(app, "--from", f->from, coordinate, "X,Y,Z", "the tip's start, world frame (m)", 3)->required();
+  add_number_list(app, "--dir", f->dir, coordinate, "DX,DY,DZ", "insertion direction (normalized)", 3)->required();
+  add_number(app, "--depth", f->depth, kInsertionDepth_m, "M",
+             "how far along dir the tip is driven (m); a rigid layer on the way stops it")
+      ->required();
+  add_number(app, "--speed", f->speed, kInsertionSpeed_mps, "MPS", "constant speed in and out (m/s)")->required();
+  add_number(app, "--hold", f->hold, kInsertionHold_s, "S", "seconds held at the deepest point");
+  add_output_file(app, "--json", f->json, "OUT",
+                  "samples {t, depth_m, axial_force_N, layer}, punctures {layer, depth_m, peak_force_N},\n"
+                  "tissue_work_J, tick_us_median, hard_stop, boundaries (the layers along the line at rest)");
+  add_output_file(app, "--plot", f->plot, "OUT.png", "force against depth with the layer boundaries");
+  app.footer("The whole drive, in, held and out (2 depth / speed + hold), lasts at most " +
+             std::to_string(int(io::kMaxSessionSeconds)) + " s of simulated time.");
+  return [f] { return run(*f); };
+}
+
 const CommandRegistrar reg{
-    {"bench insertion",
-     "needle-sim bench insertion --scenario FILE --from X,Y,Z --dir DX,DY,DZ --depth M --speed MPS [--hold S] [--json "
-     "OUT] [--plot OUT.png]\n"
-     "  --scenario FILE  a scenario with a tissue (assets/scenarios/*.json); only its tissue and period are used\n"
-     "  --from X,Y,Z     the tip's start, world frame (m)\n"
-     "  --dir DX,DY,DZ   insertion direction (normalized)\n"
-     "  --depth M        how far along dir the tip is driven (m); a rigid layer on the way stops it\n"
-     "  --speed MPS      constant speed in and out (m/s)\n"
-     "  --hold S         seconds held at the deepest point (default 0)\n"
-     "  --json OUT       samples {t, depth_m, axial_force_N, layer}, punctures {layer, depth_m, peak_force_N},\n"
-     "                   tissue_work_J, tick_us_median, hard_stop, boundaries (the layers along the line at rest)\n"
-     "  --plot OUT.png   force against depth with the layer boundaries",
-     run_bench_insertion}};
+    {"bench insertion", "the tissue model's own force-depth curve along a line, in and out", declare}};
 
 }  // namespace
 }  // namespace needle::cli

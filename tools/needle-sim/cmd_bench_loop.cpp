@@ -9,10 +9,10 @@
 #include <memory>
 #include <thread>
 
-#include "arg_list.hpp"
+#include "asset_path.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
-#include "asset_path.hpp"
+#include "flag_ranges.hpp"
 #include "haptics/devices/desk_device.hpp"
 #include "haptics/realtime/haptic_loop.hpp"
 #include "haptics/realtime/periodic_timer.hpp"
@@ -44,16 +44,16 @@ struct HapticRun {
   std::string realtime_line;
 };
 
-// The haptic loop as the app runs it: the device ("mouse", no step; or "sim:SCENARIO", the
-// simulated master with the controller), the safety monitor at the device's limits, snapshot
-// and sample ring, and the recorder thread writing the session to a temporary file.
-HapticRun time_haptic_loop(const std::string& device_spec, double rate_hz, double seconds) {
+// The haptic loop as the app runs it: the device (mouse, no step; or sim:SCENARIO, the simulated
+// master with the controller), the safety monitor at the device's limits, snapshot and sample
+// ring, and the recorder thread writing the session to a temporary file.
+HapticRun time_haptic_loop(const haptics::DeviceSpec& device_spec, double rate_hz, double seconds) {
   std::unique_ptr<haptics::SimSession> sim;
-  haptics::DeskDevice mouse("mouse");
+  haptics::DeskDevice mouse(haptics::DeviceSpec{haptics::DeviceSpec::Kind::kMouse});
   haptics::HapticDevice* device = &mouse;
   haptics::ServoStep* step = nullptr;
-  if (device_spec.rfind("sim:", 0) == 0) {
-    sim = std::make_unique<haptics::SimSession>(device_spec.substr(4), rate_hz);
+  if (device_spec.kind == haptics::DeviceSpec::Kind::kSim) {
+    sim = std::make_unique<haptics::SimSession>(device_spec.file, rate_hz);
     device = &sim->device();
     step = &sim->step();
   }
@@ -61,9 +61,11 @@ HapticRun time_haptic_loop(const std::string& device_spec, double rate_hz, doubl
   haptics::LoopConfig config;
   config.rate_hz = rate_hz;
   haptics::HapticLoop loop(*device, haptics::safety_limits_for(device->capabilities()), config);
-  const std::string path = (std::filesystem::temp_directory_path() /
-                            ("needle_bench_loop_" + std::to_string(::getpid()) + ".nsrec")).string();
-  haptics::SessionRecorder recorder(path, {haptics::kSessionFormatVersion, rate_hz, 0, device_spec}, loop.samples());
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("needle_bench_loop_" + std::to_string(::getpid()) + ".nsrec"))
+          .string();
+  haptics::SessionRecorder recorder(path, {haptics::kSessionFormatVersion, rate_hz, 0, device_spec.text()},
+                                    loop.samples());
   HapticRun run;
   run.realtime_line = loop.launch();
   recorder.start();
@@ -109,42 +111,46 @@ LoopStatsSummary time_bare_loop(double rate_hz, double seconds, const haptics::R
 
 double us(double ns) { return ns / 1000.0; }
 
-int run_bench_loop(ArgList& args) {
-  const auto json = output_file(args, "--json");
-  const std::vector<double> rates = parse_number_list(args.value("--rates").value_or("1000,2000,4000"), "--rates");
-  const double seconds = parse_number(args.value("--seconds").value_or("30"), "--seconds");
-  const bool with_load = args.flag("--render-load");
-  const std::string device_spec =
-      args.value("--device").value_or("sim:" + (asset_dir() / "scenarios" / "nonholonomic_needle.json").string());
-  args.finish();
-  if (device_spec != "mouse" && device_spec.rfind("sim:", 0) != 0)
-    throw UsageError("--device: expected mouse or sim:SCENARIO.json, got " + device_spec);
-  if (!(seconds > 0.0 && seconds <= 3600.0)) throw UsageError("--seconds: expected a duration in (0, 3600]");
-  for (double r : rates) {
-    try {
-      haptics::check_loop_rate(r);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--rates: ") + e.what());
-    }
+struct LoopFlags {
+  std::optional<std::string> json, device;
+  std::vector<double> rates{1000, 2000, 4000};
+  double seconds = 30.0;
+  bool render_load = false;
+};
+
+int run(const LoopFlags& f) {
+  const std::vector<double>& rates = f.rates;
+  const double seconds = f.seconds;
+  const bool with_load = f.render_load;
+  const std::string device_text =
+      f.device.value_or("sim:" + (asset_dir() / "scenarios" / "nonholonomic_needle.json").string());
+  haptics::DeviceSpec device_spec;
+  try {
+    device_spec = haptics::DeviceSpec::parse(device_text);
+  } catch (const haptics::DeviceSpecError& e) {
+    throw UsageError(std::string("--device: ") + e.what());
   }
+  const bool sim_scenario = device_spec.kind == haptics::DeviceSpec::Kind::kSim && !device_spec.file.empty();
+  if (device_spec.kind != haptics::DeviceSpec::Kind::kMouse && !sim_scenario)
+    throw UsageError("--device: expected mouse or sim:SCENARIO.json, got " + device_text);
   if (with_load && render_load() == nullptr)
     throw UsageError("--render-load: this build registers no renderer load (see render_load_hook.hpp)");
 
-  BenchTable table({"loop", "device", "rate_hz", "render_load", "seconds", "ticks", "period_err_p50_us", "period_err_p99_us",
-                    "period_err_p999_us", "period_err_max_us", "overruns", "compute_p50_us", "compute_p99_us",
-                    "rate_measured_hz", "fault"});
+  BenchTable table({"loop", "device", "rate_hz", "render_load", "seconds", "ticks", "period_err_p50_us",
+                    "period_err_p99_us", "period_err_p999_us", "period_err_max_us", "overruns", "compute_p50_us",
+                    "compute_p99_us", "rate_measured_hz", "fault"});
   std::string realtime_line;
   auto add = [&](const char* loop, const std::string& device, double rate, bool load, const LoopStatsSummary& s) {
-    table.add_row({loop, device, rate, load, seconds, s.period_error.count, us(s.period_error.p50_ns), us(s.period_error.p99_ns),
-                   us(s.period_error.p999_ns), us(s.period_error.max_ns), s.overruns, us(s.compute.p50_ns),
-                   us(s.compute.p99_ns), s.rate_hz,
+    table.add_row({loop, device, rate, load, seconds, s.period_error.count, us(s.period_error.p50_ns),
+                   us(s.period_error.p99_ns), us(s.period_error.p999_ns), us(s.period_error.max_ns), s.overruns,
+                   us(s.compute.p50_ns), us(s.compute.p99_ns), s.rate_hz,
                    haptics::fault_cause_name(static_cast<haptics::FaultCause>(s.fault))});
   };
   auto run_all = [&](bool load) {
     for (double rate : rates) {
       const HapticRun run = time_haptic_loop(device_spec, rate, seconds);
       realtime_line = run.realtime_line;
-      add("haptic", device_spec.substr(0, device_spec.find(':')), rate, load, run.stats);
+      add("haptic", device_spec.kind == haptics::DeviceSpec::Kind::kSim ? "sim" : "mouse", rate, load, run.stats);
       add("bare", "-", rate, load, time_bare_loop(rate, seconds, haptics::LoopConfig{}.realtime));
     }
   };
@@ -161,22 +167,28 @@ int run_bench_loop(ArgList& args) {
     std::printf("render load: %ld trainee frames in %.1f s (%.1f per second)\n", frames, s, double(frames) / s);
   }
   std::printf("%s\n", realtime_line.c_str());
-  table.emit("haptic loop vs bare clock_nanosleep loop (period error = |period - nominal|)", json);
+  table.emit("haptic loop vs bare clock_nanosleep loop (period error = |period - nominal|)", f.json);
   return 0;
 }
 
-const CommandRegistrar reg{
-    {"bench loop",
-     "needle-sim bench loop [--rates 1000,2000,4000] [--seconds 30] [--device sim:FILE|mouse] [--render-load]\n"
-     "                      [--json FILE]\n"
-     "  --rates        loop rates in Hz, each 250..10000\n"
-     "  --device       sim:SCENARIO.json (default: the nonholonomic scenario, master simulated, controller\n"
-     "                 stepping) or mouse (no step: the loop's own machinery only)\n"
-     "  --seconds      measuring time per row (after 0.2 s of settling)\n"
-     "  --render-load  repeat every row while the trainee's frame (the penetrable task's scene, panels and\n"
-     "                 guidance, 1280x720 offscreen) is drawn as fast as it can\n"
-     "  --json FILE    also write the rows as JSON",
-     run_bench_loop}};
+// The options of bench loop, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
+  auto f = std::make_shared<LoopFlags>();
+  add_number_list(app, "--rates", f->rates, kLoopRates_hz, "LIST", "loop rates in Hz");
+  add_number(app, "--seconds", f->seconds, kLoopSeconds, "S", "measuring time per row (after 0.2 s of settling)");
+  add_text(app, "--device", f->device, "sim:FILE|mouse",
+           "sim:SCENARIO.json (default: the nonholonomic scenario, master simulated, controller\n"
+           "stepping) or mouse (no step: the loop's own machinery only)");
+  add_flag(app, "--render-load", f->render_load,
+           "repeat every row while the trainee's frame (the penetrable task's scene, panels and\n"
+           "guidance, 1280x720 offscreen) is drawn as fast as it can");
+  add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON");
+  return [f] { return run(*f); };
+}
+
+const CommandRegistrar reg{{"bench loop",
+                            "the haptic loop's timing against a bare clock_nanosleep loop, with and without rendering",
+                            declare}};
 
 }  // namespace
 }  // namespace needle::cli

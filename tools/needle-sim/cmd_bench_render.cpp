@@ -6,7 +6,6 @@
 #include <memory>
 #include <string>
 
-#include "arg_list.hpp"
 #include "asset-gen/assets.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
@@ -15,45 +14,39 @@
 #include "engine/gpu_scene.hpp"
 #include "engine/offscreen.hpp"
 #include "engine/render_target.hpp"
+#include "flag_ranges.hpp"
 #include "sample_stats.hpp"
 
 namespace needle::cli {
 namespace {
 
 std::vector<std::string> parse_draw_modes(const std::string& list) {
-  std::vector<std::string> modes;
-  for (size_t start = 0; start <= list.size();) {
-    size_t end = std::min(list.find(',', start), list.size());
-    modes.push_back(list.substr(start, end - start));
-    if (modes.back() != "whole" && modes.back() != "culled" && modes.back() != "lod" && modes.back() != "lod+culled")
-      throw UsageError("--draws: expected a list of whole, culled, lod, lod+culled; got '" + modes.back() + "'");
-    start = end + 1;
-  }
+  const std::vector<std::string> modes = split_list(list, "--draws", kMaxListItems);
+  for (const std::string& mode : modes)
+    if (mode != "whole" && mode != "culled" && mode != "lod" && mode != "lod+culled")
+      throw UsageError("--draws: expected a list of whole, culled, lod, lod+culled; got '" + mode + "'");
   return modes;
 }
 
-int run_bench_render(ArgList& args) {
-  auto json = output_file(args, "--json");
-  engine::Extent size = parse_size(args.value("--size").value_or("1280x720"), "--size");
-  std::vector<double> resolutions = parse_number_list(args.value("--spheres").value_or("100,200,400,800"), "--spheres");
-  const long frames = static_cast<long>(parse_whole(args.value("--frames").value_or("200"), "--frames", 1, 100000));
-  std::vector<int> msaa_counts;
-  for (double m : parse_number_list(args.value("--msaa").value_or("1,4"), "--msaa")) {
-    msaa_counts.push_back(parse_msaa(std::to_string(int(m)), "--msaa"));
-  }
-  std::vector<std::string> draw_modes = parse_draw_modes(args.value("--draws").value_or("whole,culled,lod,lod+culled"));
-  args.finish();
-  for (double r : resolutions) {
-    if (r < 3 || r > 4000 || r != double(long(r)))
-      throw UsageError("--spheres: each resolution a whole number in 3..4000");
-  }
+struct RenderBenchFlags {
+  std::optional<std::string> json;
+  engine::Extent size{1280, 720};
+  std::vector<long long> spheres{100, 200, 400, 800};
+  long long frames = 200;
+  std::vector<int> msaa{1, 4};
+  std::string draws = "whole,culled,lod,lod+culled";
+};
 
+int run(const RenderBenchFlags& f) {
+  const std::vector<std::string> draw_modes = parse_draw_modes(f.draws);
+  const engine::Extent size = f.size;
+  const long long frames = f.frames;
   engine::GpuDevice device;
   engine::HeadlessTarget target(device, size);
 
   BenchTable table({"sphere", "vertices", "triangles", "width", "height", "msaa", "draws", "frames", "frame_ms_median",
                     "frame_ms_p95", "fps_median", "triangles_drawn"});
-  for (double r : resolutions) {
+  for (const long long r : f.spheres) {
     int n = int(r);
     // The tissue with its levels of detail: every 2nd and every 4th parallel and meridian.
     std::vector<int> lod_steps;
@@ -65,7 +58,7 @@ int run_bench_render(ArgList& args) {
       vertices += p.vertices.size();
       triangles += p.indices.size() / 3;
     }
-    for (int msaa : msaa_counts) {
+    for (int msaa : f.msaa) {
       // The draw modes take turns frame by frame, so a load that comes and goes on a shared
       // machine weighs on all of them alike and their ratios hold.
       struct Variant {
@@ -103,23 +96,27 @@ int run_bench_render(ArgList& args) {
       }
     }
   }
-  table.emit("bench render: scene pass on " + device.device_description(), json);
+  table.emit("bench render: scene pass on " + device.device_description(), f.json);
   return 0;
 }
 
+// The options of bench render, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
+  auto f = std::make_shared<RenderBenchFlags>();
+  add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON");
+  add_size(app, "--size", f->size, "frame size");
+  add_whole_list(app, "--spheres", f->spheres, kRenderSpheres, "LIST", "sphere resolutions p = m");
+  add_whole(app, "--frames", f->frames, kBenchFrames, "N", "timed frames per sphere");
+  add_msaa_list(app, "--msaa", f->msaa, "MSAA sample counts to compare, capped at what the device has");
+  add_text(app, "--draws", f->draws, "LIST",
+           "renderer variants to compare, frame by frame in turn: whole (every triangle),\n"
+           "culled (chunks facing away left out), lod (the level of detail for the size),\n"
+           "lod+culled (both: the renderer's default)");
+  return [f] { return run(*f); };
+}
+
 const CommandRegistrar reg{
-    {"bench render",
-     "needle-sim bench render [--json FILE] [--size WxH] [--spheres 100,200,400,800] [--frames N] [--msaa 1,4]\n"
-     "                        [--draws whole,culled,lod,lod+culled]\n"
-     "  --json FILE     also write the rows as JSON\n"
-     "  --size WxH      frame size (default 1280x720)\n"
-     "  --spheres LIST  sphere resolutions p = m (default 100,200,400,800)\n"
-     "  --frames N      timed frames per sphere (default 200)\n"
-     "  --msaa LIST     MSAA sample counts to compare (default 1,4; capped at what the device has)\n"
-     "  --draws LIST    renderer variants to compare, frame by frame in turn: whole (every triangle),\n"
-     "                  culled (chunks facing away left out), lod (the level of detail for the size),\n"
-     "                  lod+culled (both: the renderer's default)",
-     run_bench_render}};
+    {"bench render", "frame time of the scene pass for the thesis sphere at growing resolutions", declare}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -18,14 +18,15 @@
 #include <set>
 #include <thread>
 
-#include "arg_list.hpp"
-#include "asset_path.hpp"
-#include "bench_table.hpp"
-#include "command.hpp"
 #include "app/recording_bytes.hpp"
 #include "app/session_verify.hpp"
 #include "app/task_session.hpp"
+#include "asset_path.hpp"
+#include "bench_table.hpp"
+#include "command.hpp"
+#include "flag_ranges.hpp"
 #include "io/file_write.hpp"
+#include "printed_messages.hpp"
 #include "sample_stats.hpp"
 #include "training/sessions/postgres_connection.hpp"
 #include "training/sessions/store_location.hpp"
@@ -189,15 +190,19 @@ double bare_replays_s(const std::string& recording, int count, int jobs, const f
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-int run_bench_store(ArgList& args) {
-  const std::optional<std::string> server = args.value("--db");
-  const int per_station = int(parse_whole(args.value("--sessions").value_or("8"), "--sessions", 1, 100000));
-  const int verify_count = int(parse_whole(args.value("--verify").value_or("100"), "--verify", 0, 100000));
+struct StoreFlags {
+  std::optional<std::string> db, task, json;
+  long long sessions = 8, verify = 100;
+};
+
+int run(const StoreFlags& f) {
+  const std::optional<std::string>& server = f.db;
+  const int per_station = int(f.sessions);
+  const int verify_count = int(f.verify);
   const int jobs = int(std::max(1u, std::thread::hardware_concurrency()));
-  const std::string task = args.value("--task").value_or((asset_dir() / "tasks" / "penetrable_sphere.json").string());
-  const auto json = output_file(args, "--json");
-  args.finish();
-  if (server && !training::is_postgres_uri(*server)) throw UsageError("--db: a postgresql:// URI, the server to measure");
+  const std::string task = f.task.value_or((asset_dir() / "tasks" / "penetrable_sphere.json").string());
+  if (server && !training::is_postgres_uri(*server))
+    throw UsageError("--db: a postgresql:// URI, the server to measure");
 
   const fs::path scratch = fs::temp_directory_path() / ("needle_bench_store_" + std::to_string(::getpid()));
   fs::remove_all(scratch);
@@ -256,25 +261,32 @@ int run_bench_store(ArgList& args) {
   table.emit("bench store: stations storing a " + std::to_string(w.result.overall.duration_s).substr(0, 4) +
                  " s scripted session (" + std::to_string(per_station) + " each, recording in 50 ms chunks) at once; " +
                  "verify --all over " + std::to_string(verify_count) + " stored copies, " + std::to_string(jobs) + " at a time",
-             json);
+             f.json);
   return 0;
 }
 
+// The options of bench store, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
+  auto f = std::make_shared<StoreFlags>();
+  add_text(app, "--db", f->db, "URI",
+           "the PostgreSQL server to measure (a database of its own: the bench adds sessions of\n"
+           "stations named bench-*); without it only the SQLite rows");
+  add_whole(app, "--sessions", f->sessions, kStoreSessions, "N", "sessions each station stores");
+  add_whole(app, "--verify", f->verify, kVerifySessions, "N",
+            "copies of the session stored, then verified as verify --all does (0: no verify rows)");
+  add_text(app, "--task", f->task, "FILE",
+           "the task whose good script makes the session (default assets/tasks/penetrable_sphere.json)");
+  add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON");
+  app.footer(
+      "rows: 1, 4 and 16 station processes on PostgreSQL, then on one SQLite file they share: sessions per\n"
+      "minute, p99 of the finishing commit (ms), database growth per session, and stored/lost/duplicated\n"
+      "(every session complete with every byte of its recording, no uid twice); then per engine a verify\n"
+      "row: sessions verified per minute, the same replays' time alone and verify's time over theirs");
+  return [f] { return run(*f); };
+}
+
 const CommandRegistrar reg{
-    {"bench store",
-     "needle-sim bench store [--db URI] [--sessions N] [--verify N] [--task FILE] [--json FILE]\n"
-     "  --db URI        the PostgreSQL server to measure (a database of its own: the bench adds sessions of\n"
-     "                  stations named bench-*); without it only the SQLite rows\n"
-     "  --sessions N    sessions each station stores (default 8)\n"
-     "  --verify N      copies of the session stored, then verified as verify --all does (default 100;\n"
-     "                  0: no verify rows)\n"
-     "  --task FILE     the task whose good script makes the session (default assets/tasks/penetrable_sphere.json)\n"
-     "  --json FILE     also write the rows as JSON\n"
-     "  rows: 1, 4 and 16 station processes on PostgreSQL, then on one SQLite file they share: sessions per\n"
-     "  minute, p99 of the finishing commit (ms), database growth per session, and stored/lost/duplicated\n"
-     "  (every session complete with every byte of its recording, no uid twice); then per engine a verify\n"
-     "  row: sessions verified per minute, the same replays' time alone and verify's time over theirs",
-     run_bench_store}};
+    {"bench store", "stations storing scripted sessions at once, and verify over a store, per engine", declare}};
 
 }  // namespace
 }  // namespace needle::cli

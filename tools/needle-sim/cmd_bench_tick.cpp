@@ -5,26 +5,27 @@
 #include <chrono>
 #include <cstdio>
 
-#include "arg_list.hpp"
 #include "asset_path.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
+#include "flag_ranges.hpp"
 #include "haptics/sim/tick_workload.hpp"
 #include "sample_stats.hpp"
 
 namespace needle::cli {
 namespace {
 
-int run_bench_tick(ArgList& args) {
+struct TickFlags {
+  std::optional<std::string> scenario, json;
+  double settle_s = 8.0;
+  long long ticks = 1000000;
+};
+
+int run(const TickFlags& f) {
   const std::string scenario_path =
-      args.value("--scenario").value_or((asset_dir() / "scenarios" / "nonholonomic_needle.json").string());
-  const auto ticks_text = args.value("--ticks");
-  const auto settle_text = args.value("--settle");
-  const auto json = output_file(args, "--json");
-  args.finish();
-  const long ticks = ticks_text ? static_cast<long>(parse_whole(*ticks_text, "--ticks", 1, 100000000)) : 1000000;
-  const double settle = settle_text ? parse_number(*settle_text, "--settle") : 8.0;
-  if (!(settle > 0.0)) throw UsageError("--settle must be positive");
+      f.scenario.value_or((asset_dir() / "scenarios" / "nonholonomic_needle.json").string());
+  const long ticks = long(f.ticks);
+  const double settle = f.settle_s;
 
   BenchTable table({"virtual_substeps", "ticks", "median_us", "p99_us", "max_us"});
   haptics::Scenario scenario = haptics::load_scenario(scenario_path);
@@ -42,18 +43,26 @@ int run_bench_tick(ArgList& args) {
     for (double u : us) worst = std::max(worst, u);
     table.add_row({substeps, ticks, percentile(us, 0.5), percentile(us, 0.99), worst});
   }
-  table.emit("servo tick in nonholonomic contact (" + scenario.name + " at t = " + std::to_string(settle) + " s, T = " + std::to_string(scenario.period_s * 1e3) + " ms)", json);
+  table.emit("servo tick in nonholonomic contact (" + scenario.name + " at t = " + std::to_string(settle) +
+                 " s, T = " + std::to_string(scenario.period_s * 1e3) + " ms)",
+             f.json);
   return 0;
 }
 
-const CommandRegistrar reg{{"bench tick",
-                            "needle-sim bench tick [--scenario FILE] [--settle S] [--ticks N] [--json FILE]\n"
-                            "  --scenario FILE  a scenario reaching the tissue by t = S (default assets/scenarios/nonholonomic_needle.json)\n"
-                            "  --settle S       the scenario is played S seconds, then its last tick is timed (default 8)\n"
-                            "  --ticks N        ticks timed per configuration (default 1000000)\n"
-                            "  --json FILE      also write the rows as JSON (median_us, p99_us, max_us, ...)\n"
-                            "  rows: 1, 2 and 4 virtual sub-steps per tick (the scenarios use 1)",
-                            run_bench_tick}};
+// The options of bench tick, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
+  auto f = std::make_shared<TickFlags>();
+  add_text(app, "--scenario", f->scenario, "FILE",
+           "a scenario reaching the tissue by t = S (default assets/scenarios/nonholonomic_needle.json)");
+  add_number(app, "--settle", f->settle_s, kSettle_s, "S",
+             "the scenario is played S seconds, then its last tick is timed");
+  add_whole(app, "--ticks", f->ticks, kTimedTicks, "N", "ticks timed per configuration");
+  add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON (median_us, p99_us, max_us, ...)");
+  app.footer("rows: 1, 2 and 4 virtual sub-steps per tick (the scenarios use 1)");
+  return [f] { return run(*f); };
+}
+
+const CommandRegistrar reg{{"bench tick", "the cost of one full servo tick in nonholonomic contact", declare}};
 
 }  // namespace
 }  // namespace needle::cli

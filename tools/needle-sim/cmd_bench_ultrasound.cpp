@@ -16,11 +16,11 @@
 #include <cstdio>
 
 #include "app/echo_scene.hpp"
-#include "arg_list.hpp"
 #include "asset_path.hpp"
 #include "bench_table.hpp"
 #include "command.hpp"
 #include "engine/gpu_device.hpp"
+#include "flag_ranges.hpp"
 #include "sample_stats.hpp"
 
 namespace needle::cli {
@@ -108,11 +108,13 @@ long pixels_unlike(const engine::RgbaImage& a, const engine::RgbaImage& b) {
   return n;
 }
 
-int run_bench_ultrasound(ArgList& args) {
-  auto json = args.value("--json");
-  const double frames = parse_number(args.value("--frames").value_or("60"), "--frames");
-  args.finish();
-  if (frames < 2 || frames != double(long(frames))) throw UsageError("--frames: expected a whole number ≥ 2");
+struct UltrasoundFlags {
+  std::optional<std::string> json;
+  long long frames = 60;
+};
+
+int run(const UltrasoundFlags& f) {
+  const double frames = double(f.frames);
 
   engine::GpuDevice device;
   BenchTable table({"scene", "lines", "samples", "rest_nodes", "rest_node_spacing", "gpu_ms", "gpu_ms_p95",
@@ -139,7 +141,7 @@ int run_bench_ultrasound(ArgList& args) {
         view.render(c.probe, &c.needle);  // pipelines warmed, memory touched
         std::vector<double> gpu_ms;
         const double cpu_time_before = process_cpu_ms();
-        for (int f = 0; f < int(frames); ++f) {
+        for (int frame = 0; frame < int(frames); ++frame) {
           const auto start = Clock::now();
           view.render(c.probe, &c.needle);
           gpu_ms.push_back(ms_since(start));
@@ -148,7 +150,7 @@ int run_bench_ultrasound(ArgList& args) {
         // Each pass's device time, from images timed apart (the timestamps add a barrier a pass).
         view.set_device_timings(true);
         std::vector<std::vector<double>> pass_ms(5);
-        for (int f = 0; f < std::max(10, int(frames) / 4); ++f) {
+        for (int frame = 0; frame < std::max(10, int(frames) / 4); ++frame) {
           view.render(c.probe, &c.needle);
           const auto passes = view.pass_ms();
           for (size_t p = 0; p < std::min(passes.size(), pass_ms.size()); ++p) pass_ms[p].push_back(passes[p].second);
@@ -178,15 +180,20 @@ int run_bench_ultrasound(ArgList& args) {
           " (gpu: submitted and waited for, median and 95th percentile; cpu: the scan-line reference, one thread, "
           "double; gpu_cpu_time_ms: the process's CPU time per image, all threads; *_ms: each pass's device time, "
           "median)",
-      json);
+      f.json);
   return 0;
 }
 
-const CommandRegistrar reg{{"bench ultrasound",
-                            "needle-sim bench ultrasound [--json FILE] [--frames N]\n"
-                            "  --json FILE  also write the rows as JSON\n"
-                            "  --frames N   images timed per scene and size (default 60)",
-                            run_bench_ultrasound}};
+// The options of bench ultrasound, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
+  auto f = std::make_shared<UltrasoundFlags>();
+  add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON");
+  add_whole(app, "--frames", f->frames, kUltrasoundFrames, "N", "images timed per scene and size");
+  return [f] { return run(*f); };
+}
+
+const CommandRegistrar reg{
+    {"bench ultrasound", "the ultrasound image's compute passes against the scan-line CPU reference", declare}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -1,8 +1,6 @@
 // needle-sim devices: what is connected and what each device backend needs.
 #include <cstdio>
 
-#include "app/desk_input.hpp"
-#include "arg_list.hpp"
 #include "command.hpp"
 #include "engine/window.hpp"
 #include "haptics/devices/device_catalog.hpp"
@@ -13,15 +11,15 @@ namespace {
 // With a display, the gamepads GLFW reports now (as the start screen lists them).
 std::string gamepads_present(const std::string& without_display) {
   if (!engine::Window::display_available()) return without_display;
-  const std::vector<app::GamepadInfo> pads = app::present_gamepads();
+  const std::vector<engine::GamepadInfo> pads = engine::Window::gamepads();
   if (pads.empty()) return "none connected (GLFW reports no gamepad with a standard mapping)";
   std::string line = std::to_string(pads.size()) + " connected:";
-  for (const app::GamepadInfo& pad : pads) line += " gamepad:" + std::to_string(pad.id) + " (" + pad.name + ")";
+  for (const engine::GamepadInfo& pad : pads)
+    line += " " + haptics::DeviceSpec{haptics::DeviceSpec::Kind::kGamepad, pad.id}.text() + " (" + pad.name + ")";
   return line;
 }
 
-int run_devices(ArgList& args) {
-  args.finish();
+int run() {
   for (auto b : haptics::list_backends()) {
     if (b.spec == "gamepad[:N]") b.status = gamepads_present(b.status);
     std::printf("%-12s %s\n", b.spec.c_str(), b.status.c_str());
@@ -30,12 +28,15 @@ int run_devices(ArgList& args) {
   return 0;
 }
 
-const CommandRegistrar reg{{"devices",
-                            "needle-sim devices\n"
-                            "  Lists the device backends (falcon, mouse, keyboard, gamepad, replay, sim), what is\n"
-                            "  connected now (gamepads when there is a display) and what each needs (udev rule,\n"
-                            "  firmware file, window).",
-                            run_devices}};
+// The options of devices, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
+  app.footer(
+      "Lists the device backends (falcon, mouse, keyboard, gamepad, replay, sim), what is connected now\n"
+      "(gamepads when there is a display) and what each needs (udev rule, firmware file, window).");
+  return run;
+}
+
+const CommandRegistrar reg{{"devices", "the device backends, what is connected now and what each needs", declare}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -1,71 +1,83 @@
 // needle-sim report: one session's review exported headless (app/session_report.hpp), or with
 // --cohort the instructor's class view (app/cohort_report.hpp).
-#include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "arg_list.hpp"
-#include "command.hpp"
 #include "app/cohort_report.hpp"
 #include "app/default_db.hpp"
 #include "app/session_report.hpp"
+#include "command.hpp"
+#include "flag_ranges.hpp"
+#include "printed_messages.hpp"
 
 namespace needle::cli {
 namespace {
 
-namespace fs = std::filesystem;
+struct ReportFlags {
+  bool cohort = false;
+  std::optional<std::string> db, out;
+  std::optional<long long> session;
+  std::optional<double> at, from, to;
+  training::CohortFilter filter;
+};
 
-int run_report(ArgList& args) {
-  const bool cohort = args.flag("--cohort");
-  const std::string db = app::db_location(args.value("--db"));
-  const fs::path out = args.required("--out");
-  if (cohort) {
-    training::CohortFilter filter;
-    filter.task = args.value("--task").value_or("");
-    filter.trainee = args.value("--trainee").value_or("");
-    filter.station = args.value("--station").value_or("");
-    filter.since = args.value("--since").value_or("");
-    filter.until = args.value("--until").value_or("");
-    args.finish();
+int run(const ReportFlags& f) {
+  const std::string db = app::db_location(f.db);
+  if (f.cohort) {
+    if (f.session || f.at || f.from || f.to)
+      throw UsageError("--cohort reports the class: --session, --at, --from and --to are for one session");
     try {
-      training::check_cohort_filter(filter);
+      training::check_cohort_filter(f.filter);
     } catch (const std::invalid_argument& e) {
       throw UsageError(e.what());
     }
-    return app::write_cohort_report(db, filter, out);
+    return app::write_cohort_report(db, f.filter, *f.out, printed_messages("needle-sim report"));
   }
-  const int64_t id = parse_whole(args.required("--session"), "--session", 1, 9000000000000000);
-  std::optional<double> at;
-  if (auto text = args.value("--at")) at = parse_number(*text, "--at");
-  const std::optional<std::string> from = args.value("--from"), to = args.value("--to");
-  args.finish();
+  if (!f.session) throw UsageError("--session is required (or --cohort)");
+  const training::CohortFilter none;
+  if (!(f.filter == none)) throw UsageError("--task, --trainee, --station, --since and --until filter --cohort");
   ui::TimeSpan plots;  // unchosen: the whole recording
-  if (from || to) {
-    plots.lo = from ? parse_number(*from, "--from") : -std::numeric_limits<double>::infinity();
-    plots.hi = to ? parse_number(*to, "--to") : std::numeric_limits<double>::infinity();
+  if (f.from || f.to) {
+    plots.lo = f.from.value_or(-std::numeric_limits<double>::infinity());
+    plots.hi = f.to.value_or(std::numeric_limits<double>::infinity());
     if (!(plots.hi > plots.lo)) throw UsageError("--to must be later than --from");
   }
+  return app::write_session_report(db, *f.session, *f.out, f.at, plots, printed_messages("needle-sim report"));
+}
 
-  return app::write_session_report(db, id, out, at, plots);
+// The options of report, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
+  auto f = std::make_shared<ReportFlags>();
+  CLI::Option* session = add_whole(app, "--session", f->session, kSessionIds, "ID",
+                                   "the session to export (needle-sim review lists them)");
+  add_flag(app, "--cohort", f->cohort,
+           "the class view of every complete session: per trainee and task the score over attempts,\n"
+           "first-pass success, time to target; the steps most failed; percentiles of every metric")
+      ->excludes(session);
+  add_text(app, "--out", f->out, "DIR",
+           "where session_ID.json, session_ID.csv, the plots and the panels (PNG) go; with --cohort,\n"
+           "cohort.json, cohort_curves.csv, cohort_failed_steps.csv, cohort_percentiles.csv and the\n"
+           "learning curves, cohort_TASK_score.png and cohort_TASK_time_to_target.png")
+      ->required();
+  add_db(app, f->db);
+  add_number(app, "--at", f->at, kRecordingTimes_s, "SECONDS",
+             "the moment the replay picture shows, by default the end of the recording");
+  add_number(app, "--from", f->from, kRecordingTimes_s, "SECONDS",
+             "the start of the time range the plots show, by default the recording's");
+  add_number(app, "--to", f->to, kRecordingTimes_s, "SECONDS",
+             "the end of the time range the plots show, by default the recording's");
+  add_text(app, "--task", f->filter.task, "NAME", "--cohort: only this task's sessions");
+  add_text(app, "--trainee", f->filter.trainee, "NAME", "--cohort: only this trainee's sessions");
+  add_text(app, "--station", f->filter.station, "NAME", "--cohort: only the sessions of this station");
+  add_text(app, "--since", f->filter.since, "YYYY-MM-DD",
+           "--cohort: only the sessions started on this day (UTC) or later");
+  add_text(app, "--until", f->filter.until, "YYYY-MM-DD",
+           "--cohort: only the sessions started on this day (UTC) or before");
+  return [f] { return run(*f); };
 }
 
 const CommandRegistrar reg{
-    {"report",
-     "needle-sim report --session ID --out DIR [--db FILE|URI] [--at SECONDS] [--from SECONDS] [--to SECONDS]\n"
-     "       needle-sim report --cohort --out DIR [--db FILE|URI] [--task NAME] [--trainee NAME] [--station NAME]\n"
-     "                         [--since YYYY-MM-DD] [--until YYYY-MM-DD]\n"
-     "  --session ID   the session to export (needle-sim review lists them)\n"
-     "  --out DIR      where session_ID.json, session_ID.csv, the plots and the panels (PNG) go; with --cohort,\n"
-     "                 cohort.json, cohort_curves.csv, cohort_failed_steps.csv, cohort_percentiles.csv and the\n"
-     "                 learning curves, cohort_TASK_score.png and cohort_TASK_time_to_target.png\n"
-     "  --db FILE|URI  session database, an SQLite file or postgresql://... (default: $NEEDLE_DB, else\n"
-     "                 $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)\n"
-     "  --at SECONDS   the moment the replay picture shows (default: the end of the recording)\n"
-     "  --from, --to   the time range the plots show (default: the whole recording)\n"
-     "  --cohort       the class view of every complete session: per trainee and task the score over attempts,\n"
-     "                 first-pass success, time to target; the steps most failed; percentiles of every metric\n"
-     "  --task, --trainee, --station NAME, --since, --until DATE (UTC, inclusive): only those sessions",
-     run_report}};
+    {"report", "one session's review exported headless, or with --cohort the class view", declare}};
 
 }  // namespace
 }  // namespace needle::cli

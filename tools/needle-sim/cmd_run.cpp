@@ -7,24 +7,30 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "arg_list.hpp"
-#include "asset_path.hpp"
-#include "command.hpp"
 #include "app/default_db.hpp"
 #include "app/session_window.hpp"
+#include "asset_path.hpp"
+#include "command.hpp"
 #include "engine/window.hpp"
-#include "haptics/realtime/haptic_loop.hpp"
+#include "flag_ranges.hpp"
+#include "haptics/devices/device_spec.hpp"
+#include "printed_messages.hpp"
 
 namespace needle::cli {
 namespace {
 
 namespace fs = std::filesystem;
+using Kind = haptics::DeviceSpec::Kind;
 
 struct RunOptions {
-  std::optional<fs::path> scene;  // a scene instead of a task
-  app::TaskSessionOptions task;
-  fs::path out_dir;
+  std::optional<std::string> task, scene, operator_spec, device_text, db, station, local, trainee;
+  std::optional<double> rate_hz;
+  std::string out_dir = "out/run";
+  std::string firmware;
   app::WindowOptions window;
+  std::optional<long long> frames;
+  std::string section;  // "": off
+  bool headless = false, no_hud = false;
 };
 
 std::string default_trainee() {
@@ -32,104 +38,103 @@ std::string default_trainee() {
   return user && *user ? user : "trainee";
 }
 
-int run_run(ArgList& args) {
-  RunOptions options;
-  if (auto scene = args.value("--scene")) options.scene = *scene;
-  auto task = args.value("--task");
-  if (options.scene && task) throw UsageError("give --task FILE or --scene FILE, not both");
-  options.task.rig.device = args.value("--device").value_or("sim");
-  const std::string& device = options.task.rig.device;
-  options.task.rig.firmware = args.value("--firmware").value_or("");
-  if (auto rate = args.value("--rate")) options.task.rig.rate_hz = parse_number(*rate, "--rate");
-  options.task.trainee = args.value("--trainee").value_or(default_trainee());
-  options.task.db = app::db_location(args.value("--db"));
-  options.task.station = app::station_name(args.value("--station"));
-  if (auto local = args.value("--local")) options.task.local_db = *local;
-  options.out_dir = args.value("--out").value_or("out/run");
-  options.task.out_dir = options.out_dir;
-  const std::optional<std::string> operator_spec = args.value("--operator");
-  options.task.rig.operator_spec = operator_spec.value_or("good");
-  options.window.size = parse_size(args.value("--size").value_or("1280x720"), "--size");
-  if (auto msaa = args.value("--msaa")) options.window.msaa = parse_msaa(*msaa, "--msaa");
-  if (auto scale = args.value("--render-scale")) options.window.render_scale = parse_render_scale(*scale, "--render-scale");
-  if (auto frames = args.value("--frames")) options.window.frames = long(parse_whole(*frames, "--frames", 1, 1000000000));
-  options.window.screenshot = args.value("--screenshot");
-  if (auto section = args.value("--section")) {
-    if (*section == "cut") options.window.section = engine::Section::Mode::Cut;
-    else if (*section == "translucent") options.window.section = engine::Section::Mode::Translucent;
-    else throw UsageError("--section: expected cut or translucent, got '" + *section + "'");
+// The device spec, parsed: a usage error naming --device when it names none.
+haptics::DeviceSpec device_of(const std::string& text) {
+  try {
+    return haptics::DeviceSpec::parse(text);
+  } catch (const haptics::DeviceSpecError& e) {
+    throw UsageError(std::string("--device: ") + e.what());
   }
-  const bool headless = args.flag("--headless");
-  options.window.hud = !args.flag("--no-hud");
-  args.finish();
-  if (options.window.screenshot && options.window.frames == 0) throw UsageError("--screenshot needs --frames N (the frame to capture)");
-  if (options.scene && (device != "sim" || operator_spec || options.task.rig.rate_hz || !options.task.rig.firmware.empty()))
-    throw UsageError("--scene plays a scripted needle: --device, --operator, --rate and --firmware are for tasks");
-  const bool replay = device.rfind("replay:", 0) == 0;
-  const bool scripted = device == "sim" || replay;
-  if (!scripted && device != "mouse" && device != "falcon" && device.rfind("falcon:", 0) != 0)
-    throw UsageError("--device " + device +
-                     ": unknown device (expected sim, mouse, falcon, falcon:N or replay:FILE; needle-sim devices lists "
-                     "what is connected)");
-  if (operator_spec && device != "sim") throw UsageError("--operator: only the simulated device (--device sim) has a scripted operator");
-  if (replay && (task || options.task.rig.rate_hz))
-    throw UsageError("--device " + device + ": a replay runs the recording's own task at its rate; drop --task and --rate");
-  if (options.task.rig.rate_hz) {
-    try {
-      haptics::check_loop_rate(*options.task.rig.rate_hz);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--rate: ") + e.what());
-    }
-  }
-  options.task.task = task.value_or((asset_dir() / "tasks" / "penetrable_sphere.json").string());  // a replay's is its own
+}
 
-  const bool window = !headless && engine::Window::display_available();
-  if (!headless && !window) std::printf("no display: running headless\n");
-  if (options.scene) {
-    engine::Scene scene = engine::load_scene(*options.scene);
-    return window ? app::run_scene_window(scene, options.window) : app::run_scene_headless(scene, options.window, options.out_dir);
+int run(const RunOptions& o) {
+  const haptics::DeviceSpec device = device_of(o.device_text.value_or("sim"));
+  const std::string device_text = device.text();
+  app::WindowOptions window = o.window;
+  if (o.frames) window.frames = long(*o.frames);
+  window.hud = !o.no_hud;
+  if (!o.section.empty())
+    window.section = o.section == "cut" ? engine::Section::Mode::Cut : engine::Section::Mode::Translucent;
+  if (window.screenshot && window.frames == 0) throw UsageError("--screenshot needs --frames N (the frame to capture)");
+  if (o.scene && (o.device_text || o.operator_spec || o.rate_hz || !o.firmware.empty()))
+    throw UsageError("--scene plays a scripted needle: --device, --operator, --rate and --firmware are for tasks");
+  if (device.kind == Kind::kSim && !device.file.empty())
+    throw UsageError("--device " + device_text +
+                     ": a task's sim runs the task's own scenario (--device sim, --operator SCRIPT)");
+  if (o.operator_spec && device.kind != Kind::kSim)
+    throw UsageError("--operator: only the simulated device (--device sim) has a scripted operator");
+  if (device.kind == Kind::kReplay && (o.task || o.rate_hz))
+    throw UsageError("--device " + device_text +
+                     ": a replay runs the recording's own task at its rate; drop --task and --rate");
+
+  app::TaskSessionOptions task;
+  task.task = o.task.value_or((asset_dir() / "tasks" / "penetrable_sphere.json").string());  // a replay's is its own
+  task.rig.device = device;
+  task.rig.operator_spec = o.operator_spec.value_or("good");
+  task.rig.firmware = o.firmware;
+  task.rig.rate_hz = o.rate_hz;
+  task.trainee = o.trainee.value_or(default_trainee());
+  task.db = app::db_location(o.db);
+  task.station = app::station_name(o.station);
+  if (o.local) task.local_db = *o.local;
+  task.out_dir = o.out_dir;
+  task.messages = window.messages = printed_messages("needle-sim run");
+
+  const bool in_window = !o.headless && engine::Window::display_available();
+  if (!o.headless && !in_window) std::printf("no display: running headless\n");
+  if (o.scene) {
+    const engine::Scene scene = engine::load_scene(*o.scene);
+    return in_window ? app::run_scene_window(scene, window) : app::run_scene_headless(scene, window, o.out_dir);
   }
-  if (!window && !scripted) {
-    throw UsageError("--device " + device + ": a trainee's device needs the window" +
-                     (headless ? " (drop --headless)" : " and there is no display"));
-  }
-  return window ? app::run_task_window(options.task, options.window)
-                : app::run_task_headless(options.task, options.window.size, options.window.msaa.value_or(4), options.window.section);
+  if (!in_window && device.live())
+    throw UsageError("--device " + device_text + ": a trainee's device needs the window" +
+                     (o.headless ? " (drop --headless)" : " and there is no display"));
+  return in_window ? app::run_task_window(task, window)
+                   : app::run_task_headless(task, window.size, window.msaa.value_or(4), window.section);
+}
+
+// The options of run, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
+  auto o = std::make_shared<RunOptions>();
+  CLI::Option* task =
+      add_text(app, "--task", o->task, "FILE", "guided task (default: assets/tasks/penetrable_sphere.json)");
+  add_text(app, "--scene", o->scene, "FILE",
+           "show a scene instead, a scripted needle inserting into its first deformable tissue")
+      ->excludes(task);
+  add_text(app, "--device", o->device_text, "sim|mouse|keyboard|gamepad[:N]|falcon[:N]|replay:FILE",
+           "sim: the simulated master and a scripted operator (default); mouse, keyboard,\n"
+           "gamepad[:N] (N from 0 to 15) or falcon[:N]: the trainee's own device, in the window; replay:FILE:\n"
+           "a recorded session played back with its own task (needle-sim devices lists them)");
+  add_text(app, "--trainee", o->trainee, "NAME", "whose session it is (default: $USER)");
+  add_db(app, o->db);
+  add_text(app, "--station", o->station, "NAME", "the station the session ran on (default: the host name)");
+  add_text(app, "--local", o->local, "FILE",
+           "with a server: this station's own file, where a session is kept when the server is\n"
+           "lost (default: $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db); needle-sim sync");
+  add_text(app, "--out", o->out_dir, "DIR", "where score.json, the scenario that ran and the pictures go");
+  add_flag(app, "--headless", o->headless, "run offscreen even when a display is available");
+  add_text(app, "--operator", o->operator_spec, "good|sloppy|FILE",
+           "sim: the scripted operator, good, sloppy (the task's own) or a script file (default good)");
+  add_number(app, "--rate", o->rate_hz, kLoopRates_hz, "HZ",
+             "haptic loop rate in Hz, by default the scenario's for sim, 1000 for a trainee's device");
+  add_text(app, "--firmware", o->firmware, "FILE", "falcon: Novint's firmware image, loaded when the device opens");
+  add_size(app, "--size", o->window.size, "window or image size");
+  add_msaa(app, "--msaa", o->window.msaa, "MSAA samples, by default 4 (1 in a window on a CPU device)");
+  add_render_scale(app, "--render-scale", o->window.render_scale,
+                   "window: the 3D view drawn at S of the window's width and height and upscaled\n"
+                   "over it, the panels at full resolution; auto: on a CPU device, lowered step by step\n"
+                   "(0.7, 0.5) while the frame misses 60 fps, raised when it fits");
+  add_whole(app, "--frames", o->frames, kWindowFrames, "N", "window: close after N frames");
+  add_text(app, "--screenshot", o->window.screenshot, "FILE", "window: save frame N as presented (needs --frames)");
+  add_flag(app, "--no-hud", o->no_hud, "window: no panels");
+  add_choice(app, "--section", o->section, {"cut", "translucent"},
+             "the tissue cut along the needle's plane (cut) or see-through (translucent), in the\n"
+             "pictures and at the window's start (there X cycles off, cut, translucent)");
+  return [o] { return run(*o); };
 }
 
 const CommandRegistrar reg{
-    {"run",
-     "needle-sim run [--task FILE | --scene FILE] [--device sim|mouse|keyboard|gamepad[:N]|falcon[:N]|replay:FILE]\n"
-     "               [--trainee NAME] [--db FILE|URI] [--station NAME] [--local FILE] [--out DIR] [--headless] [--operator good|sloppy|FILE] [--rate HZ] [--firmware FILE]\n"
-     "               [--size WxH] [--msaa N] [--render-scale auto|S] [--frames N] [--screenshot FILE] [--no-hud]\n"
-     "               [--section cut|translucent]\n"
-     "  --task FILE        guided task (default: assets/tasks/penetrable_sphere.json)\n"
-     "  --scene FILE       show a scene instead, a scripted needle inserting into its first deformable tissue\n"
-     "  --device SPEC      sim: the simulated master and a scripted operator (default); mouse, keyboard,\n"
-     "                     gamepad[:N] or falcon[:N]: the trainee's own device, in the window; replay:FILE: a\n"
-     "                     recorded session played back with its own task (needle-sim devices lists them)\n"
-     "  --trainee NAME     whose session it is (default: $USER)\n"
-     "  --db FILE|URI      session database: an SQLite file or postgresql://USER@HOST/DBNAME[?sslmode=...]\n"
-     "                     (default: $NEEDLE_DB, else $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)\n"
-     "  --station NAME     the station the session ran on (default: the host name)\n"
-     "  --local FILE       with a server: this station's own file, where a session is kept when the server is\n"
-     "                     lost (default: $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db); needle-sim sync\n"
-     "  --out DIR          where score.json, the scenario that ran and the pictures go (default out/run)\n"
-     "  --headless         run offscreen even when a display is available\n"
-     "  --operator SCRIPT  sim: the scripted operator, good, sloppy (the task's own) or a script file (default good)\n"
-     "  --rate HZ          haptic loop rate, 250 to 10000 (default: the scenario's for sim, 1000 for a trainee's device)\n"
-     "  --firmware FILE    falcon: Novint's firmware image, loaded when the device opens\n"
-     "  --size WxH         window or image size (default 1280x720)\n"
-     "  --msaa N           MSAA samples (default 4; 1 in a window on a CPU device)\n"
-     "  --render-scale X   window: the 3D view drawn at S (0.25 to 1) of the window's width and height and\n"
-     "                     upscaled over it, the panels at full resolution; auto (default): on a CPU device,\n"
-     "                     lowered step by step (0.7, 0.5) while the frame misses 60 fps, raised when it fits\n"
-     "  --frames N         window: close after N frames\n"
-     "  --screenshot FILE  window: save frame N as presented (needs --frames)\n"
-     "  --no-hud           window: no panels\n"
-     "  --section MODE     the tissue cut along the needle's plane (cut) or see-through (translucent), in the\n"
-     "                     pictures and at the window's start (there X cycles off, cut, translucent)",
-     run_run}};
+    {"run", "the main job: a guided needle task through the haptic loop, recorded, scored, stored", declare}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -2,19 +2,21 @@
 // (training/sessions/session_sync.hpp). Sending twice stores each session once.
 #include <cstdio>
 
-#include "arg_list.hpp"
-#include "command.hpp"
 #include "app/default_db.hpp"
+#include "command.hpp"
 #include "training/sessions/session_sync.hpp"
 #include "training/sessions/store_location.hpp"
 
 namespace needle::cli {
 namespace {
 
-int run_sync(ArgList& args) {
-  const std::string server = app::db_location(args.value("--db"));
-  const std::string local_file = args.value("--local").value_or(app::default_db().string());
-  args.finish();
+struct SyncFlags {
+  std::optional<std::string> db, local;
+};
+
+int run(const SyncFlags& f) {
+  const std::string server = app::db_location(f.db);
+  const std::string local_file = f.local.value_or(app::default_db().string());
   if (!training::is_postgres_uri(server))
     throw UsageError("--db " + training::shown_location(server) + ": sync sends to a server, a postgresql:// URI");
   if (!std::filesystem::is_regular_file(local_file))
@@ -29,15 +31,21 @@ int run_sync(ArgList& args) {
   return report.failed.empty() ? 0 : 1;
 }
 
+// The options of sync, declared; what runs it once they are parsed.
+Runner declare(CLI::App& app) {
+  auto f = std::make_shared<SyncFlags>();
+  add_text(app, "--db", f->db, "URI", "the server: postgresql://USER@HOST/DBNAME[?sslmode=...] (default: $NEEDLE_DB)");
+  add_text(app, "--local", f->local, "FILE",
+           "this station's own file, where runs kept the sessions the server missed\n"
+           "(default: $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)");
+  app.footer(
+      "Sends each kept session once (by the id its station made), with its recording; exit 1 when one\n"
+      "could not be sent (it stays kept for the next sync).");
+  return [f] { return run(*f); };
+}
+
 const CommandRegistrar reg{
-    {"sync",
-     "needle-sim sync [--db URI] [--local FILE]\n"
-     "  --db URI       the server: postgresql://USER@HOST/DBNAME[?sslmode=...] (default: $NEEDLE_DB)\n"
-     "  --local FILE   this station's own file, where runs kept the sessions the server missed\n"
-     "                 (default: $XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)\n"
-     "  Sends each kept session once (by the id its station made), with its recording; exit 1 when one\n"
-     "  could not be sent (it stays kept for the next sync).",
-     run_sync}};
+    {"sync", "sends the sessions this station kept while the server could not be reached", declare}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -2,28 +2,47 @@
 // the store (training::SessionStore::rename_trainee), and the log.
 #include <cstdio>
 
-#include "arg_list.hpp"
-#include "command.hpp"
 #include "app/default_db.hpp"
+#include "command.hpp"
 
 namespace needle::cli {
 namespace {
 
-int run_rename(ArgList& args) {
-  const std::string db = app::db_location(args.value("--db"));
-  const std::string from = args.required("--from"), to = args.required("--to");
-  args.finish();
-  training::SessionStore store(db);
-  const training::TraineeRename r = store.rename_trainee(from, to);
+constexpr const char* kDbHelp =
+    "session database, an SQLite file or postgresql://... (default: $NEEDLE_DB, else\n"
+    "$XDG_DATA_HOME or ~/.local/share, needle-sim/sessions.db)";
+
+struct RenameFlags {
+  std::optional<std::string> db;
+  std::string from, to;
+};
+
+int rename(const RenameFlags& f) {
+  training::SessionStore store(app::db_location(f.db));
+  const training::TraineeRename r = store.rename_trainee(f.from, f.to);
   std::printf("renamed trainee \"%s\" to \"%s\" in %s (logged at %s%s%s)\n", r.old_name.c_str(), r.new_name.c_str(),
               store.name().c_str(), r.renamed_at.c_str(), r.renamed_by.empty() ? "" : " by ", r.renamed_by.c_str());
   return 0;
 }
 
-int run_renames(ArgList& args) {
-  const std::string db = app::db_location(args.value("--db"));
-  args.finish();
-  const std::unique_ptr<training::SessionStore> store = app::open_existing_db(db);
+Runner declare_rename(CLI::App& app) {
+  auto f = std::make_shared<RenameFlags>();
+  add_text(app, "--from", f->from, "NAME", "the trainee's name as stored")->required();
+  add_text(app, "--to", f->to, "NAME", "the corrected name (1 to 64 bytes, no other trainee's)")->required();
+  add_text(app, "--db", f->db, "FILE|URI", kDbHelp);
+  app.footer(
+      "The trainee's sessions keep their trainee under the new name. The store logs every rename (the old\n"
+      "and new names, when, and on PostgreSQL the login role: an instructor's, as stations may not\n"
+      "rename); needle-sim trainee renames lists them.");
+  return [f] { return rename(*f); };
+}
+
+struct RenamesFlags {
+  std::optional<std::string> db;
+};
+
+int renames(const RenamesFlags& f) {
+  const std::unique_ptr<training::SessionStore> store = app::open_existing_db(app::db_location(f.db));
   const std::vector<training::TraineeRename> log = store->trainee_renames();
   for (const training::TraineeRename& r : log)
     std::printf("%s  \"%s\" -> \"%s\"%s%s\n", r.renamed_at.c_str(), r.old_name.c_str(), r.new_name.c_str(),
@@ -32,25 +51,16 @@ int run_renames(ArgList& args) {
   return 0;
 }
 
-const CommandRegistrar rename_command{
-    {"trainee rename",
-     "needle-sim trainee rename --from NAME --to NAME [--db FILE|URI]\n"
-     "  --from NAME    the trainee's name as stored\n"
-     "  --to NAME      the corrected name (1 to 64 bytes, no other trainee's)\n"
-     "  --db FILE|URI  session database (default: $NEEDLE_DB, else $XDG_DATA_HOME or ~/.local/share,\n"
-     "                 needle-sim/sessions.db)\n"
-     "  The trainee's sessions keep their trainee under the new name. The store logs every rename (the old\n"
-     "  and new names, when, and on PostgreSQL the login role: an instructor's, as stations may not\n"
-     "  rename); needle-sim trainee renames lists them.",
-     run_rename}};
+Runner declare_renames(CLI::App& app) {
+  auto f = std::make_shared<RenamesFlags>();
+  add_text(app, "--db", f->db, "FILE|URI", kDbHelp);
+  app.footer("The store's log of trainees renamed, oldest first: when, the old and new names, by whom.");
+  return [f] { return renames(*f); };
+}
 
-const CommandRegistrar renames_command{
-    {"trainee renames",
-     "needle-sim trainee renames [--db FILE|URI]\n"
-     "  --db FILE|URI  session database (default: $NEEDLE_DB, else $XDG_DATA_HOME or ~/.local/share,\n"
-     "                 needle-sim/sessions.db)\n"
-     "  The store's log of trainees renamed, oldest first: when, the old and new names, by whom.",
-     run_renames}};
+const CommandRegistrar rename_command{
+    {"trainee rename", "an instructor's correction of a trainee's name, logged by the store", declare_rename}};
+const CommandRegistrar renames_command{{"trainee renames", "the store's log of trainees renamed", declare_renames}};
 
 }  // namespace
 }  // namespace needle::cli

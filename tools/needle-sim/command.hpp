@@ -1,32 +1,33 @@
-// Subcommand registry of the needle-sim executable. Each cmd_*.cpp registers itself with a
-// static CommandRegistrar, so adding a subcommand touches no shared file.
+// The commands of needle-sim. Each cmd_*.cpp registers one with a static CommandRegistrar: its
+// name, a one-line summary and a function that declares its options on its CLI11 app (CLI11
+// makes the usage, the checks and --help from them) and returns what runs it once they are
+// parsed. Adding a command touches no shared file.
 #pragma once
 
-#include <stdexcept>
+#include <CLI/App.hpp>
+#include <functional>
 #include <string>
-#include <string_view>
 #include <vector>
+
+#include "options.hpp"
 
 namespace needle::cli {
 
-class ArgList;
-
-// Wrong or missing command-line arguments: main prints the message and the command's usage,
-// and exits with code 2.
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+// Runs a command whose options are parsed: its exit code. Throws UsageError (exit 2) or any
+// other exception (exit 1, its one line printed).
+using Runner = std::function<int()>;
 
 struct Command {
-  std::string name;   // one or more words, e.g. "render" or "bench render"
-  std::string usage;  // full --help text: synopsis line, then one line per option
-  int (*run)(ArgList& args);
+  std::string name;     // one or more words: "render", "bench render"
+  std::string summary;  // one line, for needle-sim --help and the group's list
+  std::function<Runner(CLI::App& app)> declare;
 };
 
 struct CommandRegistrar {
   explicit CommandRegistrar(Command command);
 };
 
+// Every registered command, sorted by name.
 const std::vector<Command>& registered_commands();
 
 }  // namespace needle::cli

@@ -1,16 +1,21 @@
-// needle-sim: one executable, subcommands registered by the cmd_*.cpp files beside this one.
-#include <algorithm>
+// needle-sim: one executable, its commands registered by the cmd_*.cpp files beside this one and
+// parsed by CLI11. With no command, the start screen. Exit codes: 0 ok, 2 usage, 1 any other
+// failure, each failure one line.
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <map>
+#include <memory>
 #include <sstream>
 
 #include "app/default_db.hpp"
 #include "app/settings.hpp"
 #include "app/start_screen.hpp"
-#include "arg_list.hpp"
 #include "asset_path.hpp"
 #include "command.hpp"
 #include "engine/window.hpp"
+#include "help_format.hpp"
+#include "printed_messages.hpp"
 
 namespace needle::cli {
 namespace {
@@ -20,61 +25,42 @@ std::vector<Command>& registry() {
   return commands;
 }
 
-std::vector<std::string> split_words(const std::string& s) {
-  std::istringstream in(s);
-  std::vector<std::string> words;
-  for (std::string w; in >> w;) words.push_back(w);
-  return words;
+// The deepest command parsed so far: the root when none.
+CLI::App* chosen(CLI::App& root) {
+  CLI::App* app = &root;
+  while (!app->get_subcommands().empty()) app = app->get_subcommands().front();
+  return app;
 }
 
-void print_overview() {
-  std::printf("needle-sim: needle-procedure training simulator with force feedback\n\n"
-              "usage: needle-sim [--db FILE|URI] [--station NAME]\n"
-              "                                      the start screen (a window): choose a task and a device, and go;\n"
-              "                                      its sessions go to --db (default: $NEEDLE_DB, else\n"
-              "                                      ~/.local/share/needle-sim/sessions.db), as run's do\n"
-              "       needle-sim COMMAND [options]   (needle-sim COMMAND --help for its options)\n\ncommands:\n");
-  for (const auto& c : registered_commands()) {
-    std::string first_line = c.usage.substr(0, c.usage.find('\n'));
-    std::printf("  %s\n", first_line.c_str());
+bool is_group(const CLI::App* app) { return app->get_parent() && !app->get_subcommands({}).empty(); }
+
+struct StartScreenOptions {
+  std::optional<std::string> db, station;
+};
+
+int start_screen(const StartScreenOptions& options, const CLI::App& root) {
+  if (!engine::Window::display_available()) {
+    std::fprintf(stderr,
+                 "needle-sim: no display, so no start screen; needle-sim run runs the guided task headless "
+                 "(tools/run-main.sh builds and runs it)\n\n%s",
+                 root.help().c_str());
+    return 2;
   }
+  return app::run_start_screen({asset_dir() / "tasks", app::db_location(options.db), app::station_name(options.station),
+                                app::default_settings_file(), printed_messages("needle-sim")});
 }
 
-// The registered command whose name words match the longest prefix of argv.
-const Command* find_command(const std::vector<std::string>& argv, size_t& words_used) {
-  const Command* best = nullptr;
-  words_used = 0;
-  for (const auto& c : registered_commands()) {
-    auto words = split_words(c.name);
-    if (words.size() <= argv.size() && std::equal(words.begin(), words.end(), argv.begin()) &&
-        words.size() > words_used) {
-      best = &c;
-      words_used = words.size();
-    }
+int run_command(const CLI::App* command, const Runner& runner) {
+  const std::string name = full_name(command);
+  try {
+    return runner();
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "%s: %s (%s --help shows the options)\n", name.c_str(), e.what(), name.c_str());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: error: %s\n", name.c_str(), e.what());
+    return 1;
   }
-  return best;
-}
-
-// The commands whose first word is `word` ("bench": bench deform, bench tick, ...) with more words.
-std::vector<const Command*> group_of(const std::string& word) {
-  std::vector<const Command*> group;
-  for (const auto& c : registered_commands()) {
-    const auto words = split_words(c.name);
-    if (words.size() > 1 && words[0] == word) group.push_back(&c);
-  }
-  return group;
-}
-
-// `needle-sim bench`, `bench --help`, `bench frobnicate`: what the group has. Exit 0 for help.
-int print_group(const std::vector<std::string>& args, const std::vector<const Command*>& group) {
-  const bool help = args.size() == 2 && (args[1] == "--help" || args[1] == "-h");
-  if (args.size() > 1 && !help && args[1].rfind("-", 0) != 0)
-    std::fprintf(stderr, "needle-sim: unknown command '%s %s'\n", args[0].c_str(), args[1].c_str());
-  std::FILE* to = help ? stdout : stderr;
-  std::fprintf(to, "needle-sim %s: one of\n", args[0].c_str());
-  for (const Command* c : group) std::fprintf(to, "  %s\n", c->usage.substr(0, c->usage.find('\n')).c_str());
-  std::fprintf(to, "(needle-sim %s NAME --help shows its options)\n", args[0].c_str());
-  return help ? 0 : 2;
 }
 
 }  // namespace
@@ -91,56 +77,78 @@ const std::vector<Command>& registered_commands() {
 
 int main(int argc, char** argv) {
   using namespace needle::cli;
+  CLI::App root("needle-sim: needle-procedure training simulator with force feedback", "needle-sim");
+  root.formatter(help_formatter());
+  StartScreenOptions start;
+  add_text(root, "--db", start.db, "FILE|URI", "the start screen's session store: an SQLite file or postgresql://...");
+  add_text(root, "--station", start.station, "NAME", "the station its sessions ran on (default: the host name)");
+
+  // The command tree: "bench render" under a group app "bench".
+  std::map<const CLI::App*, Runner> runners;
+  for (const Command& command : registered_commands()) {
+    CLI::App* parent = &root;
+    std::istringstream words(command.name);
+    std::vector<std::string> path;
+    for (std::string w; words >> w;) path.push_back(w);
+    for (size_t i = 0; i + 1 < path.size(); ++i) {
+      CLI::App* group = nullptr;
+      for (CLI::App* sub : parent->get_subcommands({}))
+        if (sub->get_name() == path[i]) group = sub;
+      if (!group) group = parent->add_subcommand(path[i], "benchmarks: each prints a table and takes --json FILE");
+      parent = group;
+    }
+    CLI::App* app = parent->add_subcommand(path.back(), command.summary);
+    runners[app] = command.declare(*app);
+  }
+
+  root.footer(
+      "With no command, the start screen (a window): choose a task and a device, and go; its sessions go to\n"
+      "--db (default: $NEEDLE_DB, else ~/.local/share/needle-sim/sessions.db), as run's do.");
+
   std::vector<std::string> args(argv + 1, argv + argc);
-  // The start screen: no command, only where its sessions go.
-  const bool start_screen = args.empty() || args[0].rfind("--db", 0) == 0 || args[0].rfind("--station", 0) == 0;
-  if (start_screen && needle::engine::Window::display_available()) {
-    try {
-      ArgList options(args);
-      const std::string db = needle::app::db_location(options.value("--db"));
-      const std::string station = needle::app::station_name(options.value("--station"));
-      options.finish();
-      return needle::app::run_start_screen({asset_dir() / "tasks", db, station, needle::app::default_settings_file()});
-    } catch (const UsageError& e) {
-      std::fprintf(stderr, "needle-sim: %s (needle-sim --help shows the options)\n", e.what());
+  if (args.size() == 1 && args[0] == "help") {
+    std::printf("%s", root.help().c_str());
+    return 0;
+  }
+  try {
+    root.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    const CLI::App* app = chosen(root);
+    std::printf("%s", app->help().c_str());
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    const CLI::App* app = chosen(root);
+    const std::string name = full_name(app);
+    // A word where a command was expected: `needle-sim frobnicate`, `needle-sim bench frobnicate`.
+    const std::vector<std::string> extra = app->remaining();
+    if (dynamic_cast<const CLI::ExtrasError*>(&e) && !extra.empty() && extra.front().rfind("-", 0) != 0 &&
+        (app == &root || is_group(app))) {
+      const std::string words = (app == &root ? "" : name.substr(root.get_name().size() + 1) + " ") + extra.front();
+      std::fprintf(stderr, "needle-sim: unknown command '%s'%s", words.c_str(),
+                   app == &root ? " (needle-sim --help lists them)\n" : ("\n" + app->help()).c_str());
       return 2;
+    }
+    std::fprintf(stderr, "%s: %s (%s --help shows the options)\n", name.c_str(), e.what(), name.c_str());
+    return 2;
+  }
+  const CLI::App* app = chosen(root);
+  if (app != &root && (start.db || start.station)) {
+    std::fprintf(stderr,
+                 "needle-sim: --db and --station before a command are the start screen's; give them after '%s'\n",
+                 full_name(app).substr(root.get_name().size() + 1).c_str());
+    return 2;
+  }
+  if (app == &root) {
+    try {
+      return start_screen(start, root);
     } catch (const std::exception& e) {
       std::fprintf(stderr, "needle-sim: error: %s\n", e.what());
       return 1;
     }
   }
-  if (start_screen) {
-    std::fprintf(stderr,
-                 "needle-sim: no display, so no start screen; needle-sim run runs the guided task headless "
-                 "(tools/run-main.sh builds and runs it)\n\n");
-    print_overview();
+  if (is_group(app)) {
+    std::fprintf(stderr, "%s", app->help().c_str());
     return 2;
   }
-  if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-    print_overview();
-    return 0;
-  }
-  size_t used = 0;
-  const Command* command = find_command(args, used);
-  if (!command) {
-    const std::vector<const Command*> group = group_of(args[0]);
-    if (!group.empty()) return print_group(args, group);
-    std::fprintf(stderr, "needle-sim: unknown command '%s' (needle-sim --help lists them)\n", args[0].c_str());
-    return 2;
-  }
-  ArgList rest(std::vector<std::string>(args.begin() + static_cast<long>(used), args.end()));
-  if (rest.wants_help()) {
-    std::printf("%s\n", command->usage.c_str());
-    return 0;
-  }
-  try {
-    return command->run(rest);
-  } catch (const UsageError& e) {
-    std::fprintf(stderr, "needle-sim %s: %s (needle-sim %s --help shows the options)\n", command->name.c_str(),
-                 e.what(), command->name.c_str());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "needle-sim %s: error: %s\n", command->name.c_str(), e.what());
-    return 1;
-  }
+  return run_command(app, runners.at(app));
 }

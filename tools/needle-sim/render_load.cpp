@@ -15,6 +15,7 @@
 #include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
 #include "engine/offscreen.hpp"
+#include "printed_messages.hpp"
 #include "render_load_hook.hpp"
 
 namespace needle::cli {
@@ -32,6 +33,7 @@ long draw_trainee_frames_until(const std::atomic<bool>& stop) {
     task.trainee = "bench";
     task.db = scratch / "sessions.db";
     task.out_dir = scratch;
+    task.messages = printed_messages("needle-sim bench loop");
     app::TaskSession session(task);
     engine::DeviceOptions options;
     options.announce_device = false;

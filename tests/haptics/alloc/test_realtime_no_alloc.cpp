@@ -75,7 +75,7 @@ TEST(RealtimeNoAlloc, SimDeviceWithTheControllerAllocatesNothing) {
 
 TEST(RealtimeNoAlloc, TaskSpaceCouplingAllocatesNothing) {
   const Scenario scenario = load_scenario(test::source_dir().string() + "/assets/scenarios/holonomic_sphere.json");
-  DeskDevice mouse("mouse");
+  DeskDevice mouse(DeviceSpec{DeviceSpec::Kind::kMouse});
   TaskCoupling coupling;
   coupling.wrist = true;
   TaskSpaceStep step(scenario, coupling);
