@@ -67,6 +67,11 @@ LineStyle trainee_style(size_t k) {
           style == 0 ? Mark::kCircle : style == 1 ? Mark::kSquare : Mark::kTriangle};
 }
 
+LineStyle session_line_style(const ImU32 (&colours)[2], size_t k) {
+  const size_t dash = (k / 2) % 3;
+  return {colours[k % 2], dash == 0 ? Dash::kSolid : dash == 1 ? Dash::kDashed : Dash::kDotted, Mark::kNone};
+}
+
 void draw_styled_line(ImDrawList* draw, const std::vector<ImVec2>& points, const LineStyle& style, float width) {
   if (style.dash == Dash::kSolid) {
     if (points.size() > 1) draw->AddPolyline(points.data(), int(points.size()), style.colour, 0, width);

@@ -54,6 +54,9 @@ struct LineStyle {
 // triangles), so that no two of up to 24 trainees look alike; from the 25th they repeat.
 inline constexpr size_t kTraineeStyles = 24;
 LineStyle trainee_style(size_t k);
+// Line k of one session's plot in the session's two colours (kPlotLinesA or kPlotLinesB): the first
+// two solid, the next two dashed, then dotted, so no two lines of a plot look alike.
+LineStyle session_line_style(const ImU32 (&colours)[2], size_t k);
 
 // The polyline through `points` in `style`'s colour and dash, and its mark at each point.
 void draw_styled_line(ImDrawList* draw, const std::vector<ImVec2>& points, const LineStyle& style, float width);

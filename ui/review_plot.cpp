@@ -65,9 +65,10 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
   }
   std::vector<std::pair<const training::Series*, LineStyle>> lines;
   for (size_t i = 0; i < plot.lines.size(); ++i)
-    lines.push_back({&plot.lines[i], o.marked_points ? trainee_style(i) : LineStyle{kPlotLinesA[i % 2]}});
+    lines.push_back({&plot.lines[i], o.marked_points ? trainee_style(i) : session_line_style(kPlotLinesA, i)});
   if (o.other) {
-    for (size_t i = 0; i < o.other->lines.size(); ++i) lines.push_back({&o.other->lines[i], LineStyle{kPlotLinesB[i % 2]}});
+    for (size_t i = 0; i < o.other->lines.size(); ++i)
+      lines.push_back({&o.other->lines[i], session_line_style(kPlotLinesB, i)});
   }
   std::vector<LegendEntry> legend;
   for (size_t i = 0; i < lines.size(); ++i) {

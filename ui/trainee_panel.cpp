@@ -34,7 +34,7 @@ void force_gauge(double force, double safe, double band_min, double band_max) {
 
 // The world's force on the needle by what makes it, as the tissue and bone push it (scene newtons).
 void needle_force_line(const training::NeedleForce& f) {
-  ImGui::Text("on the needle: along %.2f N, sideways %.2f N, bone %.2f N", f.along_N, f.sideways_N, f.rigid_N);
+  ImGui::TextWrapped("on the needle: along %.2f N, sideways %.2f N, bone %.2f N", f.along_N, f.sideways_N, f.rigid_N);
 }
 
 void metric_line(const char* name, double value, const char* unit, double scale = 1.0) {

@@ -36,13 +36,13 @@ struct ParameterField {
 };
 // The mechanical parameters, in file order. Each is in [0, max]; max is a design value about 20
 // times the largest of the shipped parameter sets (assets/tissues/: the flavum's 500 N/m,
-// 1e5 N/m², 5 N puncture, 1.5 N cutting, 150 and 225 N/m friction; no set gives a damping, and
+// 6e5 N/m², 5 N puncture, 1.5 N cutting, 150 and 225 N/m friction; no set gives a damping, and
 // 1000 N·s/m resists a 5 mm/s insertion with 5 N, a puncture's force), beyond any tissue their
 // sources measured: past it a number is a typo or an attack (1e300 N/m is not a tissue), and the
 // tick's forces would overflow what the device and the solver can take (docs/TISSUE.md).
 inline constexpr ParameterField<LayerMechanics> kMechanicsFields[] = {
     {"stiffness_N_per_m", &LayerMechanics::stiffness_N_per_m, 1e4, "N/m"},
-    {"stiffness2_N_per_m2", &LayerMechanics::stiffness2_N_per_m2, 2e6, "N/m^2"},
+    {"stiffness2_N_per_m2", &LayerMechanics::stiffness2_N_per_m2, 1.2e7, "N/m^2"},
     {"puncture_force_N", &LayerMechanics::puncture_force_N, 100.0, "N"},
     {"cutting_force_N", &LayerMechanics::cutting_force_N, 30.0, "N"},
     {"friction_N_per_m", &LayerMechanics::friction_N_per_m, 5000.0, "N/m"},

@@ -132,8 +132,9 @@ TEST(LayeredDimple, TheScriptedHandsDimpleIsThePhysicsDeflection) {
   ASSERT_TRUE(popped_at.has_value());
   std::printf("skin pressed for %d ticks, deepest dimple %.3f mm, popped at %.3f s; |along - deflection| <= %.2e m, "
               "|moved - tip| <= %.2e m\n", pressed_ticks, 1e3 * deepest, *popped_at, worst_along, worst_onto_tip);
-  // The skin gives way at k1 d + k2 d^2 = F_p (assets/tissues/skin.json: 100 N/m, 17000 N/m², 1.22 N): d = 6.03 mm.
-  const double closed_form = (-100.0 + std::sqrt(100.0 * 100.0 + 4.0 * 17000.0 * 1.22)) / (2.0 * 17000.0);
+  // The skin gives way at k1 d + k2 d^2 = F_p (assets/tissues/skin.json: 100 N/m, 475000 N/m², 1.22 N):
+  // d = 1.50 mm.
+  const double closed_form = (-100.0 + std::sqrt(100.0 * 100.0 + 4.0 * 475000.0 * 1.22)) / (2.0 * 475000.0);
   EXPECT_NEAR(deepest, closed_form, 1e-4);
   EXPECT_LT(worst_onto_tip, 1e-9);  // the dimple's floor is the tip
 }

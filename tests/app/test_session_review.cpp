@@ -43,10 +43,10 @@ TEST_F(SessionReviewTest, RecordingBecomesPlotsThatAgreeWithTheStoredMetrics) {
     ASSERT_EQ(p->lines.size() > 0, true) << p->title << ": " << p->missing;
     EXPECT_EQ(p->lines[0].v.size(), good_.samples) << p->title;
   }
-  // The force plot's peak is the session's peak force; the lateral plot's trapezoid integral is
-  // its lateral load (docs/SCORING.md).
+  // The force plot's peak (the force at the hand) is the session's scored peak; the lateral plot's
+  // trapezoid integral is its lateral load (docs/SCORING.md).
   const Series& force = r.plots.force.lines[0];
-  EXPECT_NEAR(*std::max_element(force.v.begin(), force.v.end()), r.stored.overall.peak_force_N, 1e-12);
+  EXPECT_NEAR(*std::max_element(force.v.begin(), force.v.end()), r.stored.overall.peak_hand_force_N, 1e-12);
   const Series& lateral = r.plots.lateral.lines[0];
   double integral = 0.0;
   for (size_t k = 1; k < lateral.v.size(); ++k) integral += 0.5 * (lateral.v[k] + lateral.v[k - 1]) * (lateral.t[k] - lateral.t[k - 1]);

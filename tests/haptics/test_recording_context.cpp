@@ -28,7 +28,11 @@ json current_context() {
           {"task_text", "{}"},
           {"device", "mouse"},
           {"scenario",
-           {{"gains", {{"law", "tool"}, {"lateral_stiffness_N_per_m", 40.0}, {"axial_stiffness_N_per_m", 5.0}}}}},
+           {{"gains",
+             {{"law", "tool"},
+              {"lateral_stiffness_N_per_m", 40.0},
+              {"axial_stiffness_N_per_m", 5.0},
+              {"passivity_max_damping_per_tick", 1.0}}}}},
           {"coupling", {{"workspace_scale", 1.0}, {"wrist", true}}},
           {"safety_limits", {{"max_force_n", 3.3}}}};
 }

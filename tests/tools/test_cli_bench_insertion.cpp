@@ -49,8 +49,13 @@ TEST(CliBenchInsertion, JsonCarriesTheContractKeysAndThePlotIsWritten) {
   const double k1 = skin["stiffness_N_per_m"]["value"], k2 = skin["stiffness2_N_per_m2"]["value"],
                fp = skin["puncture_force_N"]["value"];
   const double deflection = (-k1 + std::sqrt(k1 * k1 + 4 * k2 * fp)) / (2 * k2);
-  EXPECT_NEAR(punctures[0]["depth_m"].get<double>(), 0.005 + deflection, 0.02 * deflection);
-  EXPECT_NEAR(punctures[0]["peak_force_N"].get<double>(), fp, 0.02 * fp);
+  // The surface gives way on the first tick its force reaches F_p: up to one tick's travel (0.01 m/s
+  // at the scenario's 2 ms) past the root, and as much more force as the surface's slope then makes.
+  const double tick_travel = 0.01 * 0.002, slope = k1 + 2 * k2 * deflection;
+  EXPECT_GE(punctures[0]["depth_m"].get<double>(), 0.005 + deflection - 1e-9);
+  EXPECT_LE(punctures[0]["depth_m"].get<double>(), 0.005 + deflection + tick_travel + 1e-9);
+  EXPECT_GE(punctures[0]["peak_force_N"].get<double>(), fp);
+  EXPECT_LE(punctures[0]["peak_force_N"].get<double>(), fp + slope * tick_travel + 1e-9);
 
   const engine::RgbaImage plot = engine::read_png(plot_path);
   EXPECT_EQ(plot.width, 1200u);

@@ -23,9 +23,9 @@ TEST(CliHapticsSimulate, WritesTicksCsvAndSummaryWithTheIssueKeys) {
   for (const char* key : {"position_rms_free_m", "position_max_free_m", "position_rms_contact_m", "position_max_contact_m",
                           "force_rms_N", "force_max_N", "max_penetration_m", "max_lateral_speed_mps", "max_axis_deviation_m",
                           "energy_error_J", "faults", "punctures", "tissue_work_J", "hand_work_J", "hand_work_min_J",
-                          "world_dissipated_min_J"})
+                          "world_dissipated_min_J", "saturated_s", "passivity_damped_s"})
     EXPECT_TRUE(summary.contains(key)) << key;
-  EXPECT_EQ(summary.size(), 16u) << "exactly the issues' keys";
+  EXPECT_EQ(summary.size(), 18u) << "exactly the issues' keys";
   EXPECT_TRUE(summary["punctures"].empty());  // a rigid sphere: no tissue
   EXPECT_EQ(summary["tissue_work_J"], 0.0);
   EXPECT_TRUE(summary["faults"].empty());
