@@ -129,7 +129,7 @@ TEST(ScenarioRanges, ALayersMechanicsPastTheirRangeNameTheParameterSetOrTheScena
 
   // Inline, each key: the scenario and the layer's pointer.
   const std::pair<const char*, const char*> keys[] = {{"stiffness_N_per_m", "[0, 10000] N/m"},
-                                                       {"stiffness2_N_per_m2", "[0, 2e+06] N/m^2"},
+                                                       {"stiffness2_N_per_m2", "[0, 1.2e+07] N/m^2"},
                                                        {"puncture_force_N", "[0, 100] N"},
                                                        {"cutting_force_N", "[0, 30] N"},
                                                        {"friction_N_per_m", "[0, 5000] N/m"},
