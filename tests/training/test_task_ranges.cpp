@@ -107,6 +107,26 @@ TEST(TaskRanges, EveryProbeFieldIsRequired) {
   }
 }
 
+// At most 64 markers and 64 steps: a task of 100,000 markers (5 MB) took half a minute to read
+// before it was refused for a step's marker, and would draw each of them every frame.
+TEST(TaskRanges, AtMost64MarkersAnd64Steps) {
+  json task = shipped("penetrable_sphere");
+  const size_t markers = task["markers"].size(), steps = task["steps"].size();
+  for (size_t i = markers; i < 64; ++i) task["markers"].push_back({{"name", "m" + std::to_string(i)}, {"point", {0, 0, 0}}});
+  for (size_t i = steps; i < 64; ++i) {
+    task["steps"].push_back(task["steps"][0]);
+    task["steps"].back()["id"] = "s" + std::to_string(i);
+  }
+  EXPECT_EQ(error_of(task), "no error");
+  json more = task;
+  more["markers"].push_back({{"name", "m64"}, {"point", {0, 0, 0}}});
+  EXPECT_EQ(error_of(more), task_file().string() + ": /markers: expected an array of at most 64 markers");
+  more = task;
+  more["steps"].push_back(task["steps"][0]);
+  more["steps"].back()["id"] = "s64";
+  EXPECT_EQ(error_of(more), task_file().string() + ": /steps: expected a non-empty array of at most 64 steps");
+}
+
 TEST(TaskRanges, TheShippedTasksAreInsideEveryRange) {
   for (const char* name : {"rigid_sphere", "penetrable_sphere", "sphere_ultrasound", "layered_target", "epidural"}) {
     EXPECT_EQ(error_of(shipped(name)), "no error") << name;

@@ -49,12 +49,13 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     if (root.contains("normal_marker_spacing_m"))
       t.normal_marker_spacing_m = in_range(root["normal_marker_spacing_m"], "/normal_marker_spacing_m", limits::kMarkerSpacing);
     const json& markers = member(root, "", "markers");
-    if (!markers.is_array()) fail("/markers", "expected an array of markers");
+    if (!markers.is_array() || markers.size() > limits::kMaxMarkers)
+      fail("/markers", "expected an array of at most " + std::to_string(limits::kMaxMarkers) + " markers");
+    std::set<std::string> marker_names;
     for (size_t i = 0; i < markers.size(); ++i) {
       const std::string at = "/markers/" + std::to_string(i);
       t.markers.push_back(marker(markers[i], at));
-      if (std::count_if(t.markers.begin(), t.markers.end(),
-                        [&](const Marker& m) { return m.name == t.markers.back().name; }) > 1)
+      if (!marker_names.insert(t.markers.back().name).second)
         fail(at + "/name", "\"" + t.markers.back().name + "\" is used twice");
       const Marker& m = t.markers.back();
       t.layer_starts.push_back(m.kind == MarkerKind::kAxis && t.layers.size() > 1
@@ -64,7 +65,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     if (root.contains("ultrasound")) t.ultrasound_probe = ultrasound(root["ultrasound"], "/ultrasound");
     if (root.contains("section")) t.section_plane = section(root["section"], "/section");
     const json& steps = member(root, "", "steps");
-    if (!steps.is_array() || steps.empty()) fail("/steps", "expected a non-empty array of steps");
+    if (!steps.is_array() || steps.empty() || steps.size() > limits::kMaxSteps)
+      fail("/steps", "expected a non-empty array of at most " + std::to_string(limits::kMaxSteps) + " steps");
     std::set<std::string> ids;
     for (size_t i = 0; i < steps.size(); ++i) {
       const std::string at = "/steps/" + std::to_string(i);
