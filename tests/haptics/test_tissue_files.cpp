@@ -82,6 +82,10 @@ TEST(TissueFiles, EveryParameterSetLoadsAndEveryNumberCarriesItsSource) {
     json numbers = set;
     numbers.erase("ultrasound");
     numbers.update(set["ultrasound"]);  // what the set is to ultrasound: every number with its source too
+    if (set.contains("injection")) {    // and to an injection
+      numbers.erase("injection");
+      numbers.update(set["injection"]);
+    }
     for (const auto& [key, value] : numbers.items()) {
       if (key == "tissue" || key == "description" || key == "references") continue;
       ASSERT_TRUE(value.is_object()) << entry.path() << " " << key;
