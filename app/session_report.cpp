@@ -97,6 +97,16 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
                 messages);
     messages.say(formatted("%zu puncture(s)", review.force_depth.puncture_list.size()));
   }
+  if (review.has_syringe()) {
+    if (review.force_depth.pressure.lines.empty())
+      messages.say("no plot_plunger_pressure.png: " + review.force_depth.pressure.missing);
+    else
+      write_picture(out / "plot_plunger_pressure.png", ui::panel_picture(device, plot_size, [&] {
+                      ui::draw_plunger_pressure_window(review.force_depth, nullptr, whole(plot_size));
+                    }),
+                    messages);
+    messages.say(formatted("%zu loss(es) of resistance", review.force_depth.losses.size()));
+  }
   if (!review.task) {
     messages.say("no replay picture: " + review.task_problem);
     return 0;

@@ -258,6 +258,39 @@ TEST(CliRunDevices, TheKeyboardMovesTheNeedleInTheWindow) {
   EXPECT_NEAR(last.joint_rad[0], 3.141592653589793 / 180.0, 1e-9) << "D swings";
 }
 
+// `run --device keyboard` on the epidural task, with its syringe, in the window: the space bar held
+// (xdotool keydown, 1.5 s, keyup) presses the plunger with the force PlungerMapping makes of it,
+// rising to its hold and let go, as the recording shows tick by tick.
+TEST(CliRunDevices, TheSpaceBarPressesTheSyringesPlunger) {
+  const fs::path dir = test_output_dir("cli_run_devices") / "space_bar";
+  fs::remove_all(dir);
+  const std::string run = test::needle_sim_exe().string() + " run --device keyboard --task " +
+                          quoted(source_dir() / "assets/tasks/epidural.json") + " --no-hud --size 400x300 --frames 1600 --out " +
+                          quoted(dir) + " --db " + quoted(dir / "sessions.db");
+  const std::string drive =
+      "id=\\$(xdotool search --sync --name '^needle-sim\\$' | head -1); xdotool mousemove --window \\$id 200 150; sleep 1; "
+      "xdotool keydown space; sleep 1.5; xdotool keyup space; sleep 1";
+  const ProcessResult r = run_on_virtual_display(run + " & " + drive + "; wait");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  training::SessionStore store(dir / "sessions.db");
+  ASSERT_EQ(store.sessions().size(), 1u);
+  const haptics::Session recording = haptics::read_session(store.sessions()[0].recording_path);
+  ASSERT_FALSE(recording.records.empty());
+  double most = 0.0;
+  bool rising = false;
+  for (const haptics::TickSample& s : recording.records) {
+    EXPECT_EQ(s.reading.plunger_input, uint32_t(haptics::PlungerInput::kThumbForce));
+    EXPECT_EQ(s.state.syringe.thumb_force_N, s.reading.plunger_force_n);
+    most = std::max(most, s.reading.plunger_force_n);
+    rising = rising || (s.reading.plunger_force_n > 0.0 && s.reading.plunger_force_n < 6.0);
+  }
+  EXPECT_DOUBLE_EQ(most, 12.0) << "held past the rise's second: the key's hold";
+  EXPECT_TRUE(rising) << "the force rises while the key is held";
+  EXPECT_EQ(recording.records.back().reading.plunger_force_n, 0.0) << "let go with the key";
+  EXPECT_GT(recording.records.back().state.syringe.travel_m, 0.0) << "the needle in the open: the saline left";
+}
+
 // `run --device DEVICE` for each device in one virtual display (one xvfb-run: its clean-up can
 // fail when many run at once), each command's exit code after its output as "exit N".
 std::string run_each_in_the_window(const std::vector<std::string>& devices, const fs::path& dir) {
