@@ -57,33 +57,12 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
 
   // The `ultrasound` block, when there is one: every key of kAcousticsFields, numbers as above.
   std::optional<LayerAcoustics> acoustics(const json& j, const std::string& at, const json* references) {
-    if (!j.contains("ultrasound")) return std::nullopt;
-    const json& u = j["ultrasound"];
-    const std::string where = at + "/ultrasound";
-    std::vector<const char*> keys;
-    for (const auto& f : kAcousticsFields) keys.push_back(f.key);
-    object(u, where, keys);
-    LayerAcoustics a;
-    for (const auto& f : kAcousticsFields)
-      a.*f.member = number(value(member(u, where, f.key), where + "/" + f.key, references), pointer_to(where, f.key, u[f.key]));
-    if (const auto problem = acoustics_problem(a)) fail(pointer_to(where, problem->key, u[problem->key]), problem->what);
-    return a;
+    return field_block(j, at, references, "ultrasound", kAcousticsFields, acoustics_problem);
   }
 
   // The `injection` block, when there is one: every key of kInjectionFields, numbers as above.
   std::optional<LayerInjection> injection(const json& j, const std::string& at, const json* references) {
-    if (!j.contains("injection")) return std::nullopt;
-    const json& block = j["injection"];
-    const std::string where = at + "/injection";
-    std::vector<const char*> keys;
-    for (const auto& f : kInjectionFields) keys.push_back(f.key);
-    object(block, where, keys);
-    LayerInjection i;
-    for (const auto& f : kInjectionFields)
-      i.*f.member = number(value(member(block, where, f.key), where + "/" + f.key, references),
-                           pointer_to(where, f.key, block[f.key]));
-    if (const auto problem = injection_problem(i)) fail(pointer_to(where, problem->key, block[problem->key]), problem->what);
-    return i;
+    return field_block(j, at, references, "injection", kInjectionFields, injection_problem);
   }
 
   LayerParameters parameter_set(const json& j) {
@@ -108,6 +87,24 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
   }
 
  private:
+  // The block `name` of `j`, when there is one: every key of `fields`, each a number as above, the
+  // whole checked by `problem`.
+  template <class Set, size_t N>
+  std::optional<Set> field_block(const json& j, const std::string& at, const json* references, const char* name,
+                                 const ParameterField<Set> (&fields)[N], std::optional<MechanicsProblem> (*problem)(const Set&)) {
+    if (!j.contains(name)) return std::nullopt;
+    const json& block = j[name];
+    const std::string where = at + "/" + name;
+    std::vector<const char*> keys;
+    for (const auto& f : fields) keys.push_back(f.key);
+    object(block, where, keys);
+    Set set;
+    for (const auto& f : fields)
+      set.*f.member = number(value(member(block, where, f.key), where + "/" + f.key, references), pointer_to(where, f.key, block[f.key]));
+    if (const auto p = problem(set)) fail(pointer_to(where, p->key, block[p->key]), p->what);
+    return set;
+  }
+
   // Where a parameter's number sits: the key itself, or its "value" when given with a source.
   static std::string pointer_to(const std::string& at, const std::string& key, const json& given) {
     return at + "/" + key + (given.is_object() ? "/value" : "");
