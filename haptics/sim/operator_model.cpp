@@ -41,6 +41,16 @@ HandTarget HandTrajectory::at(double t) const {
   return out;
 }
 
+void HandTrajectory::restart(double t0, const Eigen::Vector3d& position, const Eigen::Vector3d& direction, int anchored) noexcept {
+  if (waypoints_.empty()) return;
+  const double shift = t0 - waypoints_.front().t;
+  for (HandWaypoint& w : waypoints_) w.t += shift;
+  for (int k = 0; k < anchored && size_t(k) < waypoints_.size(); ++k) {
+    waypoints_[size_t(k)].position = position;
+    if (direction.norm() > 1e-9) waypoints_[size_t(k)].direction = direction.normalized();
+  }
+}
+
 Wrench hand_impedance_wrench(const HandImpedance& hand, const HandTarget& target, const Eigen::Isometry3d& tip,
                              const Eigen::Matrix<double, 6, 1>& tip_twist) {
   Wrench w;

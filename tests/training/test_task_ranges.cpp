@@ -133,5 +133,33 @@ TEST(TaskRanges, TheShippedTasksAreInsideEveryRange) {
   }
 }
 
+// The syringe of a task (docs/TASKS.md, "Syringe") and the step that seeks its loss: each bad value
+// one line naming the file and the pointer.
+TEST(TaskRanges, TheSyringeAndTheStepThatSeeksItsLossAreCheckedOnLoad) {
+  const std::string file = task_file().string() + ": ";
+  json t = shipped("epidural");
+  EXPECT_EQ(error_of(t), "no error");
+  t["syringe"]["fluid"] = "water";
+  EXPECT_EQ(error_of(t), file + "/syringe/fluid: expected \"saline\" or \"air\", got \"water\"");
+  t = shipped("epidural");
+  t["syringe"]["technique"] = "pumping";
+  EXPECT_EQ(error_of(t), file + "/syringe/technique: expected \"continuous\" or \"intermittent\", got \"pumping\"");
+  t = shipped("epidural");
+  t["syringe"]["space"] = "upper lamina";  // bone holds no fluid
+  EXPECT_EQ(error_of(t).rfind(file + "/syringe/space: no soft layer named \"upper lamina\"", 0), 0u) << error_of(t);
+  t = shipped("epidural");
+  t["syringe"].erase("space");
+  EXPECT_EQ(error_of(t), file + "/syringe/space: missing");
+  t = shipped("epidural");
+  t["steps"][2]["stop_at_loss"]["within_m"] = 1e300;
+  EXPECT_EQ(error_of(t), file + "/steps/2/stop_at_loss/within_m: must be in (0, 1] m, got 1e+300");
+  t = shipped("epidural");
+  t.erase("syringe");
+  EXPECT_EQ(error_of(t), file + "/steps/2/stop_at_loss: needs the task's syringe (/syringe)");
+  t = shipped("layered_target");  // its tissue's parameter sets give their injection keys: any task on it may have a syringe
+  t["syringe"] = {{"fluid", "saline"}, {"technique", "continuous"}, {"space", "fat"}};
+  EXPECT_EQ(error_of(t), "no error");
+}
+
 }  // namespace
 }  // namespace needle::training
