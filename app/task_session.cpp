@@ -34,7 +34,7 @@ fs::path local_db(const TaskSessionOptions& options) {
 
 // A database location with its folder made, when it is a file: SQLite makes the file, not the folder.
 std::string with_folder(const fs::path& location) {
-  if (!training::is_postgres_uri(location.string()) && location.has_parent_path()) fs::create_directories(location.parent_path());
+  if (!training::is_postgres_uri(location.string()) && location.has_parent_path()) io::make_folder(location.parent_path());
   return location.string();
 }
 
@@ -78,7 +78,7 @@ fs::path new_recording_path(const fs::path& db, const std::string& task_name) {
   char stamp[32];
   std::strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", std::gmtime(&now));
   const fs::path dir = fs::absolute(db).parent_path() / "recordings";
-  fs::create_directories(dir);
+  io::make_folder(dir);
   const std::string stem = task + "_" + stamp + "_" + std::to_string(::getpid());
   fs::path path = dir / (stem + ".nrec");
   for (int n = 2; fs::exists(path); ++n) path = dir / (stem + "_" + std::to_string(n) + ".nrec");

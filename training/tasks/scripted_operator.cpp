@@ -43,7 +43,7 @@ json task_scenario_json(const Task& task) {
 }
 
 haptics::Scenario write_scenario(const json& scenario, const fs::path& file) {
-  if (file.has_parent_path()) fs::create_directories(file.parent_path());
+  if (file.has_parent_path()) io::make_folder(file.parent_path());
   io::write_file(file, scenario.dump(2) + "\n");
   return haptics::load_scenario(file.string());
 }
