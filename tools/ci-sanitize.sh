@@ -18,7 +18,7 @@ suites+='|SimHolonomic|SimNonholonomic|SimFeel|SimHandPassivity|PassivityClosedL
 suites+='|SessionLimits|SessionReviewTest|SessionStoreFailure|ShippedTasks/ScriptedSessions|LayeredSessions|EpiduralTasks/SyringeSessions|ReviewPanels|ReviewPanelsLayered'
 suites+='|CliBench[A-Za-z]*|CliHapticsBench|CliHapticsSimulate|CliRecordings|CliReport|CliReportLayered|CliRunDevices|CliRunTask|CliWrites|Tasks/RunReplay'
 suites+='|CliPostgres|CliHostileFiles|CliVerify'
-tests='BenchTickAllocations\.(NonholonomicContact|LayeredTissue)TickAllocatesNothing|RecordingReplay\.ControllerReplayIsBitForBit'
+tests='BenchTickAllocations\.(NonholonomicContact|LayeredTissue)TickAllocatesNothing|RecordingReplay\.(ControllerReplayIsBitForBit|ATickTheDeviceHeldAtItsForceLimitIsMarkedInTheRecording)'
 tests+='|LayeredDimple\.TheScriptedHandsDimpleIsThePhysicsDeflection|SimComponents\.DeviceEnergyBalancesTheWorkDoneOnIt|CliStartScreen\.(ATraineeStarts|ATraineeDoes|TheKeyboards|TheScorePanels)[A-Za-z]*'
 skip=${SANITIZE_SKIP-"^((ShaderBuild|Layout|$suites)\\.|($tests)\$)"}
 
