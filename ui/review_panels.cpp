@@ -6,6 +6,7 @@
 #include <string>
 
 #include "ui/review_plot.hpp"
+#include "ui/score_breakdown.hpp"
 #include "training/scoring/metric_fields.hpp"
 
 namespace needle::ui {
@@ -69,20 +70,6 @@ void header_lines(const training::SessionReview& r) {
   if (limited > 0.0)
     ImGui::TextColored(kWarn, "the device held the force back at its limit for %.2f s: the hand felt less than the scene's",
                        limited);
-}
-
-void breakdown_table(const std::vector<training::ScoreComponent>& components) {
-  if (components.empty()) return;
-  if (!ImGui::BeginTable("breakdown", 4, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) return;
-  for (size_t k = 0; k < components.size(); ++k) {
-    const training::ScoreComponent& c = components[k];
-    if (k % 2 == 0) ImGui::TableNextRow();
-    ImGui::TableNextColumn();
-    ImGui::TextUnformatted(c.name.c_str());
-    ImGui::TableNextColumn();
-    ImGui::Text("%4.1f / %4.1f", c.points(), c.weight);
-  }
-  ImGui::EndTable();
 }
 
 void steps_table(const training::StoredSession& s, bool layered) {
@@ -271,7 +258,7 @@ bool draw_session_detail(const training::SessionReview& r, const DetailOptions& 
       }
     }
     ImGui::Separator();
-    breakdown_table(r.stored.components);
+    draw_score_breakdown(r.stored.components, 2);
     ImGui::Separator();
     steps_table(r.stored, r.layered());
     ImGui::Separator();

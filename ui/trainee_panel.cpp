@@ -6,6 +6,8 @@
 #include <cmath>
 #include <map>
 
+#include "ui/score_breakdown.hpp"
+
 namespace needle::ui {
 namespace {
 
@@ -105,16 +107,7 @@ void draw_result(const training::SessionResult& r) {
   ImGui::TextColored(r.score.passed ? kGood : kBad, "Score %.0f / 100  %s", r.score.total,
                      r.score.passed ? "PASSED" : "NOT PASSED");
   ImGui::Separator();
-  if (ImGui::BeginTable("breakdown", 2, ImGuiTableFlags_SizingStretchProp)) {
-    for (const training::ScoreComponent& c : r.score.components) {
-      ImGui::TableNextRow();
-      ImGui::TableSetColumnIndex(0);
-      ImGui::TextUnformatted(c.name.c_str());
-      ImGui::TableSetColumnIndex(1);
-      ImGui::Text("%4.1f / %4.1f", c.points(), c.weight);
-    }
-    ImGui::EndTable();
-  }
+  draw_score_breakdown(r.score.components, 1);
   // A layered task's faults by name (issue 14's acceptance: the sloppy epidural's bone contact or
   // dural puncture is named in the panel, not only as a component's lost points).
   const training::Metrics& m = r.overall;
@@ -159,8 +152,9 @@ std::vector<std::string> what_to_improve(const training::Score& score) {
       {"redirections", "Aim before you go in: avoid pulling back and redirecting"},
   };
   std::vector<const training::ScoreComponent*> lost;
+  // What the trainee did, not what the run never reached (the steps not completed say that).
   for (const training::ScoreComponent& c : score.components) {
-    if (c.weight - c.points() > 1.0) lost.push_back(&c);
+    if (c.status == training::ComponentStatus::kApplied && c.weight - c.points() > 1.0) lost.push_back(&c);
   }
   std::sort(lost.begin(), lost.end(),
             [](const training::ScoreComponent* a, const training::ScoreComponent* b) { return a->weight - a->points() > b->weight - b->points(); });

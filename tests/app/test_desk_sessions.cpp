@@ -36,6 +36,8 @@ struct DeskRun {
 std::string steps_of(const training::SessionResult& r) {
   std::string out = "score " + std::to_string(r.score.total) + ":";
   for (const training::StepResult& s : r.steps) out += " " + s.id + "=" + training::step_outcome_name(s.record.outcome);
+  for (const training::ScoreComponent& c : r.score.components)
+    out += " " + c.name + ":" + std::to_string(c.points()).substr(0, 4) + "/" + std::to_string(c.weight).substr(0, 4);
   return out;
 }
 

@@ -29,6 +29,7 @@ void for_each_metric(M& m, F&& f) {
       f(name, field);
   };
   visit("duration_s", m.duration_s, {"duration", "s"});
+  visit("tissue_time_s", m.tissue_time_s, {"time in tissue", "s"});
   visit("tip_error_m", m.tip_error_m, {"tip to target", "mm", 1000.0});
   visit("axis_deviation_deg", m.axis_deviation_deg, {"off axis", "deg"});
   visit("lateral_load_Ns", m.lateral_load_Ns, {"lateral load", "N s"});
