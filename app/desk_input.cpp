@@ -17,8 +17,9 @@ std::optional<haptics::DeskKey> desk_key(engine::Key key) {
     case engine::Key::kW: return haptics::DeskKey::kIn;
     case engine::Key::kA: return haptics::DeskKey::kSwingLeft;
     case engine::Key::kD: return haptics::DeskKey::kSwingRight;
-    case engine::Key::kF: return haptics::DeskKey::kTiltToward;
-    case engine::Key::kR: return haptics::DeskKey::kTiltAway;
+    // Q and E tilt: R is the score panel's Retry, so no key has two meanings.
+    case engine::Key::kQ: return haptics::DeskKey::kTiltToward;
+    case engine::Key::kE: return haptics::DeskKey::kTiltAway;
     default: return std::nullopt;
   }
 }
@@ -105,7 +106,7 @@ void DeskInput::place_cursor(engine::Window& window, const engine::Camera& camer
 
 const char* DeskInput::help(haptics::DeviceSpec::Kind kind) {
   if (kind == haptics::DeviceSpec::Kind::kMouse) return "cursor: move   wheel or Up/Down: in and out   right button held: turn about the tip";
-  if (kind == haptics::DeviceSpec::Kind::kKeyboard) return "arrows: move   W/S: in and out   A/D, R/F: turn about the tip   Shift: fine";
+  if (kind == haptics::DeviceSpec::Kind::kKeyboard) return "arrows: move   W/S: in and out   A/D, Q/E: turn about the tip   Shift: fine";
   return "left stick: move   triggers: in and out   right stick: turn about the tip   Start: reset a fault";
 }
 

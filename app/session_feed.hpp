@@ -26,6 +26,8 @@ class SessionFeed {
   std::vector<size_t> take_ended_steps();
   uint64_t samples() const;
   bool task_finished() const;
+  // The first step has ended (completed or not): the session is under way.
+  bool first_step_ended() const;
   engine::NeedleLoad needle() const;
   training::SessionResult result() const;
   // Calls `read` with the scorer and the newest state, under the lock (the panel draws from them).

@@ -124,10 +124,14 @@ std::vector<std::string> replay_notes(const std::string& path, const haptics::Re
 
 }  // namespace
 
-training::Task session_task(const fs::path& task_file, const haptics::DeviceSpec& device) {
-  if (device.kind != haptics::DeviceSpec::Kind::kReplay) return training::load_task(task_file);
+training::Task session_task(const fs::path& task_file, const haptics::DeviceSpec& device, bool practice) {
+  if (device.kind != haptics::DeviceSpec::Kind::kReplay) {
+    training::Task task = training::load_task(task_file);
+    return practice ? training::practice_task(std::move(task)) : task;
+  }
   const json context = haptics::read_recording_context(device.file, haptics::read_header(device.file));
-  return training::parse_task(context["task_text"].get<std::string>(), context["task"].get<std::string>());
+  training::Task task = training::parse_task(context["task_text"].get<std::string>(), context["task"].get<std::string>());
+  return context["practice"].get<bool>() ? training::practice_task(std::move(task)) : task;
 }
 
 SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
@@ -157,6 +161,7 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
                   {"device", replay ? description_ : options.device.text()},
                   {"scenario", recorded.scenario},
                   {"coupling", recorded.coupling},
+                  {"practice", task.practice},
                   {"safety_limits", limits_json(limits_)},
                   {training::kRecordingSessionKey, options.session_uid}}
                  .dump();

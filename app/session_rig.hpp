@@ -37,9 +37,10 @@ struct RigOptions {
 };
 
 // The task a session on `device` runs: for replay:FILE the task as its recording keeps it (the
-// file's text then, not the file as it is now), else `task_file`. Throws haptics::RecordingError
-// naming the recording when it has no usable context, training::TaskError for the task.
-training::Task session_task(const std::filesystem::path& task_file, const haptics::DeviceSpec& device);
+// file's text then, not the file as it is now; a practice run's as practice), else `task_file`, as
+// a practice run (training::practice_task) with `practice`. Throws haptics::RecordingError naming
+// the recording when it has no usable context, training::TaskError for the task.
+training::Task session_task(const std::filesystem::path& task_file, const haptics::DeviceSpec& device, bool practice = false);
 
 class SessionRig {
  public:

@@ -43,7 +43,7 @@ FrameContent with_views(const Show& show, ui::ViewState& view, const engine::Sce
 SessionWindow::SessionWindow(const WindowOptions& options)
     : options_(options),
       vw_("needle-sim", options.size, options.messages),
-      frame_(vw_.device, vw_.target, {options.msaa.value_or(vw_.default_msaa_samples()), options.hud, options.render_scale},
+      frame_(vw_.device, vw_.target, {options.msaa.value_or(vw_.default_msaa_samples()), options.hud, options.render_scale, options.debug},
              &vw_.window),
       frames_(options.frames, options.screenshot, options.messages),
       view_{options.section, options.ultrasound},
@@ -68,6 +68,7 @@ void SessionWindow::frames(engine::GpuScene& scene, const Show& show, const std:
   const FrameContent content = with_views(show, view_, renderer(), vw_.target);
   while (!vw_.window.should_close()) {
     vw_.window.poll_events();
+    if (vw_.window.take_key_press(engine::Key::kF3)) frame_.toggle_status();  // the window's own key
     if (show.input) show.input(vw_.window);
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     frames_.draw(vw_.window, [&](engine::RgbaImage* shot) { return frame_.draw(vw_.target, scene, content, t, shot); });

@@ -154,7 +154,7 @@ TEST(CliRunDevices, ABadRecordingIsAnErrorNamingTheFile) {
 // No panels: over a panel the mouse belongs to the panel, and at this size they cover the view.
 TEST(CliRunDevices, TheMouseMovesTheNeedleAlongTheViewsRightAxis) {
   const fs::path dir = test_output_dir("cli_run_devices") / "mouse";
-  const std::string run = mouse_session(dir, "--size 400x300 --frames 600");
+  const std::string run = mouse_session(dir, "--size 400x300 --frames 600 --store");  // a --frames run is stored when asked
   const fs::path log = test_output_dir("cli_run_devices") / "mouse.log";
   // Once the loop runs (its real-time line, on the first frame: a loaded machine may take seconds
   // to get there), centre the cursor, then move it 100 px left: two thirds of half the height, -6.7 cm.
@@ -236,7 +236,7 @@ TEST(CliRunDevices, EveryTraineeDeviceIsRefusedHeadlessSayingItNeedsTheWindow) {
 TEST(CliRunDevices, TheKeyboardMovesTheNeedleInTheWindow) {
   const fs::path dir = test_output_dir("cli_run_devices") / "keyboard";
   fs::remove_all(dir);
-  const std::string run = test::needle_sim_exe().string() + " run --device keyboard --no-hud --size 400x300 --frames 600 --out " +
+  const std::string run = test::needle_sim_exe().string() + " run --device keyboard --no-hud --size 400x300 --frames 600 --store --out " +
                           quoted(dir) + " --db " + quoted(dir / "sessions.db");
   // The pointer over the window: without a window manager the keys go to the window under it.
   const std::string drive =
@@ -309,7 +309,7 @@ TEST(CliRunDevices, AReplayPlaysInTheWindow) {
   ASSERT_TRUE(live.score.contains("recording"));
   const std::string recording = live.score["recording"].get<std::string>();
   const ProcessResult r = run_on_virtual_display(test::needle_sim_exe().string() + " run --device " +
-                                                 quoted(fs::path("replay:" + recording)) + " --size 200x150 --frames 5 --out " +
+                                                 quoted(fs::path("replay:" + recording)) + " --size 200x150 --frames 5 --store --out " +
                                                  quoted(dir / "replay") + " --db " + quoted(dir / "sessions.db"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("presented 5 frames"), std::string::npos) << r.output;
@@ -320,10 +320,11 @@ TEST(CliRunDevices, AReplayPlaysInTheWindow) {
 }
 
 // A run killed mid-task (SIGKILL: no destructor, no last pass) leaves an incomplete session, a
-// readable database and a recording whose every tick up to the last flushed pass is intact.
+// readable database and a recording whose every tick up to the last flushed pass is intact. Stored
+// from its start (--store): killed before its first step ended it would otherwise not be stored.
 TEST(CliRunDevices, AKilledRunLeavesItsRecordingAndAnIncompleteSession) {
   const fs::path dir = test_output_dir("cli_run_devices") / "killed";
-  const std::string run = mouse_session(dir, "--size 200x150");
+  const std::string run = mouse_session(dir, "--size 200x150 --store");
   // Kill once the recording holds over a second of ticks (10 s at most).
   const std::string kill_later =
       "for i in \\$(seq 200); do [ \\$(cat " + quoted(dir) + "/recordings/*.nrec 2>/dev/null | wc -c) -gt 700000 ] && break; sleep 0.05; done; "

@@ -16,6 +16,12 @@ double session_time_bound_s(const Task& task) {
   return std::min(total, io::kMaxSessionSeconds);
 }
 
+Task practice_task(Task task) {
+  for (Step& step : task.steps) step.time_limit_s = 0.0;
+  task.practice = true;
+  return task;
+}
+
 ScoreMeasures score_measures(const Task& task) {
   ScoreMeasures m{false, false, false, false};
   for (const Step& s : task.steps) {

@@ -181,6 +181,8 @@ struct Task {
   // for the depth gauge; empty otherwise.
   std::vector<std::vector<LayerStart>> layer_starts;
   std::optional<SectionPlaneSpec> section_plane;        // the section view's plane, when the task fixes it
+  // An untimed practice run of the task (docs/TASKS.md, "Practice"): no step has a time limit.
+  bool practice = false;
 
   int marker_index(const std::string& name) const;  // -1 when absent
   int layer_index(const std::string& name) const;   // -1 when absent
@@ -190,6 +192,10 @@ Task load_task(const std::filesystem::path& file);
 // A task from the text of its file as it was at `source` (a recording keeps it): paths in it are
 // relative to `source`'s folder, errors read "SOURCE (as recorded): /json/pointer: what is wrong".
 Task parse_task(const std::string& text, const std::filesystem::path& source);
+
+// `task` as a practice run: every step's time limit lifted (the session may then last as long as
+// io::kMaxSessionSeconds), `practice` set; the rest, its score included, as the task says.
+Task practice_task(Task task);
 
 // What the task's steps and tissue give its score to measure (ScoreMeasures).
 ScoreMeasures score_measures(const Task& task);
