@@ -290,6 +290,9 @@ void TaskSession::draw_panel(std::optional<size_t> step, const char* controls, c
     ui::TraineeView view{&task_, &scorer.progress()};
     view.step = step;
     view.step_metrics = scorer.step_metrics(shown);
+    view.now_s = last.time_s;
+    view.cue = training::step_cue(task_, shown, last, ui::view_axes(scene_.camera));
+    view.cue_lines = training::cue_lines(task_, shown, last, *view.cue);
     ui::set_forces(view, last, task_.force_scale);
     if (task_.layers.size() > 1) view.tissue = last.tissue;
     const haptics::LoopStatsSummary stats = loop_->stats();
