@@ -234,9 +234,10 @@ SessionRig::Recorded SessionRig::make_live(const training::Task& task, const Rig
   return recorded;
 }
 
-std::optional<Eigen::Vector3d> SessionRig::tool_start() const {
+std::optional<ToolStart> SessionRig::tool_start() const {
   if (!task_space_) return std::nullopt;
-  return task_space_->start_tip() + scenario_->base_in_world;
+  return ToolStart{task_space_->start_tip() + scenario_->base_in_world, task_space_->start_direction().normalized(),
+                   task_space_->coupling().device_to_scene};
 }
 
 SessionRig::~SessionRig() {

@@ -42,6 +42,14 @@ struct RigOptions {
 // the recording when it has no usable context, training::TaskError for the task.
 training::Task session_task(const std::filesystem::path& task_file, const haptics::DeviceSpec& device, bool practice = false);
 
+// Where a task-space device's tool starts and the axes its device moves in (the view's, for the
+// trainee's devices: right, up and depth as the columns).
+struct ToolStart {
+  Eigen::Vector3d tip;        // world frame
+  Eigen::Vector3d direction;  // the needle's, unit
+  Eigen::Matrix3d device_to_scene;
+};
+
 class SessionRig {
  public:
   // Builds and opens the device (homing a Falcon) and its step. Throws haptics::DeviceError,
@@ -61,9 +69,9 @@ class SessionRig {
   std::optional<uint64_t> ticks() const { return ticks_; }
   // The desk device (mouse, keyboard, gamepad) whose pose the app sets; nullptr for the others.
   haptics::DeskDevice* desk() { return desk_; }
-  // Where a task-space device's tool starts, world frame (its first reading lands there);
-  // nullopt for the joint-space and replayed devices.
-  std::optional<Eigen::Vector3d> tool_start() const;
+  // Where a task-space device's tool starts (its first reading lands there); nullopt for the
+  // joint-space and replayed devices.
+  std::optional<ToolStart> tool_start() const;
   // For the session store and the recording header: "sim (good)", "mouse", "replay of ...".
   const std::string& description() const { return description_; }
   // JSON for the recording header (haptics::SessionHeader::context).

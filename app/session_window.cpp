@@ -81,8 +81,8 @@ void SessionWindow::frames(engine::GpuScene& scene, const Show& show, const std:
 TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices) {
   std::optional<DeskInput> desk;
   if (haptics::DeskDevice* device = session.desk()) desk.emplace(*device);
-  if (const std::optional<Eigen::Vector3d> start = session.tool_start(); desk && start) {
-    desk->place_cursor(window.window(), session.scene().camera, glm::vec3(start->x(), start->y(), start->z()));
+  if (const std::optional<ToolStart> start = session.tool_start(); desk && start) {
+    desk->start_at(window.window(), session.scene().camera, *start);
     // The loop maps the device's first reading onto the tool's start (TaskSpaceStep): the device
     // has the placed cursor before it starts, even when ImGui still holds the pointer for the
     // screen before (the start screen's panel under it), which would skip the first frame's input

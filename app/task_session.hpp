@@ -62,7 +62,7 @@ class TaskSession {
   const training::Task& task() const { return task_; }
   const engine::Scene& scene() const { return scene_; }
   haptics::DeskDevice* desk() { return rig_->desk(); }
-  std::optional<Eigen::Vector3d> tool_start() const { return rig_->tool_start(); }
+  std::optional<ToolStart> tool_start() const { return rig_->tool_start(); }
   // Seconds the session lasts when its device has an end (script, recording), else nullopt.
   std::optional<double> duration_s() const;
   // The most ticks it runs: its device's end, bounded (but for a replay) by how long the task can

@@ -95,7 +95,8 @@ void expect_every_step_completed(const DeskRun& run) {
 TEST(DeskSessions, PenetrableSphereWithTheKeyboard) {
   const training::Task task = training::load_task(source_dir() / "assets/tasks/penetrable_sphere.json");
   const Eigen::Vector3d centre(0.0, 0.0, 0.1);  // the keyboard starts at the workspace's centre
-  const std::vector<DeskWaypoint> plan = penetrable_plan(task, planning_start("keyboard"), centre);
+  const DeskStart start = planning_start("keyboard");
+  const std::vector<DeskWaypoint> plan = penetrable_plan(task, start, centre);
   haptics::KeyboardMapping keys;
   int presses = 0;
   // A trainee pressing (or holding, with the key repeat) 40 times a second, each press the key
@@ -103,6 +104,7 @@ TEST(DeskSessions, PenetrableSphereWithTheKeyboard) {
   const DeskRun run = run_desk("keyboard", 25, [&](double t, haptics::DeskDevice& desk) {
     const DeskWaypoint want = plan_at(plan, centre, t);
     const haptics::DeskPose& pose = keys.pose();
+    keys.set_needle_direction(app::needle_direction(start, pose));  // W and S go along the needle, as in the app
     const double error[5] = {(want.device_m[0] - pose.position_m[0]) / haptics::KeyboardMapping::kStep_m,
                              (want.device_m[1] - pose.position_m[1]) / haptics::KeyboardMapping::kStep_m,
                              (want.device_m[2] - pose.position_m[2]) / haptics::KeyboardMapping::kStep_m,
@@ -132,8 +134,8 @@ DeskRun run_with_the_mouse(const std::string& task_name, MakePlan make_plan, std
   const training::Task task = training::load_task(source_dir() / "assets/tasks" / (task_name + ".json"));
   const DeskStart start = planning_start("mouse", task_name);
   const Eigen::Vector2d cursor = mouse_cursor_start(task, start, {1280, 720});
-  const Eigen::Vector3d device_start(cursor.x() * 0.1, cursor.y() * 0.1, 0.1);
-  mouse.emplace(make_plan(task, start, device_start), device_start, cursor);
+  const haptics::MouseView view = app::mouse_view(engine::load_scene(task.scene).camera, start);
+  mouse.emplace(make_plan(task, start, mouse_device_start(view, cursor)), start, view, cursor);
   return run_desk("mouse", 20, [&](double t, haptics::DeskDevice& desk) {
     mouse->step(t);
     desk.set_pose(mouse->pose());
@@ -167,7 +169,8 @@ TEST(DeskSessions, PenetrableSphereWithTheMouse) {
 TEST(DeskSessions, PenetrableSphereWithAGamepad) {
   const training::Task task = training::load_task(source_dir() / "assets/tasks/penetrable_sphere.json");
   const Eigen::Vector3d centre(0.0, 0.0, 0.1);  // the gamepad starts at the workspace's centre
-  const std::vector<DeskWaypoint> plan = penetrable_plan(task, planning_start("gamepad"), centre);
+  const DeskStart start = planning_start("gamepad");
+  const std::vector<DeskWaypoint> plan = penetrable_plan(task, start, centre);
   haptics::GamepadMapping pad;
   // 50 frames a second, the sticks and triggers deflected in proportion to what is left to do
   // (a fifth of a second's worth at full speed is full deflection), past their dead zones.
@@ -179,6 +182,7 @@ TEST(DeskSessions, PenetrableSphereWithAGamepad) {
   const DeskRun run = run_desk("gamepad", 20, [&](double t, haptics::DeskDevice& desk) {
     const DeskWaypoint want = plan_at(plan, centre, t);
     const haptics::DeskPose& pose = pad.pose();
+    pad.set_needle_direction(app::needle_direction(start, pose));  // the triggers go along the needle, as in the app
     State s;
     const double v = haptics::GamepadMapping::kSpeed_m_per_s, w = haptics::GamepadMapping::kTurnRate_rad_per_s;
     const double dz = haptics::GamepadMapping::kStickDeadZone;
