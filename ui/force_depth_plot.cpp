@@ -15,9 +15,9 @@ namespace {
 
 const ImU32 kPunctureA = IM_COL32(255, 80, 80, 255), kPunctureB = IM_COL32(255, 200, 60, 255);
 
-// The lines and punctures of one session in its colours.
+// The lines and puncture marks of one session in its colours; its punctures' labels added to `labels`.
 void draw_session(ImDrawList* draw, const PlotFrame& f, const training::ForceDepth& s, const ImU32 (&colours)[2],
-                  ImU32 puncture) {
+                  ImU32 puncture, std::vector<PointLabel>& labels) {
   std::vector<ImVec2> points;
   for (size_t k = 0; k < s.plot.lines.size(); ++k) {
     const training::Series& line = s.plot.lines[k];
@@ -28,7 +28,7 @@ void draw_session(ImDrawList* draw, const PlotFrame& f, const training::ForceDep
   for (const training::PlotMark& p : s.punctures) {
     const ImVec2 at(f.sx(p.x), f.sy(p.y));
     draw->AddCircle(at, 5.0f, puncture, 12, 2.0f);
-    draw->AddText(ImVec2(at.x + 6.0f, at.y - 14.0f), puncture, p.label.c_str());
+    labels.push_back({p.label, at, puncture});
   }
 }
 
@@ -57,19 +57,25 @@ void draw_force_depth_plot(const training::ForceDepth& a, const training::ForceD
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw_plot_frame(draw, f, a.plot.x_label);
   draw->PushClipRect(f.p0, f.p1, true);
-  // The layer boundaries are the first session's: both ran the same task.
-  // Their names on three rows in turn: layers a few millimetres apart would write over each other.
-  for (size_t k = 0; k < a.boundaries.size(); ++k) {
-    const training::PlotMark& m = a.boundaries[k];
+  // The layer boundaries are the first session's: both ran the same task. Their names where they
+  // overlap no other (layers a few millimetres apart would write over each other) and stay inside.
+  std::vector<float> xs;
+  std::vector<std::string> names;
+  for (const training::PlotMark& m : a.boundaries) {
     dashed_vertical(draw, f.sx(m.x), f.p0.y, f.p1.y, kPlotStep);
-    draw->AddText(ImVec2(f.sx(m.x) + 2.0f, f.p0.y + float(k % 3) * ImGui::GetTextLineHeight()), kPlotText, m.label.c_str());
+    xs.push_back(f.sx(m.x));
+    names.push_back(m.label);
   }
-  draw_session(draw, f, a, kPlotLinesA, kPunctureA);
-  if (b) draw_session(draw, f, *b, kPlotLinesB, kPunctureB);
+  const std::vector<PlotLabel> layers = line_labels(f, xs, names);
+  for (const PlotLabel& l : layers) draw->AddText(l.at, kPlotText, l.text.c_str());
+  std::vector<PointLabel> punctures;
+  draw_session(draw, f, a, kPlotLinesA, kPunctureA, punctures);
+  if (b) draw_session(draw, f, *b, kPlotLinesB, kPunctureB, punctures);
+  for (const auto& [l, colour] : point_labels(f, punctures, layers)) draw->AddText(l.at, colour, l.text.c_str());
   draw->PopClipRect();
-  std::vector<LegendEntry> legend{{b ? "axial force (A)" : "axial force", {kPlotLinesA[0]}},
+  std::vector<LegendEntry> legend{{b ? "force along the needle (A)" : "force along the needle", {kPlotLinesA[0]}},
                                   {b ? "punctures (A)" : "punctures", {kPunctureA}}};
-  if (b) legend.insert(legend.end(), {{"axial force (B)", {kPlotLinesB[0]}}, {"punctures (B)", {kPunctureB}}});
+  if (b) legend.insert(legend.end(), {{"force along the needle (B)", {kPlotLinesB[0]}}, {"punctures (B)", {kPunctureB}}});
   draw_plot_legend(f, legend);
 }
 

@@ -20,9 +20,7 @@ std::optional<StepBanner> step_banner(const training::Task& task, const training
     b.completed = r.outcome == training::StepOutcome::kCompleted;
     char head[64];
     std::snprintf(head, sizeof head, "Step %zu of %zu ", k + 1, task.steps.size());
-    std::string outcome = training::step_outcome_name(r.outcome);  // in words: "timed out", not "timed_out"
-    std::replace(outcome.begin(), outcome.end(), '_', ' ');
-    b.title = head + outcome + ": " + step.id;
+    b.title = head + training::step_outcome_words(r.outcome) + ": " + step.id;
     if (b.completed) {
       b.detail = k + 1 < task.steps.size() ? "Next: " + task.steps[k + 1].instruction : "That was the last step.";
     } else if (r.outcome == training::StepOutcome::kTimedOut) {

@@ -9,6 +9,7 @@
 #include "ui/score_breakdown.hpp"
 #include "ui/step_banner.hpp"
 #include "ui/trainee_gauges.hpp"
+#include "ui/wrapped_text.hpp"
 
 namespace needle::ui {
 namespace {
@@ -82,8 +83,8 @@ void draw_running(const TraineeView& v) {
     cue_list(v.cue_lines);
   } else {
     const std::string why = training::step_failure_reason(task, record);
-    ImGui::TextColored(record.outcome == training::StepOutcome::kCompleted ? kGood : kBad, "%s%s%s",
-                       step_outcome_name(record.outcome), why.empty() ? "" : ": ", why.c_str());
+    wrapped_text(record.outcome == training::StepOutcome::kCompleted ? kGood : kBad, "%s%s%s",
+                 training::step_outcome_words(record.outcome).c_str(), why.empty() ? "" : ": ", why.c_str());
   }
   if (v.cue) {
     distance_gauge(task, shown, *v.cue);
@@ -96,7 +97,7 @@ void draw_running(const TraineeView& v) {
   force_gauge(v.hand_force_N, safe, force_band ? step.condition.min : 0.0, force_band ? step.condition.max : 0.0);
   sideways_gauge(task.force_scale * v.needle.sideways_N, safe);
   needle_force_line(v.needle);
-  if (v.at_device_limit) ImGui::TextColored(kBad, "the device is at its force limit: you feel less than this");
+  if (v.at_device_limit) wrapped_text(kBad, "the device is at its force limit: you feel less than this");
   if (v.tissue) tissue_lines(task, *v.tissue);
   ImGui::Separator();
   const training::Metrics& m = v.step_metrics;
@@ -113,7 +114,7 @@ void draw_result(const training::SessionResult& r) {
   // dural puncture is named in the panel, not only as a component's lost points).
   const training::Metrics& m = r.overall;
   if (m.bone_contacts > 0 || m.forbidden_punctures > 0 || m.redirections > 0) ImGui::Separator();
-  if (m.bone_contacts > 0) ImGui::TextColored(kBad, "bone contacts: %u (peak %.1f N on the bone)", m.bone_contacts, m.bone_peak_force_N);
+  if (m.bone_contacts > 0) wrapped_text(kBad, "bone contacts: %u (peak %.1f N on the bone)", m.bone_contacts, m.bone_peak_force_N);
   if (m.forbidden_punctures > 0) ImGui::TextColored(kBad, "forbidden punctures: %u", m.forbidden_punctures);
   if (m.redirections > 0) ImGui::TextColored(kBad, "redirections: %u", m.redirections);
   std::vector<std::string> advice = what_to_improve(r.score);

@@ -30,14 +30,6 @@ std::string format(double x) {
   return out.str();
 }
 
-// Smoothness on a log scale (normalized jerk spans orders of magnitude): 1 at the minimum-jerk
-// profile's sqrt(360), 0 at the reference.
-double smoothness(double normalized_jerk, double reference) {
-  if (std::isnan(normalized_jerk)) return 0.0;
-  const double minimum = std::sqrt(360.0);
-  return clamp01(1.0 - std::log(std::max(normalized_jerk, minimum) / minimum) / std::log(reference / minimum));
-}
-
 }  // namespace
 
 Metrics combine_metrics(const std::vector<StepResult>& steps) {
@@ -98,6 +90,12 @@ bool component_reached(const std::string& name, const Metrics& m, bool every_ste
   return true;  // completion
 }
 
+double smoothness_score(double normalized_jerk, double reference) {
+  if (std::isnan(normalized_jerk)) return 0.0;
+  const double minimum = std::sqrt(360.0);
+  return clamp01(1.0 - std::log(std::max(normalized_jerk, minimum) / minimum) / std::log(reference / minimum));
+}
+
 const char* component_status_name(ComponentStatus status) {
   switch (status) {
     case ComponentStatus::kApplied: return "applied";
@@ -127,7 +125,7 @@ Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& step
       {"peak_force", peak <= safe ? 1.0 : clamp01(1.0 - (peak - safe) / safe), w.peak_force, true},
       {"force_steadiness", falling(m.force_sd_N, r.force_sd_N), w.force_steadiness, task.force_steadiness},
       {"path_efficiency", m.path_length_m > 0.0 ? clamp01(m.ideal_path_m / m.path_length_m) : 0.0, w.path_efficiency, true},
-      {"smoothness", smoothness(m.normalized_jerk, r.normalized_jerk), w.smoothness, true},
+      {"smoothness", smoothness_score(m.normalized_jerk, r.normalized_jerk), w.smoothness, true},
       {"time", m.duration_s <= r.time_s ? 1.0 : r.time_s / m.duration_s, w.time, true},
       {"retries", 1.0 / (1.0 + m.reinsertions + m.rigid_contacts), w.retries, true},
   };

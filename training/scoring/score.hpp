@@ -45,6 +45,10 @@ struct StepResult {
 bool component_reached(const std::string& name, const Metrics& overall, bool every_step_completed);
 long completed_steps(const std::vector<StepResult>& steps);
 
+// Smoothness on a log scale (normalized jerk spans orders of magnitude): 1 at the minimum-jerk
+// profile's sqrt(360), 0 at `reference`; 0 when it does not apply (NaN).
+double smoothness_score(double normalized_jerk, double reference);
+
 // `overall` is the session's metrics (combine_metrics of the steps).
 Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& steps, const Metrics& overall);
 

@@ -7,7 +7,7 @@ namespace needle::training {
 
 ForceDepth force_depth(const std::vector<haptics::TickSample>& samples, const Task* task) {
   ForceDepth out;
-  out.plot = {"Axial force against depth", "N", "depth (mm)", {}, {}, {}};
+  out.plot = {"Force along the needle against depth", "N", "depth (mm)", {}, {}, {}};
   if (!task || task->layers.size() < 2) {
     out.plot.missing = task ? "task " + task->name + " has no layered tissue" : "no task to name the layers";
     return out;
