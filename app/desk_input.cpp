@@ -60,6 +60,11 @@ haptics::MouseView mouse_view(const engine::Camera& camera, const ToolStart& sta
   return {std::tan(0.5 * double(camera.fov_y_deg) * M_PI / 180.0), (start.tip - eye).dot(start.device_to_scene.col(2))};
 }
 
+haptics::NeedleDirection needle_direction(const ToolStart& start, const std::array<double, 3>& axis) {
+  const Eigen::Vector3d d = start.device_to_scene.transpose() * Eigen::Vector3d(axis[0], axis[1], axis[2]).normalized();
+  return {{d.x(), d.y(), d.z()}};
+}
+
 haptics::NeedleDirection needle_direction(const ToolStart& start, const haptics::DeskPose& pose) {
   const Eigen::Vector3d d = start.device_to_scene.transpose() *
                             haptics::wrist_direction(start.device_to_scene, start.direction, pose.wrist_rad[0], pose.wrist_rad[1]);
@@ -68,9 +73,9 @@ haptics::NeedleDirection needle_direction(const ToolStart& start, const haptics:
 
 void DeskInput::frame(engine::Window& window, const std::vector<engine::Window::KeyPress>& keys, bool pointer_on_panel) {
   if (start_) {
-    mouse_.set_needle_direction(needle_direction(*start_, mouse_.pose()));
-    keys_.set_needle_direction(needle_direction(*start_, keys_.pose()));
-    pad_.set_needle_direction(needle_direction(*start_, pad_.pose()));
+    mouse_.set_needle_direction(axis_ ? needle_direction(*start_, *axis_) : needle_direction(*start_, mouse_.pose()));
+    keys_.set_needle_direction(axis_ ? needle_direction(*start_, *axis_) : needle_direction(*start_, keys_.pose()));
+    pad_.set_needle_direction(axis_ ? needle_direction(*start_, *axis_) : needle_direction(*start_, pad_.pose()));
   }
   const auto now = std::chrono::steady_clock::now();
   const double dt = last_frame_ ? std::chrono::duration<double>(now - *last_frame_).count() : 0.0;

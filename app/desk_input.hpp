@@ -4,6 +4,7 @@
 // mappings below it are tested without a display.
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <optional>
 #include <string>
@@ -28,8 +29,11 @@ void check_present(const haptics::DeviceSpec& spec);
 // view and the start's distance along the view.
 haptics::MouseView mouse_view(const engine::Camera& camera, const ToolStart& start);
 // The needle's direction as the wrist of `pose` turns the start's (haptics::wrist_direction, as the
-// coupling turns it), in device axes: where the wheel, W and S and the triggers push.
+// coupling turns it), in device axes: where the wheel, W and S and the triggers push before the
+// needle's own axis is known (DeskInput::set_needle_axis).
 haptics::NeedleDirection needle_direction(const ToolStart& start, const haptics::DeskPose& pose);
+// The needle's axis now (world frame, unit) in device axes.
+haptics::NeedleDirection needle_direction(const ToolStart& start, const std::array<double, 3>& axis);
 
 class DeskInput {
  public:
@@ -42,6 +46,10 @@ class DeskInput {
   // cursor is over a panel, whose clicks and motion are the panel's, so the mouse leaves the
   // needle where it is.
   void frame(engine::Window& window, const std::vector<engine::Window::KeyPress>& keys, bool pointer_on_panel);
+  // The needle's axis now (world frame, the newest state's): the wheel, W and S and the triggers
+  // push along it, as a needle is pushed along itself (in tissue it cannot go sideways), rather
+  // than along the wrist's target, which the needle may lag.
+  void set_needle_axis(const std::array<double, 3>& axis) { axis_ = axis; }
   // Where the tool starts and how `camera` shows it: the wheel, W and S and the triggers push along
   // the needle from then on; the mouse maps the cursor through that view (haptics::MouseView) and
   // the cursor is put on the tool's start, so the tip starts, and comes to rest, under it. The first
@@ -59,6 +67,7 @@ class DeskInput {
   haptics::KeyboardMapping keys_;
   haptics::GamepadMapping pad_;
   std::optional<ToolStart> start_;  // the needle's start direction and the view's axes, once known
+  std::optional<std::array<double, 3>> axis_;  // the needle's axis now, once a state has come
   bool turning_ = false;          // the mouse's turning button is held
   engine::Window::Cursor turn_from_;  // where the cursor was when it went down
   bool gamepad_ = false;

@@ -117,6 +117,7 @@ TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices
                    w.take_scroll();
                    return;
                  }
+                 if (session.samples() > 0) desk->set_needle_axis(session.needle_axis());
                  desk->frame(w, keys, ui::pointer_on_panel());
                  if (desk->take_fault_reset()) session.reset_fault();
                }),

@@ -89,6 +89,8 @@ class TaskSession {
   void reset_fault();
 
   engine::NeedleLoad needle() const { return feed_.needle(); }
+  // The needle's axis in the newest state (world frame); before the first, the state's default.
+  std::array<double, 3> needle_axis() const { return feed_.needle_axis(); }
   // The trainee panel of now (with the result once finished), describing `step` when given, with
   // how the device moves the needle (`controls`, one line) and buttons for `choices`.
   void draw_panel(std::optional<size_t> step = std::nullopt, const char* controls = nullptr,

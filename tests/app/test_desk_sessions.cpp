@@ -41,8 +41,10 @@ std::string steps_of(const training::SessionResult& r) {
   return out;
 }
 
-// Runs the task on `device` (keyboard or mouse); `input(t, desk)` is called every `input_ticks`
-// ticks with the time into the session and sets the device's pose through its mapping.
+// Runs the task on `device` (keyboard or mouse); `input(t, desk, axis)` is called every
+// `input_ticks` ticks with the time into the session and the needle's axis in the newest state (what
+// the app hands its desk input, app::DeskInput::set_needle_axis), and sets the device's pose through
+// its mapping.
 // `task_name`: a task of assets/tasks/.
 template <typename Input>
 DeskRun run_desk(const std::string& device, uint64_t input_ticks, Input input, const std::string& task_name = "penetrable_sphere") {
@@ -63,11 +65,13 @@ DeskRun run_desk(const std::string& device, uint64_t input_ticks, Input input, c
   DeskRun run;
   std::optional<Eigen::Vector3d> pivot_tip;  // where the tip was when the pivot step began
   haptics::TickSample sample;
+  std::optional<std::array<double, 3>> axis;  // none before the first state, as in the app
   for (uint64_t k = 0; k < uint64_t(80 * kRate_hz) && !scorer.progress().finished(); ++k) {
-    if (k % input_ticks == 0) input(double(k) / kRate_hz, *rig.desk());
+    if (k % input_ticks == 0) input(double(k) / kRate_hz, *rig.desk(), axis);
     loop.run_unpaced(1);
     while (loop.samples().pop(sample)) {
       scorer.feed(sample);
+      axis = haptics::needle_axis(sample.state);
       const size_t step = scorer.progress().current_step();
       if (step >= task.steps.size() || task.steps[step].id != "pivot") continue;
       const Eigen::Vector3d tip(sample.state.needle_tip_m[0], sample.state.needle_tip_m[1], sample.state.needle_tip_m[2]);
@@ -101,10 +105,10 @@ TEST(DeskSessions, PenetrableSphereWithTheKeyboard) {
   int presses = 0;
   // A trainee pressing (or holding, with the key repeat) 40 times a second, each press the key
   // that most reduces what is left to do, with Shift under a whole step.
-  const DeskRun run = run_desk("keyboard", 25, [&](double t, haptics::DeskDevice& desk) {
+  const DeskRun run = run_desk("keyboard", 25, [&](double t, haptics::DeskDevice& desk, const auto& axis) {
     const DeskWaypoint want = plan_at(plan, centre, t);
     const haptics::DeskPose& pose = keys.pose();
-    keys.set_needle_direction(app::needle_direction(start, pose));  // W and S go along the needle, as in the app
+    keys.set_needle_direction(axis ? app::needle_direction(start, *axis) : app::needle_direction(start, pose));  // as in the app
     const double error[5] = {(want.device_m[0] - pose.position_m[0]) / haptics::KeyboardMapping::kStep_m,
                              (want.device_m[1] - pose.position_m[1]) / haptics::KeyboardMapping::kStep_m,
                              (want.device_m[2] - pose.position_m[2]) / haptics::KeyboardMapping::kStep_m,
@@ -136,8 +140,8 @@ DeskRun run_with_the_mouse(const std::string& task_name, MakePlan make_plan, std
   const Eigen::Vector2d cursor = mouse_cursor_start(task, start, {1280, 720});
   const haptics::MouseView view = app::mouse_view(engine::load_scene(task.scene).camera, start);
   mouse.emplace(make_plan(task, start, mouse_device_start(view, cursor)), start, view, cursor);
-  return run_desk("mouse", 20, [&](double t, haptics::DeskDevice& desk) {
-    mouse->step(t);
+  return run_desk("mouse", 20, [&](double t, haptics::DeskDevice& desk, const auto& axis) {
+    mouse->step(t, axis);
     desk.set_pose(mouse->pose());
   }, task_name);
 }
@@ -179,10 +183,10 @@ TEST(DeskSessions, PenetrableSphereWithAGamepad) {
     const double want = std::clamp(error / (0.2 * rate), -1.0, 1.0);
     return want == 0.0 ? 0.0 : (want > 0 ? 1.0 : -1.0) * (dead_zone + (1.0 - dead_zone) * std::abs(want));
   };
-  const DeskRun run = run_desk("gamepad", 20, [&](double t, haptics::DeskDevice& desk) {
+  const DeskRun run = run_desk("gamepad", 20, [&](double t, haptics::DeskDevice& desk, const auto& axis) {
     const DeskWaypoint want = plan_at(plan, centre, t);
     const haptics::DeskPose& pose = pad.pose();
-    pad.set_needle_direction(app::needle_direction(start, pose));  // the triggers go along the needle, as in the app
+    pad.set_needle_direction(axis ? app::needle_direction(start, *axis) : app::needle_direction(start, pose));  // as in the app
     State s;
     const double v = haptics::GamepadMapping::kSpeed_m_per_s, w = haptics::GamepadMapping::kTurnRate_rad_per_s;
     const double dz = haptics::GamepadMapping::kStickDeadZone;

@@ -6,8 +6,10 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -194,8 +196,9 @@ class MousePlayer {
     mouse_.pointer(cursor_.x(), cursor_.y(), false);
   }
 
-  // The input for `t` seconds into the plan.
-  MouseInput step(double t) {
+  // The input for `t` seconds into the plan; `axis`: the needle's axis now (world frame), which the
+  // app pushes along once it has a state (a script made beforehand has none: the wrist's direction).
+  MouseInput step(double t, const std::optional<std::array<double, 3>>& axis = std::nullopt) {
     const DeskWaypoint want = plan_at(plan_, device_start_, t);
     const haptics::DeskPose& pose = mouse_.pose();
     const Eigen::Vector2d turn(want.swing_rad - pose.wrist_rad[0], want.tilt_rad - pose.wrist_rad[1]);
@@ -216,13 +219,13 @@ class MousePlayer {
       pressed_ = cursor_;
       mouse_.pointer(cursor_.x(), cursor_.y(), true);
     }
-    mouse_.set_needle_direction(app::needle_direction(start_, pose));
+    const haptics::NeedleDirection direction = axis ? app::needle_direction(start_, *axis) : app::needle_direction(start_, pose);
+    mouse_.set_needle_direction(direction);
     if (turning) {
       cursor_ += turn / haptics::MouseMapping::kRadPerHalfHeight;
     } else {
       // The wheel for the depth the needle's direction can give (a needle in the screen's plane has
       // none: the cursor does it all), the cursor for the rest, where it must be before the wheel.
-      const haptics::NeedleDirection direction = app::needle_direction(start_, pose);
       const double* d = direction.device;
       if (std::abs(d[2]) > 0.2)
         input.notches = std::round((want.device_m.z() - pose.position_m[2]) / (d[2] * haptics::MouseMapping::kDepthPerNotch_m));
