@@ -22,6 +22,7 @@ std::string component_label(const std::string& name) {
       {"overshoot", "overshoot"},
       {"bone_contacts", "no bone contact"},
       {"redirections", "no redirections"},
+      {"loss_of_resistance", "stopped at the loss of resistance"},
   };
   const auto it = labels.find(name);
   return it != labels.end() ? it->second : name;

@@ -152,6 +152,7 @@ std::vector<std::string> what_to_improve(const training::Score& score) {
       {"overshoot", "Stop as soon as the resistance gives way"},
       {"bone_contacts", "Keep to the planned axis: do not meet the bone"},
       {"redirections", "Aim before you go in: avoid pulling back and redirecting"},
+      {"loss_of_resistance", "Stop as soon as the plunger gives way, and do not mistake a give"},
   };
   std::vector<const training::ScoreComponent*> lost;
   // What the trainee did, not what the run never reached (the steps not completed say that).

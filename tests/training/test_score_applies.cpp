@@ -82,9 +82,9 @@ TEST(ScoreApplies, ARunThatNeverEntersTissueScoresNothingForTissueMetrics) {
 }
 
 // The epidural's steps have no target: its tip error is not applicable and earns nothing; the
-// layered defaults (10, 10, 5) make 125 points, normalised to 100 on load, and without the tip
-// error's 15 x 100/125 = 12 and the force steadiness's 4 (no force_held step) the other components
-// share 84: each its default x 100/125 x 100/84.
+// layered defaults (10, 10, 5) and the syringe's (10) make 135 points, normalised to 100 on load,
+// and without the tip error's 15 and the force steadiness's 5 (no force_held step) of those 135 the
+// other components share 115: each its default x 100/115.
 TEST(ScoreApplies, AnEpiduralWithoutATargetScoresNoTipErrorPoints) {
   const Task task = shipped("epidural");
   EXPECT_FALSE(task.scoring.measures.tip_error);
@@ -97,9 +97,14 @@ TEST(ScoreApplies, AnEpiduralWithoutATargetScoresNoTipErrorPoints) {
   EXPECT_EQ(c.at("tip_error").status, ComponentStatus::kNotApplicable);
   EXPECT_EQ(c.at("tip_error").weight, 0.0);
   EXPECT_EQ(c.at("tip_error").points(), 0.0);
-  EXPECT_NEAR(c.at("completion").weight, 30.0 * 100.0 / 125.0 * 100.0 / 84.0, 1e-9);
-  EXPECT_NEAR(c.at("overshoot").weight, 10.0 * 100.0 / 125.0 * 100.0 / 84.0, 1e-9);
+  EXPECT_NEAR(c.at("completion").weight, 30.0 * 100.0 / 115.0, 1e-9);
+  EXPECT_NEAR(c.at("overshoot").weight, 10.0 * 100.0 / 115.0, 1e-9);
+  EXPECT_NEAR(c.at("loss_of_resistance").weight, 10.0 * 100.0 / 115.0, 1e-9);
   EXPECT_NEAR(sum_of_weights(r.score), 100.0, 1e-9);
+  // Never in tissue, so no loss of resistance was found: the syringe's component is not reached.
+  EXPECT_TRUE(std::isnan(r.overall.advance_after_loss_m));
+  EXPECT_EQ(c.at("loss_of_resistance").status, ComponentStatus::kNotReached);
+  EXPECT_EQ(c.at("loss_of_resistance").points(), 0.0);
 }
 
 // A layered run that tents the skin (the world pushes on the needle: the peak force applies) but
@@ -123,6 +128,10 @@ TEST(ScoreApplies, ALayeredRunThatNeverPuncturesEarnsNothingForOvershootAndBoneC
   }
   EXPECT_EQ(c.at("peak_force").status, ComponentStatus::kApplied);
   EXPECT_EQ(c.at("peak_force").value, 1.0);  // 0.8 N at the hand, under the safe 3.3 N
+  // No syringe in this task: its metrics did not apply, and no component pays for them.
+  EXPECT_TRUE(std::isnan(r.overall.advance_after_loss_m));
+  EXPECT_TRUE(std::isnan(r.overall.false_losses));
+  EXPECT_EQ(c.count("loss_of_resistance"), 0u);
 }
 
 // Once a membrane gives way, the layered components apply and pay for what the run did.

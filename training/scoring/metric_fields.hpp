@@ -67,6 +67,11 @@ void for_each_metric(M& m, F&& f) {
   visit("bone_peak_force_N", m.bone_peak_force_N, {"force on bone, peak", "N", 1.0, true, 1});
   visit("redirections", m.redirections, {"redirections", "count", 1.0, true, 0});
   visit("forbidden_punctures", m.forbidden_punctures, {"forbidden punctures (the dura)", "count", 1.0, true, 0});
+  visit("advance_after_loss_m", m.advance_after_loss_m, {"advanced after the loss of resistance", "mm", 1000.0, true, 1});
+  visit("loss_pressure_before_Pa", m.loss_pressure_before_Pa, {"plunger pressure before the loss", "kPa", 1e-3, true, 1});
+  visit("loss_pressure_after_Pa", m.loss_pressure_after_Pa, {"plunger pressure after the loss", "kPa", 1e-3, true, 1});
+  visit("false_losses", m.false_losses, {"false losses of resistance", "count", 1.0, true, 0});
+  visit("pressure_applied_s", m.pressure_applied_s, {"plunger pressed", "s", 1.0, true, 1});
 }
 
 // How the panels show the metric called `name` (its field's name); no label when none has it.

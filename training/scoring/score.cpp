@@ -57,6 +57,13 @@ Metrics combine_metrics(const std::vector<StepResult>& steps) {
     m.bone_peak_force_N = std::max(m.bone_peak_force_N, x.bone_peak_force_N);
     m.redirections += x.redirections;
     m.forbidden_punctures += x.forbidden_punctures;
+    // The syringe's: counts and times add up (not applicable when no step has them), the loss's are the step's that had it.
+    for (auto [total, step] : {std::pair{&m.false_losses, x.false_losses}, std::pair{&m.pressure_applied_s, x.pressure_applied_s}})
+      if (!std::isnan(step)) *total = (std::isnan(*total) ? 0.0 : *total) + step;
+    for (auto [last, step] : {std::pair{&m.advance_after_loss_m, x.advance_after_loss_m},
+                              std::pair{&m.loss_pressure_before_Pa, x.loss_pressure_before_Pa},
+                              std::pair{&m.loss_pressure_after_Pa, x.loss_pressure_after_Pa}})
+      if (!std::isnan(step)) *last = step;
     if (m.faults == 0) m.first_fault = x.first_fault;
     m.faults += x.faults;
   }
@@ -87,6 +94,7 @@ bool component_reached(const std::string& name, const Metrics& m, bool every_ste
   if (name == "overshoot") return !std::isnan(m.overshoot_m);
   if (name == "bone_contacts") return punctured || m.bone_contacts > 0;
   if (name == "redirections") return punctured || m.redirections > 0;
+  if (name == "loss_of_resistance") return !std::isnan(m.advance_after_loss_m);  // a loss was found in the syringe's space
   return true;  // completion
 }
 
@@ -136,6 +144,13 @@ Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& step
   if (w.overshoot > 0.0) parts.push_back({"overshoot", falling(m.overshoot_m, r.overshoot_m), w.overshoot, true});
   if (w.bone_contacts > 0.0) parts.push_back({"bone_contacts", 1.0 / (1.0 + m.bone_contacts), w.bone_contacts, true});
   if (w.redirections > 0.0) parts.push_back({"redirections", 1.0 / (1.0 + m.redirections), w.redirections, true});
+  // Only a task with a syringe weighs the loss of resistance: how little the tip went on after it, less
+  // for every false loss (docs/SCORING.md, "Syringe"); not reached when no loss was found.
+  if (w.loss_of_resistance > 0.0) {
+    const double false_losses = std::isnan(m.false_losses) ? 0.0 : m.false_losses;
+    parts.push_back({"loss_of_resistance", falling(m.advance_after_loss_m, r.loss_advance_m) / (1.0 + false_losses),
+                     w.loss_of_resistance, true});
+  }
   // The task's weights over the components it measures, renormalised to 100.
   double measured_weight = 0.0;
   for (const Part& p : parts)
@@ -158,7 +173,8 @@ Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& step
     score.reasons_failed.push_back(std::to_string(steps.size() - completed) + " step(s) not completed");
   // A forbidden layer (the dura) or bone touched fails the task whatever the rest (issue 14).
   for (const StepResult& s : steps)
-    if (s.record.outcome == StepOutcome::kForbiddenPuncture || s.record.outcome == StepOutcome::kRigidTouched)
+    if (s.record.outcome == StepOutcome::kForbiddenPuncture || s.record.outcome == StepOutcome::kRigidTouched ||
+        s.record.outcome == StepOutcome::kAdvancedPastLoss)
       score.reasons_failed.push_back("step " + s.id + ": " + (s.failure.empty() ? step_outcome_name(s.record.outcome) : s.failure));
   if (m.faults > 0) score.reasons_failed.push_back(std::to_string(m.faults) + " safety fault(s)");
   if (peak > safe)
