@@ -223,16 +223,18 @@ TEST(CliStartScreen, TheKeyboardsKeysMoveAndTurnTheNeedleInTheWindow) {
   const double degree = 3.141592653589793 / 180.0;
   EXPECT_NEAR(last.joint_rad[0], 5 * degree, 1e-9) << "D swings";
   EXPECT_NEAR(last.joint_rad[1], 3 * degree, 1e-9) << "E tilts away";
-  // W pushes in along the needle as the wrist holds it (swung 5 deg, tilted 3 deg), 1 mm a press.
+  // W pushes in along the needle, 1 mm a press: along its axis in the newest state, which in free
+  // space is where the wrist holds it (swung 5 deg, tilted 3 deg) to within the coupling's lag, under
+  // 0.1 deg here: 4 mm along it within 5 um of 4 mm along the wrist's direction.
   const fs::path task_file = source_dir() / "assets/tasks/penetrable_sphere.json";
   const DeskStart start = desk_start(task_file, "keyboard", user.root / "plan");
   haptics::DeskPose turned;
   turned.wrist_rad[0] = 5 * degree, turned.wrist_rad[1] = 3 * degree;
   const haptics::NeedleDirection along = app::needle_direction(start, turned);
   const double* d = along.device;
-  EXPECT_NEAR(last.position_m[0], -0.002 + 0.004 * d[0], 1e-9) << "Left, and W along the needle";
-  EXPECT_NEAR(last.position_m[1], 0.0002 + 0.004 * d[1], 1e-9) << "Shift+Up: a fifth of a step";
-  EXPECT_NEAR(last.position_m[2], 0.1 + 0.004 * d[2], 1e-9) << "W pushes in along the needle";
+  EXPECT_NEAR(last.position_m[0], -0.002 + 0.004 * d[0], 5e-6) << "Left, and W along the needle";
+  EXPECT_NEAR(last.position_m[1], 0.0002 + 0.004 * d[1], 5e-6) << "Shift+Up: a fifth of a step";
+  EXPECT_NEAR(last.position_m[2], 0.1 + 0.004 * d[2], 5e-6) << "W pushes in along the needle";
 }
 
 // A task whose one step holds from the first tick (the tip starts out of the tissue, far from
