@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <thread>
@@ -241,6 +242,8 @@ int fill(const std::optional<Bar>& b) { return b ? b->fill_end - b->left + 1 : 0
 // gauge's end (45 deg and more it reads full) big steps come first, the way that brings the fill
 // down. Stops when the step ends (the progress bar moves), when the fill is inside the gauge's
 // tolerance tick or next to nothing, or at `until`.
+std::function<void(const std::string&)> log_;  // where align says how it went
+
 void align(const Desk& desk, int step_done_at, Clock::time_point until) {
   const auto done = [&](const Reading& r) {
     return r.progress > step_done_at || fill(r.axis) <= 10 || (r.axis && r.axis->tick >= 0 && r.axis->fill_end < r.axis->tick - 2);
@@ -251,7 +254,7 @@ void align(const Desk& desk, int step_done_at, Clock::time_point until) {
     return read(desk);
   };
   Reading r = read(desk);
-  for (int round = 0; round < 3 && !done(r) && Clock::now() < until; ++round) {
+  for (int round = 0; round < 5 && !done(r) && Clock::now() < until; ++round) {
     for (const bool swing : {true, false}) {
       if (done(r) || Clock::now() >= until) return;
       const int full = r.axis ? r.axis->fill_end - r.axis->left + 1 : 0;
@@ -272,14 +275,17 @@ void align(const Desk& desk, int step_done_at, Clock::time_point until) {
         to = fp < fm ? 2.0 * h : fm < fp ? -2.0 * h : 0.0;  // no bowl seen (the gauge full): the lower way
       to = std::clamp(to, -120.0, 120.0);
       r = look(swing, int(std::lround(to)) + h);  // from -h to `to`
+      if (log_) log_("align: off the axis " + std::to_string(fill(r.axis)) + " px");
     }
   }
 }
 
-// Disabled: the script completes the approach, the insertion and the pivot, but after the pivot the
-// tip sits about 13 mm off the line through the target, and along the planned axis the needle passes
-// it by; aiming at the target in tissue from the distance gauge alone is not written yet. Run it with
-// --gtest_also_run_disabled_tests.
+// Disabled: not yet a pass on a first attempt. Of the last three runs two completed all five steps
+// (64.1 and 66.4 against the pass mark of 70; the peak force at the hand under the safe 3 N) and one
+// ran out of time in the pivot. What the score still takes: 9 to 11 re-insertions in the insert step
+// (the tip going in and out of the surface as it enters), 13 N s of sideways load (mostly the
+// pivot's 18 s of probing turns), and 30 deg off the axis in the approach (the needle is turned onto
+// the axis only once the tip's depth is set). Run it with --gtest_also_run_disabled_tests.
 TEST(CliFirstAttempt, DISABLED_AScriptThatReadsOnlyTheScreenPassesThePenetrableSphereWithTheMouse) {
   const fs::path dir = process_folder(test_output_dir("cli_first_attempt"));
   Desk desk(dir);
@@ -292,21 +298,26 @@ TEST(CliFirstAttempt, DISABLED_AScriptThatReadsOnlyTheScreenPassesThePenetrableS
     std::snprintf(at, sizeof at, "%5.1f s ", std::chrono::duration<double>(Clock::now() - began).count());
     said += at + line + "\n";
   };
+  log_ = log;
   log("window " + desk.find_window());
   settle(1.5);  // the loop starts on the first frame
 
   // Approach: the cursor on the entry ring (the tip comes under it), then in or out along the needle
   // by as many notches as the distance gauge says are left, a few at a time, measured by a first
-  // push of two: the tip is under the entry's ring, so what the gauge still shows is the depth to go.
-  // The cursor back on the ring after each push (the tip moves across the view too). Half way, still
-  // in the air, the needle is turned onto the planned axis (the axis gauge's fill shortest), so that
-  // it meets the surface along it; then on to the entry itself (the distance gauge's fill no longer
-  // shrinking), past the step's end.
+  // push of two; the cursor back on the ring after each push (the tip moves across the view too).
+  // The needle as it starts, tilted into the screen: a notch along it moves the tip in depth, which
+  // the cursor cannot. Under the ring, the tip is on the line of sight through the entry, which
+  // meets the sphere only there (the entry is on its outline): the tip stays in the air. When the step
+  // ends (within its tolerance) the ring and the gauge go; the notches the last reading left, but
+  // two, follow, the cursor back where the ring was, so the tip stops in the air just short of the
+  // entry, where the needle can turn onto the planned axis without touching the surface.
   Reading r = read(desk);
   const int approached = r.progress;
+  std::pair<int, int> ring{-1, -1};
   const auto on_the_ring = [&] {
     const Reading now = read(desk);
-    if (const auto entry = find_ring(now.screen, now.panel, kEntry, true)) desk.move(entry->first, entry->second);
+    if (const auto entry = find_ring(now.screen, now.panel, kEntry, true)) ring = *entry;
+    if (ring.first >= 0) desk.move(ring.first, ring.second);
     settle(0.3);
   };
   on_the_ring();
@@ -318,23 +329,26 @@ TEST(CliFirstAttempt, DISABLED_AScriptThatReadsOnlyTheScreenPassesThePenetrableS
   const double per_notch = (d1 - d0) / 2.0;  // fill pixels a notch in
   log("approach: distance " + std::to_string(d0) + " then " + std::to_string(d1) + " px");
   ASSERT_GE(std::abs(per_notch), 1.0) << said;
-  const auto towards_the_entry = [&](int notches) {
+  double left = d1;  // the fill still to go, as last read or reckoned
+  for (Clock::time_point until = Clock::now() + std::chrono::seconds(8); Clock::now() < until;) {
+    const int notches = std::clamp(int(std::lround(left / std::abs(per_notch))) - 1, 1, 3);
     desk.wheel(per_notch < 0 ? notches : -notches);
     settle(0.3);
     on_the_ring();
-  };
-  const int half_way = std::max(3, int(std::lround(0.5 * d1 / std::abs(per_notch))));
-  for (int left = half_way; left > 0; left -= 3) towards_the_entry(std::min(3, left));
-  align(desk, approached, Clock::now() + std::chrono::seconds(6));
-  on_the_ring();
-  for (int closest = fill(read(desk).distance), tries = 0; tries < 12; ++tries) {
-    towards_the_entry(std::clamp(int(std::lround(closest / std::abs(per_notch))) - 1, 1, 3));
-    const int now = fill(read(desk).distance);
-    if (now >= closest - 2) break;
-    closest = now;
+    r = read(desk);
+    if (r.progress > approached) {
+      left = std::max(0.0, left - notches * std::abs(per_notch));
+      break;
+    }
+    left = fill(r.distance);
+  }
+  for (int notches = int(std::lround(left / std::abs(per_notch))) - 2; notches > 0; notches -= 2) {
+    desk.wheel((per_notch < 0 ? 1 : -1) * std::min(2, notches));
+    settle(0.3);
+    on_the_ring();
   }
   r = read(desk);
-  log("approach: progress " + std::to_string(r.progress) + ", distance " + std::to_string(fill(r.distance)) + " px");
+  log("approach: progress " + std::to_string(r.progress) + ", " + std::to_string(left) + " px reckoned left at its end");
   ASSERT_GT(r.progress, approached) << said;
   Clock::time_point until;
 
@@ -361,7 +375,7 @@ TEST(CliFirstAttempt, DISABLED_AScriptThatReadsOnlyTheScreenPassesThePenetrableS
   // Pivot: onto the new axis about the tip (the wrist turns, the hand stays), until the axis gauge's
   // fill is inside its tolerance tick and the step ends.
   const int pivoted = r.progress;
-  align(desk, pivoted, Clock::now() + std::chrono::seconds(25));
+  align(desk, pivoted, Clock::now() + std::chrono::seconds(27));
   for (until = Clock::now() + std::chrono::seconds(3); read(desk).progress == pivoted && Clock::now() < until;) settle(0.2);
   r = read(desk);
   log("pivot: progress " + std::to_string(r.progress));
@@ -369,7 +383,7 @@ TEST(CliFirstAttempt, DISABLED_AScriptThatReadsOnlyTheScreenPassesThePenetrableS
 
   // Advance: aimed again (in tissue the needle settles a little off where the wrist points: the axis
   // gauge says so), then in along the needle while the distance to the target shrinks; past its
-  // shortest, back a notch and aim again; held inside the tolerance tick.
+  // shortest, back a notch and aim again; held well inside the tolerance tick.
   const int advanced = r.progress;
   align(desk, advanced, Clock::now() + std::chrono::seconds(4));
   int best = fill(read(desk).distance);
@@ -379,8 +393,9 @@ TEST(CliFirstAttempt, DISABLED_AScriptThatReadsOnlyTheScreenPassesThePenetrableS
       log(r.distance ? "advance: the step ended" : "advance: no distance gauge");
       break;
     }
-    if (r.distance->tick >= 0 && r.distance->fill_end < r.distance->tick) {
-      settle(0.3);  // inside the tolerance: hold
+    // Well inside the tolerance (the tick): hold; inside it but near its edge, a notch more.
+    if (r.distance->tick >= 0 && r.distance->fill_end - r.distance->left < 0.6 * (r.distance->tick - r.distance->left)) {
+      settle(0.3);
       continue;
     }
     const int now = fill(r.distance);
