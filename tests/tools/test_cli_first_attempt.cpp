@@ -280,12 +280,14 @@ void align(const Desk& desk, int step_done_at, Clock::time_point until) {
   }
 }
 
-// Disabled: not yet a pass on a first attempt. Of the last three runs two completed all five steps
-// (64.1 and 66.4 against the pass mark of 70; the peak force at the hand under the safe 3 N) and one
-// ran out of time in the pivot. What the score still takes: 9 to 11 re-insertions in the insert step
-// (the tip going in and out of the surface as it enters), 13 N s of sideways load (mostly the
-// pivot's 18 s of probing turns), and 30 deg off the axis in the approach (the needle is turned onto
-// the axis only once the tip's depth is set). Run it with --gtest_also_run_disabled_tests.
+// Disabled: not yet a pass on a first attempt. Of the last four runs three completed all five steps
+// (64.1, 66.4 and 62.9 against the pass mark of 70; the peak force at the hand under the safe 3 N)
+// and one ran out of time in the pivot. What the score still takes: 7 to 11 re-insertions at the
+// entry (the line of sight through the entry grazes the sphere, which has the entry on its outline,
+// so each notch near it swings the tip across the view into the surface and the cursor's return
+// takes it out: the depth plot shows 0 to -6 mm a notch), 13 to 18 N s of sideways load (mostly the
+// pivot's 18 to 24 s of probing turns), and 30 deg off the axis in the approach (the needle is
+// turned onto the axis only once the tip's depth is set). Run it with --gtest_also_run_disabled_tests.
 TEST(CliFirstAttempt, DISABLED_AScriptThatReadsOnlyTheScreenPassesThePenetrableSphereWithTheMouse) {
   const fs::path dir = process_folder(test_output_dir("cli_first_attempt"));
   Desk desk(dir);
@@ -307,9 +309,10 @@ TEST(CliFirstAttempt, DISABLED_AScriptThatReadsOnlyTheScreenPassesThePenetrableS
   // push of two; the cursor back on the ring after each push (the tip moves across the view too).
   // The needle as it starts, tilted into the screen: a notch along it moves the tip in depth, which
   // the cursor cannot. Under the ring, the tip is on the line of sight through the entry, which
-  // meets the sphere only there (the entry is on its outline): the tip stays in the air. When the step
+  // grazes the sphere there (the entry is on its outline): near it the tip is barely in the air, and
+  // each notch, before the cursor is back on the ring, swings it across the view. When the step
   // ends (within its tolerance) the ring and the gauge go; the notches the last reading left, but
-  // two, follow, the cursor back where the ring was, so the tip stops in the air just short of the
+  // three, follow one by one, the cursor back where the ring was, so the tip stops in the air just short of the
   // entry, where the needle can turn onto the planned axis without touching the surface.
   Reading r = read(desk);
   const int approached = r.progress;
@@ -331,7 +334,8 @@ TEST(CliFirstAttempt, DISABLED_AScriptThatReadsOnlyTheScreenPassesThePenetrableS
   ASSERT_GE(std::abs(per_notch), 1.0) << said;
   double left = d1;  // the fill still to go, as last read or reckoned
   for (Clock::time_point until = Clock::now() + std::chrono::seconds(8); Clock::now() < until;) {
-    const int notches = std::clamp(int(std::lround(left / std::abs(per_notch))) - 1, 1, 3);
+    const int to_go = int(std::lround(left / std::abs(per_notch)));
+    const int notches = to_go > 8 ? 3 : 1;  // near the surface a notch at a time: each swings the tip across the view
     desk.wheel(per_notch < 0 ? notches : -notches);
     settle(0.3);
     on_the_ring();
@@ -342,8 +346,8 @@ TEST(CliFirstAttempt, DISABLED_AScriptThatReadsOnlyTheScreenPassesThePenetrableS
     }
     left = fill(r.distance);
   }
-  for (int notches = int(std::lround(left / std::abs(per_notch))) - 2; notches > 0; notches -= 2) {
-    desk.wheel((per_notch < 0 ? 1 : -1) * std::min(2, notches));
+  for (int notches = int(std::lround(left / std::abs(per_notch))) - 3; notches > 0; --notches) {
+    desk.wheel(per_notch < 0 ? 1 : -1);
     settle(0.3);
     on_the_ring();
   }
