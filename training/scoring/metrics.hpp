@@ -11,6 +11,7 @@ inline constexpr double kNotApplicable = std::numeric_limits<double>::quiet_NaN(
 
 struct Metrics {
   double duration_s = 0.0;
+  double tissue_time_s = 0.0;                  // time the needle was in tissue
   double tip_error_m = kNotApplicable;         // tip to the target marker at the end
   double axis_deviation_deg = kNotApplicable;  // needle axis to the planned axis
   double lateral_load_Ns = 0.0;                // integral of |lateral multipliers| in tissue

@@ -16,6 +16,23 @@ double session_time_bound_s(const Task& task) {
   return std::min(total, io::kMaxSessionSeconds);
 }
 
+Task practice_task(Task task) {
+  for (Step& step : task.steps) step.time_limit_s = 0.0;
+  task.practice = true;
+  return task;
+}
+
+ScoreMeasures score_measures(const Task& task) {
+  ScoreMeasures m{false, false, false, false};
+  for (const Step& s : task.steps) {
+    m.tip_error = m.tip_error || s.condition.type == ConditionType::kTargetReached || s.guidance.target >= 0;
+    m.axis_deviation = m.axis_deviation || s.condition.type == ConditionType::kAxisAligned || s.guidance.axis >= 0;
+    m.force_steadiness = m.force_steadiness || s.condition.type == ConditionType::kForceHeld;
+  }
+  m.lateral_load = std::any_of(task.layers.begin(), task.layers.end(), [](const TaskLayer& l) { return !l.rigid; });
+  return m;
+}
+
 int Task::marker_index(const std::string& marker_name) const {
   for (size_t i = 0; i < markers.size(); ++i)
     if (markers[i].name == marker_name) return static_cast<int>(i);
