@@ -16,6 +16,7 @@
 #include "haptics/safety/fault_cause.hpp"
 #include "io/file_write.hpp"
 #include "ui/guidance_overlay.hpp"
+#include "ui/syringe_gauge.hpp"
 #include "training/sessions/postgres_connection.hpp"
 #include "training/sessions/session_export.hpp"
 #include "training/sessions/store_location.hpp"
@@ -265,6 +266,11 @@ void TaskSession::draw_panel(std::optional<size_t> step, const char* controls, c
     if (result_) view.result = &*result_;
     ui::draw_trainee_panel(view);
     if (!result_) ui::draw_guidance({&task_, shown, training::vec3(last.needle_tip_m), scene_.camera});
+    if (const haptics::SyringeServoStep* syringe = rig_->syringe_step(); syringe && !result_) {
+      const auto axis = haptics::needle_axis(last);
+      ui::draw_syringe_gauge({last.syringe, haptics::syringe_stroke_m(syringe->params()), training::vec3(last.needle_tip_m),
+                              {axis[0], axis[1], axis[2]}, scene_.camera});
+    }
   });
 }
 

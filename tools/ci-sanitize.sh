@@ -15,7 +15,7 @@ fuzz_seconds=${FUZZ_SECONDS:-20}
 # times slower (Eigen's small matrices, no longer inlined), a session of minutes.
 suites='BenchPrecision|BenchStability|PenaltyOnRobot|ControllerLoop|DeviceSim|RealtimeLoop|RealtimeTaskSpace'
 suites+='|SimHolonomic|SimNonholonomic|SimFeel|SimHandPassivity|PassivityClosedLoop|TissueInsertion|TissueSnapshot|RealtimeNoAlloc'
-suites+='|SessionLimits|SessionReviewTest|SessionStoreFailure|ShippedTasks/ScriptedSessions|LayeredSessions|ReviewPanels|ReviewPanelsLayered'
+suites+='|SessionLimits|SessionReviewTest|SessionStoreFailure|ShippedTasks/ScriptedSessions|LayeredSessions|EpiduralTasks/SyringeSessions|ReviewPanels|ReviewPanelsLayered'
 suites+='|CliBench[A-Za-z]*|CliHapticsBench|CliHapticsSimulate|CliRecordings|CliReport|CliReportLayered|CliRunDevices|CliRunTask|CliWrites|Tasks/RunReplay'
 suites+='|CliPostgres|CliHostileFiles|CliVerify'
 tests='BenchTickAllocations\.(NonholonomicContact|LayeredTissue)TickAllocatesNothing|RecordingReplay\.ControllerReplayIsBitForBit'

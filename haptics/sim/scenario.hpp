@@ -12,6 +12,8 @@
 #include "haptics/sim/integrator.hpp"
 #include "haptics/sim/master_plant.hpp"
 #include "haptics/sim/operator_model.hpp"
+#include "haptics/sim/thumb_script.hpp"
+#include "haptics/syringe/syringe_model.hpp"
 #include "haptics/tissue/tissue_model.hpp"
 
 namespace needle::haptics {
@@ -38,6 +40,8 @@ struct Scenario {
   VecN q0;
   HandImpedance hand;
   HandTrajectory trajectory;  // base frame
+  std::optional<ThumbScript> thumb;      // the operator's thumb on the syringe (hand.thumb)
+  std::optional<SyringeParams> syringe;  // the loss-of-resistance syringe on the needle's hub
   ForceSensorParams sensor;
   DeviceParams device;
   double energy_bound_J = 5.0;         // a run whose total energy leaves ±bound is a fault
@@ -50,6 +54,7 @@ Scenario load_scenario(const std::string& path);
 struct OperatorHand {
   HandImpedance impedance;
   HandTrajectory trajectory;
+  std::optional<ThumbScript> thumb;
 };
 
 // The `hand` block of a scenario or of an operator script (docs/TASKS.md) at JSON pointer `at` of
@@ -58,5 +63,9 @@ struct OperatorHand {
 // Waypoint positions are given in the world frame and shifted by -base_in_world.
 OperatorHand read_hand(const nlohmann::json& hand, const std::string& file, const std::string& at,
                        const Eigen::Vector3d& base_in_world);
+// A list of hand waypoints {t, p, dir} at `at`, read as read_hand reads them: times in the session's
+// range and increasing, positions shifted by −base_in_world.
+std::vector<HandWaypoint> read_waypoints(const nlohmann::json& waypoints, const std::string& file, const std::string& at,
+                                         const Eigen::Vector3d& base_in_world);
 
 }  // namespace needle::haptics

@@ -55,6 +55,11 @@ void for_each_metric(M& m, F&& f) {
   visit("bone_peak_force_N", m.bone_peak_force_N, {"bone peak force", "N", 1.0, true});
   visit("redirections", m.redirections, {"redirections", "count", 1.0, true});
   visit("forbidden_punctures", m.forbidden_punctures, {"forbidden punctures", "count", 1.0, true});
+  visit("advance_after_loss_m", m.advance_after_loss_m, {"advanced after the loss", "mm", 1000.0, true});
+  visit("loss_pressure_before_Pa", m.loss_pressure_before_Pa, {"plunger pressure before the loss", "kPa", 1e-3, true});
+  visit("loss_pressure_after_Pa", m.loss_pressure_after_Pa, {"plunger pressure after the loss", "kPa", 1e-3, true});
+  visit("false_losses", m.false_losses, {"false losses of resistance", "count", 1.0, true});
+  visit("pressure_applied_s", m.pressure_applied_s, {"plunger pressed", "s", 1.0, true});
 }
 
 }  // namespace needle::training

@@ -38,6 +38,12 @@ struct Metrics {
   double bone_peak_force_N = 0.0;          // peak |force of the tool on bone|
   uint32_t redirections = 0;               // withdrawals to a shallower layer followed by a re-advance deeper
   uint32_t forbidden_punctures = 0;        // layers the step forbids punctured (the dura)
+  // The loss-of-resistance syringe (training/scoring/syringe_events.hpp; not applicable without one).
+  double advance_after_loss_m = kNotApplicable;     // the tip's furthest advance along the needle after the loss in the syringe's space
+  double loss_pressure_before_Pa = kNotApplicable;  // the barrel's pressure while the plunger was held before that loss
+  double loss_pressure_after_Pa = kNotApplicable;   // and kLossSettle_s after it
+  double false_losses = kNotApplicable;             // losses of resistance outside the syringe's space (fat): a count
+  double pressure_applied_s = kNotApplicable;       // time the thumb pressed the plunger
 };
 
 }  // namespace needle::training

@@ -44,6 +44,7 @@ class SessionScorer {
   TaskProgress progress_;
   std::vector<StepMetricsAccumulator> steps_;
   LayerEventTracker layers_;
+  SyringeEventTracker syringe_;
   ContactEvents contact_events(const haptics::ToolSnapshot& s);
 
   bool started_ = false;
