@@ -220,7 +220,7 @@ TEST(PassivityClosedLoop, TheStoredEnergysRateIsItsDerivativeAlongTheMastersMoti
 }
 
 // The rows of `bench stability` where the world gave the hand the most energy without the controller
-// (docs/BENCHMARKS.md, "Passivity guaranteed": 0.1 to 0.4 J) and the three that owe the most with it:
+// (docs/BENCHMARKS.md, "Passivity guaranteed": 0.04 to 0.4 J) and the three that owe the most with it:
 // with it each dissipates, to within 1 mJ by the bench's own account; without it the first three do not.
 TEST(PassivityClosedLoop, TheWorstStressRowsDissipateWithTheControllerAndNotWithout) {
   const auto thesis = stress_cases(test::scenario("holonomic_sphere"), test::scenario("nonholonomic_needle"), 10.0);
