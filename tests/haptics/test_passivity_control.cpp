@@ -11,6 +11,7 @@
 #include "haptics/sim/master_plant.hpp"
 #include "haptics/sim/stress_cases.hpp"
 #include "sim_fixtures.hpp"
+#include "tests/support/allocation_count.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -185,24 +186,46 @@ const StressCase& row(const std::vector<StressCase>& cases, const std::string& n
   throw std::invalid_argument("no stress row " + name + " " + value);
 }
 
+// The controller on the simulated device with the scenario's scripted hand, a tick at a time, so that
+// a test can watch the controller's tick: sense(), then the tick, then drive() with its output.
+struct ClosedLoop {
+  const Scenario& sc;
+  Teleoperation tele;
+  MasterPlant plant;
+  TickInput in;
+  long k = 0;
+  explicit ClosedLoop(const Scenario& s)
+      : sc(s),
+        tele(s.master, s.virt, s.scene, s.gains, s.period_s, s.virtual_substeps, s.device),
+        plant(s.master, s.device, s.hand, s.master_integrator, s.master_substeps) {
+    tele.reset(s.q0, VecN::Zero(s.master.dof()));
+    plant.reset(s.q0, VecN::Zero(s.master.dof()));
+  }
+  bool running() const { return k < std::lround(sc.duration_s / sc.period_s); }
+  const TickInput& sense() {
+    in.q_m = plant.q();
+    in.dq_m = plant.dq();
+    in.wrench_h = plant.hand_wrench();
+    return in;
+  }
+  void drive(const TickOutput& out) {
+    plant.advance(out.tau_m, sc.trajectory, k * sc.period_s, sc.period_s);
+    ++k;
+  }
+};
+
 // The controller's U⁺ is U plus T times its rate along the master's motion: that rate is the derivative of
 // Teleoperation::stored_energy along q̇ (central differences), here in the epidural with the needle in
 // tissue, the lateral and axial springs both on.
 TEST(PassivityClosedLoop, TheStoredEnergysRateIsItsDerivativeAlongTheMastersMotion) {
   const Scenario& sc = test::scenario("epidural");
   ASSERT_GT(sc.gains.axial_stiffness_N_per_m, 0.0);
-  const int n = sc.master.dof();
-  Teleoperation tele(sc.master, sc.virt, sc.scene, sc.gains, sc.period_s, sc.virtual_substeps, sc.device);
-  MasterPlant plant(sc.master, sc.device, sc.hand, sc.master_integrator, sc.master_substeps);
-  tele.reset(sc.q0, VecN::Zero(n));
-  plant.reset(sc.q0, VecN::Zero(n));
-  TickInput in;
+  ClosedLoop loop(sc);
+  const Teleoperation& tele = loop.tele;
+  const MasterPlant& plant = loop.plant;
   int in_tissue = 0;
-  for (long k = 0; k < std::lround(sc.duration_s / sc.period_s) && in_tissue < 500; ++k) {
-    in.q_m = plant.q();
-    in.dq_m = plant.dq();
-    in.wrench_h = plant.hand_wrench();
-    plant.advance(tele.step(in).tau_m, sc.trajectory, k * sc.period_s, sc.period_s);
+  while (loop.running() && in_tissue < 500) {
+    loop.drive(loop.tele.step(loop.sense()));
     in_tissue += tele.blend().tissue == 1.0 && tele.blend().axial == 1.0;
   }
   ASSERT_EQ(in_tissue, 500) << "the script should put the needle in the tissue";
@@ -246,6 +269,27 @@ TEST(PassivityClosedLoop, TheScriptedScenariosNeverSwitchTheControllerOn) {
     EXPECT_EQ(s.passivity_damped_s, 0.0) << name;
     EXPECT_GE(s.world_dissipated_min_J, 0.0) << name;
   }
+}
+
+// The tick the controller acts on allocates nothing either (BenchTickAllocations.* counts ticks it never
+// acts on): the stress row with 16 ms ticks in tissue, where it withholds and damps for 20 s of 44.
+TEST(PassivityClosedLoop, TheTicksTheControllerActsOnAllocateNothing) {
+  const auto thesis = stress_cases(test::scenario("holonomic_sphere"), test::scenario("nonholonomic_needle"), 10.0);
+  ClosedLoop loop(row(thesis, "period x (nonholonomic_needle)", "8").scenario);
+  long allocations = 0;
+  int withheld = 0, damped = 0;
+  while (loop.running()) {
+    const TickInput& in = loop.sense();
+    needle::test::allocation_counter::start();
+    const TickOutput& out = loop.tele.step(in);
+    allocations += needle::test::allocation_counter::stop();
+    withheld += out.passivity_share_withheld > 0.0;
+    damped += out.passivity_damping_per_s > 0.0;
+    loop.drive(out);
+  }
+  EXPECT_GT(withheld, 100);
+  EXPECT_GT(damped, 100);
+  EXPECT_EQ(allocations, 0);
 }
 
 }  // namespace
