@@ -110,7 +110,7 @@ void draw_result(const training::SessionResult& r) {
                      r.score.passed ? "PASSED" : "NOT PASSED");
   ImGui::Separator();
   draw_score_breakdown(r.score.components, 1);
-  // A layered task's faults by name (issue 14's acceptance: the sloppy epidural's bone contact or
+  // A layered task's faults by name (the sloppy epidural's bone contact or
   // dural puncture is named in the panel, not only as a component's lost points).
   const training::Metrics& m = r.overall;
   if (m.bone_contacts > 0 || m.forbidden_punctures > 0 || m.redirections > 0) ImGui::Separator();

@@ -33,7 +33,7 @@ struct TraineeView {
   training::NeedleForce needle;
   double hand_force_N = 0.0;
   bool at_device_limit = false;  // the device held the force back at its limit in the last tick
-  // The layered tissue at the needle now (issue 14), in a task with layers: the panel shows the
+  // The layered tissue at the needle now, in a task with layers: the panel shows the
   // layer holding the tip and the punctures so far (names hidden when the task says so).
   std::optional<haptics::TissueSnapshot> tissue;
   double loop_rate_hz = 0.0;   // measured rate of the haptic loop

@@ -146,7 +146,7 @@ DeskRun run_with_the_mouse(const std::string& task_name, MakePlan make_plan, std
   }, task_name);
 }
 
-// The layered target (issue 14) with the mouse: above the entry, turned onto the vertical axis,
+// The layered target with the mouse: above the entry, turned onto the vertical axis,
 // the wheel pushing the needle in through skin, fat and muscle to the target, held, withdrawn.
 TEST(DeskSessions, LayeredTargetWithTheMouse) {
   std::optional<MousePlayer> mouse;

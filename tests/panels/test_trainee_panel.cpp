@@ -116,7 +116,7 @@ TEST_F(TraineePanel, ResultWithTheStartScreensChoicesAt1920x1080MatchesGolden) {
   EXPECT_TRUE(matches_golden(draw(view, {1920, 1080}), "panel_trainee_result_choices_1920x1080"));
 }
 
-// The layered target mid-task (issue 14): step 3 (to the target), the tip in the muscle with the
+// The layered target mid-task: step 3 (to the target), the tip in the muscle with the
 // skin punctured; the panel names the layer and the punctures.
 TEST_F(TraineePanel, LayeredTargetShowsTheLayerAndThePuncturesMatchesGolden) {
   const training::Task task = training::load_task(test::source_dir() / "assets/tasks/layered_target.json");
@@ -184,7 +184,7 @@ TEST_F(TraineePanel, EpiduralDuralPunctureWithTheNamesHiddenMatchesGolden) {
   EXPECT_TRUE(matches_golden(draw(view, {480, 520}), "panel_trainee_epidural_hidden_names"));
 }
 
-// The sloppy epidural's result (issue 14's acceptance): its faults named in the panel, the bone
+// The sloppy epidural's result: its faults named in the panel, the bone
 // contacts with their peak and the redirection, beside the failed reasons (the run's numbers:
 // `needle-sim run --headless --task assets/tasks/epidural.json --operator sloppy`).
 TEST_F(TraineePanel, EpiduralSloppyResultNamesTheBoneContactsAndRedirection) {

@@ -188,7 +188,7 @@ TEST(CliStartScreen, ATraineeStartsTheTaskWithTheMouseAndFinishesItPivotIncluded
                                   mouse_plan_script("penetrable_sphere", penetrable_plan), 5);
 }
 
-// The layered target (issue 14), fourth in the list: three Downs (one key a call, each seen on its
+// The layered target, fourth in the list: three Downs (one key a call, each seen on its
 // own frame), Left to the mouse; the wheel pushes the needle through skin, fat and muscle.
 TEST(CliStartScreen, ATraineeDoesTheLayeredTargetWithTheMouse) {
   const PlanMaker plan = [](const training::Task& t, const DeskStart& s, const Eigen::Vector3d& d) {
