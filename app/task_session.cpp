@@ -139,7 +139,17 @@ void TaskSession::drop_unstored() {
 }
 
 void TaskSession::begin_stored() {
-  session_ = store_->begin_session(new_session_);
+  try {
+    session_ = store_->begin_session(new_session_);
+  } catch (const training::ServerLost& e) {
+    // Lost before the session began on it (a session is stored once its first step ends): begun in
+    // this station's file instead, as when the server could not be reached at the start.
+    offline_ = e.what();
+    store_ = std::make_unique<training::SessionStore>(with_folder(local_db(options_)));
+    session_ = store_->begin_session(new_session_);
+    options_.messages.say("note: the server could not be reached (" + offline_ +
+                          "): the session is kept in this station's file for needle-sim sync");
+  }
   if (store_->engine() == training::SqlEngine::kPostgres)
     upload_ = std::make_unique<RecordingUpload>(options_.db.string(), session_, recording_path_);
   if (loop_->running() && upload_) upload_->start();
@@ -203,7 +213,7 @@ std::string TaskSession::store_result() {
   if (!offline_.empty()) {  // begun in this station's file: finished there, kept for the server
     store_->finish_session(session_, *result_);
     store_->keep_for_server(session_, training::shown_location(options_.db.string()));
-    return "the server could not be reached when the run began (" + offline_ + "): the session is kept in " +
+    return "the server could not be reached when the session began (" + offline_ + "): the session is kept in " +
            store_->name() + " as session " + std::to_string(session_) + "; needle-sim sync --db URI --local " +
            local_db(options_).string() + " sends it";
   }

@@ -117,7 +117,7 @@ class TaskSession {
   std::string store_result();
 
   TaskSessionOptions options_;
-  std::string offline_;  // why the server could not be reached when the run began; "": it was
+  std::string offline_;  // why the server could not be reached when the session began; "": it was
   training::Task task_;
   engine::Scene scene_;
   std::unique_ptr<SessionRig> rig_;

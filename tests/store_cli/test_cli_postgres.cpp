@@ -142,7 +142,7 @@ TEST(CliPostgres, ARunThatStartsWhileTheServerIsDownKeepsItsSessionForSync) {
   const ProcessResult run = run_needle_sim(run_arguments(uri, dir, "station-04"));
   postgres_server("start");
   ASSERT_EQ(run.exit_code, 0) << run.output;
-  EXPECT_NE(run.output.find("the server could not be reached when the run began"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("the server could not be reached when the session began"), std::string::npos) << run.output;
   const nlohmann::json score = nlohmann::json::parse(std::ifstream(dir / "out" / "score.json"));
   EXPECT_TRUE(score["stored"].get<bool>());
   EXPECT_TRUE(score["kept_for_sync"].get<bool>());

@@ -240,7 +240,8 @@ PostgresConnection::~PostgresConnection() { PQfinish(conn_); }
 void PostgresConnection::ClearResult::operator()(pg_result* r) const { PQclear(r); }
 
 void PostgresConnection::fail(const std::string& what) const {
-  if (!closed_.empty()) throw SessionStoreError(shown_ + ": " + what + ": " + closed_);
+  if (!closed_.empty()) throw ServerLost(shown_ + ": " + what + ": " + closed_);
+  if (PQstatus(conn_) == CONNECTION_BAD) throw ServerLost(shown_ + ": " + what + ": " + trimmed(PQerrorMessage(conn_)));
   throw SessionStoreError(shown_ + ": " + what + ": " + trimmed(PQerrorMessage(conn_)));
 }
 

@@ -39,6 +39,14 @@ struct ServerUnreachable : SessionStoreError {
   using SessionStoreError::SessionStoreError;
 };
 
+// The connection was lost after it was made (the server stopped or the network went, no answer
+// within the statement's timeout): what the statement was to write is not on the server. A run
+// keeps its session in this station's file for needle-sim sync, as when the server was unreachable
+// at the start. A statement the server answered with a refusal is a plain SessionStoreError.
+struct ServerLost : SessionStoreError {
+  using SessionStoreError::SessionStoreError;
+};
+
 class PostgresConnection final : public SqlConnection {
  public:
   // Connects; `read_only` makes every transaction read-only (review, report). Throws
