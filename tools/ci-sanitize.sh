@@ -18,6 +18,9 @@ suites+='|SimHolonomic|SimNonholonomic|SimFeel|SimHandPassivity|PassivityClosedL
 suites+='|SessionLimits|SessionReviewTest|SessionStoreFailure|ShippedTasks/ScriptedSessions|LayeredSessions|ReviewPanels|ReviewPanelsLayered'
 suites+='|CliBench[A-Za-z]*|CliHapticsBench|CliHapticsSimulate|CliRecordings|CliReport|CliReportLayered|CliRunDevices|CliRunTask|CliWrites|Tasks/RunReplay'
 suites+='|CliPostgres|CliHostileFiles|CliVerify'
+# Generating a patient samples about ten million nodes of analytic shapes (Eigen's small vectors):
+# under a second unsanitized, a minute or more sanitized, for each patient a test makes.
+suites+='|PatientGeneration|PatientSessions|PatientScenes|CliPatient'
 tests='BenchTickAllocations\.(NonholonomicContact|LayeredTissue)TickAllocatesNothing|RecordingReplay\.ControllerReplayIsBitForBit'
 tests+='|LayeredDimple\.TheScriptedHandsDimpleIsThePhysicsDeflection|SimComponents\.DeviceEnergyBalancesTheWorkDoneOnIt|CliStartScreen\.(ATraineeStarts|ATraineeDoes|TheKeyboards|TheScorePanels)[A-Za-z]*'
 skip=${SANITIZE_SKIP-"^((ShaderBuild|Layout|$suites)\\.|($tests)\$)"}
