@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "haptics/anatomy/patient.hpp"
 #include "haptics/control/teleoperation.hpp"
 #include "haptics/model/robot_model.hpp"
 #include "haptics/sim/force_sensor.hpp"
@@ -32,9 +33,13 @@ struct Scenario {
   int virtual_substeps = 4;
   Integrator master_integrator = Integrator::SemiImplicitEuler;
   TeleoperationGains gains;  // with the law, the tool (`tool`) and the force scale
-  // Base frame. The penetrable tissue is scene.tissue: layers (`tissue.layers`, issue 12) or the
-  // single-surface form, one layer with every parameter zero.
+  // Base frame. The penetrable tissue is scene.tissue: layers (`tissue.layers`), a generated
+  // patient's layers (`tissue.patient`, docs/PATIENTS.md) or the single-surface form, one layer with
+  // every parameter zero.
   Scene scene;
+  // The generated patient whose layers scene.tissue holds (base frame), for what else draws or
+  // images it; null for the other forms.
+  std::shared_ptr<const anatomy::Patient> patient;
   VecN q0;
   HandImpedance hand;
   HandTrajectory trajectory;  // base frame

@@ -27,6 +27,10 @@ struct Aabb {
   Eigen::Vector3d hi = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
 
   bool empty() const { return (lo.array() > hi.array()).any(); }
+  // x within `margin` of the box (inside it or at most that far out on every axis).
+  bool reaches(const Eigen::Vector3d& x, double margin) const {
+    return (x.array() >= lo.array() - margin).all() && (x.array() <= hi.array() + margin).all();
+  }
   Aabb intersected(const Aabb& o) const { return {lo.cwiseMax(o.lo), hi.cwiseMin(o.hi)}; }
   Aabb merged(const Aabb& o) const { return {lo.cwiseMin(o.lo), hi.cwiseMax(o.hi)}; }
 };
@@ -55,8 +59,12 @@ class LayerShape {
     return grid_ ? grid_->evaluate(x, grid_offset_) : surface_.evaluate(x);
   }
   double phi(const Eigen::Vector3d& x) const { return grid_ ? grid_->phi(x, grid_offset_) : surface_.evaluate(x).phi; }
-  // φ(x) ≤ kLayerSurfaceTolerance_m: inside or on the surface.
-  bool contains(const Eigen::Vector3d& x) const { return phi(x) <= kLayerSurfaceTolerance_m; }
+  // φ(x) ≤ kLayerSurfaceTolerance_m: inside or on the surface. A grid's region lies within its box,
+  // so a point beyond the box by more than the tolerance is outside without sampling the grid.
+  bool contains(const Eigen::Vector3d& x) const {
+    if (grid_ && !bounds_.reaches(x, kLayerSurfaceTolerance_m)) return false;
+    return phi(x) <= kLayerSurfaceTolerance_m;
+  }
   const Aabb& bounds() const { return bounds_; }
   // The shape as primitives (slab and box: the intersection of their half-spaces); none for a grid.
   const ImplicitSurface& surface() const { return surface_; }

@@ -10,6 +10,7 @@
 
 #include "haptics/anatomy/morphometry.hpp"
 #include "haptics/anatomy/patient.hpp"
+#include "haptics/sim/scenario.hpp"
 #include "haptics/tissue/kinematic_insertion.hpp"
 #include "robot_fixtures.hpp"
 #include "scenario_files.hpp"
@@ -196,6 +197,39 @@ TEST(PatientAnatomy, BadPatientFilesAreOneLineErrorsNamingTheKeyAndTheRange) {
   nlohmann::json missing = good;
   missing.erase("sex");
   EXPECT_EQ(patient_error(missing), "/sex: missing");
+}
+
+// A scenario's patient tissue: the patient's errors name the scenario and the pointer into it.
+TEST(PatientAnatomy, AScenariosPatientIsReadStrictly) {
+  nlohmann::json s = test::read_json(test::asset("assets/scenarios/epidural_patient.json"));
+  s["master_urdf"] = test::asset("assets/robots/master_omni.urdf");
+  s["virtual_urdf"] = test::asset("assets/robots/virtual_needle_robot.urdf");
+  const auto error = [&](const nlohmann::json& tissue) -> std::string {
+    nlohmann::json copy = s;
+    copy["tissue"] = tissue;
+    const std::string path = test::own_file("scenario.json");
+    std::ofstream(path) << copy.dump();
+    try {
+      load_scenario(path);
+    } catch (const ScenarioError& e) {
+      return std::string(e.what()).substr(path.size() + 2);
+    }
+    return "no error";
+  };
+  nlohmann::json inline_patient = test::read_json(test::asset("assets/patients/bmi22.json"));
+  inline_patient["height_m"] = 3.0;
+  const std::string tissues = test::asset("assets/tissues");
+  EXPECT_EQ(error({{"patient", inline_patient}, {"entry", {0.33, 0, 0.07}}, {"tissues", tissues}}),
+            "/tissue/patient/height_m: must be in [1.45, 2.05] m, got 3");
+  EXPECT_EQ(error({{"patient", "nowhere.json"}, {"entry", {0.33, 0, 0.07}}, {"tissues", tissues}}).rfind("/tissue/patient: file not found", 0), 0u);
+  EXPECT_EQ(error({{"patient", inline_patient}, {"tissues", tissues}}), "/tissue/patient/height_m: must be in [1.45, 2.05] m, got 3");
+  inline_patient["height_m"] = 1.65;
+  EXPECT_EQ(error({{"patient", inline_patient}, {"tissues", tissues}}), "/tissue/entry: missing");
+  EXPECT_EQ(error({{"patient", inline_patient}, {"entry", {0.33, 0, 1e9}}, {"tissues", tissues}}), "/tissue/entry/2: must be in [-10, 10] m, got 1e+09");
+  EXPECT_EQ(error({{"patient", inline_patient}, {"entry", {0.33, 0, 0.07}}, {"tissues", "/nonexistent"}}),
+            "/tissue/tissues: folder not found: /nonexistent");
+  EXPECT_EQ(error({{"patient", inline_patient}, {"entry", {0.33, 0, 0.07}}, {"organs", 1}}),
+            "/tissue/organs: unknown key (allowed: patient, entry, tissues, stick)");
 }
 
 }  // namespace
