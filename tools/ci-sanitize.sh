@@ -20,7 +20,7 @@ suites+='|CliBench[A-Za-z]*|CliHapticsBench|CliHapticsSimulate|CliRecordings|Cli
 suites+='|CliPostgres|CliHostileFiles|CliVerify'
 # Generating a patient samples about ten million nodes of analytic shapes (Eigen's small vectors):
 # under a second unsanitized, a minute or more sanitized, for each patient a test makes.
-suites+='|PatientGeneration|PatientSessions|PatientScenes|CliPatient'
+suites+='|PatientGeneration|ShippedPatients/PatientSessions|PatientSessionsRandom|PatientScenes|CliPatient'
 tests='BenchTickAllocations\.(NonholonomicContact|LayeredTissue|PatientTissue)TickAllocatesNothing|RecordingReplay\.ControllerReplayIsBitForBit'
 tests+='|LayeredDimple\.TheScriptedHandsDimpleIsThePhysicsDeflection|SimComponents\.DeviceEnergyBalancesTheWorkDoneOnIt|CliStartScreen\.(ATraineeStarts|ATraineeDoes|TheKeyboards|TheScorePanels)[A-Za-z]*'
 skip=${SANITIZE_SKIP-"^((ShaderBuild|Layout|$suites)\\.|($tests)\$)"}

@@ -102,21 +102,15 @@ Patient generate_patient(const PatientParams& params, const Eigen::Vector3d& l3_
   const auto body_grid = body.grid();
   const auto dura_grid = dura.grid();
   const double dura_offset = std::lround(d.dura_thickness_m / lattice.quantum_m) * lattice.quantum_m;
-  const auto add = [&](const char* name, LayerShape shape, const char* parameters, bool rigid) {
-    p.layers.push_back({name, std::move(shape), parameters, rigid});
-  };
-  add(kPatientLayerNames[0], LayerShape::grid(body_grid, 0.0), "skin", false);
-  add(kPatientLayerNames[1], LayerShape::grid(body_grid, skin_q * lattice.quantum_m), "subcutaneous_fat", false);
-  add(kPatientLayerNames[2], LayerShape::grid(body_grid, offset), "muscle", false);
-  add(kPatientLayerNames[3], LayerShape::grid(supraspinous.grid()), "spinal_ligament", false);
-  add(kPatientLayerNames[4], LayerShape::grid(interspinous.grid()), "spinal_ligament", false);
-  add(kPatientLayerNames[5], LayerShape::grid(flavum.grid()), "ligamentum_flavum", false);
-  add(kPatientLayerNames[6], LayerShape::grid(epidural.grid()), "epidural_space", false);
-  add(kPatientLayerNames[7], LayerShape::grid(dura_grid), "dura", false);
-  add(kPatientLayerNames[8], LayerShape::grid(dura_grid, dura_offset), "cerebrospinal_fluid", false);
-  add(kPatientLayerNames[9], LayerShape::grid(disc.grid()), "spinal_ligament", false);
-  add(kPatientLayerNames[10], LayerShape::grid(bone.grid()), "bone", true);
-  add(kPatientLayerNames[11], LayerShape::grid(crest.grid()), "bone", true);
+  const std::array<LayerShape, kPatientLayers.size()> shapes{
+      LayerShape::grid(body_grid, 0.0),       LayerShape::grid(body_grid, skin_q * lattice.quantum_m),
+      LayerShape::grid(body_grid, offset),    LayerShape::grid(supraspinous.grid()),
+      LayerShape::grid(interspinous.grid()),  LayerShape::grid(flavum.grid()),
+      LayerShape::grid(epidural.grid()),      LayerShape::grid(dura_grid),
+      LayerShape::grid(dura_grid, dura_offset), LayerShape::grid(disc.grid()),
+      LayerShape::grid(bone.grid()),          LayerShape::grid(crest.grid())};
+  for (size_t i = 0; i < shapes.size(); ++i)
+    p.layers.push_back({kPatientLayers[i].name, shapes[i], kPatientLayers[i].parameters, kPatientLayers[i].rigid});
   std::vector<const SdfGrid*> counted;
   for (const PatientLayer& l : p.layers)
     if (std::find(counted.begin(), counted.end(), l.shape.grid().get()) == counted.end()) {

@@ -47,10 +47,25 @@ struct Patient {
   Eigen::Vector3d to_model(const Eigen::Vector3d& patient_point) const { return patient_point + origin; }
 };
 
-// The layer names, outside in (tasks name them).
-inline constexpr std::array<const char*, 12> kPatientLayerNames{
-    "skin",           "subcutaneous fat", "erector spinae", "supraspinous ligament", "interspinous ligament", "ligamentum flavum",
-    "epidural space", "dura",             "cerebrospinal fluid", "intervertebral disc", "bone",            "iliac crest"};
+// The layers, outside in (tasks name them), each with the tissue parameter set it is made of
+// (assets/tissues/<parameters>.json) and whether it is bone.
+struct PatientLayerSpec {
+  const char* name;
+  const char* parameters;
+  bool rigid;
+};
+inline constexpr std::array<PatientLayerSpec, 12> kPatientLayers{{{"skin", "skin", false},
+                                                                 {"subcutaneous fat", "subcutaneous_fat", false},
+                                                                 {"erector spinae", "muscle", false},
+                                                                 {"supraspinous ligament", "spinal_ligament", false},
+                                                                 {"interspinous ligament", "spinal_ligament", false},
+                                                                 {"ligamentum flavum", "ligamentum_flavum", false},
+                                                                 {"epidural space", "epidural_space", false},
+                                                                 {"dura", "dura", false},
+                                                                 {"cerebrospinal fluid", "cerebrospinal_fluid", false},
+                                                                 {"intervertebral disc", "spinal_ligament", false},
+                                                                 {"bone", "bone", true},
+                                                                 {"iliac crest", "bone", true}}};
 
 // Design value: a 1 mm lattice resolves the 4 mm flavum and the 5 mm posterior epidural space on the
 // needle's path with its sampling error a few hundredths of a millimetre on their faces (docs/PATIENTS.md),

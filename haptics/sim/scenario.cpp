@@ -119,8 +119,8 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
 // Scenario files through the project's one strict reader: "FILE: /json/pointer: what is wrong".
 class ScenarioReader : io::StrictJsonReader<ScenarioError> {
  public:
-  ScenarioReader(std::string file, std::filesystem::path folder)
-      : StrictJsonReader(std::move(file)), folder_(std::move(folder)) {}
+  ScenarioReader(std::string file, std::filesystem::path folder, bool generate_patient)
+      : StrictJsonReader(std::move(file)), folder_(std::move(folder)), generate_patient_(generate_patient) {}
 
   Scenario scenario(const json& j) {
     object(j, "", {"name", "description", "master_urdf", "virtual_urdf", "robot_base_in_world_m", "period_s",
@@ -298,19 +298,23 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     const std::filesystem::path tissues =
         j.contains("tissues") ? folder_ / string(j["tissues"], at + "/tissues") : folder_ / ".." / "tissues";
     if (!std::filesystem::is_directory(tissues)) fail(at + "/tissues", "folder not found: " + tissues.string());
-    s.patient = anatomy::shared_patient(params, Eigen::Vector3d(entry[0], entry[1], entry[2]) - s.base_in_world);
-    std::vector<TissueLayer> layers;
+    const StickParams stick = stick_params(j, at);
     std::map<std::string, LayerParameters> sets;
-    for (const anatomy::PatientLayer& l : s.patient->layers) {
+    for (const anatomy::PatientLayerSpec& l : anatomy::kPatientLayers) {
       if (!sets.count(l.parameters)) {
-        const std::string set = (tissues / (l.parameters + ".json")).string();
+        const std::string set = (tissues / (std::string(l.parameters) + ".json")).string();
         if (!std::filesystem::is_regular_file(set)) fail(at + "/tissues", "no parameter set " + set + " for the layer \"" + l.name + "\"");
         sets.emplace(l.parameters, MechanicsReader(set).parameter_set(io::read_json_file<ScenarioError>(set)));
       }
-      layers.push_back({l.name, l.shape, sets.at(l.parameters).mechanics, sets.at(l.parameters).acoustics});
+      s.patient_layers.push_back({l.name, sets.at(l.parameters).mechanics});
     }
+    if (!generate_patient_) return;
+    s.patient = anatomy::shared_patient(params, Eigen::Vector3d(entry[0], entry[1], entry[2]) - s.base_in_world);
+    std::vector<TissueLayer> layers;
+    for (const anatomy::PatientLayer& l : s.patient->layers)
+      layers.push_back({l.name, l.shape, sets.at(l.parameters).mechanics, sets.at(l.parameters).acoustics});
     try {
-      s.scene.tissue = TissueModel(std::move(layers), stick_params(j, at));
+      s.scene.tissue = TissueModel(std::move(layers), stick);
     } catch (const TissueLayerError& e) {
       fail(at + "/patient", std::string("the generated layer ") + std::to_string(e.layer) + " (" + e.key + "): " + e.what());
     }
@@ -403,6 +407,7 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
   }
 
   std::filesystem::path folder_;
+  bool generate_patient_ = true;
 };
 
 }  // namespace
@@ -441,8 +446,8 @@ OperatorHand read_hand(const json& h, const std::string& file, const std::string
   return out;
 }
 
-Scenario load_scenario(const std::string& path) {
-  return ScenarioReader(path, std::filesystem::path(path).parent_path())
+Scenario load_scenario(const std::string& path, bool generate_patient) {
+  return ScenarioReader(path, std::filesystem::path(path).parent_path(), generate_patient)
       .scenario(io::read_json_file<ScenarioError>(path));
 }
 

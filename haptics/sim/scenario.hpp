@@ -38,8 +38,15 @@ struct Scenario {
   // every parameter zero.
   Scene scene;
   // The generated patient whose layers scene.tissue holds (base frame), for what else draws or
-  // images it; null for the other forms.
+  // images it; null for the other forms, and when the scenario was read without generating it.
   std::shared_ptr<const anatomy::Patient> patient;
+  // A generated patient's layers, in order, with their mechanics: also when the patient itself was
+  // not generated (load_scenario(path, false)); empty for the other forms.
+  struct NamedMechanics {
+    std::string name;
+    LayerMechanics mechanics;
+  };
+  std::vector<NamedMechanics> patient_layers;
   VecN q0;
   HandImpedance hand;
   HandTrajectory trajectory;  // base frame
@@ -49,7 +56,10 @@ struct Scenario {
   double divergence_bound_m = 0.1;     // master/virtual tip distance beyond this is a fault
 };
 
-Scenario load_scenario(const std::string& path);
+// A scenario file. With generate_patient false, a generated patient's tissue is read and checked
+// (its file, its parameter sets) but not generated: scene.tissue stays empty, patient_layers says
+// what it would hold (what a task's list of layers needs, without seconds of sampling).
+Scenario load_scenario(const std::string& path, bool generate_patient = true);
 
 // An operator's hand: its impedance and its trajectory, in the robots' base frame.
 struct OperatorHand {

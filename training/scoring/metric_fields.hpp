@@ -55,6 +55,10 @@ void for_each_metric(M& m, F&& f) {
   visit("bone_peak_force_N", m.bone_peak_force_N, {"bone peak force", "N", 1.0, true});
   visit("redirections", m.redirections, {"redirections", "count", 1.0, true});
   visit("forbidden_punctures", m.forbidden_punctures, {"forbidden punctures", "count", 1.0, true});
+  visit("interspace_entered", m.interspace_entered, {"interspace entered (1 = L1-L2)", "-", 1.0, true});
+  visit("entry_angle_deg", m.entry_angle_deg, {"needle off the approach at entry", "deg", 1.0, true});
+  visit("lor_depth_m", m.lor_depth_m, {"depth at the loss of resistance", "mm", 1000.0, true});
+  visit("lor_depth_error_m", m.lor_depth_error_m, {"loss of resistance past the patient's depth", "mm", 1000.0, true});
 }
 
 }  // namespace needle::training

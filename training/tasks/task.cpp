@@ -16,6 +16,24 @@ double session_time_bound_s(const Task& task) {
   return std::min(total, io::kMaxSessionSeconds);
 }
 
+int interspace_at(const PatientLandmarks& l, const Vec3& p) {
+  for (int k = 0; k < PatientLandmarks::kInterspaces; ++k)
+    if (p[1] <= l.spinous_tips[size_t(k)][1] && p[1] > l.spinous_tips[size_t(k + 1)][1]) return k;
+  return -1;
+}
+
+int interspace_index(const std::string& name) {
+  static constexpr const char* kNames[] = {"L1-L2", "L2-L3", "L3-L4", "L4-L5", "L5-S1"};
+  for (int i = 0; i < PatientLandmarks::kInterspaces; ++i)
+    if (name == kNames[i]) return i;
+  return -1;
+}
+
+const char* interspace_name(int index) {
+  static constexpr const char* kNames[] = {"L1-L2", "L2-L3", "L3-L4", "L4-L5", "L5-S1"};
+  return index >= 0 && index < PatientLandmarks::kInterspaces ? kNames[index] : "none";
+}
+
 int Task::marker_index(const std::string& marker_name) const {
   for (size_t i = 0; i < markers.size(); ++i)
     if (markers[i].name == marker_name) return static_cast<int>(i);
