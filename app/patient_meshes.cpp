@@ -3,7 +3,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app/patient_look.hpp"
-#include "haptics/anatomy/surface_mesh.hpp"
 
 namespace needle::app {
 
@@ -16,9 +15,10 @@ engine::TissueParams patient_skin_deformation() {
   return p;
 }
 
-engine::Model patient_layer_model(const haptics::anatomy::PatientLayer& layer, const Eigen::Vector3d& base_in_world) {
+engine::Model patient_layer_model(const haptics::anatomy::Patient& patient, size_t layer_index, const Eigen::Vector3d& base_in_world) {
+  const haptics::anatomy::PatientLayer& layer = patient.layers.at(layer_index);
   const LayerLook look = patient_layer_look(layer.name);
-  const haptics::anatomy::SurfaceMesh mesh = haptics::anatomy::extract_surface(*layer.shape.grid(), layer.shape.grid_offset(), look.stride);
+  const haptics::anatomy::SurfaceMesh mesh = haptics::anatomy::layer_surface(patient, layer_index, look.stride);
   engine::Model model;
   engine::Primitive primitive;
   primitive.vertices.reserve(mesh.positions.size());
@@ -50,11 +50,12 @@ engine::Model patient_layer_model(const haptics::anatomy::PatientLayer& layer, c
 
 engine::Scene with_patient(engine::Scene scene, const haptics::Scenario& scenario) {
   if (!scenario.patient) return scene;
-  for (const haptics::anatomy::PatientLayer& layer : scenario.patient->layers) {
+  for (size_t i = 0; i < scenario.patient->layers.size(); ++i) {
+    const haptics::anatomy::PatientLayer& layer = scenario.patient->layers[i];
     engine::SceneAsset asset;
     asset.name = layer.name;
     asset.role = layer.rigid ? engine::AssetRole::Bone : engine::AssetRole::Tissue;
-    asset.model = std::make_shared<const engine::Model>(patient_layer_model(layer, scenario.base_in_world));
+    asset.model = std::make_shared<const engine::Model>(patient_layer_model(*scenario.patient, i, scenario.base_in_world));
     if (layer.name == "skin") asset.deformation = patient_skin_deformation();
     scene.assets.push_back(std::move(asset));
   }

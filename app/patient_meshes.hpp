@@ -18,7 +18,7 @@ engine::TissueParams patient_skin_deformation();
 // the scene as given when the scenario has no patient.
 engine::Scene with_patient(engine::Scene scene, const haptics::Scenario& scenario);
 
-// One layer's mesh as a model in the world frame.
-engine::Model patient_layer_model(const haptics::anatomy::PatientLayer& layer, const Eigen::Vector3d& base_in_world);
+// The patient's layer `layer` as a model in the world frame, in its look.
+engine::Model patient_layer_model(const haptics::anatomy::Patient& patient, size_t layer, const Eigen::Vector3d& base_in_world);
 
 }  // namespace needle::app

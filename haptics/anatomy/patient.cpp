@@ -120,6 +120,13 @@ Patient generate_patient(const PatientParams& params, const Eigen::Vector3d& l3_
   return p;
 }
 
+SurfaceMesh layer_surface(const Patient& patient, size_t layer, int stride) {
+  const LayerShape& shape = patient.layers.at(layer).shape;
+  int rank = 0;
+  for (size_t i = 0; i < layer; ++i) rank += patient.layers[i].shape.grid() == shape.grid();
+  return extract_surface(*shape.grid(), shape.grid_offset(), stride, 0.5e-3 * rank);
+}
+
 TissueModel geometry_model(const Patient& patient) {
   std::vector<TissueLayer> layers;
   for (const PatientLayer& l : patient.layers) {

@@ -13,6 +13,7 @@
 #include "haptics/anatomy/lattice_field.hpp"
 #include "haptics/anatomy/patient_params.hpp"
 #include "haptics/anatomy/spine.hpp"
+#include "haptics/anatomy/surface_mesh.hpp"
 #include "haptics/tissue/tissue_model.hpp"
 
 namespace needle::haptics::anatomy {
@@ -76,6 +77,11 @@ inline const Lattice kPatientLattice{1e-3, 4e-6, Eigen::Vector3d::Zero()};
 // patient. Deterministic: the same parameters give the same fields, bit for bit.
 Patient generate_patient(const PatientParams& params, const Eigen::Vector3d& l3_l4_entry = Eigen::Vector3d::Zero(),
                          const Lattice& lattice = kPatientLattice);
+
+// A layer's mesh (surface_mesh.hpp) every `stride` nodes, inset 0.5 mm inside the grid's box for each
+// earlier layer made of the same grid (design value: half a millimetre keeps the nested walls apart
+// for the depth test and the section's caps, a tenth of the grid's spacing).
+SurfaceMesh layer_surface(const Patient& patient, size_t layer, int stride);
 
 // The patient's layers as a tissue model with no mechanics but the bones' rigidity: what the
 // geometry alone says (where the needle meets which layer), for reports and tests.

@@ -6,7 +6,7 @@
 
 namespace needle::haptics::anatomy {
 
-SurfaceMesh extract_surface(const SdfGrid& grid, double offset_m, int stride) {
+SurfaceMesh extract_surface(const SdfGrid& grid, double offset_m, int stride, double inset_m) {
   stride = std::max(stride, 1);
   const std::array<int, 3>& n = grid.nodes();
   // The strided lattice, with one node of "outside" around it so that the region closes at the box.
@@ -15,7 +15,10 @@ SurfaceMesh extract_surface(const SdfGrid& grid, double offset_m, int stride) {
   const double h = grid.spacing() * stride;
   const auto value = [&](int i, int j, int k) -> double {
     if (i < 0 || j < 0 || k < 0 || i >= m[0] || j >= m[1] || k >= m[2]) return 1e6 * h;  // outside: the wall on the box
-    return grid.quantum() * grid.value(i * stride, j * stride, k * stride) + offset_m;
+    const double phi = grid.quantum() * grid.value(i * stride, j * stride, k * stride) + offset_m;
+    if (inset_m <= 0.0) return phi;
+    const int face = std::min({i, j, k, m[0] - 1 - i, m[1] - 1 - j, m[2] - 1 - k});  // nodes to the box's nearest face
+    return std::max(phi, inset_m - face * h);
   };
   const auto node = [&](int i, int j, int k) { return Eigen::Vector3d(grid.origin() + h * Eigen::Vector3d(i, j, k)); };
   // Cells are indexed by their lowest corner, from −1 (the padding) to m − 1.

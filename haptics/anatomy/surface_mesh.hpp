@@ -19,7 +19,10 @@ struct SurfaceMesh {
   std::vector<uint32_t> indices;           // triangles, counter-clockwise seen from outside
 };
 
-// (grid, offset, stride ≥ 1: every stride-th node) => the mesh; empty when the region is.
-SurfaceMesh extract_surface(const SdfGrid& grid, double offset_m, int stride);
+// (grid, offset, stride ≥ 1: every stride-th node, inset ≥ 0) => the mesh; empty when the region is.
+// With an inset the region is clipped `inset_m` inside the grid's box: the regions one grid gives at
+// several offsets (the skin, the fat and the muscle beneath it) share the box's faces, and their
+// meshes' walls there would lie on each other; inset by their rank they nest instead.
+SurfaceMesh extract_surface(const SdfGrid& grid, double offset_m, int stride, double inset_m = 0.0);
 
 }  // namespace needle::haptics::anatomy

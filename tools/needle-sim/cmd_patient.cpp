@@ -13,7 +13,6 @@
 #include "command.hpp"
 #include "haptics/anatomy/patient_report.hpp"
 #include "haptics/anatomy/sdf_file.hpp"
-#include "haptics/anatomy/surface_mesh.hpp"
 #include "io/file_write.hpp"
 
 namespace needle::cli {
@@ -34,9 +33,10 @@ std::string file_stem(std::string name) {
 }
 
 // One layer's region as a binary glTF: a mesh of the grid at the layer's offset, in its colour.
-std::string layer_glb(const haptics::anatomy::PatientLayer& layer) {
+std::string layer_glb(const Patient& patient, size_t index) {
+  const haptics::anatomy::PatientLayer& layer = patient.layers[index];
   const app::LayerLook look = app::patient_layer_look(layer.name);
-  const haptics::anatomy::SurfaceMesh mesh = haptics::anatomy::extract_surface(*layer.shape.grid(), layer.shape.grid_offset(), look.stride);
+  const haptics::anatomy::SurfaceMesh mesh = haptics::anatomy::layer_surface(patient, index, look.stride);
   asset_gen::MeshData data;
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
     data.positions.emplace_back(mesh.positions[i].x(), mesh.positions[i].y(), mesh.positions[i].z());
@@ -66,14 +66,15 @@ int run(const PatientFlags& f) {
   nlohmann::json report = haptics::anatomy::patient_report(patient);
   nlohmann::json layers = nlohmann::json::array();
   std::map<const haptics::SdfGrid*, std::string> fields;
-  for (const haptics::anatomy::PatientLayer& layer : patient.layers) {
+  for (size_t index = 0; index < patient.layers.size(); ++index) {
+    const haptics::anatomy::PatientLayer& layer = patient.layers[index];
     const haptics::SdfGrid* grid = layer.shape.grid().get();
     if (!fields.count(grid)) {  // a shared grid under the first layer's name that uses it
       fields[grid] = "fields/" + file_stem(layer.name) + ".nsdf";
       haptics::anatomy::write_sdf_file((out / fields[grid]).string(), *grid);
     }
     const std::string mesh = "meshes/" + file_stem(layer.name) + ".glb";
-    io::write_file(out / mesh, layer_glb(layer));
+    io::write_file(out / mesh, layer_glb(patient, index));
     layers.push_back({{"name", layer.name},
                       {"field", fields[grid]},
                       {"offset_m", layer.shape.grid_offset()},
