@@ -1,6 +1,6 @@
 // The render scale chosen from the frame's own period (TraineeFrame on a CPU device when no scale
 // is fixed; docs/RENDERING.md, "Render scale"): lowered a step while the frame's tail (its 95th
-// percentile, what issue 19's goal is stated on) misses its budget; a lower step that did not make
+// percentile, what the frame goal is stated on) misses its budget; a lower step that did not make
 // the typical (median) frame faster (the upscale has its own cost) in either of its first two
 // blocks is passed over for the next, and when none did, back up to where the trials started;
 // raised a step when the tail at the larger scale would still fit with room to spare.
@@ -13,7 +13,7 @@
 namespace needle::app {
 
 struct AutoRenderScaleSettings {
-  // Design value: issue 19's goal, 60 frames per second.
+  // Design value: the trainee's window's goal, 60 frames per second at the 95th percentile.
   double budget_ms = 1000.0 / 60.0;
   // Design value: the periods of this many frames decide (half a second at 60 fps).
   size_t frames = 30;
@@ -38,7 +38,7 @@ struct AutoRenderScaleSettings {
   // Design value: a step down whose first block is no faster is judged again on the next before
   // it is passed over. The same spread of block medians makes one block's judgment a toss-up
   // where the step's gain is smaller than the spread; in the trainee's window with the ultrasound
-  // open (2026-11-23) a noisy block passed 0.5 over and held 0.7, whose tail missed the budget,
+  // open a noisy block passed 0.5 over and held 0.7, whose tail missed the budget,
   // for the whole hold. A second block costs a step that truly is no faster half a second more.
   size_t trial_blocks = 2;
 };

@@ -31,9 +31,13 @@ std::string station_name(const std::optional<std::string>& flag) {
   return host;
 }
 
-std::unique_ptr<training::SessionStore> open_existing_db(const std::string& location) {
+void require_existing_db(const std::string& location) {
   if (!training::is_postgres_uri(location) && !std::filesystem::is_regular_file(location))
     throw std::runtime_error(location + ": no session database (needle-sim run makes one; --db names another)");
+}
+
+std::unique_ptr<training::SessionStore> open_existing_db(const std::string& location) {
+  require_existing_db(location);
   return std::make_unique<training::SessionStore>(location, training::kReadOnly);
 }
 

@@ -22,6 +22,10 @@ std::string db_location(const std::optional<std::string>& flag);
 // The station's name: --station's value when given, else the host name.
 std::string station_name(const std::optional<std::string>& flag);
 
+// A runtime error naming `location` when it is an SQLite file that does not exist: a command that
+// reads or corrects a store never makes an empty one.
+void require_existing_db(const std::string& location);
+
 // Opens a database that must already exist, read-only (review and report never create, migrate or
 // write one); a runtime error naming the file when it does not exist or is damaged.
 std::unique_ptr<training::SessionStore> open_existing_db(const std::string& location);

@@ -42,7 +42,7 @@ void check_present(const haptics::DeviceSpec& spec) {
   if (spec.kind == haptics::DeviceSpec::Kind::kGamepad) gamepad_id(spec);
 }
 
-DeskInput::DeskInput(haptics::DeskDevice& device) : device_(device) {
+DeskInput::DeskInput(haptics::DeskDevice& device, bool syringe) : device_(device), pad_({}, syringe) {
   using K = haptics::DeviceSpec::Kind;
   const haptics::DeviceSpec& spec = device.spec();
   kind_ = spec.kind == K::kMouse ? Kind::kMouse : spec.kind == K::kKeyboard ? Kind::kKeyboard : Kind::kGamepad;
@@ -103,9 +103,17 @@ void DeskInput::place_cursor(engine::Window& window, const engine::Camera& camer
   window.set_cursor({double(at->x) * size.width / pixels.width, double(at->y) * size.height / pixels.height});
 }
 
-const char* DeskInput::help(haptics::DeviceSpec::Kind kind) {
-  if (kind == haptics::DeviceSpec::Kind::kMouse) return "cursor: move   wheel or Up/Down: in and out   right button held: turn about the tip";
-  if (kind == haptics::DeviceSpec::Kind::kKeyboard) return "arrows: move   W/S: in and out   A/D, R/F: turn about the tip   Shift: fine";
+std::string DeskInput::help(haptics::DeviceSpec::Kind kind, bool syringe) {
+  using K = haptics::DeviceSpec::Kind;
+  if (kind == K::kMouse)
+    return std::string("cursor: move   wheel or Up/Down: in and out   right button held: turn about the tip") +
+           (syringe ? "   left button or Space held: press the plunger" : "");
+  if (kind == K::kKeyboard)
+    return std::string("arrows: move   W/S: in and out   A/D, R/F: turn about the tip   Shift: fine") +
+           (syringe ? "   Space held: press the plunger" : "");
+  if (syringe)
+    return "left stick: move   right trigger: in (out with LB)   right stick: turn about the tip   left trigger: press the "
+           "plunger   Start: reset a fault";
   return "left stick: move   triggers: in and out   right stick: turn about the tip   Start: reset a fault";
 }
 

@@ -25,9 +25,10 @@ void check_present(const haptics::DeviceSpec& spec);
 
 class DeskInput {
  public:
-  // For the desk device `device` (mouse, keyboard, gamepad[:N]). Throws std::runtime_error when
-  // a gamepad spec names none that is present.
-  explicit DeskInput(haptics::DeskDevice& device);
+  // For the desk device `device` (mouse, keyboard, gamepad[:N]); `syringe`: the task has a syringe,
+  // whose plunger a gamepad's left trigger presses (SyringeInput). Throws std::runtime_error when a
+  // gamepad spec names none that is present.
+  explicit DeskInput(haptics::DeskDevice& device, bool syringe = false);
 
   // One frame of input: the window's cursor, wheel and gamepad, and the frame's key presses
   // (taken from the window by the caller, who may act on some too). `pointer_on_panel`: the
@@ -39,8 +40,8 @@ class DeskInput {
   void place_cursor(engine::Window& window, const engine::Camera& camera, const glm::vec3& world);
   // True once after each press of the gamepad's reset button.
   bool take_fault_reset() { return gamepad_ && pad_.take_fault_reset(); }
-  // What moves the needle, in one line for the panel.
-  static const char* help(haptics::DeviceSpec::Kind kind);
+  // What moves the needle, in one line for the panel (with a syringe, what presses its plunger too).
+  static std::string help(haptics::DeviceSpec::Kind kind, bool syringe = false);
 
  private:
   haptics::DeskDevice& device_;

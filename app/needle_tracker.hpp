@@ -7,7 +7,7 @@
 // the tip where the first snapshot in tissue found it (at 60 frames a second against a 1 kHz
 // loop, within a few hundred micrometres of the true entry at insertion speeds).
 //
-// A layered tissue (issue 12, "visual agreement"): the dimple comes from the tissue model's own
+// A layered tissue ("visual agreement" with the touch): the dimple comes from the tissue model's own
 // surface deflection (ToolSnapshot::tissue). Before the track has passed into any layer, the tip
 // pressing a surface is Touching at the physics' rest point where it met it; once a layer is
 // passed it is Inserted with the entry where the first surface gave way (the physics' surface

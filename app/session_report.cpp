@@ -87,15 +87,21 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
                   }),
                 messages);
   }
-  if (review.layered()) {
-    if (review.force_depth.plot.lines.empty())
-      messages.say("no plot_force_depth.png: " + review.force_depth.plot.missing);
+  // A plot against depth, or why there is none.
+  const auto depth_plot = [&](const char* file, const training::Plot& plot, auto draw_window) {
+    if (plot.lines.empty())
+      messages.say(std::string("no ") + file + ": " + plot.missing);
     else
-      write_picture(out / "plot_force_depth.png", ui::panel_picture(device, plot_size, [&] {
-                      ui::draw_force_depth_window(review.force_depth, nullptr, whole(plot_size));
-                    }),
-                messages);
+      write_picture(out / file, ui::panel_picture(device, plot_size, [&] { draw_window(review.force_depth, nullptr, whole(plot_size)); }),
+                    messages);
+  };
+  if (review.layered()) {
+    depth_plot("plot_force_depth.png", review.force_depth.plot, ui::draw_force_depth_window);
     messages.say(formatted("%zu puncture(s)", review.force_depth.puncture_list.size()));
+  }
+  if (review.has_syringe()) {
+    depth_plot("plot_plunger_pressure.png", review.force_depth.pressure, ui::draw_plunger_pressure_window);
+    messages.say(formatted("%zu loss(es) of resistance", review.force_depth.losses.size()));
   }
   if (!review.task) {
     messages.say("no replay picture: " + review.task_problem);

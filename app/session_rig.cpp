@@ -147,6 +147,12 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
                                                         : make_live(task, options);
   if (owned_device_) device_ = owned_device_.get();
   if (owned_step_) step_ = owned_step_.get();
+  // The syringe in the tick, around the needle's step (the scenario has one when the task, or the
+  // recording's context, does).
+  if (const haptics::Scenario& scenario = sim_ ? sim_->scenario() : *scenario_; scenario.syringe) {
+    syringe_step_ = std::make_unique<haptics::SyringeServoStep>(*step_, scenario);
+    step_ = syringe_step_.get();
+  }
   if (!replay) limits_ = haptics::safety_limits_for(device_->capabilities());
   if (sim_) device_->open();
 
@@ -221,8 +227,14 @@ SessionRig::Recorded SessionRig::make_replay(const RigOptions& options) {
 SessionRig::Recorded SessionRig::make_live(const training::Task& task, const RigOptions& options) {
   haptics::DeviceOptions device_options;
   device_options.firmware_path = options.firmware;
-  owned_device_ = haptics::make_device(options.device, device_options);
-  desk_ = dynamic_cast<haptics::DeskDevice*>(owned_device_.get());
+  std::unique_ptr<haptics::HapticDevice> needle = haptics::make_device(options.device, device_options);
+  desk_ = dynamic_cast<haptics::DeskDevice*>(needle.get());
+  if (task.syringe) {  // the syringe hand: a second Falcon when there is one, else the app's keys, button or trigger
+    auto hand = std::make_unique<haptics::SyringeHandDevice>(std::move(needle), haptics::make_second_falcon(options.device, device_options));
+    syringe_hand_ = hand.get();
+    needle = std::move(hand);
+  }
+  owned_device_ = std::move(needle);
   owned_device_->open();
   owned_device_->home();
   Recorded recorded{training::task_scenario_json(task, patient_seed(options)), nullptr};

@@ -16,9 +16,11 @@
 #include "engine/scene.hpp"
 #include "haptics/devices/desk_device.hpp"
 #include "haptics/devices/device_spec.hpp"
+#include "haptics/devices/syringe_hand.hpp"
 #include "haptics/realtime/servo_step.hpp"
 #include "haptics/realtime/task_space_step.hpp"
 #include "haptics/realtime/sim_session.hpp"
+#include "haptics/realtime/syringe_servo_step.hpp"
 #include "haptics/safety/safety_monitor.hpp"
 #include "haptics/sim/scenario.hpp"
 #include "training/tasks/task.hpp"
@@ -63,6 +65,11 @@ class SessionRig {
   std::optional<uint64_t> ticks() const { return ticks_; }
   // The desk device (mouse, keyboard, gamepad) whose pose the app sets; nullptr for the others.
   haptics::DeskDevice* desk() { return desk_; }
+  // A live device's syringe hand, in a task with a syringe (its thumb force the app sets, unless a
+  // second Falcon is the hand); nullptr otherwise.
+  haptics::SyringeHandDevice* syringe_hand() { return syringe_hand_; }
+  // The syringe in the tick, when the session has one (its step's).
+  const haptics::SyringeServoStep* syringe_step() const { return syringe_step_.get(); }
   // Where a task-space device's tool starts, world frame (its first reading lands there);
   // nullopt for the joint-space and replayed devices.
   std::optional<Eigen::Vector3d> tool_start() const;
@@ -97,6 +104,8 @@ class SessionRig {
   haptics::HapticDevice* device_ = nullptr;
   haptics::ServoStep* step_ = nullptr;
   haptics::DeskDevice* desk_ = nullptr;
+  haptics::SyringeHandDevice* syringe_hand_ = nullptr;
+  std::unique_ptr<haptics::SyringeServoStep> syringe_step_;  // around the step, when the scenario has a syringe
   const haptics::TaskSpaceStep* task_space_ = nullptr;  // the live device's step, when in task space
   haptics::SafetyLimits limits_;
   double rate_hz_ = 1000.0;

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "app/desk_input.hpp"
+#include "app/syringe_input.hpp"
 #include "engine/gpu_device.hpp"
 #include "engine/render_target.hpp"
 #include "ui/input_focus.hpp"
@@ -79,7 +80,15 @@ void SessionWindow::frames(engine::GpuScene& scene, const Show& show, const std:
 
 TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices) {
   std::optional<DeskInput> desk;
-  if (haptics::DeskDevice* device = session.desk()) desk.emplace(*device);
+  const bool syringe = session.task().syringe.has_value();
+  if (haptics::DeskDevice* device = session.desk()) desk.emplace(*device, syringe);
+  // The syringe's plunger from the keys, the mouse's left button or the gamepad's left trigger, unless
+  // a second Falcon is the syringe hand.
+  std::optional<SyringeInput> plunger;
+  if (haptics::SyringeHandDevice* hand = session.syringe_hand(); hand && !hand->has_second()) {
+    const haptics::DeviceSpec& spec = session.device_spec();
+    plunger.emplace(*hand, spec.kind, spec.kind == haptics::DeviceSpec::Kind::kGamepad ? std::optional<int>(gamepad_id(spec)) : std::nullopt);
+  }
   if (const std::optional<Eigen::Vector3d> start = session.tool_start(); desk && start) {
     desk->place_cursor(window.window(), session.scene().camera, glm::vec3(start->x(), start->y(), start->z()));
     // The loop maps the device's first reading onto the tool's start (TaskSpaceStep): the device
@@ -90,7 +99,9 @@ TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices
   }
   engine::GpuScene scene(window.renderer(), session.scene());
   std::optional<TaskEnd> end;
-  const char* controls = desk ? DeskInput::help(session.desk()->spec().kind) : nullptr;
+  const std::string controls_text = desk ? DeskInput::help(session.desk()->spec().kind, syringe)
+                                    : plunger ? std::string("Space held: press the plunger") : std::string();
+  const char* controls = controls_text.empty() ? nullptr : controls_text.c_str();
   std::vector<ui::Choice> choices;
   if (offer_choices) {
     choices = {{"Retry (R)", [&end] { end = TaskEnd::kRetry; }},
@@ -112,6 +123,7 @@ TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices
                    if (session.finished() && press.key == engine::Key::kR) end = TaskEnd::kRetry;
                    if (session.finished() && press.key == engine::Key::kN) end = TaskEnd::kNextTask;
                  }
+                 if (plunger && !session.finished()) plunger->frame(w, ui::pointer_on_panel());
                  if (!desk || session.finished()) {
                    w.take_scroll();
                    return;

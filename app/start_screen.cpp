@@ -11,6 +11,7 @@
 #include "app/desk_input.hpp"
 #include "app/session_window.hpp"
 #include "app/settings.hpp"
+#include "io/file_write.hpp"
 #include "haptics/devices/falcon/falcon_device.hpp"
 #include "training/sessions/store_location.hpp"
 #include "training/sessions/trainee_history.hpp"
@@ -223,7 +224,7 @@ int run_start_screen(const StartScreenOptions& options) {
       task.out_dir = local_folder(options.db) / "runs" / screen.task().name;
       task.messages = options.messages;
       try {
-        fs::create_directories(task.out_dir);
+        io::make_folder(task.out_dir);
         check_present(task.rig.device);
         TaskSession session(task);
         end = run_task(window, session, true);

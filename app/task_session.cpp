@@ -18,6 +18,7 @@
 #include "io/file_write.hpp"
 #include "training/tasks/patient_session.hpp"
 #include "ui/guidance_overlay.hpp"
+#include "ui/syringe_gauge.hpp"
 #include "training/sessions/postgres_connection.hpp"
 #include "training/sessions/session_export.hpp"
 #include "training/sessions/store_location.hpp"
@@ -35,7 +36,7 @@ fs::path local_db(const TaskSessionOptions& options) {
 
 // A database location with its folder made, when it is a file: SQLite makes the file, not the folder.
 std::string with_folder(const fs::path& location) {
-  if (!training::is_postgres_uri(location.string()) && location.has_parent_path()) fs::create_directories(location.parent_path());
+  if (!training::is_postgres_uri(location.string()) && location.has_parent_path()) io::make_folder(location.parent_path());
   return location.string();
 }
 
@@ -87,7 +88,7 @@ fs::path new_recording_path(const fs::path& db, const std::string& task_name) {
   char stamp[32];
   std::strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", std::gmtime(&now));
   const fs::path dir = fs::absolute(db).parent_path() / "recordings";
-  fs::create_directories(dir);
+  io::make_folder(dir);
   const std::string stem = task + "_" + stamp + "_" + std::to_string(::getpid());
   fs::path path = dir / (stem + ".nrec");
   for (int n = 2; fs::exists(path); ++n) path = dir / (stem + "_" + std::to_string(n) + ".nrec");
@@ -276,6 +277,11 @@ void TaskSession::draw_panel(std::optional<size_t> step, const char* controls, c
     if (result_) view.result = &*result_;
     ui::draw_trainee_panel(view);
     if (!result_) ui::draw_guidance({&task_, shown, training::vec3(last.needle_tip_m), scene_.camera});
+    if (const haptics::SyringeServoStep* syringe = rig_->syringe_step(); syringe && !result_) {
+      const auto axis = haptics::needle_axis(last);
+      ui::draw_syringe_gauge({last.syringe, haptics::syringe_stroke_m(syringe->params()), training::vec3(last.needle_tip_m),
+                              {axis[0], axis[1], axis[2]}, scene_.camera});
+    }
   });
 }
 

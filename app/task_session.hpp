@@ -51,6 +51,8 @@ class TaskSession {
   const training::Task& task() const { return task_; }
   const engine::Scene& scene() const { return scene_; }
   haptics::DeskDevice* desk() { return rig_->desk(); }
+  haptics::SyringeHandDevice* syringe_hand() { return rig_->syringe_hand(); }
+  const haptics::DeviceSpec& device_spec() const { return options_.rig.device; }
   std::optional<Eigen::Vector3d> tool_start() const { return rig_->tool_start(); }
   // Seconds the session lasts when its device has an end (script, recording), else nullopt.
   std::optional<double> duration_s() const;

@@ -94,9 +94,7 @@ int write_verify_report(const VerifyOptions& options) {
                     {"seconds", seconds},
                     {"sessions_per_min", per_minute},
                     {"jobs", options.jobs}};
-  std::error_code ec;
-  fs::create_directories(options.out, ec);
-  if (ec) throw std::runtime_error(options.out.string() + ": cannot create the folder: " + ec.message());
+  io::make_folder(options.out);
   io::write_file(options.out / "verify.json", report.dump(2) + "\n");
   io::write_file(options.out / "verify_mismatches.csv", csv);
 

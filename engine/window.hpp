@@ -64,8 +64,11 @@ class Window {
   };
   Cursor cursor() const;
   void set_cursor(const Cursor& at);
-  // The right mouse button held now.
+  // The right mouse button held now; the left one.
   bool right_button_down() const;
+  bool left_button_down() const;
+  // The space bar held now (the syringe's plunger: docs/DEVICES.md, "The syringe hand").
+  bool space_down() const;
   // Scroll-wheel notches since the last call, forward positive; the Up and Down arrow keys
   // count as one notch each, for trackpads and keyboards.
   double take_scroll();

@@ -86,4 +86,10 @@ void write_file(const fs::path& given, std::string_view bytes) {
   }
 }
 
+void make_folder(const fs::path& folder) {
+  std::error_code ec;
+  fs::create_directories(folder, ec);
+  if (ec) throw WriteError(folder.string() + ": cannot create the folder: " + ec.message());
+}
+
 }  // namespace needle::io

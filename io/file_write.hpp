@@ -22,4 +22,8 @@ struct WriteError : std::runtime_error {
 // the temporary file is removed on failure and the old file, if any, is left as it was.
 void write_file(const std::filesystem::path& file, std::string_view bytes);
 
+// Makes `folder` and the folders above it that are missing, for files to be written there; one that
+// exists is left as it is. Throws WriteError "FOLDER: cannot create the folder: reason".
+void make_folder(const std::filesystem::path& folder);
+
 }  // namespace needle::io

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -15,41 +16,49 @@ namespace {
 
 const ImU32 kPunctureA = IM_COL32(255, 80, 80, 255), kPunctureB = IM_COL32(255, 200, 60, 255);
 
-// The lines and punctures of one session in its colours.
-void draw_session(ImDrawList* draw, const PlotFrame& f, const training::ForceDepth& s, const ImU32 (&colours)[2],
-                  ImU32 puncture) {
+// What a depth plot draws of one session: its lines and its marks (the punctures, or the losses).
+struct DepthPlotPart {
+  const training::Plot* plot;
+  const std::vector<training::PlotMark>* marks;
+};
+using PartOf = DepthPlotPart (*)(const training::ForceDepth&);
+
+// The lines and marks of one session in its colours.
+void draw_session(ImDrawList* draw, const PlotFrame& f, const DepthPlotPart& s, const ImU32 (&colours)[2], ImU32 mark) {
   std::vector<ImVec2> points;
-  for (size_t k = 0; k < s.plot.lines.size(); ++k) {
-    const training::Series& line = s.plot.lines[k];
+  for (size_t k = 0; k < s.plot->lines.size(); ++k) {
+    const training::Series& line = s.plot->lines[k];
     points.clear();
     for (size_t i = 0; i < line.t.size(); ++i) points.push_back(ImVec2(f.sx(line.t[i]), f.sy(line.v[i])));
     if (points.size() > 1) draw->AddPolyline(points.data(), int(points.size()), colours[k % 2], 0, 1.5f);
   }
-  for (const training::PlotMark& p : s.punctures) {
+  for (const training::PlotMark& p : *s.marks) {
     const ImVec2 at(f.sx(p.x), f.sy(p.y));
-    draw->AddCircle(at, 5.0f, puncture, 12, 2.0f);
-    draw->AddText(ImVec2(at.x + 6.0f, at.y - 14.0f), puncture, p.label.c_str());
+    draw->AddCircle(at, 5.0f, mark, 12, 2.0f);
+    draw->AddText(ImVec2(at.x + 6.0f, at.y - 14.0f), mark, p.label.c_str());
   }
 }
 
-}  // namespace
-
-void draw_force_depth_plot(const training::ForceDepth& a, const training::ForceDepth* b, float height) {
-  ImGui::Text("%s (%s)", a.plot.title.c_str(), a.plot.unit.c_str());
-  const bool b_lines = b && !b->plot.lines.empty();
-  if (a.plot.lines.empty() && !b_lines) {
+// A plot against depth of `part` of session a (and b), the layer boundaries a's, the legend naming
+// the lines `line` and the marks `marks`.
+void draw_depth_plot(const training::ForceDepth& a, const training::ForceDepth* b, float height, PartOf part, const char* line,
+                     const char* marks) {
+  const DepthPlotPart pa = part(a);
+  ImGui::Text("%s (%s)", pa.plot->title.c_str(), pa.plot->unit.c_str());
+  const bool b_lines = b && !part(*b).plot->lines.empty();
+  if (pa.plot->lines.empty() && !b_lines) {
     ImGui::TextColored(ImVec4(0.95f, 0.7f, 0.3f, 1.0f), "no plot:");
     ImGui::SameLine();
-    ImGui::TextWrapped("%s", a.plot.missing.c_str());
+    ImGui::TextWrapped("%s", pa.plot->missing.c_str());
     return;
   }
   double x_lo = 0.0, x_hi = -std::numeric_limits<double>::infinity(), y_lo = 0.0, y_hi = 0.0;  // read from zero
   for (const training::ForceDepth* s : {&a, b}) {
     if (!s) continue;
-    for (const training::Series& line : s->plot.lines)
-      for (size_t i = 0; i < line.t.size(); ++i) {
-        x_lo = std::min(x_lo, line.t[i]), x_hi = std::max(x_hi, line.t[i]);
-        y_lo = std::min(y_lo, line.v[i]), y_hi = std::max(y_hi, line.v[i]);
+    for (const training::Series& l : part(*s).plot->lines)
+      for (size_t i = 0; i < l.t.size(); ++i) {
+        x_lo = std::min(x_lo, l.t[i]), x_hi = std::max(x_hi, l.t[i]);
+        y_lo = std::min(y_lo, l.v[i]), y_hi = std::max(y_hi, l.v[i]);
       }
   }
   if (!(x_hi > x_lo)) x_hi = x_lo + 1.0;
@@ -64,13 +73,25 @@ void draw_force_depth_plot(const training::ForceDepth& a, const training::ForceD
     dashed_vertical(draw, f.sx(m.x), f.p0.y, f.p1.y, kPlotStep);
     draw->AddText(ImVec2(f.sx(m.x) + 2.0f, f.p0.y + float(k % 3) * ImGui::GetTextLineHeight()), kPlotText, m.label.c_str());
   }
-  draw_session(draw, f, a, kPlotLinesA, kPunctureA);
-  if (b) draw_session(draw, f, *b, kPlotLinesB, kPunctureB);
+  draw_session(draw, f, pa, kPlotLinesA, kPunctureA);
+  if (b) draw_session(draw, f, part(*b), kPlotLinesB, kPunctureB);
   draw->PopClipRect();
-  std::vector<LegendEntry> legend{{b ? "axial force (A)" : "axial force", {kPlotLinesA[0]}},
-                                  {b ? "punctures (A)" : "punctures", {kPunctureA}}};
-  if (b) legend.insert(legend.end(), {{"axial force (B)", {kPlotLinesB[0]}}, {"punctures (B)", {kPunctureB}}});
+  const std::string l(line), m(marks);
+  std::vector<LegendEntry> legend{{b ? l + " (A)" : l, {kPlotLinesA[0]}}, {b ? m + " (A)" : m, {kPunctureA}}};
+  if (b) legend.insert(legend.end(), {{l + " (B)", {kPlotLinesB[0]}}, {m + " (B)", {kPunctureB}}});
   draw_plot_legend(f, legend);
+}
+
+}  // namespace
+
+void draw_force_depth_plot(const training::ForceDepth& a, const training::ForceDepth* b, float height) {
+  draw_depth_plot(a, b, height, [](const training::ForceDepth& s) { return DepthPlotPart{&s.plot, &s.punctures}; },
+                  "axial force", "punctures");
+}
+
+void draw_plunger_pressure_plot(const training::ForceDepth& a, const training::ForceDepth* b, float height) {
+  draw_depth_plot(a, b, height, [](const training::ForceDepth& s) { return DepthPlotPart{&s.pressure, &s.losses}; },
+                  "plunger pressure", "losses of resistance");
 }
 
 }  // namespace needle::ui

@@ -284,6 +284,7 @@ bool draw_session_detail(const training::SessionReview& r, const DetailOptions& 
       if (o.span) span_row(r, *o.span);
       for (const training::Plot* p : r.plots.all()) draw_plot(*p, plot);
       if (r.layered()) draw_force_depth_plot(r.force_depth, nullptr, 140.0f);
+      if (r.has_syringe()) draw_plunger_pressure_plot(r.force_depth, nullptr, 140.0f);
     }
   }
   ImGui::End();
@@ -358,6 +359,7 @@ void draw_comparison(const training::SessionReview& a, const training::SessionRe
       }
     }
     if (a.layered()) draw_force_depth_plot(a.force_depth, &b.force_depth, 120.0f);
+    if (a.has_syringe()) draw_plunger_pressure_plot(a.force_depth, &b.force_depth, 120.0f);
   }
   ImGui::End();
 }
@@ -365,6 +367,12 @@ void draw_comparison(const training::SessionReview& a, const training::SessionRe
 void draw_force_depth_window(const training::ForceDepth& a, const training::ForceDepth* b, const PanelRect& at) {
   if (begin_panel(a.plot.title.c_str(), at))
     draw_force_depth_plot(a, b, std::max(80.0f, ImGui::GetContentRegionAvail().y - 2.0f * ImGui::GetTextLineHeightWithSpacing()));
+  ImGui::End();
+}
+
+void draw_plunger_pressure_window(const training::ForceDepth& a, const training::ForceDepth* b, const PanelRect& at) {
+  if (begin_panel(a.pressure.title.c_str(), at))
+    draw_plunger_pressure_plot(a, b, std::max(80.0f, ImGui::GetContentRegionAvail().y - 2.0f * ImGui::GetTextLineHeightWithSpacing()));
   ImGui::End();
 }
 

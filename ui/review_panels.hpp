@@ -67,6 +67,8 @@ inline void draw_plot_window(const training::SessionReview& review, const traini
 
 // The force–depth plot filling a window (the report's picture), B's over A's when `b` is given.
 void draw_force_depth_window(const training::ForceDepth& a, const training::ForceDepth* b, const PanelRect& at);
+// The plunger's pressure against depth, with a syringe (ForceDepth::pressure), as its own window.
+void draw_plunger_pressure_window(const training::ForceDepth& a, const training::ForceDepth* b, const PanelRect& at);
 
 // Whether the session's task runs on a layered tissue: its review has the force–depth plot.
 inline bool layered(const training::SessionReview& r) { return r.task && r.task->layers.size() > 1; }

@@ -14,7 +14,7 @@ void write_png(const std::filesystem::path& file, const RgbaImage& image) {
   if (image.pixels.size() != size_t(image.width) * image.height * 4) {
     throw std::runtime_error(file.string() + ": image data does not match its size");
   }
-  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  if (file.has_parent_path()) io::make_folder(file.parent_path());
   // Encoded in memory, then written whole and checked (a full disk is an error, not an empty PNG).
   std::string png;
   const auto append = [](void* to, void* data, int size) { static_cast<std::string*>(to)->append(static_cast<char*>(data), size_t(size)); };

@@ -120,6 +120,8 @@ Window::Cursor Window::cursor() const {
 void Window::set_cursor(const Cursor& at) { glfwSetCursorPos(window_, at.x, at.y); }
 
 bool Window::right_button_down() const { return glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS; }
+bool Window::left_button_down() const { return glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS; }
+bool Window::space_down() const { return glfwGetKey(window_, GLFW_KEY_SPACE) == GLFW_PRESS; }
 
 std::vector<GamepadInfo> Window::gamepads() {
   std::vector<GamepadInfo> pads;

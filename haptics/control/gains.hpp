@@ -24,18 +24,18 @@ struct RobotGains {
 // positively; kept only to show (tests, bench stability) that it is the form that diverges.
 enum class VirtualFeedback { Dissipative, AsPrinted };
 
-// Which controller runs (docs/CONTROLLER.md, "The laws"). Thesis: the thesis's laws as this code ran
-// them before issue 13 (signs corrected, the blend and the wrench filter added, nothing else): the
+// Which controller runs (docs/CONTROLLER.md, "The laws"). Thesis: the thesis's laws as printed
+// (signs corrected, the blend and the wrench filter added, nothing else): the
 // master's gravity cancelled only in contact, the virtual robot's weight carried by its tracking
 // terms, the tissue entered while the tip is inside its surface. A recording that names no law was
 // made with it. Tool: what the hand holds is the tool: both robots' gravity compensated in every
 // mode, the tool's weight rendered, the sensed wrench taken net of it, entry into tissue one event
-// of the needle's track, and the tissue's axial force fed back to the hand (issues 12 and 13).
+// of the needle's track, and the tissue's axial force fed back to the hand.
 enum class ControlLaw { Thesis, Tool };
 const char* control_law_name(ControlLaw law);
 std::optional<ControlLaw> control_law_named(std::string_view name);
 
-// The instrument the trainee holds (issue 13). Default: an 18 G needle on a 5 ml syringe, 15 g
+// The instrument the trainee holds. Default: an 18 G needle on a 5 ml syringe, 15 g
 // (design value: a 5 ml plastic syringe weighs about 10 g, the needle and its hub 1 to 2 g, a few
 // millilitres of saline or air the rest). Its weight is what the hand carries in free motion.
 struct Tool {

@@ -79,7 +79,8 @@ double trigger_past_dead_zone(double axis, double dead_zone) noexcept {
   return pulled <= dead_zone ? 0.0 : (pulled - dead_zone) / (1.0 - dead_zone);
 }
 
-GamepadMapping::GamepadMapping(const DeskWorkspace& workspace) : workspace_(workspace), pose_(workspace.centre()) {}
+GamepadMapping::GamepadMapping(const DeskWorkspace& workspace, bool plunger_on_left_trigger)
+    : workspace_(workspace), pose_(workspace.centre()), plunger_on_left_trigger_(plunger_on_left_trigger) {}
 
 void GamepadMapping::update(const GamepadState& s, double dt_s) noexcept {
   const double dt = std::clamp(finite_or_zero(dt_s), 0.0, kMaxStep_s);
@@ -87,8 +88,9 @@ void GamepadMapping::update(const GamepadState& s, double dt_s) noexcept {
   double rx = s.axes[GamepadState::kRightX], ry = s.axes[GamepadState::kRightY];
   stick_past_dead_zone(lx, ly, kStickDeadZone);
   stick_past_dead_zone(rx, ry, kStickDeadZone);
-  const double depth = trigger_past_dead_zone(s.axes[GamepadState::kRightTrigger], kTriggerDeadZone) -
-                       trigger_past_dead_zone(s.axes[GamepadState::kLeftTrigger], kTriggerDeadZone);
+  const double in = trigger_past_dead_zone(s.axes[GamepadState::kRightTrigger], kTriggerDeadZone);
+  const double depth = plunger_on_left_trigger_ ? (s.buttons[GamepadState::kLeftBumper] ? -in : in)
+                                                : in - trigger_past_dead_zone(s.axes[GamepadState::kLeftTrigger], kTriggerDeadZone);
   const double move = kSpeed_m_per_s * dt, turn = kTurnRate_rad_per_s * dt;
   pose_.position_m[0] += move * lx;
   pose_.position_m[1] -= move * ly;  // the stick's y points down
@@ -100,6 +102,15 @@ void GamepadMapping::update(const GamepadState& s, double dt_s) noexcept {
   const bool held = s.buttons[kResetFault] != 0;
   if (held && !reset_held_) reset_pressed_ = true;
   reset_held_ = held;
+}
+
+void PlungerMapping::held(bool down, double dt_s) noexcept {
+  const double dt = std::clamp(finite_or_zero(dt_s), 0.0, GamepadMapping::kMaxStep_s);
+  force_N_ = down ? std::min(kHeldForce_N, force_N_ + kHeldForce_N * dt / kRise_s) : 0.0;
+}
+
+void PlungerMapping::trigger(double axis) noexcept {
+  force_N_ = kHeldForce_N * trigger_past_dead_zone(axis, GamepadMapping::kTriggerDeadZone);
 }
 
 bool GamepadMapping::take_fault_reset() noexcept {

@@ -78,7 +78,8 @@ struct GamepadState {
 // Rate control: the left stick moves the handle in the view's plane, the right trigger pushes it
 // into the view and the left one draws it back, the right stick turns the wrist (right swings the
 // hub clockwise, up tilts it away), each at a speed proportional to the deflection past a dead
-// zone. Start resets a latched fault.
+// zone. Start resets a latched fault. In a task with a syringe the left trigger is the thumb on the
+// plunger (PlungerMapping) and the right trigger draws the needle back while the left bumper is held.
 class GamepadMapping {
  public:
   static constexpr double kSpeed_m_per_s = 0.02;       // stick or trigger fully deflected
@@ -88,7 +89,7 @@ class GamepadMapping {
   static constexpr double kMaxStep_s = 0.1;            // a longer frame moves as much as this one
   static constexpr GamepadState::Button kResetFault = GamepadState::kStart;
 
-  explicit GamepadMapping(const DeskWorkspace& workspace = {});
+  explicit GamepadMapping(const DeskWorkspace& workspace = {}, bool plunger_on_left_trigger = false);
 
   // One frame of `dt_s` seconds with the state read at its start.
   void update(const GamepadState& state, double dt_s) noexcept;
@@ -99,8 +100,30 @@ class GamepadMapping {
  private:
   DeskWorkspace workspace_;
   DeskPose pose_;
+  bool plunger_on_left_trigger_ = false;
   bool reset_held_ = false;
   bool reset_pressed_ = false;
+};
+
+// The thumb on the loss-of-resistance syringe's plunger from a desk (docs/DEVICES.md, "The syringe
+// hand"): a key or a button held presses with a force rising linearly to kHeldForce_N over kRise_s
+// and staying there, released lets go at once; a gamepad's trigger presses in proportion to its
+// pull past the dead zone, kHeldForce_N fully pulled. Design values: 12 N is a little above the
+// 11.1 to 11.8 N Vaughan et al. (2012) measured on the plunger in ligament, so that a trainee can
+// press as a clinician does; one second of rise lets a press be eased on, as a thumb does.
+class PlungerMapping {
+ public:
+  static constexpr double kHeldForce_N = 12.0;
+  static constexpr double kRise_s = 1.0;
+
+  // One frame of `dt_s` seconds with the key or button held (`down`) or not.
+  void held(bool down, double dt_s) noexcept;
+  // The trigger's axis, -1 released to 1 pulled.
+  void trigger(double axis) noexcept;
+  double force_N() const noexcept { return force_N_; }
+
+ private:
+  double force_N_ = 0.0;
 };
 
 // The deflection past a dead zone, rescaled so that the dead zone's edge is 0 and full deflection

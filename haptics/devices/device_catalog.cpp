@@ -24,6 +24,13 @@ std::unique_ptr<HapticDevice> make_device(const DeviceSpec& spec, const DeviceOp
                     ": built with its controller step from a scenario by haptics::SimSession, not by make_device");
 }
 
+std::unique_ptr<HapticDevice> make_second_falcon(const DeviceSpec& needle, const DeviceOptions& options) {
+  if (needle.kind != DeviceSpec::Kind::kFalcon || falcon::find_falcons().count < 2) return nullptr;
+  DeviceSpec second = needle;
+  second.index = needle.index.value_or(0) == 0 ? 1 : 0;
+  return make_device(second, options);
+}
+
 std::vector<BackendStatus> list_backends() {
   const falcon::UsbPresence falcons = falcon::find_falcons();
   std::string falcon_status;
@@ -38,16 +45,18 @@ std::vector<BackendStatus> list_backends() {
   return {
       {"falcon[:N]", falcon_status,
        "Novint Falcon on USB 0403:cb48, read/write access (tools/udev/99-novint-falcon.rules), "
-       "and after each power-up --firmware FILE: Novint's firmware image (not shipped, its licence forbids it)"},
+       "and after each power-up --firmware FILE: Novint's firmware image (not shipped, its licence forbids it); in a task with "
+       "a syringe a second Falcon presses its plunger (pushed away from you), else the space bar"},
       {"mouse", "available",
        "a window: the cursor moves the tool, the wheel or Up/Down push it in, the right button held turns it about its tip; "
-       "forces shown, not felt"},
+       "the left button or the space bar held presses a syringe's plunger; forces shown, not felt"},
       {"keyboard", "available",
-       "a window: arrows move the tool, W/S push it in and out, A/D and R/F turn it about its tip (Shift: fine steps); "
-       "forces shown, not felt"},
+       "a window: arrows move the tool, W/S push it in and out, A/D and R/F turn it about its tip (Shift: fine steps), "
+       "the space bar held presses a syringe's plunger; forces shown, not felt"},
       {"gamepad[:N]", "listed by the window (GLFW reports gamepads once it has a display)",
        "a window and a gamepad with a standard mapping: left stick moves the tool, triggers push it in and out, right "
-       "stick turns it about its tip, Start resets a fault; forces shown, not felt"},
+       "stick turns it about its tip, Start resets a fault; with a syringe the left trigger presses its plunger and the "
+       "right trigger draws the tool back while the left bumper is held; forces shown, not felt"},
       {"replay:FILE", "available", "a session recording written by an earlier run"},
       {"sim:SCENARIO", "available",
        "a scenario file (assets/scenarios/*.json): the master model and a simulated operator step with the loop; "

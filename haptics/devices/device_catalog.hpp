@@ -19,6 +19,11 @@ struct DeviceOptions {
 // model and the scene, so haptics::SimSession builds it with its step (DeviceError).
 std::unique_ptr<HapticDevice> make_device(const DeviceSpec& spec, const DeviceOptions& options);
 
+// The syringe hand's Falcon beside the needle's (docs/DEVICES.md, "The syringe hand"): when `needle`
+// is a Falcon and at least two are on the bus, the other one (falcon:1 for falcon or falcon:0, else
+// falcon:0), built; nullptr otherwise.
+std::unique_ptr<HapticDevice> make_second_falcon(const DeviceSpec& needle, const DeviceOptions& options);
+
 struct BackendStatus {
   std::string spec;    // how to ask for it
   std::string status;  // what is connected or available now

@@ -27,6 +27,7 @@ SimDevice::SimDevice(const Scenario& scenario, double period_s)
   for (int j = 0; j < std::min(n, kMaxDeviceJoints); ++j)
     caps_.max_torque_nm[j] = j < scenario.device.actuated_joints ? scenario.device.force_limit_N * kLeverBoundM : 0.0;
   caps_.senses_force = true;
+  if (scenario.thumb) thumb_.emplace(*scenario.thumb);
 }
 
 void SimDevice::open() {
@@ -34,6 +35,7 @@ void SimDevice::open() {
   plant_.reset(scenario_.q0, VecN::Zero(n));
   sensor_.reset(Wrench::Zero());
   ticks_ = 0;
+  if (thumb_) thumb_->reset();
 }
 
 void SimDevice::read(DeviceReading& out) noexcept {
@@ -54,13 +56,22 @@ void SimDevice::read(DeviceReading& out) noexcept {
     out.sensed_force_n[i] = sensed[i];
     out.sensed_torque_nm[i] = sensed[3 + i];
   }
+  if (thumb_) {
+    out.plunger_input = uint32_t(PlungerInput::kThumbForce);
+    out.plunger_force_n = thumb_->force(static_cast<double>(ticks_) * period_s_);
+  }
 }
 
 void SimDevice::write(const DeviceCommand& command) noexcept {
   const int n = static_cast<int>(caps_.joint_count);
   for (int j = 0; j < n; ++j) tau_[j] = command.space == CommandSpace::kJointTorque ? command.torque_nm[j] : 0.0;
   // Time as tick x period, as the closed-loop simulation counts it (no accumulated rounding).
-  plant_.advance(tau_, scenario_.trajectory, static_cast<double>(ticks_) * period_s_, period_s_);
+  const double t = static_cast<double>(ticks_) * period_s_;
+  if (thumb_) {
+    thumb_->feel(t, command.plunger_travel_m, period_s_);
+    if (thumb_->reaction_due(t)) thumb_->begin_reaction(t, plant_.data().tip.translation(), plant_.data().tip.linear().col(0));
+  }
+  plant_.advance(tau_, thumb_ ? thumb_->trajectory(scenario_.trajectory) : scenario_.trajectory, t, period_s_);
   ++ticks_;
 }
 

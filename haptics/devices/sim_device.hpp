@@ -1,14 +1,19 @@
 // `sim`: the master device simulated (haptics/sim): the Omni-family plant with its motor and
 // force limits, the operator's hand following the scenario's trajectory, and the 6-axis force
 // sensor between them. It steps with the loop: read() samples joints, velocities and the
-// sensed wrench; write() applies the joint torques for one period. Joint-space device: the
+// sensed wrench (and the scripted thumb's force on the syringe's plunger); write() applies the joint
+// torques for one period, the thumb feeling where the plunger went (a loss of resistance turns the
+// hand to the script's reaction, haptics/sim/thumb_script.hpp). Joint-space device: the
 // master shares the virtual robot's geometry (thesis Assumption 2.1).
 #pragma once
+
+#include <optional>
 
 #include "haptics/devices/haptic_device.hpp"
 #include "haptics/sim/force_sensor.hpp"
 #include "haptics/sim/master_plant.hpp"
 #include "haptics/sim/scenario.hpp"
+#include "haptics/sim/thumb_script.hpp"
 
 namespace needle::haptics {
 
@@ -38,6 +43,7 @@ class SimDevice : public HapticDevice {
   double period_s_;
   VecN tau_;
   uint64_t ticks_ = 0;
+  std::optional<ScriptedThumb> thumb_;  // the operator's thumb on the syringe, when the scenario scripts one
 };
 
 }  // namespace needle::haptics

@@ -1,4 +1,4 @@
-// The model at one state as JSON, for `needle-sim model` (keys fixed by issue 3): pose {p, R},
+// The model at one state as JSON, for `needle-sim model` (its keys are a contract): pose {p, R},
 // J (6×n, rows [linear; angular]), H, Cdq, g, gravity (base frame), tau_id. Not for the servo loop.
 #pragma once
 

@@ -33,6 +33,21 @@ struct TissueSnapshot {
   double surface_point_m[3] = {0.0, 0.0, 0.0};  // where the tip met that surface, at rest, world frame
 };
 
+// The loss-of-resistance syringe on the needle's hub (haptics/syringe/), in a session that has one:
+// the thumb, the plunger and the barrel as the tick left them. Recorded from payload version 3 on.
+struct SyringeSnapshot {
+  uint32_t fluid = 0;             // 0: no syringe; 1 saline, 2 air (haptics::SyringeFluid)
+  int32_t layer = -1;             // the tissue layer the needle's opening is in at the end of the tick (the one
+                                  // holding the tip, or whose surface gave way in the tick): where fluid goes;
+                                  // −1 in none. Set with or without a syringe.
+  double thumb_force_N = 0.0;     // the thumb's force on the plunger
+  double pressure_Pa = 0.0;       // in the barrel, gauge
+  double travel_m = 0.0;          // the plunger from full
+  double flow_m3_per_s = 0.0;     // out of the barrel through the needle into the tissue
+  double injected_m3 = 0.0;       // fluid gone into the tissue since the start (air at the atmosphere's pressure)
+  double work_J = 0.0;            // the thumb's work on the plunger since the start
+};
+
 // ToolSnapshot::limits: what held the tick's force back, one bit each.
 inline constexpr uint32_t kLimitForce = 1u;             // the safety monitor saturated the command at the device's limit
 inline constexpr uint32_t kLimitRate = 2u;              // ... or limited its rate of change
@@ -57,6 +72,7 @@ struct ToolSnapshot {
   uint32_t limits = 0;  // kLimit* bits; recordings made before they existed hold 0 here
 
   TissueSnapshot tissue;
+  SyringeSnapshot syringe;
 };
 
 // Whether `layer` (a tissue layer's index) is in the snapshot's punctured set.

@@ -47,6 +47,7 @@ void publish_virtual_state(const VirtualWorld& world, const Eigen::Vector3d& bas
   const TissueState& track = world.tissue();
   TissueSnapshot& t = state.tissue;
   t.tip_layer = track.on_track ? track.out.holding_layer : -1;
+  state.syringe.layer = track.on_track ? track.out.opening_layer : -1;
   t.punctured_layers = passed_layers(track);
   t.surface_layer = track.on_track ? track.out.surface_layer : -1;
   t.bone_layer = c.bone_layer;

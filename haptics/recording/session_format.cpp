@@ -44,6 +44,12 @@ void visit_record(Visitor& v, TickSample& s, uint32_t version) {
     v(l.tip_layer), v(l.punctured_layers), v(l.surface_layer), v(l.bone_layer), v(l.axial_force_N), v(l.bone_force_n);
     v(l.deflection_m), v(l.surface_point_m);
   }
+  if (version >= 3) {  // the syringe hand's input, what it was sent, and the syringe
+    v(r.plunger_input), v(r.plunger_force_n), v(r.plunger_position_m);
+    v(c.plunger_force_n), v(c.plunger_travel_m);
+    SyringeSnapshot& y = t.syringe;
+    v(y.fluid), v(y.layer), v(y.thumb_force_N), v(y.pressure_Pa), v(y.travel_m), v(y.flow_m3_per_s), v(y.injected_m3), v(y.work_J);
+  }
 }
 
 struct Sizer {
@@ -126,6 +132,19 @@ std::string not_finite(const char* name, const double* values, int count) {
   return {};
 }
 
+// "state syringe pressure_Pa = nan, not finite" for the first of the syringe's numbers that is not.
+std::string syringe_state_problem(const SyringeSnapshot& y) {
+  const std::pair<const char*, double> numbers[] = {{"state syringe thumb_force_N", y.thumb_force_N},
+                                                    {"state syringe pressure_Pa", y.pressure_Pa},
+                                                    {"state syringe travel_m", y.travel_m},
+                                                    {"state syringe flow_m3_per_s", y.flow_m3_per_s},
+                                                    {"state syringe injected_m3", y.injected_m3},
+                                                    {"state syringe work_J", y.work_J}};
+  for (const auto& [name, value] : numbers)
+    if (std::string problem = not_finite(name, &value, 1); !problem.empty()) return problem;
+  return {};
+}
+
 // What makes a decoded record one no run can have written, or "" (docs/SESSIONS.md, "Reading"):
 // counts past the arrays they count, an unknown contact or command space, a layer index outside
 // the punctured set's 32 bits; and, unless the loop had latched a fault on it (then it holds what
@@ -142,9 +161,11 @@ std::string record_problem(const TickSample& s) {
        {count("reading joint_count", r.joint_count, kMaxDeviceJoints), count("command joint_count", c.joint_count, kMaxDeviceJoints),
         count("command space", uint32_t(c.space), int(CommandSpace::kJointTorque)),
         count("state joint_count", t.joint_count, kMaxSnapshotJoints), count("state multiplier_count", t.multiplier_count, kMaxMultipliers),
-        count("state contact", uint32_t(t.contact), int(ContactState::kTissue))})
+        count("state contact", uint32_t(t.contact), int(ContactState::kTissue)),
+        count("reading plunger_input", r.plunger_input, int(PlungerInput::kHandlePosition)),
+        count("state syringe fluid", t.syringe.fluid, 2)})
     if (!problem.empty()) return problem;
-  for (const int32_t layer : {t.tissue.tip_layer, t.tissue.surface_layer, t.tissue.bone_layer})
+  for (const int32_t layer : {t.tissue.tip_layer, t.tissue.surface_layer, t.tissue.bone_layer, t.syringe.layer})
     if (layer < -1 || layer > 31) return "state layer index " + std::to_string(layer) + ", outside [-1, 31]";
   if (t.fault != 0) return {};
   const TissueSnapshot& l = t.tissue;
@@ -161,7 +182,11 @@ std::string record_problem(const TickSample& s) {
         not_finite("state virtual_dq", t.virtual_dq, kMaxSnapshotJoints), not_finite("state multipliers", t.multipliers, kMaxMultipliers),
         not_finite("state operator_force_n", t.operator_force_n, 3), not_finite("state environment_force_n", t.environment_force_n, 3),
         not_finite("state device_force_n", t.device_force_n, 3), not_finite("state bone_force_n", l.bone_force_n, 3),
-        out_of_bound("state surface_point_m", l.surface_point_m, 3, io::kWorldExtent_m)})
+        out_of_bound("state surface_point_m", l.surface_point_m, 3, io::kWorldExtent_m),
+        out_of_bound("reading plunger_force_n", &r.plunger_force_n, 1, kMaxReading),
+        out_of_bound("reading plunger_position_m", &r.plunger_position_m, 1, io::kWorldExtent_m),
+        out_of_bound("command plunger_force_n", &c.plunger_force_n, 1, kMaxReading),
+        out_of_bound("command plunger_travel_m", &c.plunger_travel_m, 1, io::kWorldExtent_m), syringe_state_problem(t.syringe)})
     if (!problem.empty()) return problem;
   return {};
 }

@@ -36,8 +36,10 @@ inline constexpr uint32_t kSessionFormatVersion = 3;
 // `if (version >= N)` with N the next payload version: recordings of older payloads then still
 // read, the new field at its default.
 // Payload 1: the tick, device reading and command, tool state. Payload 2 (issue 14) adds the
-// layered tissue at the needle (ToolSnapshot::tissue).
-inline constexpr uint32_t kPayloadVersion = 2;
+// layered tissue at the needle (ToolSnapshot::tissue). Payload 3 adds the syringe: the syringe hand's
+// reading (DeviceReading::plunger_*), what it was sent (DeviceCommand::plunger_*) and the syringe's
+// state (ToolSnapshot::syringe).
+inline constexpr uint32_t kPayloadVersion = 3;
 // The recorder writes at most this many records in a block; a reader refuses more.
 inline constexpr uint32_t kMaxBlockRecords = 4096;
 

@@ -166,6 +166,7 @@ void SafetyMonitor::apply(uint64_t tick, const DeviceReading& reading, const Too
     int n = 0;
     double* cmd = effort(command, n);
     for (int i = 0; i < n; ++i) cmd[i] *= factor;
+    command.plunger_force_n *= factor;  // the syringe hand's device ramps down with the needle's
     limited_ = 0;
   } else {
     limited_ = shape(dt_s, command);

@@ -1,4 +1,4 @@
-// What the hand feels, measured on a closed-loop run (issue 13, `needle-sim bench feel`): per phase
+// What the hand feels, measured on a closed-loop run (`needle-sim bench feel`): per phase
 // of contact, the sensed hand force's content in the band where a wobble is felt (3–50 Hz) and
 // above it, the needle tip's lateral speed in tissue and the position tracking; and the force the
 // hand holds at rest in free motion. Not for the servo loop.

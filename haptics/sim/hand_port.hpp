@@ -1,4 +1,4 @@
-// Passivity at the hand (issue 12: "the virtual world never does net positive work on the hand"):
+// Passivity at the hand ("the virtual world never does net positive work on the hand"):
 // what the world behind the hand's port (the sensor between hand and stylus) holds and may give
 // back. The hand's work on the stylus minus the change of this energy is what the world has
 // dissipated; docs/CONTROLLER.md, "Passivity at the hand", states the terms and what is left.

@@ -1,5 +1,6 @@
 #include "haptics/sim/operator_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -16,8 +17,11 @@ HandTrajectory::HandTrajectory(std::vector<HandWaypoint> waypoints) : waypoints_
 }
 
 HandTarget HandTrajectory::at(double t) const {
-  size_t i = 0;
-  while (i + 1 < waypoints_.size() && waypoints_[i + 1].t <= t) ++i;
+  // The last waypoint at or before t (the first when t precedes it), by bisection: a script may hold
+  // as many waypoints as a 16 MiB file does, and this runs every tick.
+  const auto after = std::upper_bound(waypoints_.begin() + 1, waypoints_.end(), t,
+                                      [](double time, const HandWaypoint& w) { return time < w.t; });
+  const size_t i = size_t(after - waypoints_.begin()) - 1;
   const HandWaypoint& a = waypoints_[i];
   HandTarget out{a.position, Eigen::Vector3d::Zero(), a.direction, Eigen::Vector3d::Zero()};
   if (i + 1 == waypoints_.size() || t <= a.t) return out;
@@ -35,6 +39,16 @@ HandTarget HandTrajectory::at(double t) const {
     out.omega = s_dot * angle * unit;
   }
   return out;
+}
+
+void HandTrajectory::restart(double t0, const Eigen::Vector3d& position, const Eigen::Vector3d& direction, int anchored) noexcept {
+  if (waypoints_.empty()) return;
+  const double shift = t0 - waypoints_.front().t;
+  for (HandWaypoint& w : waypoints_) w.t += shift;
+  for (int k = 0; k < anchored && size_t(k) < waypoints_.size(); ++k) {
+    waypoints_[size_t(k)].position = position;
+    if (direction.norm() > 1e-9) waypoints_[size_t(k)].direction = direction.normalized();
+  }
 }
 
 Wrench hand_impedance_wrench(const HandImpedance& hand, const HandTarget& target, const Eigen::Isometry3d& tip,

@@ -40,6 +40,10 @@ class HandTrajectory {
   HandTrajectory() = default;
   explicit HandTrajectory(std::vector<HandWaypoint> waypoints);  // throws unless t strictly increases
   HandTarget at(double t) const;
+  // The same waypoints shifted in time so that the first is at t0, and the first `anchored` moved to
+  // (position, direction): a reaction's relative waypoints started where the hand is when it begins.
+  // Allocates nothing.
+  void restart(double t0, const Eigen::Vector3d& position, const Eigen::Vector3d& direction, int anchored = 1) noexcept;
   double end_time() const { return waypoints_.empty() ? 0.0 : waypoints_.back().t; }
   const std::vector<HandWaypoint>& waypoints() const { return waypoints_; }
 

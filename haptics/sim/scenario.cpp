@@ -10,6 +10,7 @@
 #include "haptics/anatomy/patient_cache.hpp"
 #include "haptics/model/urdf_loader.hpp"
 #include "haptics/sim/scenario_limits.hpp"
+#include "haptics/sim/syringe_reader.hpp"
 #include "io/input_limits.hpp"
 #include "io/strict_json.hpp"
 
@@ -18,18 +19,21 @@ namespace {
 
 using nlohmann::json;
 
-// The keys of a layer's parameters (every mechanical number, "rigid" and "ultrasound") after `first`.
+// The keys of a layer's parameters (every mechanical number, "rigid", "ultrasound" and "injection")
+// after `first`.
 std::vector<const char*> with_mechanics_keys(std::vector<const char*> first) {
   for (const auto& f : kMechanicsFields) first.push_back(f.key);
   first.push_back("rigid");
   first.push_back("ultrasound");
+  first.push_back("injection");
   return first;
 }
 
-// A layer's parameters: its mechanics and, when given, what it is to ultrasound.
+// A layer's parameters: its mechanics and, when given, what it is to ultrasound and to injection.
 struct LayerParameters {
   LayerMechanics mechanics;
   std::optional<LayerAcoustics> acoustics;
+  std::optional<LayerInjection> injection;
 };
 
 // A layer's mechanical parameters: inline in a scenario (each a number, or {value, source}) or a
@@ -55,17 +59,12 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
 
   // The `ultrasound` block, when there is one: every key of kAcousticsFields, numbers as above.
   std::optional<LayerAcoustics> acoustics(const json& j, const std::string& at, const json* references) {
-    if (!j.contains("ultrasound")) return std::nullopt;
-    const json& u = j["ultrasound"];
-    const std::string where = at + "/ultrasound";
-    std::vector<const char*> keys;
-    for (const auto& f : kAcousticsFields) keys.push_back(f.key);
-    object(u, where, keys);
-    LayerAcoustics a;
-    for (const auto& f : kAcousticsFields)
-      a.*f.member = number(value(member(u, where, f.key), where + "/" + f.key, references), pointer_to(where, f.key, u[f.key]));
-    if (const auto problem = acoustics_problem(a)) fail(pointer_to(where, problem->key, u[problem->key]), problem->what);
-    return a;
+    return field_block(j, at, references, "ultrasound", kAcousticsFields, acoustics_problem);
+  }
+
+  // The `injection` block, when there is one: every key of kInjectionFields, numbers as above.
+  std::optional<LayerInjection> injection(const json& j, const std::string& at, const json* references) {
+    return field_block(j, at, references, "injection", kInjectionFields, injection_problem);
   }
 
   LayerParameters parameter_set(const json& j) {
@@ -79,7 +78,7 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
                                                     : std::vector<const char*>{"stiffness_N_per_m", "puncture_force_N", "cutting_force_N",
                                                                                "friction_N_per_m", "static_friction_N_per_m"};
     for (const char* key : required) member(j, "", key);
-    const LayerParameters p{mechanics(j, "", &references), acoustics(j, "", &references)};
+    const LayerParameters p{mechanics(j, "", &references), acoustics(j, "", &references), injection(j, "", &references)};
     for (const auto& item : references.items()) {
       const std::string& key = item.key();  // not a structured binding: clang before 16 cannot capture one
       string(item.value(), "/references/" + key);
@@ -90,6 +89,24 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
   }
 
  private:
+  // The block `name` of `j`, when there is one: every key of `fields`, each a number as above, the
+  // whole checked by `problem`.
+  template <class Set, size_t N>
+  std::optional<Set> field_block(const json& j, const std::string& at, const json* references, const char* name,
+                                 const ParameterField<Set> (&fields)[N], std::optional<MechanicsProblem> (*problem)(const Set&)) {
+    if (!j.contains(name)) return std::nullopt;
+    const json& block = j[name];
+    const std::string where = at + "/" + name;
+    std::vector<const char*> keys;
+    for (const auto& f : fields) keys.push_back(f.key);
+    object(block, where, keys);
+    Set set;
+    for (const auto& f : fields)
+      set.*f.member = number(value(member(block, where, f.key), where + "/" + f.key, references), pointer_to(where, f.key, block[f.key]));
+    if (const auto p = problem(set)) fail(pointer_to(where, p->key, block[p->key]), p->what);
+    return set;
+  }
+
   // Where a parameter's number sits: the key itself, or its "value" when given with a source.
   static std::string pointer_to(const std::string& at, const std::string& key, const json& given) {
     return at + "/" + key + (given.is_object() ? "/value" : "");
@@ -125,7 +142,7 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
   Scenario scenario(const json& j) {
     object(j, "", {"name", "description", "master_urdf", "virtual_urdf", "robot_base_in_world_m", "period_s",
                    "duration_s", "master_substeps", "virtual_substeps", "q0_rad", "gains", "tool", "rigid", "tissue", "hand",
-                   "sensor", "device", "energy_bound_J"});
+                   "sensor", "device", "energy_bound_J", "syringe"});
     Scenario s;
     s.source = file_;
     s.name = string(member(j, "", "name"), "/name");
@@ -146,6 +163,7 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
       s.scene.rigid = ImplicitSurface(rigid.list, rigid.combine);
     }
     if (j.contains("tissue")) tissue(j["tissue"], "/tissue", s);
+    if (j.contains("syringe")) s.syringe = read_syringe(j["syringe"], file_, "/syringe", s.scene.tissue);
     hand(member(j, "", "hand"), "/hand", s);
     if (j.contains("sensor")) sensor(j["sensor"], "/sensor", s.sensor);
     if (j.contains("device")) {
@@ -306,13 +324,15 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
         if (!std::filesystem::is_regular_file(set)) fail(at + "/tissues", "no parameter set " + set + " for the layer \"" + l.name + "\"");
         sets.emplace(l.parameters, MechanicsReader(set).parameter_set(io::read_json_file<ScenarioError>(set)));
       }
-      s.patient_layers.push_back({l.name, sets.at(l.parameters).mechanics});
+      s.patient_layers.push_back({l.name, sets.at(l.parameters).mechanics, sets.at(l.parameters).injection});
     }
     if (!generate_patient_) return;
     s.patient = anatomy::shared_patient(params, Eigen::Vector3d(entry[0], entry[1], entry[2]) - s.base_in_world);
     std::vector<TissueLayer> layers;
-    for (const anatomy::PatientLayer& l : s.patient->layers)
-      layers.push_back({l.name, l.shape, sets.at(l.parameters).mechanics, sets.at(l.parameters).acoustics});
+    for (const anatomy::PatientLayer& l : s.patient->layers) {
+      const LayerParameters& set = sets.at(l.parameters);
+      layers.push_back({l.name, l.shape, set.mechanics, set.acoustics, set.injection});
+    }
     try {
       s.scene.tissue = TissueModel(std::move(layers), stick);
     } catch (const TissueLayerError& e) {
@@ -327,6 +347,7 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
       MechanicsReader inline_reader(file_);
       layer.mechanics = inline_reader.mechanics(l, at, nullptr);
       layer.acoustics = inline_reader.acoustics(l, at, nullptr);
+      layer.injection = inline_reader.injection(l, at, nullptr);
       return layer;
     }
     for (const char* key : with_mechanics_keys({}))
@@ -335,6 +356,7 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     const LayerParameters p = MechanicsReader(set).parameter_set(io::read_json_file<ScenarioError>(set));
     layer.mechanics = p.mechanics;
     layer.acoustics = p.acoustics;
+    layer.injection = p.injection;
     return layer;
   }
 
@@ -393,6 +415,8 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     OperatorHand read = read_hand(h, file_, at, s.base_in_world);
     s.hand = read.impedance;
     s.trajectory = std::move(read.trajectory);
+    s.thumb = std::move(read.thumb);
+    if (s.thumb && !s.syringe) fail(at + "/thumb", "the scenario has no syringe for the thumb to press (/syringe)");
   }
 
   void sensor(const json& j, const std::string& at, ForceSensorParams& out) const {
@@ -414,8 +438,7 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
 
 OperatorHand read_hand(const json& h, const std::string& file, const std::string& at, const Eigen::Vector3d& base_in_world) {
   const io::StrictJsonReader<ScenarioError> r(file);
-  auto vec3 = [](const std::array<double, 3>& a) { return Eigen::Vector3d(a[0], a[1], a[2]); };
-  r.object(h, at, {"mass_kg", "damping_Ns_per_m", "stiffness_N_per_m", "grip_length_m", "waypoints"});
+  r.object(h, at, {"mass_kg", "damping_Ns_per_m", "stiffness_N_per_m", "grip_length_m", "waypoints", "thumb"});
   OperatorHand out;
   HandImpedance& i = out.impedance;
   const std::tuple<const char*, double*, const io::Range&> impedance[] = {
@@ -425,11 +448,23 @@ OperatorHand read_hand(const json& h, const std::string& file, const std::string
       {"grip_length_m", &i.grip_length_m, limits::kGripLength}};
   for (const auto& [key, field, range] : impedance)
     if (h.contains(key)) *field = r.in_range(h[key], at + "/" + key, range);
-  const json& wps = r.member(h, at, "waypoints");
-  if (!wps.is_array() || wps.empty()) r.fail(at + "/waypoints", "expected a non-empty array of waypoints");
+  try {
+    out.trajectory = HandTrajectory(read_waypoints(r.member(h, at, "waypoints"), file, at + "/waypoints", base_in_world));
+  } catch (const std::invalid_argument& e) {
+    r.fail(at + "/waypoints", std::string("expected valid waypoints: ") + e.what());
+  }
+  if (h.contains("thumb")) out.thumb = read_thumb(h["thumb"], file, at + "/thumb", base_in_world);
+  return out;
+}
+
+std::vector<HandWaypoint> read_waypoints(const json& wps, const std::string& file, const std::string& at,
+                                         const Eigen::Vector3d& base_in_world) {
+  const io::StrictJsonReader<ScenarioError> r(file);
+  auto vec3 = [](const std::array<double, 3>& a) { return Eigen::Vector3d(a[0], a[1], a[2]); };
+  if (!wps.is_array() || wps.empty()) r.fail(at, "expected a non-empty array of waypoints");
   std::vector<HandWaypoint> waypoints;
   for (size_t k = 0; k < wps.size(); ++k) {
-    const std::string where = at + "/waypoints/" + std::to_string(k);
+    const std::string where = at + "/" + std::to_string(k);
     r.object(wps[k], where, {"t", "p", "dir"});
     // A time past the longest session would make a run that never ends (docs/TASKS.md, "Limits").
     const double t = r.in_range(r.member(wps[k], where, "t"), where + "/t", io::kSessionTimeRange);
@@ -438,12 +473,7 @@ OperatorHand read_hand(const json& h, const std::string& file, const std::string
     waypoints.push_back({t, vec3(r.position(r.member(wps[k], where, "p"), where + "/p")) - base_in_world,
                          vec3(r.direction(r.member(wps[k], where, "dir"), where + "/dir"))});
   }
-  try {
-    out.trajectory = HandTrajectory(std::move(waypoints));
-  } catch (const std::invalid_argument& e) {
-    r.fail(at + "/waypoints", std::string("expected valid waypoints: ") + e.what());
-  }
-  return out;
+  return waypoints;
 }
 
 Scenario load_scenario(const std::string& path, bool generate_patient) {

@@ -13,6 +13,8 @@
 #include "haptics/sim/integrator.hpp"
 #include "haptics/sim/master_plant.hpp"
 #include "haptics/sim/operator_model.hpp"
+#include "haptics/sim/thumb_script.hpp"
+#include "haptics/syringe/syringe_model.hpp"
 #include "haptics/tissue/tissue_model.hpp"
 
 namespace needle::haptics {
@@ -40,16 +42,20 @@ struct Scenario {
   // The generated patient whose layers scene.tissue holds (base frame), for what else draws or
   // images it; null for the other forms, and when the scenario was read without generating it.
   std::shared_ptr<const anatomy::Patient> patient;
-  // A generated patient's layers, in order, with their mechanics: also when the patient itself was
-  // not generated (load_scenario(path, false)); empty for the other forms.
+  // A generated patient's layers, in order, with their mechanics and what they do to an injection:
+  // also when the patient itself was not generated (load_scenario(path, false)); empty for the
+  // other forms.
   struct NamedMechanics {
     std::string name;
     LayerMechanics mechanics;
+    std::optional<LayerInjection> injection;
   };
   std::vector<NamedMechanics> patient_layers;
   VecN q0;
   HandImpedance hand;
   HandTrajectory trajectory;  // base frame
+  std::optional<ThumbScript> thumb;      // the operator's thumb on the syringe (hand.thumb)
+  std::optional<SyringeParams> syringe;  // the loss-of-resistance syringe on the needle's hub
   ForceSensorParams sensor;
   DeviceParams device;
   double energy_bound_J = 5.0;         // a run whose total energy leaves ±bound is a fault
@@ -65,6 +71,7 @@ Scenario load_scenario(const std::string& path, bool generate_patient = true);
 struct OperatorHand {
   HandImpedance impedance;
   HandTrajectory trajectory;
+  std::optional<ThumbScript> thumb;
 };
 
 // The `hand` block of a scenario or of an operator script (docs/TASKS.md) at JSON pointer `at` of
@@ -73,5 +80,9 @@ struct OperatorHand {
 // Waypoint positions are given in the world frame and shifted by -base_in_world.
 OperatorHand read_hand(const nlohmann::json& hand, const std::string& file, const std::string& at,
                        const Eigen::Vector3d& base_in_world);
+// A list of hand waypoints {t, p, dir} at `at`, read as read_hand reads them: times in the session's
+// range and increasing, positions shifted by −base_in_world.
+std::vector<HandWaypoint> read_waypoints(const nlohmann::json& waypoints, const std::string& file, const std::string& at,
+                                         const Eigen::Vector3d& base_in_world);
 
 }  // namespace needle::haptics

@@ -24,7 +24,7 @@ double passivity_stiffness_bound(const Scenario& scenario);
 // Every sweep built from the two thesis scenarios; the sustained-contact case lasts sustained_s.
 std::vector<StressCase> stress_cases(const Scenario& holonomic, const Scenario& nonholonomic, double sustained_s);
 
-// Issue 12's sweeps of a layered scenario: every layer's puncture force, friction (dynamic and
+// The sweeps of a layered scenario: every layer's puncture force, friction (dynamic and
 // static) and surface stiffness (k₁, k₂) each ×0.1 … ×10, the period ×1 … ×8, and, when its
 // tissue has a rigid layer, the hand pushing the needle onto it at twice the device's force limit.
 std::vector<StressCase> layered_stress_cases(const Scenario& layered);

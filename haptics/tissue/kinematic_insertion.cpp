@@ -52,7 +52,7 @@ std::vector<LayerBoundary> layer_boundaries(const TissueModel& model, const Eige
   return boundaries;
 }
 
-InsertionRun run_kinematic_insertion(const TissueModel& model, const InsertionPlan& plan) {
+InsertionRun run_kinematic_insertion(const TissueModel& model, const InsertionPlan& plan, const InsertionTickObserver& observer) {
   if (!(plan.depth_m > 0.0) || !(plan.speed_mps > 0.0) || !(plan.period_s > 0.0) || !(plan.hold_s >= 0.0) ||
       !(plan.dir.norm() > 1e-12))
     throw std::invalid_argument("insertion plan: depth, speed and period must be > 0, hold >= 0, dir nonzero");
@@ -86,6 +86,7 @@ InsertionRun run_kinematic_insertion(const TissueModel& model, const InsertionPl
     tick_us[size_t(k)] = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
     run.samples.push_back({double(k) * plan.period_s, depth, out.axial_force_N, out.holding_layer});
     if (out.punctured_layer >= 0) run.punctures.push_back({out.punctured_layer, depth, out.axial_force_N});
+    if (observer) observer(k, depth, out);
   }
   run.tissue_work_J = state.tissue_work_J;
   std::nth_element(tick_us.begin(), tick_us.begin() + long(tick_us.size() / 2), tick_us.end());

@@ -5,10 +5,12 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <optional>
 #include <vector>
 
 #include "haptics/tissue/tissue_model.hpp"
+#include "haptics/tissue/tissue_step.hpp"
 
 namespace needle::haptics {
 
@@ -47,9 +49,14 @@ struct InsertionRun {
   double tick_us_median = 0.0;  // step_tissue's own cost
 };
 
+// Called after each tick's step_tissue with the tick's index, the tip's depth and what the tissue did
+// (the syringe's bench rides on the same drive, haptics/syringe/syringe_insertion.hpp).
+using InsertionTickObserver = std::function<void(long tick, double depth_m, const TissueOutput& out)>;
+
 // (model, plan) => (run). Throws std::invalid_argument on a plan with depth, speed or period ≤ 0,
 // hold < 0 or a zero direction.
-InsertionRun run_kinematic_insertion(const TissueModel& model, const InsertionPlan& plan);
+InsertionRun run_kinematic_insertion(const TissueModel& model, const InsertionPlan& plan,
+                                     const InsertionTickObserver& observer = nullptr);
 
 // Where the line start + t·dir, 0 ≤ t ≤ length, crosses from one layer into another at rest: the
 // depth t and the layer entered (−1 none). Sampled every 50 µm and refined by bisection, so a

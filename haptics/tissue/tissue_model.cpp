@@ -54,6 +54,12 @@ std::optional<MechanicsProblem> acoustics_problem(const LayerAcoustics& a) {
   return std::nullopt;
 }
 
+std::optional<MechanicsProblem> injection_problem(const LayerInjection& i) {
+  for (const auto& f : kInjectionFields)
+    if (!(i.*f.member >= 0.0 && i.*f.member <= f.max)) return MechanicsProblem{f.key, out_of_range(f, 0.0, i.*f.member)};
+  return std::nullopt;
+}
+
 TissueModel::TissueModel(std::vector<TissueLayer> layers, StickParams stick)
     : layers_(std::move(layers)), stick_(stick) {
   if (!(stick_.stiffness_N_per_m > 0.0) || !(stick_.band_mps > 0.0))
@@ -69,6 +75,10 @@ TissueModel::TissueModel(std::vector<TissueLayer> layers, StickParams stick)
     if (const auto p = mechanics_problem(l.mechanics)) throw TissueLayerError(i, p->key, p->what);
     if (l.acoustics)
       if (const auto p = acoustics_problem(*l.acoustics)) throw TissueLayerError(i, std::string("ultrasound/") + p->key, p->what);
+    if (l.injection && l.mechanics.rigid)
+      throw TissueLayerError(i, "injection", "a rigid layer takes no injection (the tip never enters it)");
+    if (l.injection)
+      if (const auto p = injection_problem(*l.injection)) throw TissueLayerError(i, std::string("injection/") + p->key, p->what);
     shapes.push_back(l.shape);
   }
   if (const auto c = find_layer_conflict(shapes))

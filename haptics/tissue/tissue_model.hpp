@@ -81,11 +81,31 @@ inline constexpr ParameterField<LayerAcoustics> kAcousticsFields[] = {
 // The parameter at fault and why, or nothing when every number is in its range.
 std::optional<MechanicsProblem> acoustics_problem(const LayerAcoustics& a);
 
+// What a layer does to fluid pushed into it from the needle's tip (the loss-of-resistance syringe,
+// haptics/syringe/, docs/TISSUE.md "The syringe"): no flow below the opening pressure (gauge, at
+// the tip), above it a hydraulic resistance to saline (air's is scaled by the viscosities, Darcy's
+// law). The physics of the needle ignores it.
+struct LayerInjection {
+  double opening_pressure_Pa = 0.0;
+  double resistance_Pa_s_per_m3 = 0.0;
+};
+
+// The largest values (design values): 1 MPa is about 7 times the shipped ligaments' 150 kPa and
+// 56 N on the loss-of-resistance syringe's plunger, past any thumb; 1e15 Pa s/m^3 100 times the
+// ligaments' resistance, at which a thumb's 60 kPa moves 0.06 uL/s.
+inline constexpr ParameterField<LayerInjection> kInjectionFields[] = {
+    {"opening_pressure_Pa", &LayerInjection::opening_pressure_Pa, 1e6, "Pa"},
+    {"resistance_Pa_s_per_m3", &LayerInjection::resistance_Pa_s_per_m3, 1e15, "Pa*s/m^3"}};
+
+// The parameter at fault and why, or nothing when every number is in [0, max].
+std::optional<MechanicsProblem> injection_problem(const LayerInjection& i);
+
 struct TissueLayer {
   std::string name;
   LayerShape shape;
   LayerMechanics mechanics;
   std::optional<LayerAcoustics> acoustics = std::nullopt;
+  std::optional<LayerInjection> injection = std::nullopt;  // needed by a scenario with a syringe
 };
 
 // The tissue's grip on the shaft while it sticks (Karnopp's band) is elastic: a spring of this

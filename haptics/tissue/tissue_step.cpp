@@ -165,6 +165,7 @@ const TissueOutput& step_tissue(const TissueModel& model, TissueState& st, const
   st.grip_force_N = std::clamp(st.grip_force_N + model.stick().stiffness_N_per_m * ds, lower, upper);
 
   out.holding_layer = holding;
+  out.opening_layer = st.on_track ? holding_layer(st) : -1;
   out.surface_force_N = surface;
   out.grip_force_N = st.grip_force_N;
   out.damping_force_N = damping * speed;

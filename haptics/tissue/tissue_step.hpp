@@ -27,6 +27,8 @@ struct TissueOutput {
   double grip_force_N = 0.0;     // the stick/slip element: shaft friction and cutting at the tip
   double damping_force_N = 0.0;
   int holding_layer = -1;     // the layer holding the tip, −1 when it is in none
+  int opening_layer = -1;     // the layer the tip is in at the end of the tick (a surface that gave way in it
+                              // included): where fluid pushed through the needle goes, −1 in none
   int surface_layer = -1;     // the layer whose surface the tip presses, −1 when none
   double deflection_m = 0.0;  // that surface's deflection d along the needle (the dimple's depth)
   Eigen::Vector3d contact_point = Eigen::Vector3d::Zero();  // where the tip met it, at rest (while surface_layer ≥ 0)

@@ -1,4 +1,4 @@
-// The dimple of a layered tissue comes from the tissue model's own surface deflection (issue 12,
+// The dimple of a layered tissue comes from the tissue model's own surface deflection (
 // "visual agreement"): the needle tracker reads ToolSnapshot::tissue, and the deformation field it
 // feeds moves the skin under the tip by the deflection that makes the force. Checked on
 // constructed snapshots, then on the scripted hand of tissue_block_layers pressing the layered

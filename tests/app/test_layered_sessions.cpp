@@ -1,4 +1,4 @@
-// The layered-tissue tasks (issue 14) done by their scripted operators as `needle-sim run
+// The layered-tissue tasks done by their scripted operators as `needle-sim run
 // --headless` does them (TaskSession: the simulated device through the haptic loop, recorded,
 // scored, stored): the faults the sloppy operators make are named in the metrics and the reasons;
 // the good runs complete every step (docs/TASKS.md, "Layered tasks: what the closed loop does").

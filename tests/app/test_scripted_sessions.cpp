@@ -42,7 +42,7 @@ TEST_P(ScriptedSessions, GoodPassesAndOutscoresSloppyWhichFails) {
 
 INSTANTIATE_TEST_SUITE_P(ShippedTasks, ScriptedSessions,
                          testing::Values("rigid_sphere", "penetrable_sphere", "sphere_ultrasound", "layered_target",
-                                         "epidural"));
+                                         "epidural", "epidural_air"));
 
 }  // namespace
 }  // namespace needle::test

@@ -48,7 +48,7 @@ TEST(BenchStability, CasesCoverTheIssueSweeps) {
   EXPECT_DOUBLE_EQ(passivity_stiffness_bound(test::scenario("holonomic_sphere")), 2 * 6.45 / 0.002);
 }
 
-// Issue 12's layered sweeps: puncture force, friction and stiffness each x0.1 to x10 on every layer
+// The layered sweeps: puncture force, friction and stiffness each x0.1 to x10 on every layer
 // that is not bone, the period x1 to x8, a push onto bone at twice the device's limit.
 TEST(BenchStability, LayeredCasesCoverTheIssueSweeps) {
   const Scenario& block = test::scenario("tissue_block_layers");

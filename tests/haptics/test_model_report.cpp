@@ -1,4 +1,4 @@
-// The JSON of `needle-sim model`: exactly the keys of issue 3, internally consistent.
+// The JSON of `needle-sim model`: exactly its documented keys, internally consistent.
 #include <gtest/gtest.h>
 
 #include "haptics/model/model_report.hpp"

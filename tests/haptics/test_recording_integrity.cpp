@@ -412,11 +412,81 @@ TEST(RecordingIntegrity, TheLayeredTissueStateIsRecordedBitForBit) {
     ASSERT_EQ(recorder.error(), "");
   }
   const Session s = read_session(path);
-  EXPECT_EQ(s.header.payload_version, 2u);
+  EXPECT_EQ(s.header.payload_version, kPayloadVersion);
   ASSERT_EQ(s.records.size(), 300u);
   for (uint64_t k = 0; k < 300; ++k) {
     EXPECT_TRUE(same_bits(s.records[k].state.tissue, layered_sample(k).state.tissue)) << "tick " << k;
     EXPECT_EQ(s.records[k].reading.position_m[0], sample(k).reading.position_m[0]);
+  }
+  fs::remove(path);
+}
+
+// A tick with the syringe: its hand's reading, what the hand was sent and the syringe's state, each a
+// value of its own.
+TickSample syringe_sample(uint64_t k) {
+  TickSample s = layered_sample(k);
+  s.reading.plunger_input = uint32_t(PlungerInput::kHandlePosition);
+  s.reading.plunger_force_n = 11.0 + 1e-3 * double(k);
+  s.reading.plunger_position_m = std::nextafter(0.004, 1.0);
+  s.command.plunger_force_n = 7.5;
+  s.command.plunger_travel_m = 1e-4 * double(k);
+  SyringeSnapshot& y = s.state.syringe;
+  y.fluid = 2, y.layer = int32_t(k % 7) - 1;
+  y.thumb_force_N = 9.0, y.pressure_Pa = 6.2e4 + double(k), y.travel_m = 1.0 / 7.0, y.flow_m3_per_s = 3e-6;
+  y.injected_m3 = 1e-7 * double(k), y.work_J = 0.0125;
+  return s;
+}
+
+// Payload 3 keeps the syringe hand and the syringe, bit for bit.
+TEST(RecordingIntegrity, TheSyringeIsRecordedBitForBit) {
+  static_assert(sizeof(SyringeSnapshot) == 2 * 4 + 6 * 8, "no padding: snapshots are compared bit for bit");
+  const std::string path = temp_path("syringe.nrec");
+  {
+    SpscRing<TickSample> ring(4096);
+    SessionRecorder recorder(path, kHeader, ring);
+    for (uint64_t k = 0; k < 300; ++k) ring.push(syringe_sample(k));
+    recorder.drain();
+    recorder.stop(true);
+    ASSERT_EQ(recorder.error(), "");
+  }
+  const Session s = read_session(path);
+  ASSERT_EQ(s.records.size(), 300u);
+  for (uint64_t k = 0; k < 300; ++k) {
+    const TickSample expected = syringe_sample(k);
+    EXPECT_EQ(std::memcmp(&s.records[k].state.syringe, &expected.state.syringe, sizeof(SyringeSnapshot)), 0) << "tick " << k;
+    EXPECT_EQ(s.records[k].reading.plunger_input, expected.reading.plunger_input);
+    EXPECT_EQ(s.records[k].reading.plunger_force_n, expected.reading.plunger_force_n);
+    EXPECT_EQ(s.records[k].reading.plunger_position_m, expected.reading.plunger_position_m);
+    EXPECT_EQ(s.records[k].command.plunger_force_n, expected.command.plunger_force_n);
+    EXPECT_EQ(s.records[k].command.plunger_travel_m, expected.command.plunger_travel_m);
+    EXPECT_TRUE(same_bits(s.records[k].state.tissue, expected.state.tissue));
+  }
+  fs::remove(path);
+}
+
+// A recording of payload 2 (the builds before the syringe) reads as it did: the syringe absent (its
+// defaults), the syringe hand's reading none.
+TEST(RecordingIntegrity, PayloadTwoRecordingsReadWithoutASyringe) {
+  EXPECT_EQ(session_record_bytes(3), session_record_bytes(2) + 4 + 8 + 8 + 8 + 8 + 4 + 4 + 6 * 8);
+  SessionHeader old = kHeader;
+  old.payload_version = 2;
+  std::vector<uint8_t> bytes = encode_header(old);
+  const size_t block = bytes.size();
+  bytes.resize(block + kBlockHeaderBytes);
+  for (uint64_t k = 0; k < 40; ++k) encode_record(syringe_sample(k), bytes, 2);
+  encode_block_header(bytes.data() + block, 0, 40, 2);
+  const std::vector<uint8_t> end = encode_end(40, true);
+  bytes.insert(bytes.end(), end.begin(), end.end());
+  const std::string path = temp_path("payload2.nrec");
+  write_bytes(path, bytes);
+  const Session s = read_session(path);
+  EXPECT_EQ(s.header.payload_version, 2u);
+  ASSERT_EQ(s.records.size(), 40u);
+  const SyringeSnapshot none;
+  for (uint64_t k = 0; k < 40; ++k) {
+    EXPECT_EQ(std::memcmp(&s.records[k].state.syringe, &none, sizeof none), 0) << "tick " << k;
+    EXPECT_EQ(s.records[k].reading.plunger_input, 0u);
+    EXPECT_TRUE(same_bits(s.records[k].state.tissue, layered_sample(k).state.tissue));
   }
   fs::remove(path);
 }

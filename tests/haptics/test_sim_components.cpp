@@ -34,6 +34,22 @@ TEST(SimComponents, HandTrajectoryBlendsWithMinimumJerkAndConsistentRates) {
                std::invalid_argument);
 }
 
+// Through many waypoints the target at a waypoint's own time is that waypoint, and between two
+// it is their minimum-jerk blend, whichever waypoint the search starts from.
+TEST(SimComponents, HandTrajectoryFindsItsSegmentAmongManyWaypoints) {
+  std::vector<HandWaypoint> waypoints;
+  for (int k = 0; k < 1001; ++k) waypoints.push_back({0.01 * k, Vector3d(0.001 * k * k, -0.002 * k, 0.0), Vector3d::UnitX()});
+  const HandTrajectory tr(waypoints);
+  for (int k : {0, 1, 499, 500, 999, 1000}) EXPECT_TRUE(tr.at(waypoints[size_t(k)].t).position.isApprox(waypoints[size_t(k)].position)) << k;
+  for (int k : {0, 437, 999}) {
+    const HandWaypoint &a = waypoints[size_t(k)], &b = waypoints[size_t(k) + 1];
+    const double u = 0.5;  // halfway: the minimum-jerk profile's s(1/2) = 1/2
+    EXPECT_TRUE(tr.at(a.t + u * (b.t - a.t)).position.isApprox(0.5 * (a.position + b.position))) << k;
+  }
+  EXPECT_TRUE(tr.at(-1.0).position.isApprox(waypoints.front().position));
+  EXPECT_TRUE(tr.at(99.0).position.isApprox(waypoints.back().position));
+}
+
 TEST(SimComponents, HandImpedancePullsTowardTheTargetAndTurnsTheStylus) {
   const HandImpedance hand;
   HandTarget target{Vector3d(0.01, 0, 0), Vector3d::Zero(), Vector3d(0, 1, 0), Vector3d::Zero()};

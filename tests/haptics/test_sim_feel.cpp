@@ -1,4 +1,4 @@
-// What the hand feels (issue 13) and the layered tissue in the closed loop (issue 12), measured on
+// What the hand feels and the layered tissue in the closed loop, measured on
 // closed-loop runs of the shipped scenarios with haptics/sim/feel_metrics.hpp (the measures of
 // `needle-sim bench feel`).
 #include <gtest/gtest.h>
@@ -42,26 +42,26 @@ TEST(SimFeel, FeelFiltersPassTheirBandAndRemoveTheRest) {
   EXPECT_NEAR(rms_middle(zero_phase_filter(sine(200.0), fs, 50.0, true)), a / std::sqrt(2.0), 0.02 * a);
 }
 
-// Issue 13, item 1: in free motion the hand carries the tool (15 g), not the virtual robot (≈ 0.76 N
-// under the thesis's law, as measured on main before the change).
+// In free motion the hand carries the tool (15 g), not the virtual robot (≈ 0.76 N
+// under the thesis's law).
 TEST(SimFeel, AtRestInFreeMotionTheHandCarriesTheToolsWeightOnly) {
   for (const char* name : {"holonomic_sphere", "nonholonomic_needle"}) {
     Scenario s = test::scenario(name);
     ASSERT_EQ(s.gains.law, ControlLaw::Tool);
     const double weight = tool_weight_N(s);
     const double rest = free_force_at_rest(s);
-    EXPECT_LE(rest, weight + 0.05) << name;  // the issue's goal
+    EXPECT_LE(rest, weight + 0.05) << name;  // the goal: the tool's weight and no more
     EXPECT_GE(rest, weight - 0.05) << name;  // and the tool's weight is felt
     s.gains.law = ControlLaw::Thesis;
     EXPECT_GT(free_force_at_rest(s), 0.7) << name;  // the thesis's law: the virtual robot's weight
   }
 }
 
-// Issue 13, item 2: entry is one event. The scenario's script as it was before issue 13 holds the
+// Entry is one event. A script that holds the
 // hand target 2 mm outside the sphere at 4 s and crosses the surface slowly (5 mm/s): under the
 // thesis's law the contact terms (with the master's gravity cancellation in them) switch on at each
 // crossing, the hand's support of the robots' weight lifts the tool out, the terms switch off, the
-// weight brings it back: 13 mode changes between 3.70 and 5.17 s, measured on main. Under the tool
+// weight brings it back: 13 mode changes between 3.70 and 5.17 s, measured. Under the tool
 // law the gravity is compensated in every mode and the needle's track decides entry: one change.
 TEST(SimFeel, EntryIntoTissueIsOneEventNotAFlicker) {
   Scenario s = test::scenario("nonholonomic_needle");
@@ -77,7 +77,7 @@ TEST(SimFeel, EntryIntoTissueIsOneEventNotAFlicker) {
   EXPECT_GE(mode_changes(run_closed_loop(s, true).ticks), 5);  // the flicker, reproduced
 }
 
-// Issue 13, goals in every phase of both thesis scenarios (tissue from 0.3 s after entry, lateral speed
+// The goals in every phase of both thesis scenarios (tissue from 0.3 s after entry, lateral speed
 // from 1 s after entry).
 TEST(SimFeel, NoWobbleInAnyPhaseOfTheThesisScenarios) {
   for (const char* name : {"holonomic_sphere", "nonholonomic_needle"}) {
@@ -98,7 +98,7 @@ TEST(SimFeel, NoWobbleInAnyPhaseOfTheThesisScenarios) {
   EXPECT_GT(thesis.back().force_band_rms_N, 0.03);
 }
 
-// Issue 12, closed loop: the scripted hand pushes through skin, fat and into the muscle of the layered
+// Closed loop: the scripted hand pushes through skin, fat and into the muscle of the layered
 // block, holds and withdraws. Each puncture is felt as a drop of the hand's push along the needle; no
 // fault latches; tracking stays bounded; the tissue takes work and gives none back.
 TEST(SimFeel, ScriptedHandFeelsEachPunctureOfTheLayeredBlockAsADrop) {

@@ -1,4 +1,4 @@
-// Passivity at the hand (issue 12: "the virtual world never does net positive work on the hand"),
+// Passivity at the hand ("the virtual world never does net positive work on the hand"),
 // in closed loop: the hand's work on the stylus (forces and torques through the sensor) minus the
 // change of the energy the world holds and may give back (haptics/sim/hand_port.hpp) is what the
 // world has dissipated, and it never falls below zero beyond the integration error.
@@ -62,7 +62,7 @@ TEST(SimHandPassivity, TheThesisScenariosNeverGiveTheHandMoreThanItPutIn) {
   }
 }
 
-// Randomised insert–hold–withdraw cycles through the layered scenarios (issue 12's passivity test).
+// Randomised insert–hold–withdraw cycles through the layered scenarios.
 // Before the master's lateral spring to the needle's line (gains.lateral_stiffness_N_per_m) the
 // world gave the hand energy it never stored: −0.0006 to −0.011 J in the block and the lumbar
 // approach, −0.25 J in the liver (docs/CONTROLLER.md, "Passivity at the hand"); with it at 0 this fails.

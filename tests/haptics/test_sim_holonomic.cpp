@@ -59,7 +59,7 @@ TEST(SimHolonomic, PressingIsFeltAndPenetrationStaysSmall) {
 TEST(SimHolonomic, ContactReleaseOscillates) {
   // The GPM trait the thesis reports: after the first release the tool bounces on the surface. It is
   // a trait of the thesis's law, whose robots' weight presses the tool back onto the sphere; under
-  // the tool law (issue 13) the weight is compensated and the tool leaves the surface once.
+  // the tool law the weight is compensated and the tool leaves the surface once.
   const auto& ticks = test::scenario_run("holonomic_sphere", ControlLaw::Thesis).ticks;
   double release = -1;
   for (size_t i = 1; i < ticks.size(); ++i)

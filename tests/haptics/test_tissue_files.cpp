@@ -19,12 +19,14 @@ using Eigen::Vector3d;
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-// The thesis's needle scenario with `tissue` replaced, written where the test's files are.
-std::string scenario_with_tissue(const json& tissue) {
+// The thesis's needle scenario with `tissue` replaced (and the keys of `more` added), written where
+// the test's files are.
+std::string scenario_with_tissue(const json& tissue, const json& more = json::object()) {
   json s = test::read_json(test::asset("assets/scenarios/nonholonomic_needle.json"));
   s["master_urdf"] = test::asset("assets/robots/master_omni.urdf");
   s["virtual_urdf"] = test::asset("assets/robots/virtual_needle_robot.urdf");
   s["tissue"] = tissue;
+  s.update(more);
   const std::string path = test::own_file("scenario.json");
   std::ofstream(path) << s.dump(1);
   return path;
@@ -82,6 +84,10 @@ TEST(TissueFiles, EveryParameterSetLoadsAndEveryNumberCarriesItsSource) {
     json numbers = set;
     numbers.erase("ultrasound");
     numbers.update(set["ultrasound"]);  // what the set is to ultrasound: every number with its source too
+    if (set.contains("injection")) {    // and to an injection
+      numbers.erase("injection");
+      numbers.update(set["injection"]);
+    }
     for (const auto& [key, value] : numbers.items()) {
       if (key == "tissue" || key == "description" || key == "references") continue;
       ASSERT_TRUE(value.is_object()) << entry.path() << " " << key;
@@ -99,6 +105,52 @@ TEST(TissueFiles, EveryParameterSetLoadsAndEveryNumberCarriesItsSource) {
     ++sets;
   }
   EXPECT_GE(sets, 8);  // skin, fat, muscle, ligament, flavum, dura, liver, bone at least
+}
+
+// The injection keys (docs/TISSUE.md, "The syringe") and the syringe that needs them: each bad value
+// one line naming the file, the JSON pointer and what was expected.
+TEST(TissueFiles, InjectionKeysAreCheckedAndASyringeNeedsThemOnEveryLayer) {
+  json tissue = two_slabs();
+  for (json& layer : tissue["layers"]) layer["injection"] = {{"opening_pressure_Pa", 1e3}, {"resistance_Pa_s_per_m3", 1e9}};
+  EXPECT_EQ(error_of(scenario_with_tissue(tissue, {{"syringe", {{"fluid", "air"}}}})), "no error");
+  EXPECT_EQ(load_scenario(scenario_with_tissue(tissue, {{"syringe", {{"fluid", "air"}}}})).syringe->fluid, SyringeFluid::kAir);
+
+  json bad = tissue;
+  bad["layers"][1]["injection"]["opening_pressure_Pa"] = 2e6;
+  EXPECT_EQ(error_of(scenario_with_tissue(bad)), "/tissue/layers/1/injection/opening_pressure_Pa: must be in [0, 1e+06] Pa, got 2e+06");
+  bad = tissue;
+  bad["layers"][0]["injection"].erase("resistance_Pa_s_per_m3");
+  EXPECT_EQ(error_of(scenario_with_tissue(bad)), "/tissue/layers/0/injection/resistance_Pa_s_per_m3: missing");
+  bad = tissue;
+  bad["layers"][0]["injection"]["resistance_Pa_s_per_m3"] = -1.0;
+  EXPECT_EQ(error_of(scenario_with_tissue(bad)),
+            "/tissue/layers/0/injection/resistance_Pa_s_per_m3: must be in [0, 1e+15] Pa*s/m^3, got -1");
+
+  // A syringe needs every soft layer's injection keys; a layer without is named.
+  bad = tissue;
+  bad["layers"][1].erase("injection");
+  EXPECT_EQ(error_of(scenario_with_tissue(bad, {{"syringe", {{"fluid", "saline"}}}})),
+            "/tissue/layers/1: \"fat\" has no injection parameters (\"injection\", in its parameter set or inline), which the syringe "
+            "(/syringe) needs");
+  EXPECT_EQ(error_of(scenario_with_tissue(tissue, {{"syringe", {{"fluid", "water"}}}})),
+            "/syringe/fluid: expected \"saline\" or \"air\", got \"water\"");
+  EXPECT_EQ(error_of(scenario_with_tissue(tissue, {{"syringe", {{"fluid", "saline"}, {"plunger_area_m2", 0}}}})),
+            "/syringe/plunger_area_m2: must be in (0, 0.001] m^2, got 0");
+  EXPECT_EQ(error_of(scenario_with_tissue(tissue, {{"syringe", {{"fluid", "saline"}, {"volume", 1}}}})).rfind("/syringe/volume: unknown key", 0),
+            0u);
+
+  // In a parameter set: the set's file and the number's pointer.
+  json set = test::read_json(test::asset("assets/tissues/epidural_space.json"));
+  set["injection"]["opening_pressure_Pa"]["value"] = 2e6;
+  const std::string set_path = test::own_file("epidural_space.json");
+  std::ofstream(set_path) << set.dump(1);
+  const std::string scenario = scenario_with_tissue({{"layers", {{{"name", "x"}, {"shape", slab(0.05, 0.01)}, {"parameters", set_path}}}}});
+  try {
+    load_scenario(scenario);
+    ADD_FAILURE() << "loaded";
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(std::string(e.what()), set_path + ": /injection/opening_pressure_Pa/value: must be in [0, 1e+06] Pa, got 2e+06");
+  }
 }
 
 TEST(TissueFiles, TheSingleSurfaceFormIsOneLayerWithEveryParameterZero) {

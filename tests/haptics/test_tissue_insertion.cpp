@@ -1,4 +1,4 @@
-// The layered tissue model driven kinematically (issue 12): every expectation is the closed form
+// The layered tissue model driven kinematically: every expectation is the closed form
 // of the parameters (puncture at d = F_p/k, or the root of k₁d + k₂d² = F_p; friction the sum of
 // per-metre friction times the shaft length per layer), not a recorded result of the code.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The layered tissue in the published ToolSnapshot (issue 14): the scripted hand of
+// The layered tissue in the published ToolSnapshot: the scripted hand of
 // tissue_block_layers pushed on down to the bone plate, through the sim device and the
 // controller step as the loop runs them. The snapshot's layer, punctured set, dimple and bone
 // contact are checked against the block's geometry (skin 68-70 mm, fat 58-68, muscle 30-58, bone

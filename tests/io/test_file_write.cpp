@@ -107,5 +107,20 @@ TEST(FileWrite, ALinkIsWrittenThroughToItsTarget) {
   EXPECT_EQ(read_all(dir / "target.csv"), "new");
 }
 
+TEST(FileWrite, MakeFolderMakesTheMissingFoldersAndNamesTheOneItCannotMake) {
+  const fs::path dir = test::process_folder(test::output_dir() / "make_folder");
+  make_folder(dir / "a" / "b");
+  EXPECT_TRUE(fs::is_directory(dir / "a" / "b"));
+  make_folder(dir / "a" / "b");  // one that exists is left as it is
+  write_file(dir / "a" / "plain", "x");
+  const fs::path under_a_file = dir / "a" / "plain" / "sub";
+  try {
+    make_folder(under_a_file);
+    ADD_FAILURE() << "a folder under a plain file was made";
+  } catch (const WriteError& e) {
+    EXPECT_EQ(std::string(e.what()), under_a_file.string() + ": cannot create the folder: Not a directory");
+  }
+}
+
 }  // namespace
 }  // namespace needle::io

@@ -2,7 +2,7 @@
 // insertion (planned axis and depth gauge with its band, the tip 28 mm deep) and the rigid task's
 // touch (entry and target rings, the three normal markers along the normal nearest the tip). The
 // tip and needle are placed by hand, so the pictures depend on nothing but the drawing. Also the
-// layered tasks' (issue 14): the layered target's step to the target, the epidural's approach.
+// layered tasks': the layered target's step to the target, the epidural's approach.
 #include <gtest/gtest.h>
 
 #include "app/needle_tracker.hpp"
@@ -53,7 +53,7 @@ TEST_F(GuidanceOverlay, TouchShowsTheEntryTargetAndNormalMarkers) {
   EXPECT_TRUE(matches_golden(draw("rigid_sphere", 0, tip, {0.0, 0.0, -1.0}), "guidance_touch"));
 }
 
-// The layered target's step to the target (issue 14): the vertical planned axis, the target 35 mm
+// The layered target's step to the target: the vertical planned axis, the target 35 mm
 // deep and the depth gauge with its 31-38 mm band, the layers' starts marked on it (skin 0, fat 2,
 // muscle 12, bone 40 mm: the block's boxes), the tip 20 mm in.
 TEST_F(GuidanceOverlay, LayeredTargetShowsTheAxisTheTargetAndTheDepthGaugeWithTheLayers) {

@@ -1,4 +1,4 @@
-// The layered target's scene with the skin tented before its puncture (issue 12, "visual
+// The layered target's scene with the skin tented before its puncture ("visual
 // agreement"), against a golden: the snapshot a tented skin publishes (6 mm deflection, the skin's
 // puncture depth in closed form, met at rest at the entry marker), through the layered needle
 // tracker, into the scene's deformation pass. Drawn headless under the validation layer.

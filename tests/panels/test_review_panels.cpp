@@ -173,5 +173,29 @@ TEST_F(ReviewPanelsLayered, ForceDepthOfTwoEpiduralSessionsComparedMatchesGolden
                              "panel_force_depth_compare_epidural"));
 }
 
+// The epidural's syringe beside its force–depth plot: the plunger's pressure against the same depth
+// for the good run (A) and the sloppy one (B), each loss of resistance ringed at the pressure held
+// before it. The losses are the recording's: the first in the epidural space, where the axial force
+// drops at the flavum's far face.
+TEST_F(ReviewPanelsLayered, PlungerPressureOfTwoEpiduralSessionsComparedMatchesGolden) {
+  const training::SessionReview a = review(epidural_good_.id), b = review(epidural_sloppy_.id);
+  ASSERT_TRUE(a.has_syringe());
+  ASSERT_FALSE(a.force_depth.pressure.lines.empty()) << a.force_depth.pressure.missing;
+  ASSERT_FALSE(a.force_depth.losses.empty());
+  EXPECT_EQ(a.force_depth.losses.front().label, "epidural space");
+  EXPECT_NEAR(a.force_depth.losses.front().y, 1e-3 * a.stored.overall.loss_pressure_before_Pa, 1e-9);
+  // The loss is where the flavum gave way and the tip entered the epidural space (the boundary the
+  // force-depth plot marks), within a tick's travel (at most 0.1 mm at the good run's speed).
+  const auto space = std::find_if(a.force_depth.boundaries.begin(), a.force_depth.boundaries.end(),
+                                  [](const training::PlotMark& m) { return m.label == "epidural space"; });
+  ASSERT_NE(space, a.force_depth.boundaries.end());
+  EXPECT_NEAR(a.force_depth.losses.front().x, space->x, 0.1);
+  const engine::Extent size{900, 320};
+  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] {
+                               ui::draw_plunger_pressure_window(a.force_depth, &b.force_depth, whole(size));
+                             }),
+                             "panel_plunger_pressure_compare_epidural"));
+}
+
 }  // namespace
 }  // namespace needle::test

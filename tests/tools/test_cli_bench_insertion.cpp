@@ -62,6 +62,45 @@ TEST(CliBenchInsertion, JsonCarriesTheContractKeysAndThePlotIsWritten) {
   EXPECT_EQ(plot.height, 700u);
 }
 
+// With the syringe (docs/TISSUE.md, "The syringe"): the issue's keys on each sample and the losses
+// of resistance, each where the fluid could first go into its layer (within a tick's travel), the one in the epidural space after the held pressure of the 11 N thumb,
+// F / A, and a lower one after it. Bad syringe flags are usage errors (below).
+TEST(CliBenchInsertion, WithTheSyringeEachSampleHasThePlungerAndTheLossesAreListed) {
+  const auto dir = test_output_dir("cli_bench_insertion");
+  for (const char* fluid : {"saline", "air"}) {
+    const auto json_path = dir / (std::string("lumbar_") + fluid + ".json");
+    const ProcessResult r = run_needle_sim("bench insertion --scenario " + quoted(source_dir() / "assets/scenarios/lumbar_epidural.json") +
+                                           " --from 0.33,0,0.075 --dir 0,0,-1 --depth 0.065 --speed 0.005 --syringe " + fluid +
+                                           " --plunger-force 11 --json " + quoted(json_path));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("losses of resistance"), std::string::npos) << r.output;
+    const nlohmann::json run = read_json(json_path);
+    for (const nlohmann::json& s : run["samples"]) {
+      ASSERT_TRUE(s.contains("plunger_pressure_Pa") && s.contains("plunger_travel_m"));
+      EXPECT_GE(s["plunger_travel_m"].get<double>(), 0.0);
+    }
+    ASSERT_TRUE(run.contains("loss_of_resistance")) << fluid;
+    const nlohmann::json* epidural = nullptr;
+    for (const nlohmann::json& l : run["loss_of_resistance"]) {
+      for (const char* key : {"depth_m", "layer", "pressure_before_Pa", "pressure_after_Pa"}) ASSERT_TRUE(l.contains(key)) << key;
+      if (l["layer"] == "epidural space" && !epidural) epidural = &l;
+      // Each loss within a tick's travel (10 um) after where the fluid could first go there: the
+      // boundary of the layer it went into, or the puncture of the membrane in front of it (the
+      // dura's tent carries the tip past the cerebrospinal fluid's boundary at rest).
+      const double depth = l["depth_m"].get<double>();
+      const auto just_after = [&](double at) { return depth >= at - 1e-9 && depth <= at + 1e-5 + 1e-9; };
+      bool where = false;
+      for (const nlohmann::json& b : run["boundaries"]) where = where || (b["layer"] == l["layer"] && just_after(b["depth_m"]));
+      for (const nlohmann::json& p : run["punctures"]) where = where || just_after(p["depth_m"]);
+      EXPECT_TRUE(where) << fluid << " " << l.dump();
+    }
+    ASSERT_NE(epidural, nullptr) << fluid;
+    const double held = 11.0 / 1.77e-4;
+    EXPECT_NEAR((*epidural)["pressure_before_Pa"].get<double>(), held, 1e-6 * held) << fluid;
+    EXPECT_LT((*epidural)["pressure_after_Pa"].get<double>(), held) << fluid;
+  }
+}
+
 TEST(CliBenchInsertion, BadArgumentsAndMissingOutputFoldersAreUsageErrorsBeforeTheRun) {
   const std::string scenario =
       quoted(source_dir() / "assets/scenarios/lumbar_epidural.json");
@@ -75,6 +114,10 @@ TEST(CliBenchInsertion, BadArgumentsAndMissingOutputFoldersAreUsageErrorsBeforeT
   EXPECT_EQ(run_needle_sim(line + "--depth 0.05 --speed 0").exit_code, 2);
   EXPECT_EQ(run_needle_sim(line + "--depth -1 --speed 0.005").exit_code, 2);
   EXPECT_EQ(run_needle_sim(line + "--depth 0.05 --speed 0.005 --hold -1").exit_code, 2);
+  EXPECT_EQ(run_needle_sim(line + "--depth 0.05 --speed 0.005 --syringe water --plunger-force 11").exit_code, 2);
+  EXPECT_EQ(run_needle_sim(line + "--depth 0.05 --speed 0.005 --syringe saline").exit_code, 2);  // no force
+  EXPECT_EQ(run_needle_sim(line + "--depth 0.05 --speed 0.005 --plunger-force 11").exit_code, 2);  // no syringe
+  EXPECT_EQ(run_needle_sim(line + "--depth 0.05 --speed 0.005 --syringe air --plunger-force 1e6").exit_code, 2);
   EXPECT_EQ(run_needle_sim("bench insertion --scenario " + scenario +
                            " --from 0.33,0 --dir 0,0,-1 --depth 0.05 --speed 0.005")
                 .exit_code,

@@ -1,4 +1,4 @@
-// `needle-sim simulate`: the files and keys of issue 3, and those issue 12 adds.
+// `needle-sim simulate`: its documented files and keys, the layered tissue's among them.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -270,7 +270,7 @@ bool same_commands(const fs::path& a, const fs::path& b) {
   return true;
 }
 
-// A recording made before issue 13's tool law has no "law" in its context's gains: it replays
+// A recording made before the tool law existed has no "law" in its context's gains: it replays
 // under the thesis law it was made with and scores as it did then. Made here as such a recording
 // was: a run under the thesis law whose context then loses the key. The control: the same
 // recording naming the tool law scores otherwise, so the replay does depend on the law.
@@ -284,7 +284,7 @@ TEST(CliRecordings, ARecordingMadeBeforeTheToolLawReplaysUnderTheThesisLaw) {
   EXPECT_NE(without_recording(tool.score)["metrics"], live.score["metrics"]);
 }
 
-// A tool-law recording made before one of the tool law's springs (issue 12) names no `key` in its
+// A tool-law recording made before one of the tool law's springs names no `key` in its
 // gains: it replays without the spring, i.e. the replay commands the device as the run did, tick for
 // tick, and scores as it did. Made here as such a recording was: a run of `task` with the spring at 0
 // whose context then loses the key. The control: the same recording naming `stiffness` commands the

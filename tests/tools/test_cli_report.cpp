@@ -95,7 +95,8 @@ TEST_F(CliReport, PlotsOfATimeRange) {
 }
 
 // A layered task's session (issue 14, the epidural's good run): the report adds the force–depth
-// plot and the punctures, made again from the recording, equal to those the run scored live.
+// plot and the punctures, made again from the recording, equal to those the run scored live, and
+// the syringe's plunger pressure against depth.
 TEST(CliReportLayered, TheForceDepthPlotAndThePuncturesTheRunScored) {
   const fs::path dir = process_folder(test_output_dir("cli_report") / "layered");
   const fs::path db = dir / "sessions.db";
@@ -126,6 +127,11 @@ TEST(CliReportLayered, TheForceDepthPlotAndThePuncturesTheRunScored) {
   }
   EXPECT_FALSE(std::getline(csv, line)) << "one row a puncture: " << line;
   EXPECT_NE(r.output.find(std::to_string(run.result.punctures.size()) + " puncture(s)"), std::string::npos) << r.output;
+  // With its syringe: the plunger's pressure against depth beside it, its one loss of resistance.
+  const engine::RgbaImage pressure = engine::read_png(out / "plot_plunger_pressure.png");
+  EXPECT_EQ(pressure.width, 900u);
+  EXPECT_EQ(pressure.height, 320u);
+  EXPECT_NE(r.output.find("1 loss(es) of resistance"), std::string::npos) << r.output;
 }
 
 TEST_F(CliReport, IncompleteSessionExportsWhatIsStoredAndSaysSo) {

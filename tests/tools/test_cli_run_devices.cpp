@@ -231,24 +231,32 @@ TEST(CliRunDevices, EveryTraineeDeviceIsRefusedHeadlessSayingItNeedsTheWindow) {
   }
 }
 
+// `run --device keyboard ARGUMENTS` in the window for `frames` frames, xdotool putting the pointer
+// over it (without a window manager the keys go to the window under it) and then running `keys`;
+// the session's recording, the store having kept one session on the keyboard.
+haptics::Session keyboard_session_in_window(const fs::path& dir, const std::string& arguments, int frames, const std::string& keys) {
+  fs::remove_all(dir);
+  const std::string run = test::needle_sim_exe().string() + " run --device keyboard " + arguments + " --no-hud --size 400x300 --frames " +
+                          std::to_string(frames) + " --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db");
+  const std::string drive =
+      "id=\\$(xdotool search --sync --name '^needle-sim\\$' | head -1); xdotool mousemove --window \\$id 200 150; sleep 1; " + keys;
+  const ProcessResult r = run_on_virtual_display(run + " & " + drive + "; wait");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  training::SessionStore store(dir / "sessions.db");
+  if (store.sessions().size() != 1u) {
+    ADD_FAILURE() << "expected one session: " << r.output;
+    return {};
+  }
+  EXPECT_EQ(store.sessions()[0].device, "keyboard");
+  return haptics::read_session(store.sessions()[0].recording_path);
+}
+
 // `run --device keyboard` in the window: xdotool's key presses reach the device, one step of the
 // pose a press (1 mm, 1 degree), as the recording shows. No panels: the keys are the device's.
 TEST(CliRunDevices, TheKeyboardMovesTheNeedleInTheWindow) {
-  const fs::path dir = test_output_dir("cli_run_devices") / "keyboard";
-  fs::remove_all(dir);
-  const std::string run = test::needle_sim_exe().string() + " run --device keyboard --no-hud --size 400x300 --frames 600 --out " +
-                          quoted(dir) + " --db " + quoted(dir / "sessions.db");
-  // The pointer over the window: without a window manager the keys go to the window under it.
-  const std::string drive =
-      "id=\\$(xdotool search --sync --name '^needle-sim\\$' | head -1); xdotool mousemove --window \\$id 200 150; sleep 1; "
-      "xdotool key --delay 100 Left Left Right w w w d; sleep 1";
-  const ProcessResult r = run_on_virtual_display(run + " & " + drive + "; wait");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
-  training::SessionStore store(dir / "sessions.db");
-  ASSERT_EQ(store.sessions().size(), 1u);
-  EXPECT_EQ(store.sessions()[0].device, "keyboard");
-  const haptics::Session recording = haptics::read_session(store.sessions()[0].recording_path);
+  const haptics::Session recording = keyboard_session_in_window(test_output_dir("cli_run_devices") / "keyboard", "", 600,
+                                                                "xdotool key --delay 100 Left Left Right w w w d; sleep 1");
   EXPECT_EQ(recording.header.device, "keyboard");
   ASSERT_FALSE(recording.records.empty());
   const haptics::DeviceReading& last = recording.records.back().reading;
@@ -256,6 +264,28 @@ TEST(CliRunDevices, TheKeyboardMovesTheNeedleInTheWindow) {
   EXPECT_NEAR(last.position_m[1], 0.0, 1e-9);
   EXPECT_NEAR(last.position_m[2], 0.103, 1e-9) << "W pushes in, from the reach's centre at 0.1 m";
   EXPECT_NEAR(last.joint_rad[0], 3.141592653589793 / 180.0, 1e-9) << "D swings";
+}
+
+// `run --device keyboard` on the epidural task, with its syringe, in the window: the space bar held
+// (xdotool keydown, 1.5 s, keyup) presses the plunger with the force PlungerMapping makes of it,
+// rising to its hold and let go, as the recording shows tick by tick.
+TEST(CliRunDevices, TheSpaceBarPressesTheSyringesPlunger) {
+  const haptics::Session recording =
+      keyboard_session_in_window(test_output_dir("cli_run_devices") / "space_bar", "--task " + quoted(source_dir() / "assets/tasks/epidural.json"),
+                                 1600, "xdotool keydown space; sleep 1.5; xdotool keyup space; sleep 1");
+  ASSERT_FALSE(recording.records.empty());
+  double most = 0.0;
+  bool rising = false;
+  for (const haptics::TickSample& s : recording.records) {
+    EXPECT_EQ(s.reading.plunger_input, uint32_t(haptics::PlungerInput::kThumbForce));
+    EXPECT_EQ(s.state.syringe.thumb_force_N, s.reading.plunger_force_n);
+    most = std::max(most, s.reading.plunger_force_n);
+    rising = rising || (s.reading.plunger_force_n > 0.0 && s.reading.plunger_force_n < 6.0);
+  }
+  EXPECT_DOUBLE_EQ(most, 12.0) << "held past the rise's second: the key's hold";
+  EXPECT_TRUE(rising) << "the force rises while the key is held";
+  EXPECT_EQ(recording.records.back().reading.plunger_force_n, 0.0) << "let go with the key";
+  EXPECT_GT(recording.records.back().state.syringe.travel_m, 0.0) << "the needle in the open: the saline left";
 }
 
 // `run --device DEVICE` for each device in one virtual display (one xvfb-run: its clean-up can

@@ -76,6 +76,12 @@ TEST(CliStoreRecords, AnInstructorCorrectsATraineesNameAndTheStoreLogsIt) {
   EXPECT_EQ(missing.exit_code, 1) << missing.output;
   EXPECT_TRUE(says(missing, "no trainee named \"nobody\"")) << missing.output;
   EXPECT_EQ(run_needle_sim("trainee rename --from anna --db " + quoted(db)).exit_code, 2);
+  // A store that does not exist is named, and not made as a side effect.
+  const fs::path none = db.parent_path() / "none.db";
+  const ProcessResult no_db = run_needle_sim("trainee rename --from anna --to ana --db " + quoted(none));
+  EXPECT_EQ(no_db.exit_code, 1) << no_db.output;
+  EXPECT_TRUE(says(no_db, none.string() + ": no session database")) << no_db.output;
+  EXPECT_FALSE(fs::exists(none));
 }
 
 }  // namespace

@@ -33,6 +33,22 @@ TEST(CliWrites, RenderIntoAFullDeviceIsAnError) {
   EXPECT_FALSE(says(r, "wrote")) << r.output;
 }
 
+// An output folder that cannot be made (under a plain file, in /proc) is exit 1 naming the folder.
+TEST(CliWrites, AnOutputFolderThatCannotBeMadeIsAnErrorNamingIt) {
+  const fs::path dir = process_folder(test_output_dir("cli_writes") / "no_folder");
+  { std::ofstream(dir / "plain") << "x"; }
+  for (const fs::path& out : {dir / "plain" / "out", fs::path("/proc/needle-sim-out")}) {
+    const ProcessResult r =
+        run_needle_sim("simulate --scenario " + quoted(source_dir() / "assets/scenarios/holonomic_sphere.json") + " --out " + quoted(out));
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_TRUE(says(r, out.string() + ": cannot create the folder: ")) << r.output;
+    EXPECT_FALSE(says(r, "filesystem error")) << r.output;
+  }
+  const ProcessResult r = run_needle_sim(run_args(dir / "plain" / "run", dir / "sessions.db"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_TRUE(says(r, (dir / "plain" / "run").string() + ": cannot create the folder: Not a directory")) << r.output;
+}
+
 TEST(CliWrites, ARunOntoAFullDiskFailsNamingTheFileAndLeavesNoEmptyFile) {
   const fs::path dir = process_folder(test_output_dir("cli_writes") / "full");
   FullTmpfs disk(dir / "out", 256 * 1024);

@@ -1,4 +1,4 @@
-// The layered tissue's events and metrics (issue 14) on hand-built states: a needle going straight
+// The layered tissue's events and metrics on hand-built states: a needle going straight
 // down the z axis through skin (0), fat (1), the flavum (2), the epidural space (3) and the dura (4),
 // with a bone (5); membranes are the layers with a puncture force.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Where along a planned axis each layer begins (the depth gauge's marks, issue 14), against the
+// Where along a planned axis each layer begins (the depth gauge's marks), against the
 // layers' planes by closed form: a plane through p with unit normal n meets the axis o + t·d at
 // t = n·(o − p) / (−n·d), i.e. the plane's distance from the origin divided by the cosine of the
 // angle between the axis and the plane's inward normal. The planes are read from the scenario

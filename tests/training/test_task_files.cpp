@@ -206,7 +206,7 @@ TEST(TaskFiles, ErrorsNameTheFileAndThePointer) {
 }
 
 // A task on the layered block's scenario: its layers come from the scenario, in its order, and the
-// layer conditions and forbidden layers name them (issue 14).
+// layer conditions and forbidden layers name them.
 json layered_task() {
   json j = valid_task();
   j["scenario"] = (kTasks / "../scenarios/tissue_block_layers.json").string();

@@ -124,11 +124,59 @@ TEST(TaskRanges, APatientTasksKeysAreChecked) {
   EXPECT_EQ(error_of(missing), task_file().string() + ": /patient: file not found: /nonexistent/patient.json");
 }
 
+// At most 64 markers and 64 steps: a task of 100,000 markers (5 MB) took half a minute to read
+// before it was refused for a step's marker, and would draw each of them every frame.
+TEST(TaskRanges, AtMost64MarkersAnd64Steps) {
+  json task = shipped("penetrable_sphere");
+  const size_t markers = task["markers"].size(), steps = task["steps"].size();
+  for (size_t i = markers; i < 64; ++i) task["markers"].push_back({{"name", "m" + std::to_string(i)}, {"point", {0, 0, 0}}});
+  for (size_t i = steps; i < 64; ++i) {
+    task["steps"].push_back(task["steps"][0]);
+    task["steps"].back()["id"] = "s" + std::to_string(i);
+  }
+  EXPECT_EQ(error_of(task), "no error");
+  json more = task;
+  more["markers"].push_back({{"name", "m64"}, {"point", {0, 0, 0}}});
+  EXPECT_EQ(error_of(more), task_file().string() + ": /markers: expected an array of at most 64 markers");
+  more = task;
+  more["steps"].push_back(task["steps"][0]);
+  more["steps"].back()["id"] = "s64";
+  EXPECT_EQ(error_of(more), task_file().string() + ": /steps: expected a non-empty array of at most 64 steps");
+}
+
 TEST(TaskRanges, TheShippedTasksAreInsideEveryRange) {
   for (const char* name : {"rigid_sphere", "penetrable_sphere", "sphere_ultrasound", "layered_target", "epidural", "epidural_patient_bmi22",
                            "epidural_patient_bmi30", "epidural_patient_bmi40", "epidural_patient_random"}) {
     EXPECT_EQ(error_of(shipped(name)), "no error") << name;
   }
+}
+
+// The syringe of a task (docs/TASKS.md, "Syringe") and the step that seeks its loss: each bad value
+// one line naming the file and the pointer.
+TEST(TaskRanges, TheSyringeAndTheStepThatSeeksItsLossAreCheckedOnLoad) {
+  const std::string file = task_file().string() + ": ";
+  json t = shipped("epidural");
+  EXPECT_EQ(error_of(t), "no error");
+  t["syringe"]["fluid"] = "water";
+  EXPECT_EQ(error_of(t), file + "/syringe/fluid: expected \"saline\" or \"air\", got \"water\"");
+  t = shipped("epidural");
+  t["syringe"]["technique"] = "pumping";
+  EXPECT_EQ(error_of(t), file + "/syringe/technique: expected \"continuous\" or \"intermittent\", got \"pumping\"");
+  t = shipped("epidural");
+  t["syringe"]["space"] = "upper lamina";  // bone holds no fluid
+  EXPECT_EQ(error_of(t).rfind(file + "/syringe/space: no soft layer named \"upper lamina\"", 0), 0u) << error_of(t);
+  t = shipped("epidural");
+  t["syringe"].erase("space");
+  EXPECT_EQ(error_of(t), file + "/syringe/space: missing");
+  t = shipped("epidural");
+  t["steps"][2]["stop_at_loss"]["within_m"] = 1e300;
+  EXPECT_EQ(error_of(t), file + "/steps/2/stop_at_loss/within_m: must be in (0, 1] m, got 1e+300");
+  t = shipped("epidural");
+  t.erase("syringe");
+  EXPECT_EQ(error_of(t), file + "/steps/2/stop_at_loss: needs the task's syringe (/syringe)");
+  t = shipped("layered_target");  // its tissue's parameter sets give their injection keys: any task on it may have a syringe
+  t["syringe"] = {{"fluid", "saline"}, {"technique", "continuous"}, {"space", "fat"}};
+  EXPECT_EQ(error_of(t), "no error");
 }
 
 }  // namespace

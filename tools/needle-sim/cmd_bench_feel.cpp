@@ -1,4 +1,4 @@
-// needle-sim bench feel: what the hand feels (issue 13), per scenario, law and phase of contact:
+// needle-sim bench feel: what the hand feels, per scenario, law and phase of contact:
 // the force held at rest in free motion, the sensed force's content in the 3-50 Hz band and above
 // it, the needle's lateral speed in tissue and the position tracking. haptics/sim/feel_metrics.hpp
 // measures; this file runs the scenarios and prints.

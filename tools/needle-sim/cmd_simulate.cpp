@@ -4,6 +4,7 @@
 
 #include "command.hpp"
 #include "haptics/sim/sim_output.hpp"
+#include "io/file_write.hpp"
 
 namespace needle::cli {
 namespace {
@@ -14,7 +15,7 @@ struct SimulateFlags {
 
 int run(const SimulateFlags& f) {
   const haptics::Scenario scenario = haptics::load_scenario(*f.scenario);
-  std::filesystem::create_directories(*f.out);
+  io::make_folder(*f.out);
   const haptics::SimResult result = haptics::run_closed_loop(scenario, true);
   const std::string csv = (std::filesystem::path(*f.out) / "ticks.csv").string();
   const std::string summary = (std::filesystem::path(*f.out) / "summary.json").string();

@@ -18,7 +18,9 @@ struct RenameFlags {
 };
 
 int rename(const RenameFlags& f) {
-  training::SessionStore store(app::db_location(f.db));
+  const std::string location = app::db_location(f.db);
+  app::require_existing_db(location);
+  training::SessionStore store(location);
   const training::TraineeRename r = store.rename_trainee(f.from, f.to);
   std::printf("renamed trainee \"%s\" to \"%s\" in %s (logged at %s%s%s)\n", r.old_name.c_str(), r.new_name.c_str(),
               store.name().c_str(), r.renamed_at.c_str(), r.renamed_by.empty() ? "" : " by ", r.renamed_by.c_str());

@@ -42,6 +42,9 @@ inline constexpr NumberRange kPrecisionHorizon_s{0.004, 10.0, true};
 inline constexpr NumberRange kInsertionDepth_m{0.0, 1.0, true};
 inline constexpr NumberRange kInsertionSpeed_mps{0.0, 1.0, true};
 inline constexpr NumberRange kInsertionHold_s{0.0, io::kMaxSessionSeconds};
+// bench insertion --plunger-force: the thumb on the syringe's plunger (N); 100 N is a strong thumb's
+// pinch, past the 11 N a loss-of-resistance syringe is pressed with (docs/TISSUE.md). Design value.
+inline constexpr NumberRange kPlungerForce_N{0.0, 100.0, true};
 // Frames timed per row of the rendering benches (render, deform, ultrasound, frame): 1e5 frames
 // of at most ~10 ms on a CPU device are some 20 minutes a row.
 inline constexpr WholeRange kBenchFrames{1, 100000};

@@ -1,4 +1,4 @@
-// What the needle does to a layered tissue, event by event (issue 14, docs/SCORING.md "Layered
+// What the needle does to a layered tissue, event by event (docs/SCORING.md "Layered
 // tissue"): punctures with their depth and peak force, the run of the tip after a puncture until
 // it stops (the overshoot after the loss of resistance), bone contacts, redirections. Fed one
 // ToolSnapshot at a time on the consumer side of the sample ring; fixed-size state, no allocation

@@ -59,6 +59,11 @@ void for_each_metric(M& m, F&& f) {
   visit("entry_angle_deg", m.entry_angle_deg, {"needle off the approach at entry", "deg", 1.0, true});
   visit("lor_depth_m", m.lor_depth_m, {"depth at the loss of resistance", "mm", 1000.0, true});
   visit("lor_depth_error_m", m.lor_depth_error_m, {"loss of resistance past the patient's depth", "mm", 1000.0, true});
+  visit("advance_after_loss_m", m.advance_after_loss_m, {"advanced after the loss", "mm", 1000.0, true});
+  visit("loss_pressure_before_Pa", m.loss_pressure_before_Pa, {"plunger pressure before the loss", "kPa", 1e-3, true});
+  visit("loss_pressure_after_Pa", m.loss_pressure_after_Pa, {"plunger pressure after the loss", "kPa", 1e-3, true});
+  visit("false_losses", m.false_losses, {"false losses of resistance", "count", 1.0, true});
+  visit("pressure_applied_s", m.pressure_applied_s, {"plunger pressed", "s", 1.0, true});
 }
 
 }  // namespace needle::training

@@ -44,6 +44,12 @@ struct Metrics {
   double entry_angle_deg = kNotApplicable;     // the needle to that interspace's midline approach as it entered
   double lor_depth_m = kNotApplicable;         // from the skin along the needle when the tip first reached the epidural space
   double lor_depth_error_m = kNotApplicable;   // that less the patient's own skin-to-epidural distance there
+  // The loss-of-resistance syringe (training/scoring/syringe_events.hpp; not applicable without one).
+  double advance_after_loss_m = kNotApplicable;     // the tip's furthest advance along the needle after the loss in the syringe's space
+  double loss_pressure_before_Pa = kNotApplicable;  // the barrel's pressure while the plunger was held before that loss
+  double loss_pressure_after_Pa = kNotApplicable;   // and kLossSettle_s after it
+  double false_losses = kNotApplicable;             // losses of resistance outside the syringe's space (fat): a count
+  double pressure_applied_s = kNotApplicable;       // time the thumb pressed the plunger
 };
 
 }  // namespace needle::training

@@ -64,6 +64,13 @@ Metrics combine_metrics(const std::vector<StepResult>& steps) {
     m.bone_peak_force_N = std::max(m.bone_peak_force_N, x.bone_peak_force_N);
     m.redirections += x.redirections;
     m.forbidden_punctures += x.forbidden_punctures;
+    // The syringe's: counts and times add up (not applicable when no step has them), the loss's are the step's that had it.
+    for (auto [total, step] : {std::pair{&m.false_losses, x.false_losses}, std::pair{&m.pressure_applied_s, x.pressure_applied_s}})
+      if (!std::isnan(step)) *total = (std::isnan(*total) ? 0.0 : *total) + step;
+    for (auto [last, step] : {std::pair{&m.advance_after_loss_m, x.advance_after_loss_m},
+                              std::pair{&m.loss_pressure_before_Pa, x.loss_pressure_before_Pa},
+                              std::pair{&m.loss_pressure_after_Pa, x.loss_pressure_after_Pa}})
+      if (!std::isnan(step)) *last = step;
     if (m.faults == 0) m.first_fault = x.first_fault;
     m.faults += x.faults;
   }
@@ -102,6 +109,13 @@ Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& step
   if (w.overshoot > 0.0) score.components.push_back({"overshoot", falling(m.overshoot_m, r.overshoot_m), w.overshoot});
   if (w.bone_contacts > 0.0) score.components.push_back({"bone_contacts", 1.0 / (1.0 + m.bone_contacts), w.bone_contacts});
   if (w.redirections > 0.0) score.components.push_back({"redirections", 1.0 / (1.0 + m.redirections), w.redirections});
+  // Only a task with a syringe weighs the loss of resistance: how little the tip went on after it, less
+  // for every false loss; nothing when no loss was found (docs/SCORING.md, "Syringe").
+  if (w.loss_of_resistance > 0.0) {
+    const double stop = std::isnan(m.advance_after_loss_m) ? 0.0 : falling(m.advance_after_loss_m, r.loss_advance_m);
+    const double false_losses = std::isnan(m.false_losses) ? 0.0 : m.false_losses;
+    score.components.push_back({"loss_of_resistance", stop / (1.0 + false_losses), w.loss_of_resistance});
+  }
   for (const ScoreComponent& c : score.components) score.total += c.points();
   if (score.total < spec.pass_score)
     score.reasons_failed.push_back("score " + format(score.total) + " below the pass mark " + format(spec.pass_score));
@@ -109,7 +123,8 @@ Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& step
     score.reasons_failed.push_back(std::to_string(steps.size() - completed) + " step(s) not completed");
   // A forbidden layer (the dura) or bone touched fails the task whatever the rest (issue 14).
   for (const StepResult& s : steps)
-    if (s.record.outcome == StepOutcome::kForbiddenPuncture || s.record.outcome == StepOutcome::kRigidTouched)
+    if (s.record.outcome == StepOutcome::kForbiddenPuncture || s.record.outcome == StepOutcome::kRigidTouched ||
+        s.record.outcome == StepOutcome::kAdvancedPastLoss)
       score.reasons_failed.push_back("step " + s.id + ": " + (s.failure.empty() ? step_outcome_name(s.record.outcome) : s.failure));
   if (m.faults > 0) score.reasons_failed.push_back(std::to_string(m.faults) + " safety fault(s)");
   if (peak > safe)

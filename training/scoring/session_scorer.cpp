@@ -2,7 +2,7 @@
 
 namespace needle::training {
 
-SessionScorer::SessionScorer(const Task& task) : task_(task), progress_(task), layers_(task), patient_(task) {
+SessionScorer::SessionScorer(const Task& task) : task_(task), progress_(task), layers_(task), patient_(task), syringe_(task) {
   steps_.reserve(task.steps.size());
   for (const Step& step : task.steps) steps_.emplace_back(task, step);
 }
@@ -51,6 +51,7 @@ void SessionScorer::feed(const haptics::TickSample& sample) {
   ContactEvents events = contact_events(s);
   events.layers = &layers_.feed(s, events.entry);
   patient_.feed(s, events.entry);
+  if (task_.syringe) events.syringe = &syringe_.feed(s);
   const size_t step = progress_.current_step();
   steps_[step].add(s, events);
   progress_.feed(s);

@@ -46,6 +46,7 @@ class SessionScorer {
   std::vector<StepMetricsAccumulator> steps_;
   LayerEventTracker layers_;
   PatientTechniqueTracker patient_;
+  SyringeEventTracker syringe_;
   ContactEvents contact_events(const haptics::ToolSnapshot& s);
 
   bool started_ = false;

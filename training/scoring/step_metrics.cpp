@@ -13,6 +13,7 @@ StepMetricsAccumulator::StepMetricsAccumulator(const Task& task, const Step& ste
   deviation_at_end_ = c.type == ConditionType::kAxisAligned;
   axis_ = deviation_at_end_ ? c.marker : step.guidance.axis;
   planned_rigid_ = c.contact == ContactRequirement::kRigidSurface;
+  if (task.syringe) m_.false_losses = m_.pressure_applied_s = 0.0;
 }
 
 void StepMetricsAccumulator::add(const haptics::ToolSnapshot& state, const ContactEvents& events) {
@@ -63,6 +64,13 @@ void StepMetricsAccumulator::add(const haptics::ToolSnapshot& state, const Conta
     m_.bone_contacts += l->bone_entry;
     m_.redirections += l->redirection;
     if (l->punctured || run_m_ >= 0.0) run_m_ = l->run_m;  // a run that began in this step or before, still followed
+  }
+  if (const SyringeEvents* y = events.syringe) {
+    if (y->pressing) m_.pressure_applied_s += dt;
+    m_.false_losses += y->false_loss;
+    if (y->loss) m_.loss_pressure_before_Pa = y->pressure_before_Pa;
+    if (y->loss_settled) m_.loss_pressure_after_Pa = y->pressure_after_Pa;
+    if (y->advance_m >= 0.0) m_.advance_after_loss_m = y->advance_m;  // since the loss, in this step or an earlier one
   }
   if (state.tissue.bone_layer >= 0) m_.bone_peak_force_N = std::max(m_.bone_peak_force_N, norm(vec3(state.tissue.bone_force_n)));
   if (events.fault) {

@@ -5,6 +5,7 @@
 #include "training/scoring/layer_events.hpp"
 #include "training/scoring/metrics.hpp"
 #include "training/scoring/needle_force.hpp"
+#include "training/scoring/syringe_events.hpp"
 #include "training/scoring/trajectory_metrics.hpp"
 #include "training/tasks/task.hpp"
 
@@ -18,6 +19,7 @@ struct ContactEvents {
   bool fault = false;        // a fault latched on this state
   const Vec3* entry = nullptr;  // while in tissue: where the needle entered it
   const LayerEvents* layers = nullptr;  // the layered tissue's events on this state, when tracked
+  const SyringeEvents* syringe = nullptr;  // the syringe's, in a task with one
 };
 
 class StepMetricsAccumulator {

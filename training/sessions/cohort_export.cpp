@@ -61,9 +61,7 @@ std::string percentiles_csv(const CohortView& view) {
 }
 
 void export_cohort(const CohortView& view, const std::filesystem::path& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw std::runtime_error(dir.string() + ": cannot create the folder: " + ec.message());
+  io::make_folder(dir);
   io::write_file(dir / "cohort.json", cohort_json(view).dump(2) + "\n");
   io::write_file(dir / "cohort_curves.csv", learning_curves_csv(view));
   io::write_file(dir / "cohort_failed_steps.csv", failed_steps_csv(view));

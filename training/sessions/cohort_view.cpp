@@ -115,7 +115,7 @@ CohortView cohort_view(const SessionStore& store, const CohortFilter& filter) {
   std::vector<std::string> tasks;
   for (const LearningCurve& c : view.curves)
     if (tasks.empty() || tasks.back() != c.task) tasks.push_back(c.task);
-  // The layered tissue's metrics (issue 14) apply to a task on layers: there every insertion
+  // The layered tissue's metrics apply to a task on layers: there every insertion
   // punctures the skin. A task none of whose sessions punctured anything (the thesis's spheres)
   // gets no rows for them rather than rows of zeros.
   for (const std::string& task : tasks) {

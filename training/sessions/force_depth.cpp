@@ -3,11 +3,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include "haptics/syringe/loss_of_resistance.hpp"
+
 namespace needle::training {
 
 ForceDepth force_depth(const std::vector<haptics::TickSample>& samples, const Task* task) {
   ForceDepth out;
   out.plot = {"Axial force against depth", "N", "depth (mm)", {}, {}, {}};
+  out.pressure = {"Plunger pressure against depth", "kPa", "depth (mm)", {}, {}, {}};
+  const bool syringe = task && task->syringe;
+  if (!syringe) out.pressure.missing = task ? "task " + task->name + " has no syringe" : "no task";
+  haptics::LossDetector losses;
   if (!task || task->layers.size() < 2) {
     out.plot.missing = task ? "task " + task->name + " has no layered tissue" : "no task to name the layers";
     return out;
@@ -24,6 +30,7 @@ ForceDepth force_depth(const std::vector<haptics::TickSample>& samples, const Ta
   for (size_t i = 0; i < samples.size(); ++i) {
     const haptics::ToolSnapshot& s = samples[i].state;
     scorer.feed(samples[i]);
+    const bool loss = syringe && losses.add(s.time_s, s.syringe.flow_m3_per_s, s.syringe.pressure_Pa, s.syringe.layer, s.syringe.thumb_force_N);
     const haptics::TissueSnapshot& t = s.tissue;
     const bool touching = t.tip_layer >= 0 || t.surface_layer >= 0 || t.punctured_layers != 0;
     if (!touching) {
@@ -37,6 +44,7 @@ ForceDepth force_depth(const std::vector<haptics::TickSample>& samples, const Ta
       const auto a = haptics::needle_axis(s);
       axis = {a[0], a[1], a[2]};
       out.plot.lines.push_back({"track " + std::to_string(out.plot.lines.size() + 1), {}, {}});
+      if (syringe) out.pressure.lines.push_back({out.plot.lines.back().name, {}, {}});
     }
     const double depth = 1000.0 * dot(tip - origin, axis);
     depth_at[i] = depth;
@@ -45,6 +53,19 @@ ForceDepth force_depth(const std::vector<haptics::TickSample>& samples, const Ta
         std::abs(t.axial_force_N - line.v.back()) >= kForceStep_N) {
       line.t.push_back(depth);
       line.v.push_back(t.axial_force_N);
+    }
+    if (syringe) {
+      Series& p = out.pressure.lines.back();
+      const double kPa = 1e-3 * s.syringe.pressure_Pa;
+      if (p.t.empty() || std::abs(depth - p.t.back()) >= kDepthStep_mm || std::abs(kPa - p.v.back()) >= kPressureStep_kPa || loss) {
+        p.t.push_back(depth);
+        p.v.push_back(kPa);
+      }
+      if (loss) {
+        const int layer = losses.current().layer;
+        const std::string name = layer >= 0 && size_t(layer) < task->layers.size() ? task->layers[size_t(layer)].name : "no layer";
+        out.losses.push_back({depth, 1e-3 * losses.current().pressure_before_Pa, layer == task->syringe->space ? name : name + " (false)"});
+      }
     }
     if (t.tip_layer >= 0 && size_t(t.tip_layer) < entered.size() && !entered[size_t(t.tip_layer)]) {
       entered[size_t(t.tip_layer)] = true;
@@ -59,6 +80,7 @@ ForceDepth force_depth(const std::vector<haptics::TickSample>& samples, const Ta
     if (at != samples.end()) out.punctures.push_back({depth_at[size_t(at - samples.begin())], p.peak_force_N, p.layer});
   }
   if (out.plot.lines.empty()) out.plot.missing = "the needle never met the tissue";
+  if (syringe && out.pressure.lines.empty()) out.pressure.missing = out.plot.missing;
   return out;
 }
 

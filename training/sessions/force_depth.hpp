@@ -28,6 +28,11 @@ struct ForceDepth {
   std::vector<PlotMark> boundaries;  // y unused: the depth where the tip first entered each layer, labelled by name
   std::vector<PlotMark> punctures;   // at the puncture's depth and peak force, labelled by layer
   std::vector<PunctureResult> puncture_list;  // as score.json lists them (the session scorer's, replayed)
+  // With a syringe (ToolSnapshot::syringe): the barrel's pressure against the same depth, in kPa, one
+  // line per track as `plot`, and each loss of resistance at its depth and the pressure before it,
+  // labelled by the layer the fluid went into ("false" when it is not the task's syringe space).
+  Plot pressure;
+  std::vector<PlotMark> losses;
 };
 
 // Points closer than this in depth to the last one kept are left out of a track's line when the
@@ -35,6 +40,7 @@ struct ForceDepth {
 // design values, a hundredth of a millimetre and of a newton, below what a plot shows.
 inline constexpr double kDepthStep_mm = 0.01;
 inline constexpr double kForceStep_N = 0.01;
+inline constexpr double kPressureStep_kPa = 0.1;  // and of the plunger's pressure: a tenth of a kPa (0.75 mmHg)
 
 // The depth along a track: from the tip where the needle first met the tissue (a surface pressed
 // or a layer holding the tip), along the needle's axis then; the track ends when the needle is

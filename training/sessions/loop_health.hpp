@@ -1,4 +1,4 @@
-// How the haptic loop kept time over a recorded session (issue 19), from each sample's measured
+// How the haptic loop kept time over a recorded session, from each sample's measured
 // period: an instructor sees when a session's haptics were degraded (a window that starved the
 // loop, a busy machine). Offline runs (`run --headless`) tick unpaced and record the nominal
 // period, so they read as on time.

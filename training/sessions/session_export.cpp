@@ -111,9 +111,7 @@ std::string punctures_csv(int64_t session_id, const std::vector<PunctureResult>&
 }
 
 fs::path export_session(const StoredSession& session, const fs::path& dir, const std::vector<PunctureResult>* punctures) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw std::runtime_error(dir.string() + ": cannot create the folder: " + ec.message());
+  io::make_folder(dir);
   const std::string stem = "session_" + std::to_string(session.info.id);
   const fs::path json_file = dir / (stem + ".json");
   json j = session_json(session);

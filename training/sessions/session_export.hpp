@@ -19,7 +19,7 @@ nlohmann::json session_json(const StoredSession& session);
 // (step_index -1 and step_id "session" for the whole session; empty value: does not apply).
 std::string session_csv(const StoredSession& session);
 
-// A layered session's punctures (issue 14), one row each:
+// A layered session's punctures, one row each:
 // session_id,index,layer,t_s,depth_m,peak_force_N (index from 0, in order).
 std::string punctures_csv(int64_t session_id, const std::vector<PunctureResult>& punctures);
 

@@ -33,6 +33,7 @@ struct SessionReview {
   bool has_recording() const { return recording_problem.empty(); }
   // Whether the task runs on a layered tissue: the review has the force–depth plot.
   bool layered() const { return task && task->layers.size() > 1; }
+  bool has_syringe() const { return task && task->syringe.has_value(); }
   // A layered session's punctures, from its recording (the store does not keep them), for the
   // export; null for any other session.
   const std::vector<PunctureResult>* punctures() const {

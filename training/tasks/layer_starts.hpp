@@ -1,4 +1,4 @@
-// Where along a planned axis each tissue layer begins (issue 14: the depth gauge marks the layer
+// Where along a planned axis each tissue layer begins (the depth gauge marks the layer
 // boundaries): computed once when the task is read, from the scenario's layer geometry at rest.
 #pragma once
 

@@ -36,11 +36,16 @@ json task_scenario_json(const Task& task, uint64_t seed) {
     }
   }
   inline_patient(task, scenario, task.scenario.parent_path(), seed);
+  // The task's syringe on the needle: its fluid, the syringe's other numbers the scenario's own or the defaults.
+  if (task.syringe) {
+    if (!scenario.contains("syringe") || !scenario["syringe"].is_object()) scenario["syringe"] = json::object();
+    scenario["syringe"]["fluid"] = haptics::syringe_fluid_name(task.syringe->fluid);
+  }
   return scenario;
 }
 
 haptics::Scenario write_scenario(const json& scenario, const fs::path& file) {
-  if (file.has_parent_path()) fs::create_directories(file.parent_path());
+  if (file.has_parent_path()) io::make_folder(file.parent_path());
   io::write_file(file, scenario.dump(2) + "\n");
   return haptics::load_scenario(file.string());
 }
@@ -55,7 +60,12 @@ haptics::Scenario scenario_with_operator(const Task& task, const fs::path& scrip
   const json& hand = reader.member(operator_script, "", "hand");
   double end_s = 0.0;
   try {
-    end_s = haptics::read_hand(hand, script.string(), "/hand", Eigen::Vector3d::Zero()).trajectory.end_time();
+    const haptics::OperatorHand read = haptics::read_hand(hand, script.string(), "/hand", Eigen::Vector3d::Zero());
+    end_s = read.trajectory.end_time();
+    // A reaction to the loss of resistance may come as late as the script's end, and lasts its waypoints.
+    if (read.thumb && read.thumb->on_loss) end_s += read.thumb->on_loss->waypoints.back().t;
+    if (read.thumb && !task.syringe)
+      throw TaskError(script.string() + ": /hand/thumb: the task " + task.name + " has no syringe for the thumb to press");
   } catch (const haptics::ScenarioError& e) {
     throw TaskError(e.what());  // already "SCRIPT: /hand/...: what"
   }

@@ -12,10 +12,6 @@ namespace {
 
 constexpr double kDeg = 180.0 / std::numbers::pi;
 
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
 std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
   char text[160];
   std::snprintf(text, sizeof text, pattern, a, b, c);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "training/tasks/task_syringe.hpp"
 #include "training/tasks/ultrasound_probe.hpp"
 #include "training/tasks/vec3.hpp"
 
@@ -91,6 +92,10 @@ struct Step {
   // into one of `forbidden_punctures` (the dura), the tip meeting one of `forbidden_touches` (bone).
   uint32_t forbidden_punctures = 0;
   uint32_t forbidden_touches = 0;
+  // 0: no rule; else the step is where the loss of resistance is sought with the task's syringe: it
+  // completes only once the plunger has given way in the syringe's space, and fails when the tip
+  // advances further than this along the needle after it (docs/TASKS.md, "Syringe").
+  double stop_at_loss_within_m = 0.0;
   Guidance guidance;
 };
 
@@ -109,8 +114,9 @@ struct TaskLayer {
 struct ScoreWeights {
   double completion = 30, tip_error = 15, axis_deviation = 10, lateral_load = 10, peak_force = 10, force_steadiness = 5,
          path_efficiency = 5, smoothness = 5, time = 5, retries = 5, needle_visibility = 0, overshoot = 0,
-         bone_contacts = 0, redirections = 0;
+         bone_contacts = 0, redirections = 0, loss_of_resistance = 0;
   static constexpr double kDefaultNeedleVisibility = 10;
+  static constexpr double kDefaultLossOfResistance = 10;  // in a task with a syringe
   static constexpr double kDefaultOvershoot = 10, kDefaultBoneContacts = 10, kDefaultRedirections = 5;
 };
 
@@ -123,6 +129,9 @@ struct ScoreReferences {
   double normalized_jerk = 1e6;  // log scale, from sqrt(360)
   double time_s = 60.0;
   double overshoot_m = 0.01;  // design value: twice the epidural space's 5 mm depth
+  // Design value: 8 mm past the loss of resistance is through the 5 mm epidural space and the
+  // dura's 4 mm tent short of a millimetre: the advance after the loss that scores nothing.
+  double loss_advance_m = 0.008;
 };
 
 struct ScoringSpec {
@@ -202,6 +211,7 @@ struct Task {
   // The landmarks of the patient a session runs on (apply_patient); none before one runs, and for
   // a task on no patient.
   std::optional<PatientLandmarks> landmarks;
+  std::optional<TaskSyringe> syringe;                   // the loss-of-resistance syringe on the needle, when it has one
 
   int marker_index(const std::string& name) const;  // -1 when absent
   int layer_index(const std::string& name) const;   // -1 when absent

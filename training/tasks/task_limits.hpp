@@ -6,6 +6,8 @@
 // Positions, directions and times take the shared ranges of io/input_limits.hpp.
 #pragma once
 
+#include <cstddef>
+
 #include "io/input_limits.hpp"
 
 namespace needle::training::limits {
@@ -27,6 +29,13 @@ inline constexpr Range kPassScore{0.0, 100.0, false, ""};
 // The normal markers' spacing [0.02 m]: they stand 1 to 3 spacings out from the surface; past
 // 10 cm they leave the view.
 inline constexpr Range kMarkerSpacing{0.0, 0.1, true, "m"};
+
+// How many markers and steps a task may list: 64 each. Design value: a guided task names a few
+// points and axes and takes a handful of steps (shipped: at most 4 markers, 5 steps); each marker
+// is drawn every frame and each axis measured along the scenario's layers on reading, so a file
+// of 100,000 (5 MB) would take minutes to read and the frames to draw.
+inline constexpr size_t kMaxMarkers = 64;
+inline constexpr size_t kMaxSteps = 64;
 
 // Scoring references: the metric at which a score's term has fallen to 0 (docs/SCORING.md).
 // A reference past its range scores any attempt full marks: a tip error of a metre, a deviation

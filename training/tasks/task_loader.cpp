@@ -27,7 +27,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
 
   Task task(const json& root) {
     object(root, "", {"name", "title", "description", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps", "scoring",
-                      "ultrasound", "section", "hide_layer_names", "order", "patient"});
+                      "ultrasound", "section", "hide_layer_names", "order", "patient", "syringe"});
     Task t;
     ScenarioTissue tissue;
     t.name = name(member(root, "", "name"), "/name");
@@ -47,17 +47,23 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       on_patient_ = !tissue.patient_layers.empty();
     }
     if (root.contains("patient")) t.patient = patient(root["patient"], "/patient");
+    if (root.contains("syringe")) {
+      std::vector<haptics::Scenario::NamedMechanics> layers = tissue.patient_layers;
+      for (const haptics::TissueLayer& l : tissue.tissue.layers()) layers.push_back({l.name, l.mechanics, l.injection});
+      t.syringe = read_task_syringe(root["syringe"], file_, "/syringe", layers);
+    }
     if (root.contains("order")) t.order = static_cast<int>(whole(root["order"], "/order", 0, kMaxTaskOrder));
     if (root.contains("hide_layer_names")) t.hide_layer_names = boolean(root["hide_layer_names"], "/hide_layer_names");
     if (root.contains("normal_marker_spacing_m"))
       t.normal_marker_spacing_m = in_range(root["normal_marker_spacing_m"], "/normal_marker_spacing_m", limits::kMarkerSpacing);
     const json& markers = member(root, "", "markers");
-    if (!markers.is_array()) fail("/markers", "expected an array of markers");
+    if (!markers.is_array() || markers.size() > limits::kMaxMarkers)
+      fail("/markers", "expected an array of at most " + std::to_string(limits::kMaxMarkers) + " markers");
+    std::set<std::string> marker_names;
     for (size_t i = 0; i < markers.size(); ++i) {
       const std::string at = "/markers/" + std::to_string(i);
       t.markers.push_back(marker(markers[i], at));
-      if (std::count_if(t.markers.begin(), t.markers.end(),
-                        [&](const Marker& m) { return m.name == t.markers.back().name; }) > 1)
+      if (!marker_names.insert(t.markers.back().name).second)
         fail(at + "/name", "\"" + t.markers.back().name + "\" is used twice");
       const Marker& m = t.markers.back();
       t.layer_starts.push_back(m.kind == MarkerKind::kAxis && t.layers.size() > 1 && !tissue.tissue.empty()
@@ -67,7 +73,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     if (root.contains("ultrasound")) t.ultrasound_probe = ultrasound(root["ultrasound"], "/ultrasound");
     if (root.contains("section")) t.section_plane = section(root["section"], "/section");
     const json& steps = member(root, "", "steps");
-    if (!steps.is_array() || steps.empty()) fail("/steps", "expected a non-empty array of steps");
+    if (!steps.is_array() || steps.empty() || steps.size() > limits::kMaxSteps)
+      fail("/steps", "expected a non-empty array of at most " + std::to_string(limits::kMaxSteps) + " steps");
     std::set<std::string> ids;
     for (size_t i = 0; i < steps.size(); ++i) {
       const std::string at = "/steps/" + std::to_string(i);
@@ -75,7 +82,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       if (!ids.insert(t.steps.back().id).second) fail(at + "/id", "\"" + t.steps.back().id + "\" is used twice");
     }
     t.scoring = scoring(root.contains("scoring") ? root["scoring"] : json::object(), "/scoring", t.ultrasound_probe.has_value(),
-                        !t.layers.empty() && t.layers.size() > 1);
+                        !t.layers.empty() && t.layers.size() > 1, t.syringe.has_value());
     return t;
   }
 
@@ -335,7 +342,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
 
   Step step(const Task& t, const json& value, const std::string& at) const {
     object(value, at, {"id", "instruction", "condition", "time_limit_s", "tip_fixed_within_m", "tip_out_of_plane_max_s",
-                       "forbidden", "guidance"});
+                       "forbidden", "guidance", "stop_at_loss"});
     Step s;
     s.id = string(member(value, at, "id"), at + "/id");
     s.instruction = string(member(value, at, "instruction"), at + "/instruction");
@@ -349,11 +356,17 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       s.tip_out_of_plane_max_s = in_range(value["tip_out_of_plane_max_s"], at + "/tip_out_of_plane_max_s", io::kSessionDurationRange);
     }
     if (value.contains("forbidden")) forbidden(t, s, value["forbidden"], at + "/forbidden");
+    if (value.contains("stop_at_loss")) {
+      if (!t.syringe) fail(at + "/stop_at_loss", "needs the task's syringe (/syringe)");
+      object(value["stop_at_loss"], at + "/stop_at_loss", {"within_m"});
+      s.stop_at_loss_within_m =
+          in_range(member(value["stop_at_loss"], at + "/stop_at_loss", "within_m"), at + "/stop_at_loss/within_m", limits::kTolerance);
+    }
     if (value.contains("guidance")) s.guidance = guidance(t, s, value["guidance"], at + "/guidance");
     return s;
   }
 
-  ScoringSpec scoring(const json& value, const std::string& at, bool has_probe, bool layered) const {
+  ScoringSpec scoring(const json& value, const std::string& at, bool has_probe, bool layered, bool syringe) const {
     object(value, at, {"safe_force_N", "pass_score", "weights", "references"});
     ScoringSpec s;
     if (has_probe) s.weights.needle_visibility = ScoreWeights::kDefaultNeedleVisibility;
@@ -362,6 +375,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       s.weights.bone_contacts = ScoreWeights::kDefaultBoneContacts;
       s.weights.redirections = ScoreWeights::kDefaultRedirections;
     }
+    if (syringe) s.weights.loss_of_resistance = ScoreWeights::kDefaultLossOfResistance;
     if (value.contains("safe_force_N")) s.safe_force_N = in_range(value["safe_force_N"], at + "/safe_force_N", limits::kSafeForce);
     if (value.contains("pass_score")) s.pass_score = in_range(value["pass_score"], at + "/pass_score", limits::kPassScore);
     s.weights = weights(value.contains("weights") ? value["weights"] : json::object(), at + "/weights", s.weights);
@@ -373,12 +387,15 @@ class TaskReader : io::StrictJsonReader<TaskError> {
   ScoreWeights weights(const json& value, const std::string& at, ScoreWeights w) const {
     object(value, at,
            {"completion", "tip_error", "axis_deviation", "lateral_load", "peak_force", "force_steadiness",
-            "path_efficiency", "smoothness", "time", "retries", "needle_visibility", "overshoot", "bone_contacts", "redirections"});
+            "path_efficiency", "smoothness", "time", "retries", "needle_visibility", "overshoot", "bone_contacts", "redirections",
+            "loss_of_resistance"});
     if (value.contains("needle_visibility") && w.needle_visibility == 0.0)
       fail(at + "/needle_visibility", "needs the task's ultrasound probe (/ultrasound)");
     for (const char* key : {"overshoot", "bone_contacts", "redirections"})
       if (value.contains(key) && w.overshoot == 0.0)
         fail(at + "/" + key, "needs a layered tissue (the /scenario's tissue layers)");
+    if (value.contains("loss_of_resistance") && w.loss_of_resistance == 0.0)
+      fail(at + "/loss_of_resistance", "needs the task's syringe (/syringe)");
     const std::pair<const char*, double*> fields[] = {{"completion", &w.completion},
                                                       {"tip_error", &w.tip_error},
                                                       {"axis_deviation", &w.axis_deviation},
@@ -392,7 +409,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
                                                       {"needle_visibility", &w.needle_visibility},
                                                       {"overshoot", &w.overshoot},
                                                       {"bone_contacts", &w.bone_contacts},
-                                                      {"redirections", &w.redirections}};
+                                                      {"redirections", &w.redirections},
+                                                      {"loss_of_resistance", &w.loss_of_resistance}};
     double total = 0.0;
     for (const auto& [key, field] : fields) {
       if (value.contains(key)) *field = non_negative(value[key], at + "/" + key);
@@ -406,7 +424,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
 
   ScoreReferences references(const json& value, const std::string& at) const {
     object(value, at,
-           {"tip_error_m", "axis_deviation_deg", "lateral_load_Ns", "force_sd_N", "normalized_jerk", "time_s", "overshoot_m"});
+           {"tip_error_m", "axis_deviation_deg", "lateral_load_Ns", "force_sd_N", "normalized_jerk", "time_s", "overshoot_m",
+            "loss_advance_m"});
     ScoreReferences r;
     const std::tuple<const char*, double*, const io::Range&> fields[] = {
         {"tip_error_m", &r.tip_error_m, limits::kTipErrorReference},
@@ -415,7 +434,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
         {"force_sd_N", &r.force_sd_N, limits::kForceSdReference},
         {"normalized_jerk", &r.normalized_jerk, limits::kNormalizedJerkReference},
         {"time_s", &r.time_s, io::kSessionDurationRange},
-        {"overshoot_m", &r.overshoot_m, limits::kOvershootReference}};
+        {"overshoot_m", &r.overshoot_m, limits::kOvershootReference},
+        {"loss_advance_m", &r.loss_advance_m, limits::kOvershootReference}};
     for (const auto& [key, field, range] : fields)
       if (value.contains(key)) *field = in_range(value[key], at + "/" + key, range);
     if (r.normalized_jerk <= std::sqrt(360.0))

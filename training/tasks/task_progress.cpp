@@ -2,7 +2,9 @@
 
 #include <bit>
 #include <cmath>
+#include <cstdio>
 
+#include "haptics/syringe/loss_of_resistance.hpp"
 #include "training/tasks/condition.hpp"
 
 namespace needle::training {
@@ -25,6 +27,8 @@ const char* step_outcome_name(StepOutcome outcome) {
       return "forbidden_puncture";
     case StepOutcome::kRigidTouched:
       return "rigid_touched";
+    case StepOutcome::kAdvancedPastLoss:
+      return "advanced_past_loss";
   }
   return "unknown";
 }
@@ -32,7 +36,7 @@ const char* step_outcome_name(StepOutcome outcome) {
 bool step_outcome_from_name(const std::string& name, StepOutcome& outcome) {
   for (const StepOutcome o : {StepOutcome::kPending, StepOutcome::kActive, StepOutcome::kCompleted,
                               StepOutcome::kTimedOut, StepOutcome::kTipMoved, StepOutcome::kTipLost,
-                              StepOutcome::kForbiddenPuncture, StepOutcome::kRigidTouched})
+                              StepOutcome::kForbiddenPuncture, StepOutcome::kRigidTouched, StepOutcome::kAdvancedPastLoss})
     if (name == step_outcome_name(o)) {
       outcome = o;
       return true;
@@ -60,6 +64,11 @@ std::string step_failure_reason(const Task& task, const StepRecord& record) {
       return layer() + " punctured (forbidden)";
     case StepOutcome::kRigidTouched:
       return layer() + " touched (forbidden)";
+    case StepOutcome::kAdvancedPastLoss: {
+      char text[96];
+      std::snprintf(text, sizeof text, "advanced %.1f mm past the loss of resistance", 1e3 * record.advanced_m);
+      return text;
+    }
   }
   return "";
 }
@@ -72,6 +81,7 @@ void TaskProgress::end_step(StepOutcome outcome, const haptics::ToolSnapshot& st
   records_[current_].layer = layer;
   held_since_s_ = std::numeric_limits<double>::quiet_NaN();
   out_of_plane_since_s_ = std::numeric_limits<double>::quiet_NaN();
+  loss_found_ = false;
   if (++current_ < records_.size()) {
     records_[current_].outcome = StepOutcome::kActive;
     records_[current_].start_s = state.time_s;
@@ -89,7 +99,19 @@ void TaskProgress::feed(const haptics::ToolSnapshot& state) {
     tip_at_start_ = vec3(state.needle_tip_m);
   }
   const Step& step = task_.steps[current_];
-  if (condition_holds(task_, step.condition, state)) {
+  // The loss of resistance: the syringe's flow beginning with the tip in the task's syringe space.
+  const bool flowing = state.syringe.flow_m3_per_s > haptics::kLossFlow_m3_per_s && state.syringe.thumb_force_N > 0.0;
+  if (step.stop_at_loss_within_m > 0.0 && !loss_found_ && flowing && !flowing_before_ && task_.syringe &&
+      state.syringe.layer == task_.syringe->space) {
+    loss_found_ = true;
+    loss_tip_ = vec3(state.needle_tip_m);
+    const auto axis = haptics::needle_axis(state);
+    loss_axis_ = {axis[0], axis[1], axis[2]};
+  }
+  flowing_before_ = flowing;
+  const double advanced = loss_found_ ? dot(vec3(state.needle_tip_m) - loss_tip_, loss_axis_) : 0.0;
+  const bool seeking = step.stop_at_loss_within_m > 0.0 && !loss_found_;  // the condition counts once the loss is found
+  if (!seeking && condition_holds(task_, step.condition, state)) {
     if (!condition_met()) held_since_s_ = state.time_s;
   } else {
     held_since_s_ = std::numeric_limits<double>::quiet_NaN();
@@ -117,6 +139,10 @@ void TaskProgress::feed(const haptics::ToolSnapshot& state) {
     end_step(StepOutcome::kForbiddenPuncture, state, std::countr_zero(passed_now));
   else if (touched_now)
     end_step(StepOutcome::kRigidTouched, state, bone);
+  else if (loss_found_ && advanced > step.stop_at_loss_within_m) {
+    records_[current_].advanced_m = advanced;
+    end_step(StepOutcome::kAdvancedPastLoss, state);
+  }
   else if (condition_met() && state.time_s - held_since_s_ >= step.condition.hold_s)
     end_step(StepOutcome::kCompleted, state);
   else if (step.tip_fixed_within_m > 0.0 && distance(vec3(state.needle_tip_m), tip_at_start_) > step.tip_fixed_within_m)

@@ -21,6 +21,7 @@ enum class StepOutcome {
   kTipLost,    // the tip, in tissue, stayed out of the ultrasound slice for tip_out_of_plane_max_s first
   kForbiddenPuncture,  // the track passed into one of the step's forbidden_punctures (StepRecord::layer)
   kRigidTouched,       // the tip met one of the step's forbidden_touches, a rigid layer (StepRecord::layer)
+  kAdvancedPastLoss,   // the tip went on past the loss of resistance further than stop_at_loss_within_m (StepRecord::advanced_m)
 };
 
 const char* step_outcome_name(StepOutcome outcome);                          // "pending", "completed", ...
@@ -31,6 +32,7 @@ struct StepRecord {
   double start_s = std::numeric_limits<double>::quiet_NaN();
   double end_s = std::numeric_limits<double>::quiet_NaN();
   int layer = -1;  // forbidden_puncture, rigid_touched: the layer (Task::layers index)
+  double advanced_m = std::numeric_limits<double>::quiet_NaN();  // advanced_past_loss: how far, along the needle
 };
 
 // Why a step ended as it did, for the trainee and the score, e.g. "dura punctured (forbidden)"; empty
@@ -67,6 +69,11 @@ class TaskProgress {
   uint32_t punctured_before_ = 0;  // the previous state's punctured layers
   int bone_before_ = -1;           // and the rigid layer it touched
   double bone_left_s_ = -1.0;      // when the tip last left a rigid layer (-1: never on one)
+  // The loss of resistance in a step that seeks it (Step::stop_at_loss_within_m): the syringe's flow
+  // starting in the task's syringe space, where the tip was then and along which axis.
+  bool flowing_before_ = false;
+  bool loss_found_ = false;
+  Vec3 loss_tip_{}, loss_axis_{};
 };
 
 }  // namespace needle::training

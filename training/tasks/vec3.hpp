@@ -16,11 +16,11 @@ inline Vec3 operator*(double s, const Vec3& a) { return {s * a[0], s * a[1], s *
 inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 inline double distance(const Vec3& a, const Vec3& b) { return norm(a - b); }
+inline Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
 
 // Angle between two directions in [0, pi], robust near 0 and pi (atan2 of |a x b| and a.b).
-inline double angle_between(const Vec3& a, const Vec3& b) {
-  const Vec3 c{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  return std::atan2(norm(c), dot(a, b));
-}
+inline double angle_between(const Vec3& a, const Vec3& b) { return std::atan2(norm(cross(a, b)), dot(a, b)); }
 
 }  // namespace needle::training

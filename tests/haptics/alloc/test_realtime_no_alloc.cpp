@@ -11,6 +11,7 @@
 #include "haptics/realtime/haptic_loop.hpp"
 #include "haptics/devices/desk_device.hpp"
 #include "haptics/realtime/sim_session.hpp"
+#include "haptics/realtime/syringe_servo_step.hpp"
 #include "haptics/realtime/task_space_step.hpp"
 #include "test_realtime_fakes.hpp"
 #include "tests/support/test_paths.hpp"
@@ -71,6 +72,26 @@ TEST(RealtimeNoAlloc, SimDeviceWithTheControllerAllocatesNothing) {
   rig.run(0, 6000, 0.002);  // 12 s: into the tissue
   EXPECT_EQ(g_allocations.load(), before);
   EXPECT_EQ(rig.safety.fault(), FaultCause::kNone);
+}
+
+// The epidural's scenario with a saline syringe and a scripted thumb that reacts to the loss of
+// resistance: the syringe's tick, the thumb's feel and the hand's turn to its reaction allocate nothing.
+TEST(RealtimeNoAlloc, TheSyringeAndTheThumbsReactionAllocateNothing) {
+  Scenario scenario = load_scenario(test::source_dir().string() + "/assets/scenarios/epidural.json");
+  scenario.syringe = SyringeParams{};
+  ThumbScript thumb;
+  thumb.force_N = 11.0;
+  thumb.from_s = 17.0;
+  thumb.on_loss = LossReaction{0.2, 1.0, {HandWaypoint{3.0, Eigen::Vector3d(0.2, 0.0, -0.03), -Eigen::Vector3d::UnitZ()}}};
+  scenario.thumb = thumb;
+  SimSession sim(std::move(scenario), 500.0);
+  sim.device().open();
+  SyringeServoStep step(sim.step(), sim.scenario());
+  TickRig rig(sim.device(), step, safety_limits_for(sim.device().capabilities()));
+  const uint64_t before = g_allocations.load();
+  rig.run(0, 15000, 0.002);  // 30 s: through the flavum, the loss, the reaction
+  EXPECT_EQ(g_allocations.load(), before);
+  EXPECT_GT(step.syringe().travel_m, 0.0) << "the plunger gave way";
 }
 
 TEST(RealtimeNoAlloc, TaskSpaceCouplingAllocatesNothing) {
