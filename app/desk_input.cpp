@@ -1,8 +1,10 @@
 #include "app/desk_input.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "engine/screen_projection.hpp"
+#include "haptics/control/task_space_coupling.hpp"
 
 namespace needle::app {
 namespace {
@@ -17,8 +19,9 @@ std::optional<haptics::DeskKey> desk_key(engine::Key key) {
     case engine::Key::kW: return haptics::DeskKey::kIn;
     case engine::Key::kA: return haptics::DeskKey::kSwingLeft;
     case engine::Key::kD: return haptics::DeskKey::kSwingRight;
-    case engine::Key::kF: return haptics::DeskKey::kTiltToward;
-    case engine::Key::kR: return haptics::DeskKey::kTiltAway;
+    // Q and E tilt: R is the score panel's Retry, so no key has two meanings.
+    case engine::Key::kQ: return haptics::DeskKey::kTiltToward;
+    case engine::Key::kE: return haptics::DeskKey::kTiltAway;
     default: return std::nullopt;
   }
 }
@@ -52,7 +55,28 @@ DeskInput::DeskInput(haptics::DeskDevice& device, bool syringe) : device_(device
   }
 }
 
+haptics::MouseView mouse_view(const engine::Camera& camera, const ToolStart& start) {
+  const Eigen::Vector3d eye(camera.position.x, camera.position.y, camera.position.z);
+  return {std::tan(0.5 * double(camera.fov_y_deg) * M_PI / 180.0), (start.tip - eye).dot(start.device_to_scene.col(2))};
+}
+
+haptics::NeedleDirection needle_direction(const ToolStart& start, const std::array<double, 3>& axis) {
+  const Eigen::Vector3d d = start.device_to_scene.transpose() * Eigen::Vector3d(axis[0], axis[1], axis[2]).normalized();
+  return {{d.x(), d.y(), d.z()}};
+}
+
+haptics::NeedleDirection needle_direction(const ToolStart& start, const haptics::DeskPose& pose) {
+  const Eigen::Vector3d d = start.device_to_scene.transpose() *
+                            haptics::wrist_direction(start.device_to_scene, start.direction, pose.wrist_rad[0], pose.wrist_rad[1]);
+  return {{d.x(), d.y(), d.z()}};
+}
+
 void DeskInput::frame(engine::Window& window, const std::vector<engine::Window::KeyPress>& keys, bool pointer_on_panel) {
+  if (start_) {
+    mouse_.set_needle_direction(axis_ ? needle_direction(*start_, *axis_) : needle_direction(*start_, mouse_.pose()));
+    keys_.set_needle_direction(axis_ ? needle_direction(*start_, *axis_) : needle_direction(*start_, keys_.pose()));
+    pad_.set_needle_direction(axis_ ? needle_direction(*start_, *axis_) : needle_direction(*start_, pad_.pose()));
+  }
   const auto now = std::chrono::steady_clock::now();
   const double dt = last_frame_ ? std::chrono::duration<double>(now - *last_frame_).count() : 0.0;
   last_frame_ = now;
@@ -72,7 +96,12 @@ void DeskInput::frame(engine::Window& window, const std::vector<engine::Window::
       turning_ = turning;
       const double half = 0.5 * size.height;
       mouse_.pointer((at.x - 0.5 * size.width) / half, (half - at.y) / half, turning);
-      mouse_.scroll(scroll);
+      if (scroll != 0.0 && !turning) {  // along the needle, and the cursor onto the tip's new place
+        mouse_.scroll(scroll);
+        double x = 0.0, y = 0.0;
+        mouse_.cursor_at_handle(x, y);
+        window.set_cursor({0.5 * size.width + x * half, half - y * half});
+      }
       device_.set_pose(mouse_.pose());
       return;
     }
@@ -95,10 +124,13 @@ void DeskInput::frame(engine::Window& window, const std::vector<engine::Window::
   }
 }
 
-void DeskInput::place_cursor(engine::Window& window, const engine::Camera& camera, const glm::vec3& world) {
+void DeskInput::start_at(engine::Window& window, const engine::Camera& camera, const ToolStart& start) {
+  start_ = start;
   if (kind_ != Kind::kMouse) return;
+  mouse_ = haptics::MouseMapping({}, mouse_view(camera, start));
   const engine::Extent pixels = window.framebuffer_extent(), size = window.size();
-  const std::optional<glm::vec2> at = engine::project_to_screen(camera, pixels, world);
+  const glm::vec3 tip(float(start.tip.x()), float(start.tip.y()), float(start.tip.z()));
+  const std::optional<glm::vec2> at = engine::project_to_screen(camera, pixels, tip);
   if (!at || pixels.width == 0 || pixels.height == 0) return;
   window.set_cursor({double(at->x) * size.width / pixels.width, double(at->y) * size.height / pixels.height});
 }
@@ -109,7 +141,7 @@ std::string DeskInput::help(haptics::DeviceSpec::Kind kind, bool syringe) {
     return std::string("cursor: move   wheel or Up/Down: in and out   right button held: turn about the tip") +
            (syringe ? "   left button or Space held: press the plunger" : "");
   if (kind == K::kKeyboard)
-    return std::string("arrows: move   W/S: in and out   A/D, R/F: turn about the tip   Shift: fine") +
+    return std::string("arrows: move   W/S: in and out   A/D, Q/E: turn about the tip   Shift: fine") +
            (syringe ? "   Space held: press the plunger" : "");
   if (syringe)
     return "left stick: move   right trigger: in (out with LB)   right stick: turn about the tip   left trigger: press the "

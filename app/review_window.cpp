@@ -14,6 +14,7 @@
 #include "training/sessions/cohort_export.hpp"
 #include "training/sessions/session_export.hpp"
 #include "ui/cohort_panel.hpp"
+#include "ui/input_focus.hpp"
 #include "ui/review_panels.hpp"
 #include "ui/review_replay.hpp"
 #include "ui/review_window_frame.hpp"
@@ -105,8 +106,11 @@ int run_review_window(const ReviewOptions& options) {
   std::optional<fs::path> class_picture;  // the Class tab's PNG, written from the frame drawn next
 
   WindowFrames frames(options.frames, options.screenshot, options.messages);
-  while (!window.should_close()) {
+  bool quit = false;  // Quit (Esc), or the window closed
+  while (!window.should_close() && !quit) {
     window.poll_events();
+    for (const engine::Window::KeyPress& press : window.take_key_presses())
+      if (press.key == engine::Key::kEscape && !ui::typing()) quit = true;  // Esc in the filter field leaves the field
     const float dt = clock.tick();
     if (std::chrono::steady_clock::now() - refreshed > kRefresh) {
       sessions = store->sessions();
@@ -149,9 +153,11 @@ int run_review_window(const ReviewOptions& options) {
     }
 
     const engine::Extent extent = target.extent();
-    const float w = float(extent.width), h = float(extent.height), left = kPanelsFraction * w, bar = 64.0f;
+    const float w = float(extent.width), h = float(extent.height), left = kPanelsFraction * w;
     ui_pass.begin_frame(extent, dt);
+    const float bar = ui::replay_bar_height();
     const ui::ReviewTabs tabs = ui::draw_review_tabs(left, select_class);
+    quit = quit || tabs.quit;
     const bool class_tab = tabs.class_tab;
     const float top = tabs.height;
     const ui::PanelRect class_rect = ui::rect(0, top, w, h - top);

@@ -29,6 +29,16 @@ bool SessionFeed::task_finished() const {
   return scorer_.progress().finished();
 }
 
+bool SessionFeed::first_step_ended() const {
+  std::lock_guard lock(mutex_);
+  return scorer_.progress().current_step() > 0 || scorer_.progress().finished();
+}
+
+std::array<double, 3> SessionFeed::needle_axis() const {
+  std::lock_guard lock(mutex_);
+  return haptics::needle_axis(last_);
+}
+
 engine::NeedleLoad SessionFeed::needle() const {
   std::lock_guard lock(mutex_);
   return needle_;

@@ -4,6 +4,7 @@
 // ring). The UI reads what it shows through the accessors, each under the same lock.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <mutex>
@@ -26,7 +27,10 @@ class SessionFeed {
   std::vector<size_t> take_ended_steps();
   uint64_t samples() const;
   bool task_finished() const;
+  // The first step has ended (completed or not): the session is under way.
+  bool first_step_ended() const;
   engine::NeedleLoad needle() const;
+  std::array<double, 3> needle_axis() const;  // the newest state's (world frame)
   training::SessionResult result() const;
   // Calls `read` with the scorer and the newest state, under the lock (the panel draws from them).
   void read(const std::function<void(const training::SessionScorer&, const haptics::ToolSnapshot&)>& read) const;

@@ -132,10 +132,14 @@ uint64_t patient_seed(const RigOptions& options) {
 
 }  // namespace
 
-training::Task session_task(const fs::path& task_file, const haptics::DeviceSpec& device) {
-  if (device.kind != haptics::DeviceSpec::Kind::kReplay) return training::load_task(task_file);
+training::Task session_task(const fs::path& task_file, const haptics::DeviceSpec& device, bool practice) {
+  if (device.kind != haptics::DeviceSpec::Kind::kReplay) {
+    training::Task task = training::load_task(task_file);
+    return practice ? training::practice_task(std::move(task)) : task;
+  }
   const json context = haptics::read_recording_context(device.file, haptics::read_header(device.file));
-  return training::parse_task(context["task_text"].get<std::string>(), context["task"].get<std::string>());
+  training::Task task = training::parse_task(context["task_text"].get<std::string>(), context["task"].get<std::string>());
+  return context["practice"].get<bool>() ? training::practice_task(std::move(task)) : task;
 }
 
 SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
@@ -171,6 +175,7 @@ SessionRig::SessionRig(const training::Task& task, const RigOptions& options) {
                   {"device", replay ? description_ : options.device.text()},
                   {"scenario", recorded.scenario},
                   {"coupling", recorded.coupling},
+                  {"practice", task.practice},
                   {"safety_limits", limits_json(limits_)},
                   {training::kRecordingSessionKey, options.session_uid}}
                  .dump();
@@ -251,9 +256,10 @@ SessionRig::Recorded SessionRig::make_live(const training::Task& task, const Rig
 
 const haptics::Scenario& SessionRig::scenario() const { return sim_ ? sim_->scenario() : *scenario_; }
 
-std::optional<Eigen::Vector3d> SessionRig::tool_start() const {
+std::optional<ToolStart> SessionRig::tool_start() const {
   if (!task_space_) return std::nullopt;
-  return task_space_->start_tip() + scenario_->base_in_world;
+  return ToolStart{task_space_->start_tip() + scenario_->base_in_world, task_space_->start_direction().normalized(),
+                   task_space_->coupling().device_to_scene};
 }
 
 SessionRig::~SessionRig() {

@@ -42,9 +42,18 @@ struct RigOptions {
 };
 
 // The task a session on `device` runs: for replay:FILE the task as its recording keeps it (the
-// file's text then, not the file as it is now), else `task_file`. Throws haptics::RecordingError
-// naming the recording when it has no usable context, training::TaskError for the task.
-training::Task session_task(const std::filesystem::path& task_file, const haptics::DeviceSpec& device);
+// file's text then, not the file as it is now; a practice run's as practice), else `task_file`, as
+// a practice run (training::practice_task) with `practice`. Throws haptics::RecordingError naming
+// the recording when it has no usable context, training::TaskError for the task.
+training::Task session_task(const std::filesystem::path& task_file, const haptics::DeviceSpec& device, bool practice = false);
+
+// Where a task-space device's tool starts and the axes its device moves in (the view's, for the
+// trainee's devices: right, up and depth as the columns).
+struct ToolStart {
+  Eigen::Vector3d tip;        // world frame
+  Eigen::Vector3d direction;  // the needle's, unit
+  Eigen::Matrix3d device_to_scene;
+};
 
 class SessionRig {
  public:
@@ -70,9 +79,9 @@ class SessionRig {
   haptics::SyringeHandDevice* syringe_hand() { return syringe_hand_; }
   // The syringe in the tick, when the session has one (its step's).
   const haptics::SyringeServoStep* syringe_step() const { return syringe_step_.get(); }
-  // Where a task-space device's tool starts, world frame (its first reading lands there);
-  // nullopt for the joint-space and replayed devices.
-  std::optional<Eigen::Vector3d> tool_start() const;
+  // Where a task-space device's tool starts (its first reading lands there); nullopt for the
+  // joint-space and replayed devices.
+  std::optional<ToolStart> tool_start() const;
   // The scenario the session runs (its patient, when it has one, is the one this session drew).
   const haptics::Scenario& scenario() const;
   // For the session store and the recording header: "sim (good)", "mouse", "replay of ...".

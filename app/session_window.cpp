@@ -44,7 +44,7 @@ FrameContent with_views(const Show& show, ui::ViewState& view, const engine::Sce
 SessionWindow::SessionWindow(const WindowOptions& options)
     : options_(options),
       vw_("needle-sim", options.size, options.messages),
-      frame_(vw_.device, vw_.target, {options.msaa.value_or(vw_.default_msaa_samples()), options.hud, options.render_scale},
+      frame_(vw_.device, vw_.target, {options.msaa.value_or(vw_.default_msaa_samples()), options.hud, options.render_scale, options.debug},
              &vw_.window),
       frames_(options.frames, options.screenshot, options.messages),
       view_{options.section, options.ultrasound},
@@ -69,6 +69,7 @@ void SessionWindow::frames(engine::GpuScene& scene, const Show& show, const std:
   const FrameContent content = with_views(show, view_, renderer(), vw_.target);
   while (!vw_.window.should_close()) {
     vw_.window.poll_events();
+    if (vw_.window.take_key_press(engine::Key::kF3)) frame_.toggle_status();  // the window's own key
     if (show.input) show.input(vw_.window);
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     frames_.draw(vw_.window, [&](engine::RgbaImage* shot) { return frame_.draw(vw_.target, scene, content, t, shot); });
@@ -89,8 +90,8 @@ TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices
     const haptics::DeviceSpec& spec = session.device_spec();
     plunger.emplace(*hand, spec.kind, spec.kind == haptics::DeviceSpec::Kind::kGamepad ? std::optional<int>(gamepad_id(spec)) : std::nullopt);
   }
-  if (const std::optional<Eigen::Vector3d> start = session.tool_start(); desk && start) {
-    desk->place_cursor(window.window(), session.scene().camera, glm::vec3(start->x(), start->y(), start->z()));
+  if (const std::optional<ToolStart> start = session.tool_start(); desk && start) {
+    desk->start_at(window.window(), session.scene().camera, *start);
     // The loop maps the device's first reading onto the tool's start (TaskSpaceStep): the device
     // has the placed cursor before it starts, even when ImGui still holds the pointer for the
     // screen before (the start screen's panel under it), which would skip the first frame's input
@@ -128,6 +129,7 @@ TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices
                    w.take_scroll();
                    return;
                  }
+                 if (session.samples() > 0) desk->set_needle_axis(session.needle_axis());
                  desk->frame(w, keys, ui::pointer_on_panel());
                  if (desk->take_fault_reset()) session.reset_fault();
                }),

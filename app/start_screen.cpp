@@ -36,6 +36,7 @@ std::optional<ui::StartKey> start_key_of(engine::Key key) {
     case engine::Key::kTab: return ui::StartKey::kTab;
     case engine::Key::kEnter: return ui::StartKey::kEnter;
     case engine::Key::kEscape: return ui::StartKey::kEscape;
+    case engine::Key::kP: return ui::StartKey::kPractice;
     default: return std::nullopt;
   }
 }
@@ -190,6 +191,7 @@ int run_start_screen(const StartScreenOptions& options) {
   window_options.probe = settings.views.probe;
   window_options.render_scale = settings.render_scale;
   window_options.messages = options.messages;
+  window_options.debug = options.debug;
   SessionWindow window(window_options);
   StartScreen screen(options, settings);
   if (!loaded.notice.empty())
@@ -223,6 +225,7 @@ int run_start_screen(const StartScreenOptions& options) {
       task.station = options.station;
       task.out_dir = local_folder(options.db) / "runs" / screen.task().name;
       task.messages = options.messages;
+      task.practice = screen.state().practice;
       try {
         io::make_folder(task.out_dir);
         check_present(task.rig.device);

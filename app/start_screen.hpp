@@ -20,6 +20,7 @@ struct StartScreenOptions {
   std::string station;             // this station's name, stored with its sessions
   std::filesystem::path settings;  // the settings file
   Messages messages;               // what the screen and its tasks tell the user (a store it cannot read, scores)
+  bool debug = false;              // the status panel from the start (F3 toggles it)
 };
 
 // The sessions the start screen reads the trainee's records from: those of the store `db` (with a

@@ -97,7 +97,7 @@ fs::path new_recording_path(const fs::path& db, const std::string& task_name) {
 
 TaskSession::TaskSession(TaskSessionOptions options)
     : options_(with_session_uid(std::move(options))),
-      task_(session_task(options_.task, options_.rig.device)),
+      task_(session_task(options_.task, options_.rig.device, options_.practice)),
       scene_(engine::load_scene(task_.scene)),
       rig_(rig_on_patient(task_, with_task_settings(options_, scene_).rig)),
       store_(open_store(options_, offline_)),
@@ -116,18 +116,17 @@ TaskSession::TaskSession(TaskSessionOptions options)
       haptics::SessionHeader{haptics::kSessionFormatVersion, rig_->rate_hz(), static_cast<int64_t>(std::time(nullptr)),
                              options_.rig.device.text(), rig_->context()},
       loop_->samples(), [this](const haptics::TickSample& s) { feed_.consume(s); });
-  new_session_ = {options_.trainee, task_.name, task_.title, task_.source, rig_->description(), recording_path_.string(),
+  // A practice run says so where the instructor reads what a session ran on.
+  new_session_ = {options_.trainee, task_.name, task_.title, task_.source,
+                  rig_->description() + (task_.practice ? " (practice)" : ""), recording_path_.string(),
                   options_.station, options_.rig.session_uid, training::utc_timestamp()};
-  session_ = store_->begin_session(new_session_);
-  if (store_->engine() == training::SqlEngine::kPostgres)
-    upload_ = std::make_unique<RecordingUpload>(options_.db.string(), session_, recording_path_);
   loop_->submit(haptics::LoopCommand::set_step(&rig_->step()));
   std::error_code ignored;
   fs::remove(options_.out_dir / "score.json", ignored);  // never an earlier run's score beside this run's pictures
   const Messages& say = options_.messages;
-  say.say(formatted("task %s on %s, trainee %s, station %s: session %lld in %s", task_.name.c_str(), rig_->description().c_str(),
-                    options_.trainee.c_str(), options_.station.c_str(), static_cast<long long>(session_),
-                    store_->name().c_str()));
+  say.say(formatted("task %s on %s, trainee %s, station %s", task_.name.c_str(), rig_->description().c_str(),
+                    options_.trainee.c_str(), options_.station.c_str()));
+  if (options_.store == StoreWhen::kAlways) begin_stored();
   say.say("recording " + recording_path_.string());
   if (!offline_.empty())
     say.say("note: the server could not be reached (" + offline_ +
@@ -139,7 +138,34 @@ TaskSession::TaskSession(TaskSessionOptions options)
                       *duration_s(), double(tick_budget_) / rig_->rate_hz(), training::kTaskEndMargin_s));
 }
 
-TaskSession::~TaskSession() { stop_threads(false); }
+TaskSession::~TaskSession() {
+  stop_threads(false);
+  if (session_ == 0 && !finished_) drop_unstored();  // closed before it was under way
+}
+
+void TaskSession::drop_unstored() {
+  std::error_code ignored;
+  fs::remove(recording_path_, ignored);
+  options_.messages.say("the session is not stored: " + unstored_reason() + "; its recording is removed");
+}
+
+void TaskSession::begin_stored() {
+  session_ = store_->begin_session(new_session_);
+  if (store_->engine() == training::SqlEngine::kPostgres)
+    upload_ = std::make_unique<RecordingUpload>(options_.db.string(), session_, recording_path_);
+  if (loop_->running() && upload_) upload_->start();
+  options_.messages.say(formatted("session %lld in %s", static_cast<long long>(session_), store_->name().c_str()));
+}
+
+bool TaskSession::store_once_under_way() {
+  if (session_ == 0 && options_.store == StoreWhen::kUnderWay && feed_.first_step_ended()) begin_stored();
+  return session_ != 0;
+}
+
+std::string TaskSession::unstored_reason() const {
+  if (options_.store == StoreWhen::kNever) return "a run with --frames is stored only with --store";
+  return "it ended before its first step did (--store keeps such a session)";
+}
 
 std::optional<double> TaskSession::duration_s() const {
   if (!rig_->ticks()) return std::nullopt;
@@ -158,6 +184,7 @@ void TaskSession::run_offline(const std::function<void(size_t)>& on_step_end) {
     recorder_->drain();
     if (upload_ && (k + 1) % upload_ticks == 0) upload_->send_new();
     for (size_t step : feed_.take_ended_steps()) on_step_end(step);
+    store_once_under_way();
     options_.messages.advance(double(k + 1) / rig_->rate_hz(), double(ticks) / rig_->rate_hz());
   }
 }
@@ -165,7 +192,7 @@ void TaskSession::run_offline(const std::function<void(size_t)>& on_step_end) {
 std::string TaskSession::start_realtime() {
   const std::string line = loop_->launch();
   recorder_->start();
-  if (upload_) upload_->start();
+  if (upload_) upload_->start();  // else begin_stored() starts it
   loop_->apply(haptics::LoopCommand::start(tick_budget_));
   return line;
 }
@@ -221,6 +248,11 @@ const training::SessionResult* TaskSession::finish() {
                                     "the score",
                                     static_cast<unsigned long long>(recorder_->dropped())));
   if (!rig_->can_complete()) {
+    if (!store_once_under_way()) {
+      drop_unstored();
+      return nullptr;
+    }
+    if (upload_) upload_->send_new();
     options_.messages.say(formatted("session %lld stays incomplete: no score is stored and no score.json written",
                                     static_cast<long long>(session_)));
     return nullptr;
@@ -228,16 +260,19 @@ const training::SessionResult* TaskSession::finish() {
   result_ = feed_.result();
   // The score is written even when the store fails: the session's record must not be lost.
   std::string store_error, kept;
+  const bool stored = store_once_under_way();
+  if (upload_) upload_->send_new();  // the whole recording, when the session was stored only now
   try {
-    kept = store_result();
+    if (stored) kept = store_result();
   } catch (const std::exception& e) {
     store_error = e.what();
   }
   const fs::path score_file = options_.out_dir / "score.json";
   nlohmann::json score = training::result_json(*result_);
-  score["recording"] = recording_path_.string();
-  score["stored"] = store_error.empty();
+  score["recording"] = stored ? nlohmann::json(recording_path_.string()) : nlohmann::json(nullptr);
+  score["stored"] = stored && store_error.empty();
   score["kept_for_sync"] = !kept.empty();  // stored in the station's own file, not yet on the server
+  if (!stored) score["not_stored"] = unstored_reason();
   try {
     io::write_file(score_file, score.dump(2) + "\n");
   } catch (const io::WriteError& e) {
@@ -249,6 +284,7 @@ const training::SessionResult* TaskSession::finish() {
   say.say(formatted("score %.0f / 100: %s", result_->score.total, result_->score.passed ? "passed" : "not passed"));
   for (const std::string& why : result_->score.reasons_failed) say.say("  " + why);
   say.say("wrote " + score_file.string());
+  if (!stored) drop_unstored();
   if (!kept.empty()) say.say("note: " + kept);
   if (!store_error.empty())
     throw std::runtime_error("the session could not be stored: " + store_error + "; its score is in " +
@@ -266,6 +302,9 @@ void TaskSession::draw_panel(std::optional<size_t> step, const char* controls, c
     ui::TraineeView view{&task_, &scorer.progress()};
     view.step = step;
     view.step_metrics = scorer.step_metrics(shown);
+    view.now_s = last.time_s;
+    view.cue = training::step_cue(task_, shown, last, ui::view_axes(scene_.camera));
+    view.cue_lines = training::cue_lines(task_, shown, last, *view.cue);
     ui::set_forces(view, last, task_.force_scale);
     if (task_.layers.size() > 1) view.tissue = last.tissue;
     const haptics::LoopStatsSummary stats = loop_->stats();

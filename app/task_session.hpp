@@ -26,6 +26,13 @@
 
 namespace needle::app {
 
+// When a session goes to the session store (docs/SESSIONS.md, "Sessions that count").
+enum class StoreWhen {
+  kUnderWay,  // once its first step has ended: a window opened and closed before leaves nothing
+  kAlways,    // from its start, whatever happens (run --store)
+  kNever,     // not at all (run --frames, a scripted look at the window, without --store)
+};
+
 struct TaskSessionOptions {
   std::filesystem::path task;  // unused for replay:FILE, which runs the task its recording keeps
   RigOptions rig;              // its out_dir and camera are set from here and the task's scene
@@ -36,13 +43,17 @@ struct TaskSessionOptions {
                                    // server missed is kept for sync (default: default_db())
   std::filesystem::path out_dir;
   Messages messages;  // what the session tells its user (the start, notes, the score)
+  StoreWhen store = StoreWhen::kUnderWay;
+  bool practice = false;  // untimed steps (training::practice_task); a replay's is its recording's
 };
 
 class TaskSession {
  public:
-  // Loads the task and its scene, builds the rig, opens the session (incomplete until finish())
-  // and the recording. Writes OUT/scenario.json, the scenario that runs, and removes an
-  // OUT/score.json of an earlier run. The session database is checked before anything runs.
+  // Loads the task and its scene, builds the rig, opens the recording and the session store (checked
+  // before anything runs), and, for StoreWhen::kAlways, the session in it (incomplete until
+  // finish()); otherwise the session is stored once it is under way (store_once_under_way()).
+  // Writes OUT/scenario.json, the scenario that runs, and removes an OUT/score.json of an earlier run.
+  // A session that was never stored leaves no recording behind.
   explicit TaskSession(TaskSessionOptions options);
   ~TaskSession();
   TaskSession(const TaskSession&) = delete;
@@ -53,7 +64,7 @@ class TaskSession {
   haptics::DeskDevice* desk() { return rig_->desk(); }
   haptics::SyringeHandDevice* syringe_hand() { return rig_->syringe_hand(); }
   const haptics::DeviceSpec& device_spec() const { return options_.rig.device; }
-  std::optional<Eigen::Vector3d> tool_start() const { return rig_->tool_start(); }
+  std::optional<ToolStart> tool_start() const { return rig_->tool_start(); }
   // Seconds the session lasts when its device has an end (script, recording), else nullopt.
   std::optional<double> duration_s() const;
   // The most ticks it runs: its device's end, bounded (but for a replay) by how long the task can
@@ -67,6 +78,9 @@ class TaskSession {
   std::string start_realtime();
   // The device has given all it has, or every step has ended.
   bool over() const;
+  // Stores the session (incomplete) once its first step has ended, under StoreWhen::kUnderWay;
+  // called each frame and after each headless tick. Returns whether the session is in the store.
+  bool store_once_under_way();
 
   // Stops the threads, scores, stores the session as complete and writes OUT/score.json (also
   // when the store fails: then it throws after, saying so). Once. Returns nullptr, storing and
@@ -77,18 +91,26 @@ class TaskSession {
   void reset_fault();
 
   engine::NeedleLoad needle() const { return feed_.needle(); }
+  // The needle's axis in the newest state (world frame); before the first, the state's default.
+  std::array<double, 3> needle_axis() const { return feed_.needle_axis(); }
   // The trainee panel of now (with the result once finished), describing `step` when given, with
   // how the device moves the needle (`controls`, one line) and buttons for `choices`.
   void draw_panel(std::optional<size_t> step = std::nullopt, const char* controls = nullptr,
                   const std::vector<ui::Choice>& choices = {});
   const std::filesystem::path& recording_path() const { return recording_path_; }
   const Messages& messages() const { return options_.messages; }
-  int64_t session_id() const { return session_; }
+  int64_t session_id() const { return session_; }  // 0 until the session is in the store
   // Samples scored so far (every tick the recorder has handed on).
   uint64_t samples() const { return feed_.samples(); }
 
  private:
   void stop_threads(bool ran_to_end);
+  // Begins the session in the store (and, with a server, the recording's upload).
+  void begin_stored();
+  // Why a session goes unstored; and, for one that was not, its recording removed and the user told:
+  // a session that never happened leaves nothing behind.
+  std::string unstored_reason() const;
+  void drop_unstored();
   // Stores the finished session on the server, or, when it cannot be reached (or could not when the
   // run began), in this station's own file for needle-sim sync. Returns "" when stored on the
   // server, else what happened.

@@ -43,6 +43,7 @@ FrameContent task_content(TaskSession& session, std::function<void()> panel, std
   return {[&session, started](double) -> std::optional<engine::NeedleLoad> {
             if (!*started) session.messages().say(session.start_realtime());
             *started = true;
+            session.store_once_under_way();
             if (session.over()) session.finish();
             return session.needle();
           },
@@ -60,7 +61,7 @@ FrameContent scripted_content(const engine::GpuScene& scene) {
 
 TraineeFrame::TraineeFrame(const engine::GpuDevice& device, const engine::RenderTarget& target,
                            const TraineeFrameSettings& settings, engine::Window* window)
-    : device_(device), renderer_(device, target, {settings.msaa}), target_(target) {
+    : device_(device), renderer_(device, target, {settings.msaa}), target_(target), status_(settings.status) {
   if (settings.hud) ui_.emplace(renderer_, window);
   if (device.is_cpu_device() && renderer_.render_scale_unsupported(target).empty()) auto_scale_.emplace();
   set_fixed_render_scale(settings.render_scale);
@@ -87,8 +88,9 @@ bool TraineeFrame::draw(engine::RenderTarget& target, engine::GpuScene& scene, c
   if (ui_) {
     ui_->begin_frame(target.extent(), dt);
     const auto& assets = scene.scene().assets;
-    ui::draw_status_panel({device_.device_description(), assets.empty() ? "" : assets[0].name,
-                           renderer_.msaa_samples(), clock_.mean_frame_ms(), renderer_.render_scale()});
+    if (status_)
+      ui::draw_status_panel({device_.device_description(), assets.empty() ? "" : assets[0].name, renderer_.msaa_samples(),
+                             clock_.mean_frame_ms(), renderer_.render_scale()});
     if (content.panel) content.panel();
     if (content.views_panel) content.views_panel(needle, params.camera);
     params.overlay = ui_->end_frame();

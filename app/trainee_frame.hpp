@@ -1,6 +1,6 @@
 // One frame of what the trainee sees, drawn alike in the window (`run`), offscreen and by
-// `needle-sim bench frame`: the scene with the needle and its tissue deformation, the status
-// panel and, for a task, the trainee panel with the guidance over the 3D view.
+// `needle-sim bench frame`: the scene with the needle and its tissue deformation and, for a task,
+// the trainee panel with the guidance over the 3D view; the developer's status panel on request.
 #pragma once
 
 #include <functional>
@@ -50,6 +50,9 @@ struct TraineeFrameSettings {
   // The 3D view's render scale (engine::RendererSettings::render_scale); nullopt: automatic, on a
   // CPU device that can upscale, lowered while the frame misses 60 fps (AutoRenderScale), else 1.
   std::optional<float> render_scale;
+  // The status panel (device, frame time, render scale): a developer's read-out, off for a trainee;
+  // `--debug` shows it from the start, F3 toggles it in a window.
+  bool status = false;
 };
 
 // The CPU time of the frame's parts before the renderer records it, in milliseconds.
@@ -77,6 +80,8 @@ class TraineeFrame {
   // std::invalid_argument as SceneRenderer::set_render_scale.
   void set_fixed_render_scale(std::optional<float> scale);
   std::optional<float> fixed_render_scale() const { return fixed_scale_; }
+  // Shows or hides the status panel (F3 in a window).
+  void toggle_status() { status_ = !status_; }
   // What the last frame's parts cost before the renderer (the renderer's own: renderer().frame_cost()).
   const ContentCost& content_cost() const { return cost_; }
 
@@ -88,6 +93,7 @@ class TraineeFrame {
   ContentCost cost_;
   const engine::RenderTarget& target_;
   std::optional<float> fixed_scale_;
+  bool status_ = false;  // the status panel shown
   std::optional<AutoRenderScale> auto_scale_;  // on a CPU device that can upscale
 };
 

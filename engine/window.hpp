@@ -17,7 +17,7 @@ namespace needle::engine {
 // The keys the application acts on. Keys it does not name arrive as kOther.
 enum class Key {
   kOther,
-  kUp, kDown, kLeft, kRight, kPageUp, kPageDown, kTab, kEnter, kEscape,
+  kUp, kDown, kLeft, kRight, kPageUp, kPageDown, kTab, kEnter, kEscape, kF3,
   kA, kB, kC, kD, kE, kF, kG, kH, kI, kJ, kK, kL, kM, kN, kO, kP, kQ, kR, kS, kT, kU, kV, kW, kX, kY, kZ,
 };
 
@@ -80,6 +80,9 @@ class Window {
   // The key presses since the last call, in order (none is lost between two frames, however
   // short). At most kMaxKeyPresses wait; later ones are dropped until they are taken.
   std::vector<KeyPress> take_key_presses();
+  // Takes the presses of `key` alone out of those waiting (the window's own keys, before the
+  // content's); true when there was one.
+  bool take_key_press(Key key);
   static constexpr size_t kMaxKeyPresses = 256;
 
   // The gamepads present now; display_available() first.

@@ -3,10 +3,13 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <vector>
 
+#include "training/scoring/metric_fields.hpp"
 #include "training/sessions/cohort_plot.hpp"
 #include "ui/review_plot.hpp"
 
@@ -134,9 +137,19 @@ void percentiles_table(const training::CohortView& view, float height) {
     if (p.n == 0) continue;  // a metric that applies to none of the task's sessions
     ImGui::TableNextRow();
     text_cell(p.task);
-    text_cell(p.metric);
+    // The metric in words with its unit and its values as the session tables show them; a metric
+    // shown through a function (the jerk as smoothness) keeps its percentiles in order.
+    training::MetricLabel shown = training::metric_label(p.metric);
+    if (p.metric == "score") shown = {"score", "points", 1.0, false, 1};
+    if (p.metric == "time_to_target_s") shown = {"time to target", "s", 1.0, false, 1};
+    text_cell(shown.label ? std::string(shown.label) + " (" + shown.unit + ")" : p.metric);
     number_cell(double(p.n), "%.0f");
-    for (double v : {p.p10, p.p25, p.p50, p.p75, p.p90}) number_cell(v);
+    std::array<double, 5> values = {p.p10, p.p25, p.p50, p.p75, p.p90};
+    for (double& v : values) v = shown.shown(v);
+    std::sort(values.begin(), values.end());
+    char format[16];
+    std::snprintf(format, sizeof format, "%%.%df", shown.decimals);
+    for (double v : values) number_cell(v, format);
   }
   ImGui::EndTable();
 }
@@ -183,7 +196,7 @@ bool draw_cohort_panel(const training::CohortView& view, CohortPanelState& state
       trainees_table(view, fitted(view.curves.size(), 0.34f));
       ImGui::TextUnformatted("Steps most often failed");
       failed_steps_table(view, fitted(view.most_failed.size(), 0.22f));
-      ImGui::TextUnformatted("Percentiles over the sessions (metrics in SI units, as docs/SCORING.md)");
+      ImGui::TextUnformatted("Percentiles over the sessions");
       percentiles_table(view, ImGui::GetContentRegionAvail().y);
       ImGui::EndChild();
       ImGui::SameLine();

@@ -23,8 +23,9 @@ struct DepthPlotPart {
 };
 using PartOf = DepthPlotPart (*)(const training::ForceDepth&);
 
-// The lines and marks of one session in its colours.
-void draw_session(ImDrawList* draw, const PlotFrame& f, const DepthPlotPart& s, const ImU32 (&colours)[2], ImU32 mark) {
+// The lines and marks of one session in its colours; its marks' labels added to `labels`.
+void draw_session(ImDrawList* draw, const PlotFrame& f, const DepthPlotPart& s, const ImU32 (&colours)[2], ImU32 mark,
+                  std::vector<PointLabel>& labels) {
   std::vector<ImVec2> points;
   for (size_t k = 0; k < s.plot->lines.size(); ++k) {
     const training::Series& line = s.plot->lines[k];
@@ -35,7 +36,7 @@ void draw_session(ImDrawList* draw, const PlotFrame& f, const DepthPlotPart& s, 
   for (const training::PlotMark& p : *s.marks) {
     const ImVec2 at(f.sx(p.x), f.sy(p.y));
     draw->AddCircle(at, 5.0f, mark, 12, 2.0f);
-    draw->AddText(ImVec2(at.x + 6.0f, at.y - 14.0f), mark, p.label.c_str());
+    labels.push_back({p.label, at, mark});
   }
 }
 
@@ -66,15 +67,21 @@ void draw_depth_plot(const training::ForceDepth& a, const training::ForceDepth* 
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw_plot_frame(draw, f, a.plot.x_label);
   draw->PushClipRect(f.p0, f.p1, true);
-  // The layer boundaries are the first session's: both ran the same task.
-  // Their names on three rows in turn: layers a few millimetres apart would write over each other.
-  for (size_t k = 0; k < a.boundaries.size(); ++k) {
-    const training::PlotMark& m = a.boundaries[k];
+  // The layer boundaries are the first session's: both ran the same task. Their names where they
+  // overlap no other (layers a few millimetres apart would write over each other) and stay inside.
+  std::vector<float> xs;
+  std::vector<std::string> names;
+  for (const training::PlotMark& m : a.boundaries) {
     dashed_vertical(draw, f.sx(m.x), f.p0.y, f.p1.y, kPlotStep);
-    draw->AddText(ImVec2(f.sx(m.x) + 2.0f, f.p0.y + float(k % 3) * ImGui::GetTextLineHeight()), kPlotText, m.label.c_str());
+    xs.push_back(f.sx(m.x));
+    names.push_back(m.label);
   }
-  draw_session(draw, f, pa, kPlotLinesA, kPunctureA);
-  if (b) draw_session(draw, f, part(*b), kPlotLinesB, kPunctureB);
+  const std::vector<PlotLabel> layers = line_labels(f, xs, names);
+  for (const PlotLabel& l : layers) draw->AddText(l.at, kPlotText, l.text.c_str());
+  std::vector<PointLabel> labels;
+  draw_session(draw, f, pa, kPlotLinesA, kPunctureA, labels);
+  if (b) draw_session(draw, f, part(*b), kPlotLinesB, kPunctureB, labels);
+  for (const auto& [l, colour] : point_labels(f, labels, layers)) draw->AddText(l.at, colour, l.text.c_str());
   draw->PopClipRect();
   const std::string l(line), m(marks);
   std::vector<LegendEntry> legend{{b ? l + " (A)" : l, {kPlotLinesA[0]}}, {b ? m + " (A)" : m, {kPunctureA}}};
@@ -86,7 +93,7 @@ void draw_depth_plot(const training::ForceDepth& a, const training::ForceDepth* 
 
 void draw_force_depth_plot(const training::ForceDepth& a, const training::ForceDepth* b, float height) {
   draw_depth_plot(a, b, height, [](const training::ForceDepth& s) { return DepthPlotPart{&s.plot, &s.punctures}; },
-                  "axial force", "punctures");
+                  "force along the needle", "punctures");
 }
 
 void draw_plunger_pressure_plot(const training::ForceDepth& a, const training::ForceDepth* b, float height) {

@@ -7,6 +7,7 @@
 
 #include "engine/screen_projection.hpp"
 #include "training/tasks/condition.hpp"
+#include "ui/guidance_colours.hpp"
 
 namespace needle::ui {
 namespace {
@@ -15,13 +16,8 @@ using training::operator*;  // the task geometry's plain-array arithmetic
 using training::operator+;
 using training::operator-;
 
-const ImU32 kEntry = IM_COL32(80, 200, 255, 255);
-const ImU32 kAxis = IM_COL32(255, 210, 40, 255);
-const ImU32 kTarget = IM_COL32(255, 90, 70, 255);
-const ImU32 kBand = IM_COL32(30, 190, 70, 255);
 const ImU32 kNow = IM_COL32(255, 255, 255, 255);
 const ImU32 kNormal = IM_COL32(230, 110, 255, 255);
-const ImU32 kLayerStart = IM_COL32(215, 235, 255, 255);
 const ImU32 kLandmark = IM_COL32(255, 200, 60, 255);
 
 // How far the planned axis is drawn behind its origin and ahead along its direction.
@@ -99,13 +95,13 @@ class Painter {
 
 void draw_axis(Painter& paint, const training::Task& task, const training::Marker& marker, const training::Vec3& tip) {
   if (marker.kind == training::MarkerKind::kAxis) {
-    paint.line(marker.position - kAxisBehind_m * marker.direction, marker.position + kAxisAhead_m * marker.direction, kAxis, 2.0f);
-    paint.dot(marker.position, kAxis, 3.0f);
+    paint.line(marker.position - kAxisBehind_m * marker.direction, marker.position + kAxisAhead_m * marker.direction, kAxisColour, 2.0f);
+    paint.dot(marker.position, kAxisColour, 3.0f);
     return;
   }
   // A surface normal: the line through the three normal markers, down to the surface.
   const std::array<training::Vec3, 3> out = normal_marker_positions(task, marker, tip);
-  paint.line(out[0] - (out[1] - out[0]), out[2], kAxis, 2.0f);
+  paint.line(out[0] - (out[1] - out[0]), out[2], kAxisColour, 2.0f);
 }
 
 // The gauge along its axis: the condition's band, where each layer begins (its name unless the task
@@ -113,7 +109,7 @@ void draw_axis(Painter& paint, const training::Task& task, const training::Marke
 void draw_depth_gauge(Painter& paint, const training::Task& task, int marker, const training::Condition& band,
                       const training::Vec3& tip) {
   const training::Marker& axis = task.markers[size_t(marker)];
-  paint.line(axis.position + band.min * axis.direction, axis.position + band.max * axis.direction, kBand, 7.0f);
+  paint.line(axis.position + band.min * axis.direction, axis.position + band.max * axis.direction, kBandColour, 7.0f);
   const auto at = [&](double depth) { return axis.position + depth * axis.direction; };
   char label[96];
   static const std::vector<training::LayerStart> kNone;  // a task built in code may leave layer_starts empty
@@ -124,7 +120,7 @@ void draw_depth_gauge(Painter& paint, const training::Task& task, int marker, co
       std::snprintf(label, sizeof label, "%.0f mm", mm);
     else
       std::snprintf(label, sizeof label, "%s %.0f mm", task.layers[size_t(s.layer)].name.c_str(), mm);
-    paint.tick(at(s.depth_m), at(s.depth_m + 0.01), kLayerStart, label, 6.0f, true);
+    paint.tick(at(s.depth_m), at(s.depth_m + 0.01), kLayerStartColour, label, 6.0f, true);
   }
   const double depth = depth_along(axis, tip);
   std::snprintf(label, sizeof label, "depth %.0f mm (%.0f-%.0f)", depth * 1e3, band.min * 1e3, band.max * 1e3);
@@ -145,6 +141,13 @@ void draw_landmarks(Painter& paint, const training::PatientLandmarks& l) {
 
 }  // namespace
 
+training::ViewAxes view_axes(const engine::Camera& camera) {
+  const glm::dvec3 forward = glm::normalize(glm::dvec3(camera.target - camera.position));
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(camera.up)));
+  const glm::dvec3 up = glm::cross(right, forward);
+  return {{right.x, right.y, right.z}, {up.x, up.y, up.z}, {forward.x, forward.y, forward.z}};
+}
+
 void draw_guidance(const GuidanceView& view) {
   const training::Task& task = *view.task;
   const training::Step& step = task.steps.at(view.step);
@@ -153,14 +156,14 @@ void draw_guidance(const GuidanceView& view) {
   if (g.axis >= 0) draw_axis(paint, task, task.markers[g.axis], view.tip);
   const bool gauge = g.depth_gauge >= 0 && step.condition.type == training::ConditionType::kDepthInBand;
   if (gauge) draw_depth_gauge(paint, task, g.depth_gauge, step.condition, view.tip);
-  if (g.entry >= 0) paint.ring(task.markers[g.entry].position, kEntry, 9.0f, "entry", true);
+  if (g.entry >= 0) paint.ring(task.markers[g.entry].position, kEntryColour, 9.0f, "entry", true);
   if (g.target >= 0) {
     // With a gauge, the target's label gives its depth along the gauge's axis.
     const training::Vec3& target = task.markers[g.target].position;
     char label[48] = "target";
     if (gauge) std::snprintf(label, sizeof label, "target %.0f mm", depth_along(task.markers[g.depth_gauge], target) * 1e3);
-    paint.ring(target, kTarget, 9.0f, label);
-    paint.cross(target, kTarget, 4.0f);
+    paint.ring(target, kTargetColour, 9.0f, label);
+    paint.cross(target, kTargetColour, 4.0f);
   }
   if (g.landmarks && task.landmarks) draw_landmarks(paint, *task.landmarks);
   if (g.normal_markers >= 0) {

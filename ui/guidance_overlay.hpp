@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "engine/scene.hpp"
+#include "training/tasks/step_cue.hpp"
 #include "training/tasks/task.hpp"
 
 namespace needle::ui {
@@ -20,5 +21,8 @@ struct GuidanceView {
 };
 
 void draw_guidance(const GuidanceView& view);
+
+// The 3D view's axes in the world frame (right and up on the screen, forward into it), for the cues.
+training::ViewAxes view_axes(const engine::Camera& camera);
 
 }  // namespace needle::ui

@@ -18,6 +18,14 @@ std::string number(double v) {
 
 }  // namespace
 
+namespace {
+
+PlotLabel label_at(const std::string& text, float x, float y) {
+  return {text, ImVec2(x, y), ImGui::CalcTextSize(text.c_str())};
+}
+
+}  // namespace
+
 PlotFrame plot_frame(double x_lo, double x_hi, double y_lo, double y_hi, float height) {
   PlotFrame f;
   f.x_lo = x_lo;
@@ -26,7 +34,9 @@ PlotFrame plot_frame(double x_lo, double x_hi, double y_lo, double y_hi, float h
   const double pad = 0.05 * (y_hi - y_lo);
   f.y_lo = y_lo - (y_lo < 0.0 ? pad : 0.0);
   f.y_hi = y_hi + pad;
-  const float left = 52.0f, bottom = 18.0f, right = 8.0f;
+  // Room for the y tick labels and the x tick row, in the font's size (13 px text: 52 and 18 px).
+  const float em = ImGui::GetFontSize();
+  const float left = 4.0f * em, bottom = 1.4f * em, right = 8.0f;
   f.origin = ImGui::GetCursorScreenPos();
   f.width = ImGui::GetContentRegionAvail().x;
   f.height = height;
@@ -35,20 +45,86 @@ PlotFrame plot_frame(double x_lo, double x_hi, double y_lo, double y_hi, float h
   return f;
 }
 
+std::vector<PlotLabel> plot_frame_labels(const PlotFrame& f, const std::string& x_label, bool whole_x) {
+  std::vector<PlotLabel> out;
+  const float half_line = 0.5f * ImGui::GetFontSize();
+  for (double v : training::axis_ticks(f.y_lo, f.y_hi, 4)) {
+    const std::string text = number(v);
+    const float w = ImGui::CalcTextSize(text.c_str()).x;
+    // Centred on its grid line, kept inside the frame at the top and above the x tick row.
+    const float y = std::clamp(f.sy(v) - half_line, f.origin.y, f.p1.y - 2.0f * half_line);
+    PlotLabel label = label_at(text, std::max(f.origin.x, f.p0.x - 6.0f - w), y);
+    if (out.empty() || !label.overlaps(out.back())) out.push_back(label);
+  }
+  const size_t y_labels = out.size();
+  const PlotLabel axis = label_at(x_label, 0.0f, f.p1.y + 3.0f);
+  const PlotLabel named{x_label, ImVec2(f.origin.x + f.width - axis.size.x, f.p1.y + 3.0f), axis.size};
+  for (double t : training::axis_ticks(f.x_lo, f.x_hi, 8)) {
+    if (whole_x && t != std::round(t)) continue;
+    const std::string text = number(t);
+    const float w = ImGui::CalcTextSize(text.c_str()).x;
+    const float x = std::clamp(f.sx(t) - 0.5f * w, f.origin.x, f.origin.x + f.width - w);
+    const PlotLabel label = label_at(text, x, f.p1.y + 3.0f);
+    if (!x_label.empty() && label.overlaps(named)) continue;
+    if (out.size() > y_labels && label.overlaps(out.back())) continue;
+    bool clear = true;
+    for (size_t k = 0; k < y_labels; ++k) clear = clear && !label.overlaps(out[k]);
+    if (clear) out.push_back(label);
+  }
+  if (!x_label.empty()) out.push_back(named);
+  return out;
+}
+
 void draw_plot_frame(ImDrawList* draw, const PlotFrame& f, const std::string& x_label, bool whole_x) {
   draw->AddRectFilled(f.p0, f.p1, IM_COL32(22, 22, 28, 255));
-  for (double v : training::axis_ticks(f.y_lo, f.y_hi, 4)) {
-    draw->AddLine(ImVec2(f.p0.x, f.sy(v)), ImVec2(f.p1.x, f.sy(v)), kPlotGrid);
-    const std::string label = number(v);
-    draw->AddText(ImVec2(f.p0.x - 6.0f - ImGui::CalcTextSize(label.c_str()).x, f.sy(v) - 7.0f), kPlotText, label.c_str());
-  }
+  for (double v : training::axis_ticks(f.y_lo, f.y_hi, 4)) draw->AddLine(ImVec2(f.p0.x, f.sy(v)), ImVec2(f.p1.x, f.sy(v)), kPlotGrid);
   for (double t : training::axis_ticks(f.x_lo, f.x_hi, 8)) {
     if (whole_x && t != std::round(t)) continue;
     draw->AddLine(ImVec2(f.sx(t), f.p1.y), ImVec2(f.sx(t), f.p1.y + 4.0f), kPlotAxis);
-    const std::string label = number(t);
-    draw->AddText(ImVec2(f.sx(t) - 0.5f * ImGui::CalcTextSize(label.c_str()).x, f.p1.y + 3.0f), kPlotText, label.c_str());
   }
-  draw->AddText(ImVec2(f.origin.x + 4.0f, f.p1.y + 3.0f), kPlotText, x_label.c_str());
+  for (const PlotLabel& l : plot_frame_labels(f, x_label, whole_x)) draw->AddText(l.at, kPlotText, l.text.c_str());
+}
+
+std::vector<std::pair<PlotLabel, ImU32>> point_labels(const PlotFrame& f, const std::vector<PointLabel>& points,
+                                                      const std::vector<PlotLabel>& taken) {
+  const float line = ImGui::GetTextLineHeight();
+  std::vector<PlotLabel> placed = taken;
+  std::vector<std::pair<PlotLabel, ImU32>> out;
+  for (const PointLabel& p : points) {
+    const float w = ImGui::CalcTextSize(p.text.c_str()).x;
+    const float x = p.point.x + 6.0f + w <= f.p1.x ? p.point.x + 6.0f : std::max(f.p0.x, p.point.x - 6.0f - w);
+    for (float y = std::max(f.p0.y, p.point.y - line - 1.0f); y + line <= f.p1.y; y += line) {
+      const PlotLabel label = label_at(p.text, x, y);
+      bool clear = true;
+      for (const PlotLabel& other : placed) clear = clear && !label.overlaps(other);
+      if (!clear) continue;
+      placed.push_back(label);
+      out.push_back({label, p.colour});
+      break;
+    }
+  }
+  return out;
+}
+
+std::vector<PlotLabel> line_labels(const PlotFrame& f, const std::vector<float>& at_x, const std::vector<std::string>& texts) {
+  const float line = ImGui::GetTextLineHeight();
+  const int rows = std::max(1, int((f.p1.y - f.p0.y) / line));
+  std::vector<std::vector<PlotLabel>> placed(static_cast<size_t>(rows));
+  std::vector<PlotLabel> out;
+  for (size_t k = 0; k < at_x.size() && k < texts.size(); ++k) {
+    const float w = ImGui::CalcTextSize(texts[k].c_str()).x;
+    const float x = at_x[k] + 2.0f + w <= f.p1.x ? at_x[k] + 2.0f : std::max(f.p0.x, at_x[k] - 2.0f - w);
+    for (int r = 0; r < rows; ++r) {
+      const PlotLabel label = label_at(texts[k], x, f.p0.y + float(r) * line);
+      bool clear = true;
+      for (const PlotLabel& other : placed[size_t(r)]) clear = clear && !label.overlaps(other);
+      if (!clear) continue;
+      placed[size_t(r)].push_back(label);
+      out.push_back(label);
+      break;
+    }
+  }
+  return out;
 }
 
 void dashed_vertical(ImDrawList* draw, float x, float top, float bottom, ImU32 colour) {

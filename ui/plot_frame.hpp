@@ -33,9 +33,41 @@ struct PlotFrame {
 // available; y gets 5 % of its span above (and below when it goes negative), an empty range 1.
 PlotFrame plot_frame(double x_lo, double x_hi, double y_lo, double y_hi, float height);
 
-// The background, the grid with the y ticks and labels, the x ticks and labels (whole numbers only
-// when `whole_x`) and `x_label`.
+// A piece of text a plot draws, where: its top left corner and its size (ImGui's text size).
+struct PlotLabel {
+  std::string text;
+  ImVec2 at, size;
+  bool overlaps(const PlotLabel& o) const {
+    return at.x < o.at.x + o.size.x && o.at.x < at.x + size.x && at.y < o.at.y + o.size.y && o.at.y < at.y + size.y;
+  }
+};
+
+// The frame's labels: each y tick's left of the plot, each x tick's under it (whole numbers only
+// when `whole_x`), and `x_label` at the right end of the tick row (a tick label it would cover is
+// left out). None overlaps another, none leaves the frame (the rectangle from its origin, its width
+// and height). Needs ImGui's current font.
+std::vector<PlotLabel> plot_frame_labels(const PlotFrame& frame, const std::string& x_label, bool whole_x = false);
+
+// The background, the grid and the ticks, and plot_frame_labels.
 void draw_plot_frame(ImDrawList* draw, const PlotFrame& frame, const std::string& x_label, bool whole_x = false);
+
+// Labels of vertical lines at pixel x `at_x` (the force–depth plot's layers), in the plot's rows
+// from its top: each beside its line, on the right, or on the left where it would pass the plot's
+// right edge, in the first row where it overlaps no label before it. A label no row has room for is
+// left out (its line stays); none overlaps another or leaves the plot.
+std::vector<PlotLabel> line_labels(const PlotFrame& frame, const std::vector<float>& at_x, const std::vector<std::string>& texts);
+
+// A label of a point of the plot (a puncture): its text, where the point is, the label's colour.
+struct PointLabel {
+  std::string text;
+  ImVec2 point;
+  ImU32 colour;
+};
+// Where each point's label goes: up and right of its point (left of it at the plot's right edge),
+// moved down a line at a time until it overlaps none of `taken` or of the labels before it, inside
+// the plot; with the label's colour. A label with no room is left out (its point stays marked).
+std::vector<std::pair<PlotLabel, ImU32>> point_labels(const PlotFrame& frame, const std::vector<PointLabel>& points,
+                                                      const std::vector<PlotLabel>& taken);
 
 // A dashed vertical line from top to bottom at x (pixels).
 void dashed_vertical(ImDrawList* draw, float x, float top, float bottom, ImU32 colour);

@@ -6,6 +6,8 @@
 #include <string>
 
 #include "ui/review_plot.hpp"
+#include "ui/score_breakdown.hpp"
+#include "ui/wrapped_text.hpp"
 #include "training/scoring/metric_fields.hpp"
 
 namespace needle::ui {
@@ -34,16 +36,17 @@ std::vector<MetricDisplay> shown_metrics(bool layered) {
 double shown_value(const training::Metrics& m, const MetricDisplay& d) {
   double out = training::kNotApplicable;
   training::for_each_metric(m, [&](const char* name, const auto& value) {
-    if (d.name == name) out = double(value) * d.shown.scale;
+    if (d.name == name) out = d.shown.shown(double(value));
   });
   return out;
 }
 
-void value_cell(double v) {
+// A value rounded to what is worth reading (MetricLabel::decimals); "-" when it does not apply.
+void value_cell(double v, int decimals = 1) {
   if (std::isnan(v)) {
     ImGui::TextColored(kDim, "-");
   } else {
-    ImGui::Text("%.4g", v);
+    ImGui::Text("%.*f", decimals, std::abs(v) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : v);  // no "-0.0"
   }
 }
 
@@ -51,10 +54,10 @@ void header_lines(const training::SessionReview& r) {
   const training::SessionInfo& i = r.stored.info;
   ImGui::TextWrapped("Session %lld: %s, %s", static_cast<long long>(i.id), i.trainee.c_str(),
                      i.task_title.empty() ? i.task.c_str() : i.task_title.c_str());
-  ImGui::TextColored(kDim, "started %s   device %s   %.1f s", i.started_at.c_str(), i.device.empty() ? "-" : i.device.c_str(),
+  wrapped_text(kDim, "started %s   device %s   %.1f s", i.started_at.c_str(), i.device.empty() ? "-" : i.device.c_str(),
                      i.duration_s);
   if (!i.complete) {
-    ImGui::TextColored(kWarn, "INCOMPLETE: the run ended before the task did; no score, no metrics stored");
+    wrapped_text(kWarn, "INCOMPLETE: the run ended before the task did; no score, no metrics stored");
   } else {
     ImGui::TextColored(i.passed ? kGood : kBad, "Score %.1f / 100   %s", i.score, i.passed ? "PASSED" : "NOT PASSED");
     const training::VerificationStatus v = training::verification_status(r.stored);
@@ -67,22 +70,7 @@ void header_lines(const training::SessionReview& r) {
   // The device holding the force back is said, never left silent (docs/SCORING.md, "Forces").
   const double limited = r.stored.overall.force_limited_s;
   if (limited > 0.0)
-    ImGui::TextColored(kWarn, "the device held the force back at its limit for %.2f s: the hand felt less than the scene's",
-                       limited);
-}
-
-void breakdown_table(const std::vector<training::ScoreComponent>& components) {
-  if (components.empty()) return;
-  if (!ImGui::BeginTable("breakdown", 4, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) return;
-  for (size_t k = 0; k < components.size(); ++k) {
-    const training::ScoreComponent& c = components[k];
-    if (k % 2 == 0) ImGui::TableNextRow();
-    ImGui::TableNextColumn();
-    ImGui::TextUnformatted(c.name.c_str());
-    ImGui::TableNextColumn();
-    ImGui::Text("%4.1f / %4.1f", c.points(), c.weight);
-  }
-  ImGui::EndTable();
+    wrapped_text(kWarn, "the device held the force back at its limit for %.1f s: the hand felt less than the scene's", limited);
 }
 
 void steps_table(const training::StoredSession& s, bool layered) {
@@ -105,7 +93,7 @@ void steps_table(const training::StoredSession& s, bool layered) {
   for (const training::StepResult& step : s.steps) {
     ImGui::TableNextColumn();
     const bool ok = step.record.outcome == training::StepOutcome::kCompleted;
-    ImGui::TextColored(ok ? kGood : kBad, "%s", step_outcome_name(step.record.outcome));
+    ImGui::TextColored(ok ? kGood : kBad, "%s", training::step_outcome_words(step.record.outcome).c_str());
   }
   ImGui::TableNextColumn();
   ImGui::TextUnformatted(s.info.complete ? "complete" : "incomplete");
@@ -123,10 +111,10 @@ void steps_table(const training::StoredSession& s, bool layered) {
     ImGui::Text("%s (%s)", d.shown.label, d.shown.unit);
     for (const training::StepResult& step : s.steps) {
       ImGui::TableNextColumn();
-      value_cell(shown_value(step.metrics, d));
+      value_cell(shown_value(step.metrics, d), d.shown.decimals);
     }
     ImGui::TableNextColumn();
-    value_cell(shown_value(s.overall, d));
+    value_cell(shown_value(s.overall, d), d.shown.decimals);
   }
   ImGui::EndTable();
 }
@@ -140,7 +128,7 @@ void recording_line(const training::SessionReview& r) {
   }
   const haptics::RecordingEnd& end = r.recording_end;
   const char* note = !end.checksummed ? " (older format, no checksums)" : !end.closed ? " (cut short: read up to its last whole block)" : "";
-  ImGui::TextColored(kDim, "recording %s: %zu samples, %.2f to %.2f s%s", r.recording_file.filename().c_str(),
+  wrapped_text(kDim, "recording %s: %zu samples, %.2f to %.2f s%s", r.recording_file.filename().c_str(),
                      r.states.size(), r.start_s(), r.end_s(), note);
   ImGui::TextColored(r.loop.degraded() ? kWarn : kDim, "%s", training::describe(r.loop).c_str());
 }
@@ -271,7 +259,7 @@ bool draw_session_detail(const training::SessionReview& r, const DetailOptions& 
       }
     }
     ImGui::Separator();
-    breakdown_table(r.stored.components);
+    draw_score_breakdown(r.stored.components, 2);
     ImGui::Separator();
     steps_table(r.stored, r.layered());
     ImGui::Separator();
@@ -291,10 +279,14 @@ bool draw_session_detail(const training::SessionReview& r, const DetailOptions& 
   return export_pressed;
 }
 
+float replay_bar_height() {
+  return ImGui::GetFrameHeightWithSpacing() + ImGui::GetFontSize() + 4.0f * ImGui::GetStyle().WindowPadding.y;
+}
+
 bool draw_replay_bar(const training::SessionReview& r, double& t, bool playing, const PanelRect& at) {
   if (begin_panel("Replay", at)) {
     if (!r.has_recording()) {
-      ImGui::TextColored(kWarn, "no replay: %s", r.recording_problem.c_str());
+      wrapped_text(kWarn, "no replay: %s", r.recording_problem.c_str());
       playing = false;
     } else {
       if (ImGui::Button(playing ? "Pause" : "Play")) {
@@ -325,21 +317,21 @@ void draw_comparison(const training::SessionReview& a, const training::SessionRe
       ImGui::TableSetupColumn("B");
       ImGui::TableSetupColumn("B - A");
       ImGui::TableHeadersRow();
-      auto row = [](const char* label, double va, double vb) {
+      auto row = [](const char* label, double va, double vb, int decimals) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(label);
         ImGui::TableNextColumn();
-        value_cell(va);
+        value_cell(va, decimals);
         ImGui::TableNextColumn();
-        value_cell(vb);
+        value_cell(vb, decimals);
         ImGui::TableNextColumn();
-        value_cell(vb - va);
+        value_cell(vb - va, decimals);
       };
-      row("score", ia.complete ? ia.score : training::kNotApplicable, ib.complete ? ib.score : training::kNotApplicable);
+      row("score", ia.complete ? ia.score : training::kNotApplicable, ib.complete ? ib.score : training::kNotApplicable, 1);
       for (const MetricDisplay& d : shown_metrics(a.layered())) {
         const std::string label = std::string(d.shown.label) + " (" + d.shown.unit + ")";
-        row(label.c_str(), shown_value(a.stored.overall, d), shown_value(b.stored.overall, d));
+        row(label.c_str(), shown_value(a.stored.overall, d), shown_value(b.stored.overall, d), d.shown.decimals);
       }
       ImGui::EndTable();
     }

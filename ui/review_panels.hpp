@@ -49,6 +49,8 @@ bool draw_session_detail(const training::SessionReview& review, const DetailOpti
 
 // The replay scrubber: the time, the step running then, play and pause. Returns true while playing.
 bool draw_replay_bar(const training::SessionReview& review, double& t_s, bool playing, const PanelRect& at);
+// The height the replay bar needs at the frame's text size (its title and a row of buttons).
+float replay_bar_height();
 
 // Sessions A and B together: their scores and overall metrics side by side, their plots overlaid.
 // With `open`, the window has a close button that clears it.

@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 namespace needle::ui {
 
 PanelRect rect(float x, float y, float width, float height) { return {ImVec2(x, y), ImVec2(width, height)}; }
@@ -19,6 +21,11 @@ ReviewTabs draw_review_tabs(float width, bool& select_class) {
       tabs.class_tab = true;
       ImGui::EndTabItem();
     }
+    // Quit, at the bar's right end (a trailing tab button is not in Debian's ImGui).
+    const char* quit = "Quit (Esc)";
+    const float w = ImGui::CalcTextSize(quit).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+    ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowContentRegionMax().x - w));
+    tabs.quit = ImGui::SmallButton(quit);
     ImGui::EndTabBar();
   }
   select_class = false;

@@ -12,10 +12,11 @@ namespace needle::ui {
 // A panel's rectangle, in pixels from the display's top left.
 PanelRect rect(float x, float y, float width, float height);
 
-// The tabs across the top, `width` wide. `select_class` chooses the Class tab on this frame (and
-// is cleared). Call inside an ImGui frame.
+// The tabs across the top, `width` wide, and the Quit (Esc) button at their right. `select_class`
+// chooses the Class tab on this frame (and is cleared). Call inside an ImGui frame.
 struct ReviewTabs {
   bool class_tab = false;  // the Class tab is the one shown
+  bool quit = false;       // Quit was clicked
   float height = 0.0f;     // the height the tabs take
 };
 ReviewTabs draw_review_tabs(float width, bool& select_class);

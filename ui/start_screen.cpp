@@ -86,6 +86,7 @@ StartAction start_key(StartState& s, StartKey key, bool typing) {
       break;
     }
     case StartKey::kTab: s.focus_name = true; break;
+    case StartKey::kPractice: s.practice = !s.practice; break;
     case StartKey::kEnter: return try_start(s);
     case StartKey::kEscape: return StartAction::kQuit;
   }
@@ -162,6 +163,7 @@ StartAction draw_start_screen(StartState& s) {
     if (!s.devices.empty()) ImGui::TextColored(kDim, "%s", s.devices[s.device].help.c_str());
     ImGui::Separator();
 
+    ImGui::Checkbox("Practice (P): the steps without time limits", &s.practice);
     ImGui::Spacing();
     const std::string why = cannot_start(s);
     ImGui::BeginDisabled(!why.empty());

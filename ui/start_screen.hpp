@@ -34,17 +34,19 @@ struct StartState {
   std::string notice;        // under the buttons: a settings message, why a start failed
   bool focus_name = false;   // put the keyboard in the name field on the next frame
   bool leave_name = false;   // take it out of the name field on the next frame, keeping the name
+  bool practice = false;     // start the task as practice: its steps without time limits
 };
 
 enum class StartAction { kNone, kStart, kQuit };
 
 // The keys the screen answers besides ImGui's own, by name (the app translates the window's).
-enum class StartKey { kUp, kDown, kLeft, kRight, kPageUp, kPageDown, kTab, kEnter, kEscape };
+enum class StartKey { kUp, kDown, kLeft, kRight, kPageUp, kPageDown, kTab, kEnter, kEscape, kPractice };
 
 StartAction draw_start_screen(StartState& state);
 
 // Up and Down choose the task, Left and Right the device (among those available), Page Up and
-// Page Down a trainee the store knows, Tab goes to the name field, Enter starts, Escape quits.
+// Page Down a trainee the store knows, Tab goes to the name field, P turns practice (untimed steps)
+// on and off, Enter starts, Escape quits.
 // While the name field has the keyboard (`typing`) Enter still starts, Tab and Escape leave the
 // field with the name kept, and the field takes every other key. A start that cannot happen says
 // why in the notice instead.

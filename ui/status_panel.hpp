@@ -1,4 +1,5 @@
-// The status panel: what the simulator runs on and how fast it draws, in a corner of the view.
+// The status panel: what the simulator runs on and how fast it draws, in a corner of the view: a
+// developer's read-out, shown with --debug or F3.
 #pragma once
 
 #include <array>
@@ -32,5 +33,6 @@ struct StatusInfo {
 
 // Draws the panel into the current ImGui frame.
 void draw_status_panel(const StatusInfo& info);
+
 
 }  // namespace needle::ui

@@ -7,11 +7,12 @@
 #include <cstdio>
 
 #include "ui/guidance_colours.hpp"
+#include "ui/wrapped_text.hpp"
 
 namespace needle::ui {
 namespace {
 
-const ImVec4 kBadText(0.9f, 0.3f, 0.25f, 1.0f), kWarnText(0.95f, 0.6f, 0.2f, 1.0f);
+const ImVec4 kBadText(0.9f, 0.3f, 0.25f, 1.0f), kWarnText(0.95f, 0.6f, 0.2f, 1.0f), kPlainText(1.0f, 1.0f, 1.0f, 1.0f);
 const ImU32 kTrack = IM_COL32(40, 40, 46, 255);
 
 // A bar over the panel's width: x_of maps a reading onto it.
@@ -45,6 +46,20 @@ void tick(const Bar& b, double at, double lo, double hi, ImU32 colour, float thi
 
 }  // namespace
 
+void countdown_gauge(double left_s, double limit_s) {
+  left_s = std::clamp(left_s, 0.0, limit_s);
+  const Bar b = begin_bar();
+  const ImU32 colour = left_s <= kCountdownDanger_s ? IM_COL32(220, 70, 60, 255)
+                       : left_s <= kCountdownWarn_s ? IM_COL32(240, 150, 40, 255)
+                                                    : IM_COL32(150, 150, 170, 255);
+  fill(b, 0.0, left_s, 0.0, limit_s, colour);
+  end_bar(b);
+  if (left_s <= kCountdownWarn_s)
+    wrapped_text(left_s <= kCountdownDanger_s ? kBadText : kWarnText, "%.0f s left of %.0f s", std::ceil(left_s), limit_s);
+  else
+    wrapped_text(kPlainText, "%.0f s left of %.0f s", std::ceil(left_s), limit_s);
+}
+
 void force_gauge(double force, double safe, double band_min, double band_max) {
   const double full = std::max({safe * 1.5, band_max * 1.2, 1e-6});
   const Bar b = begin_bar();
@@ -56,9 +71,9 @@ void force_gauge(double force, double safe, double band_min, double band_max) {
                     IM_COL32(255, 220, 80, 255), 0.0f, 0, 2.0f);
   end_bar(b);
   if (over)
-    ImGui::TextColored(kBadText, "force at the hand %.2f N: OVER the safe %.1f N", force, safe);
+    wrapped_text(kBadText, "force at the hand %.2f N: OVER the safe %.1f N", force, safe);
   else
-    ImGui::Text("force at the hand %.2f N   safe < %.1f N", force, safe);
+    wrapped_text(kPlainText, "force at the hand %.2f N   safe < %.1f N", force, safe);
 }
 
 void sideways_gauge(double sideways, double safe) {
@@ -71,11 +86,11 @@ void sideways_gauge(double sideways, double safe) {
   tick(b, warn, 0.0, full, IM_COL32(240, 150, 40, 255));
   end_bar(b);
   if (sideways >= danger)
-    ImGui::TextColored(kBadText, "sideways on the needle %.2f N: you are bending it", sideways);
+    wrapped_text(kBadText, "sideways on the needle %.2f N: you are bending it", sideways);
   else if (sideways >= warn)
-    ImGui::TextColored(kWarnText, "sideways on the needle %.2f N: ease off sideways", sideways);
+    wrapped_text(kWarnText, "sideways on the needle %.2f N: ease off sideways", sideways);
   else
-    ImGui::Text("sideways on the needle %.2f N", sideways);
+    wrapped_text(kPlainText, "sideways on the needle %.2f N", sideways);
 }
 
 void distance_gauge(const training::Task& task, size_t step, const training::StepCue& cue) {
@@ -85,7 +100,7 @@ void distance_gauge(const training::Task& task, size_t step, const training::Ste
   fill(b, 0.0, cue.distance_m, 0.0, kFull_m, kEntryColour);
   tick(b, task.steps[step].condition.within_m, 0.0, kFull_m, IM_COL32(255, 255, 255, 255));
   end_bar(b);
-  ImGui::Text("to the %s %.1f mm (within %.0f mm)", cue.point == task.steps[step].guidance.target ? "target" : "point",
+  wrapped_text(kPlainText, "to the %s %.1f mm (within %.0f mm)", cue.point == task.steps[step].guidance.target ? "target" : "point",
               cue.distance_m * 1000.0, task.steps[step].condition.within_m * 1000.0);
 }
 
@@ -97,9 +112,9 @@ void axis_gauge(const training::StepCue& cue) {
   if (!std::isnan(cue.within_deg)) tick(b, cue.within_deg, 0.0, kFull_deg, IM_COL32(255, 255, 255, 255));
   end_bar(b);
   if (std::isnan(cue.within_deg))
-    ImGui::Text("off the planned axis %.0f deg", cue.off_axis_deg);
+    wrapped_text(kPlainText, "off the planned axis %.0f deg", cue.off_axis_deg);
   else
-    ImGui::Text("off the planned axis %.0f deg (within %.0f)", cue.off_axis_deg, cue.within_deg);
+    wrapped_text(kPlainText, "off the planned axis %.0f deg (within %.0f)", cue.off_axis_deg, cue.within_deg);
 }
 
 void depth_gauge(const training::Task& task, size_t step, const training::StepCue& cue) {
@@ -120,9 +135,12 @@ void depth_gauge(const training::Task& task, size_t step, const training::StepCu
   end_bar(b);
   const double mm = cue.depth_m * 1000.0;
   if (!std::isnan(cue.band_min_m))
-    ImGui::Text("depth %.0f mm   band %.0f-%.0f mm", mm, cue.band_min_m * 1000.0, cue.band_max_m * 1000.0);
+    wrapped_text(kPlainText, "depth %.0f mm   band %.0f-%.0f mm", mm, cue.band_min_m * 1000.0, cue.band_max_m * 1000.0);
   else
-    ImGui::Text("depth %.0f mm%s", mm, mm < 0 ? " (above the surface)" : "");
+    wrapped_text(kPlainText, "depth %.0f mm%s", mm,
+          mm >= 0                                                                     ? ""
+          : task.markers[size_t(cue.gauge)].kind == training::MarkerKind::kSurfaceNormal ? " (above the surface)"
+                                                                                      : " (before the planned path begins)");
 }
 
 }  // namespace needle::ui

@@ -15,6 +15,13 @@ namespace needle::ui {
 inline constexpr double kSidewaysWarnShare = 0.5;
 inline constexpr double kSidewaysDangerShare = 1.0;
 
+// When the time left turns orange and red: design values, about the time a trainee in place needs to
+// hold a condition (the shipped holds are 0.5 to 3 s) and a last warning.
+inline constexpr double kCountdownWarn_s = 5.0;
+inline constexpr double kCountdownDanger_s = 2.0;
+
+// The time left in a step with a limit, a bar draining from full, "12 s left of 20 s".
+void countdown_gauge(double left_s, double limit_s);
 // The force at the hand from 0 to 1.5 times the safe limit: the safe band shaded, a force_held
 // step's band outlined (band_max > band_min), the bar blue, red with its words above the limit.
 void force_gauge(double force_N, double safe_N, double band_min_N, double band_max_N);

@@ -6,31 +6,15 @@
 #include <cmath>
 #include <map>
 
+#include "ui/score_breakdown.hpp"
+#include "ui/step_banner.hpp"
+#include "ui/trainee_gauges.hpp"
+#include "ui/wrapped_text.hpp"
+
 namespace needle::ui {
 namespace {
 
 const ImVec4 kGood(0.35f, 0.8f, 0.4f, 1.0f), kBad(0.9f, 0.3f, 0.25f, 1.0f), kDim(0.6f, 0.6f, 0.6f, 1.0f);
-
-// A horizontal gauge from 0 to `full`: the safe band (0 to safe) shaded, the step's target band
-// outlined when it has one, the current value as a bar, red beyond the safe limit.
-void force_gauge(double force, double safe, double band_min, double band_max) {
-  const double full = std::max({safe * 1.5, band_max * 1.2, force * 1.05, 1e-6});
-  const ImVec2 origin = ImGui::GetCursorScreenPos();
-  const float width = ImGui::GetContentRegionAvail().x, height = 18.0f * ImGui::GetFontSize() / 13.0f;
-  auto x_of = [&](double v) { return origin.x + float(std::clamp(v / full, 0.0, 1.0)) * width; };
-  ImDrawList* draw = ImGui::GetWindowDrawList();
-  draw->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height), IM_COL32(40, 40, 46, 255));
-  draw->AddRectFilled(origin, ImVec2(x_of(safe), origin.y + height), IM_COL32(40, 80, 50, 255));
-  const bool over = force > safe;
-  draw->AddRectFilled(ImVec2(origin.x, origin.y + 4), ImVec2(x_of(force), origin.y + height - 4),
-                      over ? IM_COL32(220, 70, 60, 255) : IM_COL32(120, 200, 255, 255));
-  if (band_max > band_min) {
-    draw->AddRect(ImVec2(x_of(band_min), origin.y), ImVec2(x_of(band_max), origin.y + height), IM_COL32(255, 220, 80, 255),
-                  0.0f, 0, 2.0f);
-  }
-  ImGui::Dummy(ImVec2(width, height));
-  ImGui::Text("force at the hand %.2f N   safe < %.1f N", force, safe);
-}
 
 // The world's force on the needle by what makes it, as the tissue and bone push it (scene newtons).
 void needle_force_line(const training::NeedleForce& f) {
@@ -68,58 +52,69 @@ void tissue_lines(const training::Task& task, const haptics::TissueSnapshot& t) 
   if (t.bone_layer >= 0) ImGui::TextColored(kBad, "on bone: %s", layer_label(task, t.bone_layer).c_str());
 }
 
+// The step's clock: the time left of its limit, or that it has none.
+void step_clock(const TraineeView& v, const training::Step& step, const training::StepRecord& record) {
+  if (step.time_limit_s > 0.0)
+    countdown_gauge(step.time_limit_s - (v.now_s - record.start_s), step.time_limit_s);
+  else
+    ImGui::TextColored(kDim, v.task->practice ? "practice: no time limit" : "no time limit");
+}
+
+// What to do now, in words, the most urgent first.
+void cue_list(const std::vector<std::string>& lines) {
+  for (const std::string& line : lines) {
+    ImGui::Bullet();
+    ImGui::TextWrapped("%s", line.c_str());
+  }
+}
+
 void draw_running(const TraineeView& v) {
   const training::Task& task = *v.task;
   const size_t shown = std::min(v.step.value_or(v.progress->current_step()), task.steps.size() - 1);
   const training::Step& step = task.steps[shown];
-  const training::StepOutcome outcome = v.progress->records()[shown].outcome;
+  const training::StepRecord& record = v.progress->records()[shown];
   ImGui::Text("Step %zu of %zu: %s", shown + 1, task.steps.size(), step.id.c_str());
   ImGui::ProgressBar(float(v.progress->current_step()) / float(task.steps.size()), ImVec2(-1, 0));
   ImGui::Separator();
   ImGui::TextWrapped("%s", step.instruction.c_str());
-  if (outcome == training::StepOutcome::kActive) {
-    if (step.time_limit_s > 0.0) ImGui::TextColored(kDim, "time limit %.0f s", step.time_limit_s);
+  if (record.outcome == training::StepOutcome::kActive) {
+    step_clock(v, step, record);
     if (v.progress->condition_met()) ImGui::TextColored(kGood, "holding... %.1f s", v.progress->held_s());
+    cue_list(v.cue_lines);
   } else {
-    const std::string why = training::step_failure_reason(task, v.progress->records()[shown]);
-    ImGui::TextColored(outcome == training::StepOutcome::kCompleted ? kGood : kBad, "%s%s%s", step_outcome_name(outcome),
-                       why.empty() ? "" : ": ", why.c_str());
+    const std::string why = training::step_failure_reason(task, record);
+    wrapped_text(record.outcome == training::StepOutcome::kCompleted ? kGood : kBad, "%s%s%s",
+                 training::step_outcome_words(record.outcome).c_str(), why.empty() ? "" : ": ", why.c_str());
+  }
+  if (v.cue) {
+    distance_gauge(task, shown, *v.cue);
+    axis_gauge(*v.cue);
+    depth_gauge(task, shown, *v.cue);
   }
   ImGui::Separator();
   const bool force_band = step.condition.type == training::ConditionType::kForceHeld;
-  force_gauge(v.hand_force_N, task.scoring.safe_force_N, force_band ? step.condition.min : 0.0,
-              force_band ? step.condition.max : 0.0);
+  const double safe = task.scoring.safe_force_N;
+  force_gauge(v.hand_force_N, safe, force_band ? step.condition.min : 0.0, force_band ? step.condition.max : 0.0);
+  sideways_gauge(task.force_scale * v.needle.sideways_N, safe);
   needle_force_line(v.needle);
-  if (v.at_device_limit) ImGui::TextColored(kBad, "the device is at its force limit: you feel less than this");
+  if (v.at_device_limit) wrapped_text(kBad, "the device is at its force limit: you feel less than this");
   if (v.tissue) tissue_lines(task, *v.tissue);
   ImGui::Separator();
   const training::Metrics& m = v.step_metrics;
-  metric_line("tip to target", m.tip_error_m, "mm", 1000.0);
-  metric_line("off axis", m.axis_deviation_deg, "deg");
-  metric_line("lateral load", m.lateral_load_Ns, "N s");
+  metric_line("sideways load", m.lateral_load_Ns, "N s");
   metric_line("peak at the hand", m.peak_hand_force_N, "N");
-  metric_line("path", m.path_length_m, "mm", 1000.0);
 }
 
 void draw_result(const training::SessionResult& r) {
   ImGui::TextColored(r.score.passed ? kGood : kBad, "Score %.0f / 100  %s", r.score.total,
                      r.score.passed ? "PASSED" : "NOT PASSED");
   ImGui::Separator();
-  if (ImGui::BeginTable("breakdown", 2, ImGuiTableFlags_SizingStretchProp)) {
-    for (const training::ScoreComponent& c : r.score.components) {
-      ImGui::TableNextRow();
-      ImGui::TableSetColumnIndex(0);
-      ImGui::TextUnformatted(c.name.c_str());
-      ImGui::TableSetColumnIndex(1);
-      ImGui::Text("%4.1f / %4.1f", c.points(), c.weight);
-    }
-    ImGui::EndTable();
-  }
-  // A layered task's faults by name (issue 14's acceptance: the sloppy epidural's bone contact or
+  draw_score_breakdown(r.score.components, 1);
+  // A layered task's faults by name (the sloppy epidural's bone contact or
   // dural puncture is named in the panel, not only as a component's lost points).
   const training::Metrics& m = r.overall;
   if (m.bone_contacts > 0 || m.forbidden_punctures > 0 || m.redirections > 0) ImGui::Separator();
-  if (m.bone_contacts > 0) ImGui::TextColored(kBad, "bone contacts: %u (peak %.1f N on the bone)", m.bone_contacts, m.bone_peak_force_N);
+  if (m.bone_contacts > 0) wrapped_text(kBad, "bone contacts: %u (peak %.1f N on the bone)", m.bone_contacts, m.bone_peak_force_N);
   if (m.forbidden_punctures > 0) ImGui::TextColored(kBad, "forbidden punctures: %u", m.forbidden_punctures);
   if (m.redirections > 0) ImGui::TextColored(kBad, "redirections: %u", m.redirections);
   std::vector<std::string> advice = what_to_improve(r.score);
@@ -157,10 +152,12 @@ std::vector<std::string> what_to_improve(const training::Score& score) {
       {"overshoot", "Stop as soon as the resistance gives way"},
       {"bone_contacts", "Keep to the planned axis: do not meet the bone"},
       {"redirections", "Aim before you go in: avoid pulling back and redirecting"},
+      {"loss_of_resistance", "Stop as soon as the plunger gives way, and do not mistake a give"},
   };
   std::vector<const training::ScoreComponent*> lost;
+  // What the trainee did, not what the run never reached (the steps not completed say that).
   for (const training::ScoreComponent& c : score.components) {
-    if (c.weight - c.points() > 1.0) lost.push_back(&c);
+    if (c.status == training::ComponentStatus::kApplied && c.weight - c.points() > 1.0) lost.push_back(&c);
   }
   std::sort(lost.begin(), lost.end(),
             [](const training::ScoreComponent* a, const training::ScoreComponent* b) { return a->weight - a->points() > b->weight - b->points(); });
@@ -210,6 +207,8 @@ void draw_trainee_panel(const TraineeView& v) {
     }
   }
   ImGui::End();
+  if (!v.result)
+    if (const std::optional<StepBanner> banner = step_banner(*v.task, *v.progress, v.now_s)) draw_step_banner(*banner);
 }
 
 }  // namespace needle::ui

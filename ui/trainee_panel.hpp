@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "training/scoring/session_scorer.hpp"
+#include "training/tasks/step_cue.hpp"
 
 namespace needle::ui {
 
@@ -22,12 +23,17 @@ struct TraineeView {
   const training::Task* task = nullptr;
   const training::TaskProgress* progress = nullptr;
   training::Metrics step_metrics;        // the current step's, live
+  double now_s = 0.0;                    // the newest state's time: the countdown, the banner's age
+  // What is left to do in the step (training::step_cue, in the 3D view's axes) and it in words
+  // (training::cue_lines): the panel's cues and its distance, axis and depth gauges.
+  std::optional<training::StepCue> cue;
+  std::vector<std::string> cue_lines;
   // The world's force on the needle now, by part (scene newtons), and at the hand (the task's force
   // scale times its total: what the gauge shows against the safe limit).
   training::NeedleForce needle;
   double hand_force_N = 0.0;
   bool at_device_limit = false;  // the device held the force back at its limit in the last tick
-  // The layered tissue at the needle now (issue 14), in a task with layers: the panel shows the
+  // The layered tissue at the needle now, in a task with layers: the panel shows the
   // layer holding the tip and the punctures so far (names hidden when the task says so).
   std::optional<haptics::TissueSnapshot> tissue;
   double loop_rate_hz = 0.0;   // measured rate of the haptic loop

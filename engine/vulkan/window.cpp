@@ -30,6 +30,7 @@ Key key_of(int key) {
     case GLFW_KEY_ENTER:
     case GLFW_KEY_KP_ENTER: return Key::kEnter;
     case GLFW_KEY_ESCAPE: return Key::kEscape;
+    case GLFW_KEY_F3: return Key::kF3;
     default: return Key::kOther;
   }
 }
@@ -154,6 +155,13 @@ std::vector<Window::KeyPress> Window::take_key_presses() {
   std::vector<KeyPress> presses;
   presses.swap(key_presses_);
   return presses;
+}
+
+bool Window::take_key_press(Key key) {
+  const auto end = std::remove_if(key_presses_.begin(), key_presses_.end(), [key](const KeyPress& p) { return p.key == key; });
+  const bool taken = end != key_presses_.end();
+  key_presses_.erase(end, key_presses_.end());
+  return taken;
 }
 
 bool Window::take_resized() {

@@ -1,5 +1,7 @@
 #include "haptics/control/teleoperation.hpp"
 
+#include <limits>
+
 #include "haptics/model/dynamics.hpp"
 #include "haptics/model/kinematics.hpp"
 #include "haptics/tissue/tissue_step.hpp"
@@ -12,12 +14,22 @@ VirtualWorldOptions world_options(ControlLaw law) {
   return {tool ? TissueEntry::Track : TissueEntry::Surface, tool};
 }
 
+// The device's limit, or none (every joint driven, no force too large) for a kinematic master.
+DeviceLimit limit_of(const RobotModel& master, const std::optional<DeviceParams>& device) {
+  if (device) return device_limit(master, *device);
+  DeviceLimit none;
+  none.force_per_torque.setZero(3, master.dof());
+  none.force_limit_N = std::numeric_limits<double>::infinity();
+  none.actuated_joints = master.dof();
+  return none;
+}
+
 }  // namespace
 
 Teleoperation::Teleoperation(const RobotModel& master, const RobotModel& virt, Scene scene, TeleoperationGains gains,
                              double period, int virtual_substeps, std::optional<DeviceParams> device)
     : master_(master),
-      device_(device),
+      limit_(limit_of(master, device)),
       gains_(gains),
       period_(period),
       substeps_(virtual_substeps),
@@ -141,20 +153,42 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
   world_.advance(out_.tau_v, velocity_gain_v_, T, substeps_);
   out_.tau_v -= velocity_gain_v_.cwiseProduct(world_.dq());
 
-  // The damper, while the world has given the device more than it took (its H_m only then).
-  passivity_.damping_per_s = 0.0;
-  if (passivity && passivity_.dissipated_J < 0.0) {
-    // The conservative part (U's −V_m and −m gᵀx_m): the weight compensation and the tool's weight.
-    update_gravity(master_, master_data_);
-    passivity_conservative_ = master_data_.g;
-    passivity_conservative_.noalias() += master_data_.J.topRows<3>().transpose() * (gains_.tool.mass_kg * master_.gravity);
-    update_tick_dynamics(master_, master_data_);
-    passivity_control(gains_.passivity, master_data_.H, in.dq_m, passivity_conservative_, T, passivity_, out_.tau_m);
+  // What the device can apply; then, on that, the passivity controller for the tick to come.
+  const double kappa = limit_to_device(limit_, out_.tau_m);
+  out_.saturated = kappa < 1.0;
+  passivity_.damping_per_s = passivity_.share_withheld = 0.0;
+  if (passivity) {
+    const double stored_next = stored_energy(master_data_) + T * stored_energy_rate(master_data_);
+    passivity_.predicted_J = predicted_dissipation(out_.tau_m, in.dq_m, T, stored_next, passivity_);
+    if (passivity_owed(gains_.passivity, passivity_.predicted_J)) {
+      // The conservative part (U's −V_m and −m gᵀx_m): the weight compensation and the tool's weight, as the
+      // limit left them (update_gravity ran in master_dynamics_cancellation).
+      passivity_conservative_ = master_data_.g;
+      passivity_conservative_.noalias() += master_data_.J.topRows<3>().transpose() * (gains_.tool.mass_kg * master_.gravity);
+      passivity_conservative_.tail(master_.dof() - limit_.actuated_joints).setZero();
+      passivity_conservative_ *= kappa;
+      update_tick_dynamics(master_, master_data_);
+      passivity_control(gains_.passivity, limit_, master_data_.H, in.dq_m, passivity_conservative_, T, passivity_,
+                        out_.tau_m);
+    }
   }
   out_.passivity_damping_per_s = passivity_.damping_per_s;
-  out_.saturated = device_ && limit_to_device(master_data_.J, *device_, out_.tau_m);
+  out_.passivity_share_withheld = passivity_.share_withheld;
   passivity_applied(out_.tau_m, passivity_);  // what the device applies, unless the driver says otherwise (applied())
   return out_;
+}
+
+double Teleoperation::stored_energy_rate(const RobotData& m) const {
+  if (gains_.law != ControlLaw::Tool) return 0.0;
+  const VirtualWorld& world = world_;
+  const Eigen::Isometry3d& tip_v = world.data().tip;
+  const Eigen::Vector3d x_m = m.tip.translation(), v_m = m.tip_twist.head<3>();
+  const Eigen::Vector3d& axis = world.report().axis;
+  const double along = axis.dot(x_m - tip_v.translation());
+  const Eigen::Vector3d offset = lateral_offset(tip_v.linear(), x_m, tip_v.translation());
+  return -m.g.dot(m.dq) - gains_.tool.mass_kg * master_.gravity.dot(v_m) +
+         blend_.tissue * gains_.lateral_stiffness_N_per_m * offset.dot(v_m) +
+         gains_.force_scale * blend_.axial * out_.axial_stiffness_N_per_m * along * axis.dot(v_m);
 }
 
 double Teleoperation::stored_energy(const RobotData& m) const {

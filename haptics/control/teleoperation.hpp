@@ -34,6 +34,8 @@ struct TickOutput {
   double axial_stiffness_N_per_m = 0.0;  // the spring along the needle as applied (gains', held under the tick's limit)
   double passivity_dissipated_J = 0.0;   // the passivity observer's D at the tick's start (tool law)
   double passivity_damping_per_s = 0.0;  // β of its damper, 0 while off
+  double passivity_share_withheld = 0.0; // γ: the share of the command's active part it withheld, 0 while off
+  bool passivity_acted() const { return passivity_damping_per_s > 0.0 || passivity_share_withheld > 0.0; }
   bool saturated = false;                // tau_m was scaled down to the device's force limit
 };
 
@@ -66,6 +68,13 @@ class Teleoperation {
   // the weights and the axial stiffness of the last step.) The passivity observer's U, and with the
   // device's own ½q̇_mᵀH_mq̇_m + V_m the world's energy at the hand (haptics/sim/hand_port.hpp).
   double stored_energy(const RobotData& master_data) const;
+  // (master data at q_m, with g and the tip's twist at q̇_m) => dU/dt along the master's motion, the
+  // virtual side held: the derivative of stored_energy's master terms,
+  //   tool law:   −gᵀq̇_m − m gᵀẋ_m + w K (P (x_m − x_v))·ẋ_m + s w_a K (x₅ᵀ(x_m − x_v)) x₅ᵀẋ_m
+  //   thesis law: 0
+  // (P, x₅ and x_v the virtual needle's, held). With it the passivity controller's U⁺ after a tick at
+  // the present velocity is stored_energy + T × this, without the master's kinematics a second time.
+  double stored_energy_rate(const RobotData& master_data) const;
 
   const VirtualWorld& world() const { return world_; }
   const RobotData& master_data() const { return master_data_; }
@@ -76,7 +85,7 @@ class Teleoperation {
 
  private:
   const RobotModel& master_;
-  std::optional<DeviceParams> device_;
+  DeviceLimit limit_;  // the device's, or none
   TeleoperationGains gains_;
   double period_;
   int substeps_;

@@ -8,15 +8,29 @@ namespace {
 
 double finite_or_zero(double v) { return std::isfinite(v) ? v : 0.0; }
 
+// The handle moved `metres` along the needle.
+void along(DeskPose& pose, const NeedleDirection& d, double metres) noexcept {
+  for (int i = 0; i < 3; ++i) pose.position_m[i] += metres * d.device[i];
+}
+
 }  // namespace
 
-MouseMapping::MouseMapping(const DeskWorkspace& workspace) : workspace_(workspace), pose_(workspace.centre()) {}
+MouseMapping::MouseMapping(const DeskWorkspace& workspace, const MouseView& view)
+    : workspace_(workspace), view_(view), pose_(workspace.centre()) {}
+
+void MouseMapping::cursor_for(double x_m, double y_m, double& x, double& y) const noexcept {
+  const DeskPose middle = workspace_.centre();
+  const double scale = view_.metres_per_half_height(pose_.position_m[2] - middle.position_m[2]);
+  x = (x_m - middle.position_m[0] - offset_m_[0]) / scale;
+  y = (y_m - middle.position_m[1] - offset_m_[1]) / scale;
+}
 
 void MouseMapping::pointer(double x, double y, bool turning) noexcept {
   const double cursor[2] = {finite_or_zero(x), finite_or_zero(y)};
   const DeskPose middle = workspace_.centre();
-  double at[2];  // the cursor's point of the workspace
-  for (int i = 0; i < 2; ++i) at[i] = middle.position_m[i] + cursor[i] * kMetresPerHalfHeight;
+  const double scale = view_.metres_per_half_height(pose_.position_m[2] - middle.position_m[2]);
+  double at[2];  // the cursor's point of the workspace, on its ray at the handle's depth
+  for (int i = 0; i < 2; ++i) at[i] = middle.position_m[i] + cursor[i] * scale;
   if (turning) {
     if (have_last_ && turning_) {
       pose_.wrist_rad[0] += (cursor[0] - last_[0]) * kRadPerHalfHeight;
@@ -35,7 +49,7 @@ void MouseMapping::pointer(double x, double y, bool turning) noexcept {
 }
 
 void MouseMapping::scroll(double notches) noexcept {
-  pose_.position_m[2] += finite_or_zero(notches) * kDepthPerNotch_m;
+  along(pose_, direction_, finite_or_zero(notches) * kDepthPerNotch_m);
   pose_ = workspace_.clamp(pose_);  // so scrolling past the end builds up no dead zone
 }
 
@@ -51,8 +65,8 @@ void KeyboardMapping::press(DeskKey key, bool fine) noexcept {
     case DeskKey::kRight: p[0] += m; break;
     case DeskKey::kDown: p[1] -= m; break;
     case DeskKey::kUp: p[1] += m; break;
-    case DeskKey::kOut: p[2] -= m; break;
-    case DeskKey::kIn: p[2] += m; break;
+    case DeskKey::kOut: along(pose_, direction_, -m); break;
+    case DeskKey::kIn: along(pose_, direction_, m); break;
     case DeskKey::kSwingLeft: w[0] -= rad; break;
     case DeskKey::kSwingRight: w[0] += rad; break;
     case DeskKey::kTiltToward: w[1] -= rad; break;
@@ -94,7 +108,7 @@ void GamepadMapping::update(const GamepadState& s, double dt_s) noexcept {
   const double move = kSpeed_m_per_s * dt, turn = kTurnRate_rad_per_s * dt;
   pose_.position_m[0] += move * lx;
   pose_.position_m[1] -= move * ly;  // the stick's y points down
-  pose_.position_m[2] += move * depth;
+  along(pose_, direction_, move * depth);
   pose_.wrist_rad[0] += turn * rx;
   pose_.wrist_rad[1] -= turn * ry;
   pose_ = workspace_.clamp(pose_);

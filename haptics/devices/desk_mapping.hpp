@@ -11,30 +11,57 @@
 
 namespace needle::haptics {
 
-// The mouse: the cursor moves the handle in the view's plane, the same distance for the same
-// motion across and up (a tenth of a metre for half the window's height: about what the view
-// shows at the task's depth, so the tip keeps near the cursor), the wheel pushes it into the view.
-// With the turning button held (the right one), cursor motion turns the wrist instead, as if the
-// mouse held the needle's hub: right swings it clockwise as seen, up (forward on the desk) tilts
-// the hub away; the handle stays where it is and, once the button is released, moves on from
-// there (the app puts the cursor back where the turn began, so cursor and tip stay together).
+// How the 3D view shows the handle (a pinhole camera, the vertical field of view across the
+// window's height): the mouse puts the handle where the cursor's ray meets the plane square to the
+// view at the handle's depth, so the tip comes to rest under the cursor (docs/DEVICES.md).
+struct MouseView {
+  double tan_half_fov = 0.5;      // tan of half the vertical field of view
+  double start_distance_m = 0.2;  // from the camera to the tool's start, along the view
+  // Metres in that plane for half the window's height, the handle `depth_m` deeper than its start:
+  // (start_distance + depth) tan(fov/2). The defaults give a tenth of a metre at the start.
+  double metres_per_half_height(double depth_m) const noexcept { return (start_distance_m + depth_m) * tan_half_fov; }
+};
+
+// The direction the needle points in device axes (unit): where the wheel, W and S and the triggers
+// push the handle, along the needle rather than into the screen. The app sets it each frame from the
+// wrist (haptics::wrist_direction); the default is into the view.
+struct NeedleDirection {
+  double device[3] = {0.0, 0.0, 1.0};
+};
+
+// The mouse: the cursor moves the handle in the view's plane, under the cursor (MouseView); the
+// wheel pushes it along the needle (NeedleDirection), after which the app puts the cursor on the
+// handle again (cursor_at_handle), so cursor and tip stay together. With the turning button held
+// (the right one), cursor motion turns the wrist instead, as if the mouse held the needle's hub:
+// right swings it clockwise as seen, up (forward on the desk) tilts the hub away; the handle stays
+// where it is and, once the button is released, moves on from there (the app puts the cursor back
+// where the turn began).
 class MouseMapping {
  public:
-  static constexpr double kMetresPerHalfHeight = 0.1;
-  static constexpr double kRadPerHalfHeight = 3.141592653589793;  // 180° for half the window's height
-  static constexpr double kDepthPerNotch_m = 0.002;
+  // 90° for half the window's height: design value, the largest turn a shipped task asks (the
+  // penetrable sphere's 45° pivot) is a quarter of the window's height, a comfortable sweep, and a
+  // pixel of a 720-pixel window is 0.25°, a twentieth of the tightest tolerance (5°).
+  static constexpr double kRadPerHalfHeight = 1.5707963267948966;
+  static constexpr double kDepthPerNotch_m = 0.002;  // 2 mm a notch: a 3 cm insertion is 15 notches
 
-  explicit MouseMapping(const DeskWorkspace& workspace = {});
+  explicit MouseMapping(const DeskWorkspace& workspace = {}, const MouseView& view = {});
 
   // The cursor from the window's centre in half window heights: x to the right (± the aspect
   // ratio at the edges), y up (±1 at the edges).
   void pointer(double x, double y, bool turning) noexcept;
-  // Wheel notches, forward (into the view) positive.
+  // Wheel notches, forward (in along the needle) positive.
   void scroll(double notches) noexcept;
+  void set_needle_direction(const NeedleDirection& direction) noexcept { direction_ = direction; }
   const DeskPose& pose() const noexcept { return pose_; }
+  // Where the cursor puts the handle at (x, y) in the view's plane (device metres), at its depth
+  // now, in pointer()'s terms: after the wheel, the cursor goes here.
+  void cursor_for(double x_m, double y_m, double& x, double& y) const noexcept;
+  void cursor_at_handle(double& x, double& y) const noexcept { cursor_for(pose_.position_m[0], pose_.position_m[1], x, y); }
 
  private:
   DeskWorkspace workspace_;
+  MouseView view_;
+  NeedleDirection direction_;
   DeskPose pose_;
   double offset_m_[2] = {0.0, 0.0};  // handle minus the cursor's point, changed only by a turn
   double last_[2] = {0.0, 0.0};
@@ -47,7 +74,7 @@ enum class DeskKey {
   kLeft, kRight, kDown, kUp,      // the handle in the view's plane (arrow keys)
   kOut, kIn,                      // depth: out of the view, into it (S, W)
   kSwingLeft, kSwingRight,        // the hub left or right about the tip (A, D)
-  kTiltToward, kTiltAway,         // the hub towards the viewer or away (F, R)
+  kTiltToward, kTiltAway,         // the hub towards the viewer or away (Q, E)
 };
 
 class KeyboardMapping {
@@ -57,11 +84,14 @@ class KeyboardMapping {
   static constexpr double kFine = 0.2;                       // with Shift: a fifth of a step
 
   explicit KeyboardMapping(const DeskWorkspace& workspace = {});
+  // In and out (W, S) go along the needle.
   void press(DeskKey key, bool fine) noexcept;
+  void set_needle_direction(const NeedleDirection& direction) noexcept { direction_ = direction; }
   const DeskPose& pose() const noexcept { return pose_; }
 
  private:
   DeskWorkspace workspace_;
+  NeedleDirection direction_;
   DeskPose pose_;
 };
 
@@ -76,7 +106,7 @@ struct GamepadState {
 };
 
 // Rate control: the left stick moves the handle in the view's plane, the right trigger pushes it
-// into the view and the left one draws it back, the right stick turns the wrist (right swings the
+// in along the needle and the left one draws it back, the right stick turns the wrist (right swings the
 // hub clockwise, up tilts it away), each at a speed proportional to the deflection past a dead
 // zone. Start resets a latched fault. In a task with a syringe the left trigger is the thumb on the
 // plunger (PlungerMapping) and the right trigger draws the needle back while the left bumper is held.
@@ -93,12 +123,14 @@ class GamepadMapping {
 
   // One frame of `dt_s` seconds with the state read at its start.
   void update(const GamepadState& state, double dt_s) noexcept;
+  void set_needle_direction(const NeedleDirection& direction) noexcept { direction_ = direction; }
   const DeskPose& pose() const noexcept { return pose_; }
   // True once for each press of the reset button.
   bool take_fault_reset() noexcept;
 
  private:
   DeskWorkspace workspace_;
+  NeedleDirection direction_;
   DeskPose pose_;
   bool plunger_on_left_trigger_ = false;
   bool reset_held_ = false;

@@ -51,7 +51,7 @@ std::vector<BackendStatus> list_backends() {
        "a window: the cursor moves the tool, the wheel or Up/Down push it in, the right button held turns it about its tip; "
        "the left button or the space bar held presses a syringe's plunger; forces shown, not felt"},
       {"keyboard", "available",
-       "a window: arrows move the tool, W/S push it in and out, A/D and R/F turn it about its tip (Shift: fine steps), "
+       "a window: arrows move the tool, W/S push it in and out, A/D and Q/E turn it about its tip (Shift: fine steps), "
        "the space bar held presses a syringe's plunger; forces shown, not felt"},
       {"gamepad[:N]", "listed by the window (GLFW reports gamepads once it has a display)",
        "a window and a gamepad with a standard mapping: left stick moves the tool, triggers push it in and out, right "

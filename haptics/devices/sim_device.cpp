@@ -5,9 +5,9 @@
 namespace needle::haptics {
 namespace {
 
-// The monitor's torque bound for an actuated joint: the plant already limits the force at the
-// tip to force_limit_N; this bound (that force on a 0.5 m lever, longer than the Omni's reach)
-// only catches commands no tip force could explain.
+// The monitor's torque bound for an actuated joint: the plant already limits its motors' torques to
+// force_limit_N at the tip in the nominal pose (haptics/control/device_limit.hpp); this bound (that
+// force on a 0.5 m lever, longer than the Omni's reach) only catches commands no such torque could explain.
 constexpr double kLeverBoundM = 0.5;
 
 }  // namespace

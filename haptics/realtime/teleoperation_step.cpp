@@ -40,7 +40,7 @@ void TeleoperationStep::step(const DeviceReading& reading, double dt_s, DeviceCo
 
   publish_virtual_state(tele_.world(), scenario_.base_in_world, dt_s, state);
   for (int i = 0; i < 3; ++i) state.operator_force_n[i] = in_.wrench_h[i];
-  if (out.passivity_damping_per_s > 0.0) state.limits |= kLimitPassivityDamper;
+  if (out.passivity_acted()) state.limits |= kLimitPassivityDamper;
   if (out.saturated) state.limits |= kLimitForce;
 }
 

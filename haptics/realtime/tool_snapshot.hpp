@@ -51,7 +51,7 @@ struct SyringeSnapshot {
 // ToolSnapshot::limits: what held the tick's force back, one bit each.
 inline constexpr uint32_t kLimitForce = 1u;             // the safety monitor saturated the command at the device's limit
 inline constexpr uint32_t kLimitRate = 2u;              // ... or limited its rate of change
-inline constexpr uint32_t kLimitPassivityDamper = 4u;   // the passivity observer's damper acted (world not passive)
+inline constexpr uint32_t kLimitPassivityDamper = 4u;   // the passivity controller withheld or damped (the world owed energy)
 
 struct ToolSnapshot {
   uint64_t tick = 0;

@@ -42,6 +42,8 @@ json read_recording_context(const std::string& path, const SessionHeader& header
     if (!context.contains(key)) throw fail(std::string("missing \"") + key + "\"");
   if (!context["task"].is_string() || !context["task_text"].is_string()) throw fail("task and task_text are not text");
   if (!context.contains("coupling")) context["coupling"] = nullptr;
+  if (!context.contains("practice")) context["practice"] = false;  // before practice sessions
+  if (!context["practice"].is_boolean()) throw fail("practice is not true or false");
   migrate(context);
   return context;
 }

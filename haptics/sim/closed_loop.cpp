@@ -90,6 +90,7 @@ SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::functi
     rec.world_stored_J = world_stored_energy(sc, plant, tele) - stored0;
     rec.saturated = out.saturated || plant.saturated();
     rec.passivity_damping_per_s = out.passivity_damping_per_s;
+    rec.passivity_acted = out.passivity_acted();
     rec.position_error = (rec.x_m - rec.x_v).norm();
     rec.force_error = 0.0;
 
@@ -128,7 +129,7 @@ SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::functi
     s.hand_work_min_J = std::min(s.hand_work_min_J, rec.hand_work_J);
     s.world_dissipated_min_J = std::min(s.world_dissipated_min_J, rec.hand_work_J - rec.world_stored_J);
     s.saturated_s += rec.saturated ? T : 0.0;
-    s.passivity_damped_s += rec.passivity_damping_per_s > 0.0 ? T : 0.0;
+    s.passivity_damped_s += rec.passivity_acted ? T : 0.0;
     s.energy_error_J = std::max(s.energy_error_J, std::abs(rec.energy - e0 - plant.external_work() - world.external_work()));
     if (keep_ticks) result.ticks.push_back(rec);
     if (on_tick) on_tick(rec);

@@ -39,6 +39,7 @@ struct TickRecord {
   double world_stored_J = 0.0;
   bool saturated = false;                 // the device scaled the command down to its force limit
   double passivity_damping_per_s = 0.0;   // β of the passivity damper (tool law), 0 while off
+  bool passivity_acted = false;           // the passivity controller withheld or damped
 };
 
 // A surface that gave way in closed loop (as bench insertion's InsertionPuncture, the depth being the
@@ -64,7 +65,7 @@ struct SimSummary {
   double hand_work_min_J = 0;         // its least value over the run (< 0: the world has pushed the hand)
   double world_dissipated_min_J = 0;  // least of hand work − Δ(world's stored energy) (≥ 0 when passive)
   double saturated_s = 0;             // time the device held the command at its force limit
-  double passivity_damped_s = 0;      // time the passivity damper acted
+  double passivity_damped_s = 0;      // time the passivity controller acted (withheld or damped)
   std::vector<std::string> faults;
   nlohmann::json to_json() const;     // the keys, SI units
 };

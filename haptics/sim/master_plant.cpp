@@ -7,7 +7,7 @@ namespace needle::haptics {
 
 MasterPlant::MasterPlant(const RobotModel& model, DeviceParams device, HandImpedance hand, Integrator integrator,
                          int substeps)
-    : model_(model), device_(device), hand_(hand), integrator_(integrator), substeps_(substeps), data_(model),
+    : model_(model), limit_(device_limit(model, device)), hand_(hand), integrator_(integrator), substeps_(substeps), data_(model),
       damping_(model.damping()) {
   reset(VecN::Zero(model.dof()), VecN::Zero(model.dof()));
 }
@@ -26,7 +26,7 @@ void MasterPlant::reset(const VecN& q, const VecN& dq) {
 
 void MasterPlant::saturate(const VecN& tau_command) {
   applied_ = tau_command;
-  saturated_ = limit_to_device(data_.J, device_, applied_);
+  saturated_ = limit_to_device(limit_, applied_) < 1.0;
 }
 
 double MasterPlant::hand_kinetic_energy() const {

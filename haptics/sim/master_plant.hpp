@@ -41,7 +41,7 @@ class MasterPlant {
   void acceleration(const VecN& q, const VecN& dq, double t, VecN& ddq);
 
   const RobotModel& model_;
-  DeviceParams device_;
+  DeviceLimit limit_;
   HandImpedance hand_;
   Integrator integrator_;
   int substeps_;

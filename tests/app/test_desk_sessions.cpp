@@ -36,11 +36,15 @@ struct DeskRun {
 std::string steps_of(const training::SessionResult& r) {
   std::string out = "score " + std::to_string(r.score.total) + ":";
   for (const training::StepResult& s : r.steps) out += " " + s.id + "=" + training::step_outcome_name(s.record.outcome);
+  for (const training::ScoreComponent& c : r.score.components)
+    out += " " + c.name + ":" + std::to_string(c.points()).substr(0, 4) + "/" + std::to_string(c.weight).substr(0, 4);
   return out;
 }
 
-// Runs the task on `device` (keyboard or mouse); `input(t, desk)` is called every `input_ticks`
-// ticks with the time into the session and sets the device's pose through its mapping.
+// Runs the task on `device` (keyboard or mouse); `input(t, desk, axis)` is called every
+// `input_ticks` ticks with the time into the session and the needle's axis in the newest state (what
+// the app hands its desk input, app::DeskInput::set_needle_axis), and sets the device's pose through
+// its mapping.
 // `task_name`: a task of assets/tasks/.
 template <typename Input>
 DeskRun run_desk(const std::string& device, uint64_t input_ticks, Input input, const std::string& task_name = "penetrable_sphere") {
@@ -61,11 +65,13 @@ DeskRun run_desk(const std::string& device, uint64_t input_ticks, Input input, c
   DeskRun run;
   std::optional<Eigen::Vector3d> pivot_tip;  // where the tip was when the pivot step began
   haptics::TickSample sample;
+  std::optional<std::array<double, 3>> axis;  // none before the first state, as in the app
   for (uint64_t k = 0; k < uint64_t(80 * kRate_hz) && !scorer.progress().finished(); ++k) {
-    if (k % input_ticks == 0) input(double(k) / kRate_hz, *rig.desk());
+    if (k % input_ticks == 0) input(double(k) / kRate_hz, *rig.desk(), axis);
     loop.run_unpaced(1);
     while (loop.samples().pop(sample)) {
       scorer.feed(sample);
+      axis = haptics::needle_axis(sample.state);
       const size_t step = scorer.progress().current_step();
       if (step >= task.steps.size() || task.steps[step].id != "pivot") continue;
       const Eigen::Vector3d tip(sample.state.needle_tip_m[0], sample.state.needle_tip_m[1], sample.state.needle_tip_m[2]);
@@ -93,14 +99,16 @@ void expect_every_step_completed(const DeskRun& run) {
 TEST(DeskSessions, PenetrableSphereWithTheKeyboard) {
   const training::Task task = training::load_task(source_dir() / "assets/tasks/penetrable_sphere.json");
   const Eigen::Vector3d centre(0.0, 0.0, 0.1);  // the keyboard starts at the workspace's centre
-  const std::vector<DeskWaypoint> plan = penetrable_plan(task, planning_start("keyboard"), centre);
+  const DeskStart start = planning_start("keyboard");
+  const std::vector<DeskWaypoint> plan = penetrable_plan(task, start, centre);
   haptics::KeyboardMapping keys;
   int presses = 0;
   // A trainee pressing (or holding, with the key repeat) 40 times a second, each press the key
   // that most reduces what is left to do, with Shift under a whole step.
-  const DeskRun run = run_desk("keyboard", 25, [&](double t, haptics::DeskDevice& desk) {
+  const DeskRun run = run_desk("keyboard", 25, [&](double t, haptics::DeskDevice& desk, const auto& axis) {
     const DeskWaypoint want = plan_at(plan, centre, t);
     const haptics::DeskPose& pose = keys.pose();
+    keys.set_needle_direction(axis ? app::needle_direction(start, *axis) : app::needle_direction(start, pose));  // as in the app
     const double error[5] = {(want.device_m[0] - pose.position_m[0]) / haptics::KeyboardMapping::kStep_m,
                              (want.device_m[1] - pose.position_m[1]) / haptics::KeyboardMapping::kStep_m,
                              (want.device_m[2] - pose.position_m[2]) / haptics::KeyboardMapping::kStep_m,
@@ -130,15 +138,15 @@ DeskRun run_with_the_mouse(const std::string& task_name, MakePlan make_plan, std
   const training::Task task = training::load_task(source_dir() / "assets/tasks" / (task_name + ".json"));
   const DeskStart start = planning_start("mouse", task_name);
   const Eigen::Vector2d cursor = mouse_cursor_start(task, start, {1280, 720});
-  const Eigen::Vector3d device_start(cursor.x() * 0.1, cursor.y() * 0.1, 0.1);
-  mouse.emplace(make_plan(task, start, device_start), device_start, cursor);
-  return run_desk("mouse", 20, [&](double t, haptics::DeskDevice& desk) {
-    mouse->step(t);
+  const haptics::MouseView view = app::mouse_view(engine::load_scene(task.scene).camera, start);
+  mouse.emplace(make_plan(task, start, mouse_device_start(view, cursor)), start, view, cursor);
+  return run_desk("mouse", 20, [&](double t, haptics::DeskDevice& desk, const auto& axis) {
+    mouse->step(t, axis);
     desk.set_pose(mouse->pose());
   }, task_name);
 }
 
-// The layered target (issue 14) with the mouse: above the entry, turned onto the vertical axis,
+// The layered target with the mouse: above the entry, turned onto the vertical axis,
 // the wheel pushing the needle in through skin, fat and muscle to the target, held, withdrawn.
 TEST(DeskSessions, LayeredTargetWithTheMouse) {
   std::optional<MousePlayer> mouse;
@@ -165,7 +173,8 @@ TEST(DeskSessions, PenetrableSphereWithTheMouse) {
 TEST(DeskSessions, PenetrableSphereWithAGamepad) {
   const training::Task task = training::load_task(source_dir() / "assets/tasks/penetrable_sphere.json");
   const Eigen::Vector3d centre(0.0, 0.0, 0.1);  // the gamepad starts at the workspace's centre
-  const std::vector<DeskWaypoint> plan = penetrable_plan(task, planning_start("gamepad"), centre);
+  const DeskStart start = planning_start("gamepad");
+  const std::vector<DeskWaypoint> plan = penetrable_plan(task, start, centre);
   haptics::GamepadMapping pad;
   // 50 frames a second, the sticks and triggers deflected in proportion to what is left to do
   // (a fifth of a second's worth at full speed is full deflection), past their dead zones.
@@ -174,9 +183,10 @@ TEST(DeskSessions, PenetrableSphereWithAGamepad) {
     const double want = std::clamp(error / (0.2 * rate), -1.0, 1.0);
     return want == 0.0 ? 0.0 : (want > 0 ? 1.0 : -1.0) * (dead_zone + (1.0 - dead_zone) * std::abs(want));
   };
-  const DeskRun run = run_desk("gamepad", 20, [&](double t, haptics::DeskDevice& desk) {
+  const DeskRun run = run_desk("gamepad", 20, [&](double t, haptics::DeskDevice& desk, const auto& axis) {
     const DeskWaypoint want = plan_at(plan, centre, t);
     const haptics::DeskPose& pose = pad.pose();
+    pad.set_needle_direction(axis ? app::needle_direction(start, *axis) : app::needle_direction(start, pose));  // as in the app
     State s;
     const double v = haptics::GamepadMapping::kSpeed_m_per_s, w = haptics::GamepadMapping::kTurnRate_rad_per_s;
     const double dz = haptics::GamepadMapping::kStickDeadZone;

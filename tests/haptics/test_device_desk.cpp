@@ -98,14 +98,40 @@ TEST(DeviceDeskMouse, WithTheButtonHeldMotionTurnsTheWristAndTheHandleStays) {
   mouse.pointer(0.3, -0.1, true);  // half a window's height right, a fifth down
   EXPECT_EQ(mouse.pose().position_m[0], before.position_m[0]);
   EXPECT_EQ(mouse.pose().position_m[1], before.position_m[1]);
-  EXPECT_NEAR(mouse.pose().wrist_rad[0], 0.5 * M_PI, 1e-12) << "right: the hub swings clockwise";
-  EXPECT_NEAR(mouse.pose().wrist_rad[1], -0.2 * M_PI, 1e-12) << "down: the hub tilts towards the viewer";
+  EXPECT_NEAR(mouse.pose().wrist_rad[0], 0.25 * M_PI, 1e-12) << "right: the hub swings clockwise, 90 deg a half height";
+  EXPECT_NEAR(mouse.pose().wrist_rad[1], -0.1 * M_PI, 1e-12) << "down: the hub tilts towards the viewer";
   // The app puts the cursor back where the turn began: the handle goes on from there.
   mouse.pointer(-0.2, 0.1, false);
   EXPECT_EQ(mouse.pose().position_m[0], before.position_m[0]);
   mouse.pointer(-0.1, 0.1, false);
   EXPECT_NEAR(mouse.pose().position_m[0], before.position_m[0] + 0.01, 1e-15);
-  EXPECT_NEAR(mouse.pose().wrist_rad[0], 0.5 * M_PI, 1e-12);
+  EXPECT_NEAR(mouse.pose().wrist_rad[0], 0.25 * M_PI, 1e-12);
+}
+
+// The cursor's ray at the handle's depth (a pinhole view): the camera 0.3 m from the tool's start,
+// a 40 deg field of view; a point h across at depth d is under the cursor at h / ((0.3 + d) tan 20).
+TEST(DeviceDeskMouse, TheHandleIsWhereTheCursorsRayMeetsItsDepth) {
+  const MouseView view{std::tan(20.0 * M_PI / 180.0), 0.3};
+  MouseMapping mouse({}, view);
+  mouse.pointer(0.5, -0.25, false);
+  const double at_start = 0.3 * std::tan(20.0 * M_PI / 180.0);
+  EXPECT_NEAR(mouse.pose().position_m[0], 0.5 * at_start, 1e-15);
+  EXPECT_NEAR(mouse.pose().position_m[1], -0.25 * at_start, 1e-15);
+  // The wheel along a needle pointing into the view and down (unit (0, -0.6, 0.8)): 5 notches, 1 cm.
+  mouse.set_needle_direction({{0.0, -0.6, 0.8}});
+  mouse.scroll(5);
+  EXPECT_NEAR(mouse.pose().position_m[1], -0.25 * at_start - 0.006, 1e-15);
+  EXPECT_NEAR(mouse.pose().position_m[2], 0.1 + 0.008, 1e-15);
+  // The cursor for the handle now, at its new depth 8 mm further: the cursor there puts it back.
+  double x = 0.0, y = 0.0;
+  mouse.cursor_at_handle(x, y);
+  const double deeper = (0.3 + 0.008) * std::tan(20.0 * M_PI / 180.0);
+  EXPECT_NEAR(x, 0.5 * at_start / deeper, 1e-12);
+  EXPECT_NEAR(y, (-0.25 * at_start - 0.006) / deeper, 1e-12);
+  const DeskPose before = mouse.pose();
+  mouse.pointer(x, y, false);
+  EXPECT_NEAR(mouse.pose().position_m[0], before.position_m[0], 1e-15);
+  EXPECT_NEAR(mouse.pose().position_m[1], before.position_m[1], 1e-15);
 }
 
 TEST(DeviceDeskMouse, ReleasedElsewhereTheHandleMovesOnFromWhereItStayed) {
@@ -140,6 +166,19 @@ TEST(DeviceDeskKeyboard, EachPressIsOneStepAndShiftAFifth) {
   EXPECT_NEAR(keys.pose().wrist_rad[1], 80.0 * kDeg, 1e-15) << "the tilt stops at its limit";
   keys.press(DeskKey::kTiltToward, false);
   EXPECT_NEAR(keys.pose().wrist_rad[1], 79.0 * kDeg, 1e-12) << "and comes back at once";
+}
+
+// W and S go along the needle, not into the screen: a needle pointing down the screen and 30 deg
+// into it, (0, -cos 30, sin 30).
+TEST(DeviceDeskKeyboard, InAndOutGoAlongTheNeedle) {
+  KeyboardMapping keys;
+  keys.set_needle_direction({{0.0, -std::cos(M_PI / 6), std::sin(M_PI / 6)}});
+  keys.press(DeskKey::kIn, false);
+  keys.press(DeskKey::kIn, false);
+  keys.press(DeskKey::kOut, true);
+  EXPECT_NEAR(keys.pose().position_m[0], 0.0, 1e-15);
+  EXPECT_NEAR(keys.pose().position_m[1], -0.0018 * std::cos(M_PI / 6), 1e-15);
+  EXPECT_NEAR(keys.pose().position_m[2], 0.1 + 0.0018 * std::sin(M_PI / 6), 1e-15);
 }
 
 TEST(DeviceDeskGamepad, DeadZonesAreCutAndTheRestRescaled) {

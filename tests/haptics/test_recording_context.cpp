@@ -34,6 +34,7 @@ json current_context() {
               {"axial_stiffness_N_per_m", 5.0},
               {"passivity_max_damping_per_tick", 1.0}}}}},
           {"coupling", {{"workspace_scale", 1.0}, {"wrist", true}}},
+          {"practice", true},
           {"safety_limits", {{"max_force_n", 3.3}}}};
 }
 
@@ -53,6 +54,8 @@ TEST(RecordingContext, AnOlderContextGetsWhatItsMissingKeysMeantThen) {
   EXPECT_EQ(gains["axial_stiffness_N_per_m"], 0.0);
   EXPECT_EQ(gains["force_scale"], 1.0) << "the rest untouched";
   EXPECT_EQ(read["coupling"]["wrist"], false);
+  old.erase("practice");
+  EXPECT_EQ(read_recording_context("r.nrec", header_with(old.dump()))["practice"], false) << "recorded before practice runs";
 
   old.erase("coupling");  // joint to joint, as the first recordings of sim sessions
   EXPECT_TRUE(read_recording_context("r.nrec", header_with(old.dump()))["coupling"].is_null());
@@ -67,13 +70,16 @@ TEST(RecordingContext, AContextThatCannotRebuildItsSessionIsRefusedNamingTheFile
   wrong_version["version"] = "2";
   json no_text = current_context();
   no_text.erase("task_text");
+  json bad_practice = current_context();
+  bad_practice["practice"] = "yes";
   for (const Case& c :
        {Case{header_with(current_context().dump(), 2), "r.nrec: header: format version 2 has no checksums"},
         Case{header_with(""), "r.nrec: header: context: none (recorded by another program)"},
         Case{header_with("{not json"), "r.nrec: header: context: not valid JSON"},
         Case{header_with("[1]"), "r.nrec: header: context: expected version 2"},
         Case{header_with(wrong_version.dump()), "r.nrec: header: context: expected version 2"},
-        Case{header_with(no_text.dump()), "r.nrec: header: context: missing \"task_text\""}}) {
+        Case{header_with(no_text.dump()), "r.nrec: header: context: missing \"task_text\""},
+        Case{header_with(bad_practice.dump()), "r.nrec: header: context: practice is not true or false"}}) {
     try {
       read_recording_context("r.nrec", c.header);
       ADD_FAILURE() << c.says;

@@ -83,6 +83,12 @@ TEST(StartScreenKeys, EveryChoiceIsReachableByKey) {
   ui::start_key(s, K::kPageUp, false);
   ui::start_key(s, K::kPageUp, false);
   EXPECT_EQ(ui::trainee_name(s), "Carla");
+  ui::start_key(s, K::kPractice, false);
+  EXPECT_TRUE(s.practice) << "P: practice";
+  ui::start_key(s, K::kPractice, true);
+  EXPECT_TRUE(s.practice) << "a p typed in the name field is a letter";
+  ui::start_key(s, K::kPractice, false);
+  EXPECT_FALSE(s.practice);
   ui::start_key(s, K::kTab, false);
   EXPECT_TRUE(s.focus_name);
 

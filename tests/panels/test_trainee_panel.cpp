@@ -9,6 +9,9 @@
 #include "engine/render_target.hpp"
 #include "engine/ui_pass.hpp"
 #include "image_compare.hpp"
+#include "engine/scene.hpp"
+#include "ui/guidance_overlay.hpp"
+#include "ui/step_banner.hpp"
 #include "ui/trainee_panel.hpp"
 #include "vulkan_fixture.hpp"
 #include "tests/support/test_paths.hpp"
@@ -29,12 +32,25 @@ training::SessionResult result_of(double total, bool passed, const double (&frac
   return result;
 }
 
-// A state with the tip on the task's entry marker (the approach step's condition).
+// A state with the tip on the task's entry marker (the approach step's condition), the needle along
+// the approach's planned axis (each shipped one in the x-z plane: the body x axis pitched about y).
 haptics::ToolSnapshot at_entry(const training::Task& task) {
   haptics::ToolSnapshot s;
   const training::Vec3 entry = task.markers[size_t(task.marker_index("entry"))].position;
   for (int i = 0; i < 3; ++i) s.needle_tip_m[i] = entry[i];
+  const training::Vec3& d = task.markers[size_t(task.steps[0].guidance.axis)].direction;
+  const double pitch = std::atan2(-d[2], d[0]);
+  s.needle_orientation[0] = std::cos(pitch / 2), s.needle_orientation[2] = std::sin(pitch / 2);
   return s;
+}
+
+// The view's live parts from the newest state, as the app fills them (TaskSession::draw_panel): its
+// time, the step's cue in the task's scene's camera axes and in words.
+void live(ui::TraineeView& view, const training::Task& task, const haptics::ToolSnapshot& s) {
+  const size_t step = std::min(view.step.value_or(view.progress->current_step()), task.steps.size() - 1);
+  view.now_s = s.time_s;
+  view.cue = training::step_cue(task, step, s, ui::view_axes(engine::load_scene(task.scene).camera));
+  view.cue_lines = training::cue_lines(task, step, s, *view.cue);
 }
 
 class TraineePanel : public VulkanTest {
@@ -70,7 +86,8 @@ TEST_F(TraineePanel, MidTaskMatchesGolden) {
   view.needle = {.along_N = 0.0, .sideways_N = 0.0, .rigid_N = 1.1, .total_N = 1.1};
   view.hand_force_N = 1.1;
   view.loop_rate_hz = 1000.0;
-  EXPECT_TRUE(matches_golden(draw(view), "panel_trainee_running"));
+  live(view, task, start);
+  EXPECT_TRUE(matches_golden(draw(view, {480, 520}), "panel_trainee_running"));
 }
 
 TEST_F(TraineePanel, ResultMatchesGolden) {
@@ -99,7 +116,7 @@ TEST_F(TraineePanel, ResultWithTheStartScreensChoicesAt1920x1080MatchesGolden) {
   EXPECT_TRUE(matches_golden(draw(view, {1920, 1080}), "panel_trainee_result_choices_1920x1080"));
 }
 
-// The layered target mid-task (issue 14): step 3 (to the target), the tip in the muscle with the
+// The layered target mid-task: step 3 (to the target), the tip in the muscle with the
 // skin punctured; the panel names the layer and the punctures.
 TEST_F(TraineePanel, LayeredTargetShowsTheLayerAndThePuncturesMatchesGolden) {
   const training::Task task = training::load_task(test::source_dir() / "assets/tasks/layered_target.json");
@@ -123,7 +140,9 @@ TEST_F(TraineePanel, LayeredTargetShowsTheLayerAndThePuncturesMatchesGolden) {
   view.needle = {.along_N = 0.8, .sideways_N = 0.12, .rigid_N = 0.0, .total_N = std::hypot(0.8, 0.12)};
   view.hand_force_N = view.needle.total_N;
   view.loop_rate_hz = 1000.0;
-  EXPECT_TRUE(matches_golden(draw(view), "panel_trainee_layered_target"));
+  s.time_s = 9.0;
+  live(view, task, s);
+  EXPECT_TRUE(matches_golden(draw(view, {480, 560}), "panel_trainee_layered_target"));
 }
 
 // The epidural with the layer names hidden (an assessment run): the dura punctured in the loss of
@@ -161,10 +180,11 @@ TEST_F(TraineePanel, EpiduralDuralPunctureWithTheNamesHiddenMatchesGolden) {
   view.needle = {.along_N = 0.0, .sideways_N = 0.05, .rigid_N = 0.0, .total_N = 0.05};
   view.hand_force_N = task.force_scale * view.needle.total_N;
   view.loop_rate_hz = 1000.0;
-  EXPECT_TRUE(matches_golden(draw(view), "panel_trainee_epidural_hidden_names"));
+  live(view, task, s);
+  EXPECT_TRUE(matches_golden(draw(view, {480, 520}), "panel_trainee_epidural_hidden_names"));
 }
 
-// The sloppy epidural's result (issue 14's acceptance): its faults named in the panel, the bone
+// The sloppy epidural's result: its faults named in the panel, the bone
 // contacts with their peak and the redirection, beside the failed reasons (the run's numbers:
 // `needle-sim run --headless --task assets/tasks/epidural.json --operator sloppy`).
 TEST_F(TraineePanel, EpiduralSloppyResultNamesTheBoneContactsAndRedirection) {
@@ -193,6 +213,83 @@ TEST_F(TraineePanel, EpiduralDuralPunctureResultNamesIt) {
   view.result = &result;
   view.loop_rate_hz = 500.0;
   EXPECT_TRUE(matches_golden(draw(view, {480, 420}), "panel_trainee_epidural_dural_puncture_result"));
+}
+
+// The penetrable sphere's insert step, 16 s into its 20: the countdown orange with 4 s left, the cues
+// in words (how deep still, how far off the axis and which way to turn), the distance, angle and
+// depth gauges, the sideways load past its warning (orange) and the force at the hand over the safe
+// line (red, in words), at the two supported sizes over the whole window.
+TEST_F(TraineePanel, CuesCountdownAndWarningsAt1280x720And1920x1080MatchGoldens) {
+  const training::Task task = training::load_task(kTask);
+  training::TaskProgress progress(task);
+  haptics::ToolSnapshot s = at_entry(task);
+  s.time_s = 2.0;
+  progress.feed(s);  // the approach completed at 2 s
+  ASSERT_EQ(progress.current_step(), 1u);
+  // 12 mm along the insertion axis (0.7071, 0, -0.7071), in tissue, the needle 10 deg steeper.
+  for (int i = 0; i < 3; ++i) s.needle_tip_m[i] += 0.012 * (i == 0 ? 0.70711 : i == 2 ? -0.70711 : 0.0);
+  const double pitch = (45.0 + 10.0) * 3.141592653589793 / 180.0;
+  s.needle_orientation[0] = std::cos(pitch / 2), s.needle_orientation[2] = std::sin(pitch / 2);
+  s.contact = haptics::ContactState::kTissue;
+  s.time_s = 18.0;
+  progress.feed(s);
+  ASSERT_EQ(progress.current_step(), 1u);
+  ui::TraineeView view{&task, &progress};
+  view.step_metrics.lateral_load_Ns = 2.4;
+  view.step_metrics.peak_hand_force_N = 3.6;
+  view.needle = {.along_N = 1.2, .sideways_N = 1.8, .rigid_N = 0.0, .total_N = std::hypot(1.2, 1.8)};
+  view.hand_force_N = 3.6;  // over the safe 3 N
+  view.loop_rate_hz = 1000.0;
+  live(view, task, s);
+  ASSERT_GE(view.cue_lines.size(), 2u);
+  EXPECT_TRUE(matches_golden(draw(view, {1280, 720}), "panel_trainee_cues_1280x720"));
+  EXPECT_TRUE(matches_golden(draw(view, {1920, 1080}), "panel_trainee_cues_1920x1080"));
+}
+
+// The banner as a step ends: the approach completed (green, what comes next) at 1280x720; the insert
+// step timed out (red, which limit and what it needed) at 1920x1080; gone after kBannerSeconds.
+TEST_F(TraineePanel, StepBannersAt1280x720And1920x1080MatchGoldens) {
+  const training::Task task = training::load_task(kTask);
+  training::TaskProgress progress(task);
+  haptics::ToolSnapshot s = at_entry(task);
+  s.time_s = 3.0;
+  progress.feed(s);  // the approach completed at 3 s
+  ui::TraineeView view{&task, &progress};
+  view.loop_rate_hz = 1000.0;
+  s.time_s = 4.0;
+  live(view, task, s);
+  EXPECT_TRUE(matches_golden(draw(view, {1280, 720}), "panel_trainee_banner_completed_1280x720"));
+
+  s.contact = haptics::ContactState::kTissue;  // at the surface, never deep enough: the insert step times out
+  s.time_s = 23.0;
+  progress.feed(s);
+  ASSERT_EQ(progress.records()[1].outcome, training::StepOutcome::kTimedOut);
+  s.time_s = 24.0;
+  live(view, task, s);
+  EXPECT_TRUE(matches_golden(draw(view, {1920, 1080}), "panel_trainee_banner_timed_out_1920x1080"));
+}
+
+TEST(StepBanner, SaysWhatEndedAndWhyForAFewSeconds) {
+  const training::Task task = training::load_task(kTask);
+  training::TaskProgress progress(task);
+  haptics::ToolSnapshot s = at_entry(task);
+  s.time_s = 1.0;
+  EXPECT_FALSE(ui::step_banner(task, progress, 1.0)) << "nothing ended yet";
+  progress.feed(s);
+  const std::optional<ui::StepBanner> done = ui::step_banner(task, progress, 2.0);
+  ASSERT_TRUE(done);
+  EXPECT_TRUE(done->completed);
+  EXPECT_EQ(done->title, "Step 1 of 5 completed: approach");
+  EXPECT_EQ(done->detail, "Next: " + task.steps[1].instruction);
+  EXPECT_FALSE(ui::step_banner(task, progress, 1.0 + ui::kBannerSeconds + 0.01)) << "gone after its seconds";
+  s.time_s = 21.0;  // the insert step's 20 s pass with the tip at the surface
+  progress.feed(s);
+  const std::optional<ui::StepBanner> late = ui::step_banner(task, progress, 21.5);
+  ASSERT_TRUE(late);
+  EXPECT_FALSE(late->completed);
+  EXPECT_EQ(late->title, "Step 2 of 5 timed out: insert");
+  EXPECT_EQ(late->detail,
+            "The 20 s limit passed; the step needed the tip 25-35 mm deep along the planned axis, in the tissue, held 0.5 s.");
 }
 
 TEST(WhatToImprove, TheTwoCostliestComponentsFirst) {

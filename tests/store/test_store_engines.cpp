@@ -85,6 +85,24 @@ TEST_P(StoreEngines, RoundTrip) {
   EXPECT_FALSE(store.find_uid("no such uid"));
 }
 
+// The store keeps each component's value and weight; whether it applied is read back as the score
+// decided it: no weight, not in the task; no points and nothing of it reached (a_result never was
+// in tissue), not reached; the rest applied (docs/SCORING.md, "Score").
+TEST_P(StoreEngines, AComponentsStatusIsReadBackAsTheScoreDecidedIt) {
+  const std::string db = fresh();
+  SessionStore store(db);
+  const int64_t id = store.begin_session("ana", small_task(), "sim", "");
+  SessionResult result = a_result();
+  result.score.components = {{"completion", 0.5, 30.0},
+                             {"tip_error", 0.7, 15.0},
+                             {"lateral_load", 0.0, 10.0, ComponentStatus::kNotReached},
+                             {"force_steadiness", 0.0, 0.0, ComponentStatus::kNotApplicable}};
+  store.finish_session(id, result);
+  const StoredSession s = store.load(id);
+  ASSERT_EQ(s.components.size(), 4u);
+  for (size_t k = 0; k < 4; ++k) EXPECT_EQ(s.components[k].status, result.score.components[k].status) << s.components[k].name;
+}
+
 TEST_P(StoreEngines, ErrorsNameTheDatabaseAndWhatFailed) {
   const std::string db = fresh();
   SessionStore store(db);

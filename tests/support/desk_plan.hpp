@@ -6,11 +6,14 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "app/desk_input.hpp"
 #include "app/session_rig.hpp"
 #include "engine/scene.hpp"
 #include "engine/screen_projection.hpp"
@@ -38,25 +41,11 @@ inline void wrist_for(const Eigen::Matrix3d& device_to_scene, const Eigen::Vecto
   swing = std::atan2(p0.cross(p).dot(away), p0.dot(p));
 }
 
-// Where the tool starts (world frame) and the view's axes, from a rig built for planning.
-struct DeskStart {
-  Eigen::Vector3d tip, direction;
-  Eigen::Matrix3d device_to_scene;
-};
+// Where the tool starts (world frame) and the view's axes, from a rig built for planning: what the
+// app starts its desk input with (app::DeskInput::start_at).
+using DeskStart = app::ToolStart;
 
-inline DeskStart desk_start(app::SessionRig& rig) {
-  auto& step = dynamic_cast<haptics::TaskSpaceStep&>(rig.step());
-  haptics::DeviceReading reading;
-  rig.device().read(reading);
-  haptics::DeviceCommand command;
-  haptics::ToolSnapshot state;
-  step.step(reading, 0.001, command, state);
-  DeskStart start;
-  start.tip = Eigen::Vector3d(state.needle_tip_m[0], state.needle_tip_m[1], state.needle_tip_m[2]);
-  start.direction = Eigen::Vector3d(haptics::needle_axis(state).data());
-  start.device_to_scene = step.coupling().device_to_scene;
-  return start;
-}
+inline DeskStart desk_start(app::SessionRig& rig) { return *rig.tool_start(); }
 
 // The start of the rig `needle-sim run --device DEVICE` builds for `task_file` (its files in `dir`).
 inline DeskStart desk_start(const std::filesystem::path& task_file, const std::string& device, const std::filesystem::path& dir) {
@@ -171,27 +160,45 @@ inline Eigen::Vector2d mouse_cursor_start(const training::Task& task, const Desk
 
 // One input of a mouse playing a plan: where the cursor goes (half window heights), whether the
 // right button goes down before the move or up instead of it, and the wheel's notches after it
-// (into the view positive).
+// (in along the needle positive; the app then puts the cursor on the handle, `after_wheel`).
 struct MouseInput {
   Eigen::Vector2d cursor;
   bool press = false, release = false;
   double notches = 0.0;
+  Eigen::Vector2d after_wheel = Eigen::Vector2d::Zero();
 };
+
+// Where the handle starts for a mouse whose cursor the app put at `cursor` (half heights) in `view`.
+inline Eigen::Vector3d mouse_device_start(const haptics::MouseView& view, const Eigen::Vector2d& cursor) {
+  haptics::MouseMapping mouse({}, view);
+  mouse.pointer(cursor.x(), cursor.y(), false);
+  return {mouse.pose().position_m[0], mouse.pose().position_m[1], mouse.pose().position_m[2]};
+}
 
 // A trainee's mouse playing a plan as the app reads it (app/desk_input.cpp): the right button held
 // turns the wrist (and once it is released the cursor is back where it went down), else the cursor
-// moves the handle and the wheel pushes it in a notch at a time. It keeps its own MouseMapping, fed
-// as the app feeds it, to know what is left to do. `pixel`: the cursor's resolution in half
-// heights (0: exact); a turn or move under half of it is not made.
+// puts the handle under it (through `view`) and the wheel pushes it along the needle a notch at a
+// time, where the needle's depth changes (after which the app puts the cursor on the handle). It
+// keeps its own MouseMapping, fed as the app feeds it, to know what is left to do. `pixel`: the
+// cursor's resolution in half heights (0: exact); a turn or move under half of it is not made.
 class MousePlayer {
  public:
-  MousePlayer(std::vector<DeskWaypoint> plan, const Eigen::Vector3d& device_start, const Eigen::Vector2d& cursor, double pixel = 0.0)
-      : plan_(std::move(plan)), device_start_(device_start), cursor_(cursor), pixel_(pixel), lowest_(cursor), highest_(cursor) {
+  MousePlayer(std::vector<DeskWaypoint> plan, const DeskStart& start, const haptics::MouseView& view, const Eigen::Vector2d& cursor,
+              double pixel = 0.0)
+      : plan_(std::move(plan)),
+        start_(start),
+        device_start_(mouse_device_start(view, cursor)),
+        cursor_(cursor),
+        pixel_(pixel),
+        mouse_({}, view),
+        lowest_(cursor),
+        highest_(cursor) {
     mouse_.pointer(cursor_.x(), cursor_.y(), false);
   }
 
-  // The input for `t` seconds into the plan.
-  MouseInput step(double t) {
+  // The input for `t` seconds into the plan; `axis`: the needle's axis now (world frame), which the
+  // app pushes along once it has a state (a script made beforehand has none: the wrist's direction).
+  MouseInput step(double t, const std::optional<std::array<double, 3>>& axis = std::nullopt) {
     const DeskWaypoint want = plan_at(plan_, device_start_, t);
     const haptics::DeskPose& pose = mouse_.pose();
     const Eigen::Vector2d turn(want.swing_rad - pose.wrist_rad[0], want.tilt_rad - pose.wrist_rad[1]);
@@ -212,22 +219,38 @@ class MousePlayer {
       pressed_ = cursor_;
       mouse_.pointer(cursor_.x(), cursor_.y(), true);
     }
-    const Eigen::Vector2d move =
-        turning ? Eigen::Vector2d(turn / haptics::MouseMapping::kRadPerHalfHeight)
-                : Eigen::Vector2d((want.device_m.x() - pose.position_m[0]) / haptics::MouseMapping::kMetresPerHalfHeight,
-                                  (want.device_m.y() - pose.position_m[1]) / haptics::MouseMapping::kMetresPerHalfHeight);
-    cursor_ += move;
+    const haptics::NeedleDirection direction = axis ? app::needle_direction(start_, *axis) : app::needle_direction(start_, pose);
+    mouse_.set_needle_direction(direction);
+    if (turning) {
+      cursor_ += turn / haptics::MouseMapping::kRadPerHalfHeight;
+    } else {
+      // The wheel for the depth the needle's direction can give (a needle in the screen's plane has
+      // none: the cursor does it all), the cursor for the rest, where it must be before the wheel.
+      const double* d = direction.device;
+      if (std::abs(d[2]) > 0.2)
+        input.notches = std::round((want.device_m.z() - pose.position_m[2]) / (d[2] * haptics::MouseMapping::kDepthPerNotch_m));
+      const double pushed = input.notches * haptics::MouseMapping::kDepthPerNotch_m;
+      double x = 0.0, y = 0.0;
+      mouse_.cursor_for(want.device_m.x() - pushed * d[0], want.device_m.y() - pushed * d[1], x, y);
+      cursor_ = Eigen::Vector2d(x, y);
+    }
     if (pixel_ > 0) cursor_ = (cursor_ / pixel_).array().round().matrix() * pixel_;
     lowest_ = lowest_.cwiseMin(cursor_);
     highest_ = highest_.cwiseMax(cursor_);
     mouse_.pointer(cursor_.x(), cursor_.y(), turning);
-    if (!turning) {
-      input.notches = std::round((want.device_m.z() - mouse_.pose().position_m[2]) / haptics::MouseMapping::kDepthPerNotch_m);
-      mouse_.scroll(input.notches);
-    }
     input.cursor = cursor_;
+    if (input.notches != 0.0) {  // the app puts the cursor on the handle after the wheel
+      mouse_.scroll(input.notches);
+      double x = 0.0, y = 0.0;
+      mouse_.cursor_at_handle(x, y);
+      cursor_ = Eigen::Vector2d(x, y);
+      if (pixel_ > 0) cursor_ = (cursor_ / pixel_).array().round().matrix() * pixel_;
+      mouse_.pointer(cursor_.x(), cursor_.y(), false);
+      input.after_wheel = cursor_;
+    }
     return input;
   }
+  const Eigen::Vector3d& device_start() const { return device_start_; }
 
   const haptics::DeskPose& pose() const { return mouse_.pose(); }
   // How far the cursor went, in half heights.
@@ -236,6 +259,7 @@ class MousePlayer {
 
  private:
   std::vector<DeskWaypoint> plan_;
+  DeskStart start_;
   Eigen::Vector3d device_start_;
   Eigen::Vector2d cursor_, pressed_ = Eigen::Vector2d::Zero();
   double pixel_;

@@ -48,8 +48,8 @@ RunOutput run(const std::string& arguments, const fs::path& out, const fs::path&
   return r;
 }
 
-RunOutput replay(const fs::path& recording, const fs::path& out, const fs::path& db) {
-  return run("--device " + quoted(fs::path("replay:" + recording.string())), out, db);
+RunOutput replay(const fs::path& recording, const fs::path& out, const fs::path& db, const std::string& options = "") {
+  return run("--device " + quoted(fs::path("replay:" + recording.string())) + options, out, db);
 }
 
 // A headless run of `task` (a shipped one's name, or a file) by `op`; its recording.
@@ -130,7 +130,8 @@ TEST(CliRecordings, ACutRecordingReplaysIncompleteAndAnEmptyOneIsAnError) {
   const uint64_t cut = block_offset(good, 2000) + 100;  // in tick 2000's block
   const fs::path cut_file = dir / "cut.nrec";
   write_bytes(cut_file, {good.begin(), good.begin() + long(cut)});
-  RunOutput r = replay(cut_file, dir / "cut", dir / "sessions.db");
+  // Cut 2 s in, before the first step (the touch) ended: stored only when asked (--store).
+  RunOutput r = replay(cut_file, dir / "cut", dir / "sessions.db", " --store");
   EXPECT_EQ(r.process.exit_code, 0) << r.process.output;
   EXPECT_TRUE(says(r.process, "note: " + cut_file.string() + ": cut at byte " + std::to_string(block_offset(good, 2000)) +
                                   " after 2000 ticks"))

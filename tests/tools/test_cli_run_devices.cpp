@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_process.hpp"
+#include "tests/support/desk_plan.hpp"
 #include "haptics/recording/session_format.hpp"
 #include "training/sessions/session_store.hpp"
 #include "tests/support/test_paths.hpp"
@@ -149,12 +150,11 @@ TEST(CliRunDevices, ABadRecordingIsAnErrorNamingTheFile) {
 }
 
 // The trainee's mouse end to end: xdotool moves the cursor in the window to the left, and the
-// recorded needle tip follows along the view's right axis (the scene camera's), in free space,
-// 0.1 m for half the window's height.
+// recorded needle tip comes to rest under it, in free space (docs/DEVICES.md, "Desk devices").
 // No panels: over a panel the mouse belongs to the panel, and at this size they cover the view.
-TEST(CliRunDevices, TheMouseMovesTheNeedleAlongTheViewsRightAxis) {
+TEST(CliRunDevices, TheTipComesToRestUnderTheMouseCursor) {
   const fs::path dir = test_output_dir("cli_run_devices") / "mouse";
-  const std::string run = mouse_session(dir, "--size 400x300 --frames 600");
+  const std::string run = mouse_session(dir, "--size 400x300 --frames 600 --store");  // a --frames run is stored when asked
   const fs::path log = test_output_dir("cli_run_devices") / "mouse.log";
   // Once the loop runs (its real-time line, on the first frame: a loaded machine may take seconds
   // to get there), centre the cursor, then move it 100 px left: two thirds of half the height, -6.7 cm.
@@ -176,23 +176,20 @@ TEST(CliRunDevices, TheMouseMovesTheNeedleAlongTheViewsRightAxis) {
   ASSERT_GT(recording.records.size(), 500u) << "under half a second of 1 kHz ticks";
   EXPECT_EQ(recording.header.rate_hz, 1000.0);
 
-  // Camera of assets/scenes/penetrable_sphere.json: from (0.33, -0.3, 0.06) at (0.34, 0, 0.04), z up.
-  const double forward[3] = {0.01, 0.3, -0.02};
-  const double right[3] = {forward[1] * 1.0 - forward[2] * 0.0, forward[2] * 0.0 - forward[0] * 1.0, 0.0};  // forward x up
-  const double right_norm = std::hypot(right[0], right[1]);
-  // From the last tick with the cursor centred (settled for half a second) to the end.
+  // The cursor was centred (its reading the workspace's centre), then put at (100, 150): a second
+  // later the tip has come to rest under it, as the scene's camera shows it in the 400x300 window.
   size_t centred = recording.records.size();
   for (size_t k = 0; k < recording.records.size(); ++k) {
     if (recording.records[k].reading.position_m[0] == 0.0) centred = k;
   }
   ASSERT_LT(centred, recording.records.size()) << "the cursor was never centred";
-  const haptics::TickSample& first = recording.records[centred];
   const haptics::TickSample& last = recording.records.back();
-  EXPECT_NEAR(last.reading.position_m[0], -0.1 * 100.0 / 150.0, 0.003);
-  double along_right = 0.0;
-  for (int i = 0; i < 3; ++i) along_right += (last.state.needle_tip_m[i] - first.state.needle_tip_m[i]) * right[i] / right_norm;
-  EXPECT_LT(along_right, -0.045) << "the tip should follow the cursor most of the 6.7 cm (coupling spring, virtual robot's lag)";
-  EXPECT_GT(along_right, -0.072);
+  const engine::Camera camera = engine::load_scene(source_dir() / "assets/scenes/penetrable_sphere.json").camera;
+  const glm::vec3 tip(float(last.state.needle_tip_m[0]), float(last.state.needle_tip_m[1]), float(last.state.needle_tip_m[2]));
+  const std::optional<glm::vec2> on_screen = engine::project_to_screen(camera, {400, 300}, tip);
+  ASSERT_TRUE(on_screen);
+  EXPECT_NEAR(on_screen->x, 100.0, 2.0) << "the tip under the cursor, within 2 px";
+  EXPECT_NEAR(on_screen->y, 150.0, 2.0);
 }
 
 // The --device values `run --help` documents, each with a test below: the help cannot offer a
@@ -233,11 +230,11 @@ TEST(CliRunDevices, EveryTraineeDeviceIsRefusedHeadlessSayingItNeedsTheWindow) {
 
 // `run --device keyboard ARGUMENTS` in the window for `frames` frames, xdotool putting the pointer
 // over it (without a window manager the keys go to the window under it) and then running `keys`;
-// the session's recording, the store having kept one session on the keyboard.
+// the session's recording, the store having kept (--store) one session on the keyboard.
 haptics::Session keyboard_session_in_window(const fs::path& dir, const std::string& arguments, int frames, const std::string& keys) {
   fs::remove_all(dir);
   const std::string run = test::needle_sim_exe().string() + " run --device keyboard " + arguments + " --no-hud --size 400x300 --frames " +
-                          std::to_string(frames) + " --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db");
+                          std::to_string(frames) + " --store --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db");
   const std::string drive =
       "id=\\$(xdotool search --sync --name '^needle-sim\\$' | head -1); xdotool mousemove --window \\$id 200 150; sleep 1; " + keys;
   const ProcessResult r = run_on_virtual_display(run + " & " + drive + "; wait");
@@ -255,14 +252,20 @@ haptics::Session keyboard_session_in_window(const fs::path& dir, const std::stri
 // `run --device keyboard` in the window: xdotool's key presses reach the device, one step of the
 // pose a press (1 mm, 1 degree), as the recording shows. No panels: the keys are the device's.
 TEST(CliRunDevices, TheKeyboardMovesTheNeedleInTheWindow) {
-  const haptics::Session recording = keyboard_session_in_window(test_output_dir("cli_run_devices") / "keyboard", "", 600,
-                                                                "xdotool key --delay 100 Left Left Right w w w d; sleep 1");
+  const fs::path dir = test_output_dir("cli_run_devices") / "keyboard";
+  const haptics::Session recording = keyboard_session_in_window(dir, "", 600, "xdotool key --delay 100 Left Left Right w w w d; sleep 1");
   EXPECT_EQ(recording.header.device, "keyboard");
   ASSERT_FALSE(recording.records.empty());
   const haptics::DeviceReading& last = recording.records.back().reading;
-  EXPECT_NEAR(last.position_m[0], -0.001, 1e-9) << "Left, Left, Right";
-  EXPECT_NEAR(last.position_m[1], 0.0, 1e-9);
-  EXPECT_NEAR(last.position_m[2], 0.103, 1e-9) << "W pushes in, from the reach's centre at 0.1 m";
+  // W pushes in along the needle, 1 mm a press, from the reach's centre at 0.1 m deep: along its axis
+  // in the newest state, which in free space is its start direction (the wrist not yet turned) to
+  // within the coupling's lag, under 0.1 deg here: 3 mm along it within 5 um of 3 mm along the start.
+  const DeskStart start = desk_start(source_dir() / "assets/tasks/penetrable_sphere.json", "keyboard", dir / "plan");
+  const haptics::NeedleDirection along = app::needle_direction(start, haptics::DeskPose{});
+  const double* d = along.device;
+  EXPECT_NEAR(last.position_m[0], -0.001 + 0.003 * d[0], 5e-6) << "Left, Left, Right, and W along the needle";
+  EXPECT_NEAR(last.position_m[1], 0.003 * d[1], 5e-6);
+  EXPECT_NEAR(last.position_m[2], 0.1 + 0.003 * d[2], 5e-6) << "W pushes in along the needle";
   EXPECT_NEAR(last.joint_rad[0], 3.141592653589793 / 180.0, 1e-9) << "D swings";
 }
 
@@ -339,7 +342,7 @@ TEST(CliRunDevices, AReplayPlaysInTheWindow) {
   ASSERT_TRUE(live.score.contains("recording"));
   const std::string recording = live.score["recording"].get<std::string>();
   const ProcessResult r = run_on_virtual_display(test::needle_sim_exe().string() + " run --device " +
-                                                 quoted(fs::path("replay:" + recording)) + " --size 200x150 --frames 5 --out " +
+                                                 quoted(fs::path("replay:" + recording)) + " --size 200x150 --frames 5 --store --out " +
                                                  quoted(dir / "replay") + " --db " + quoted(dir / "sessions.db"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("presented 5 frames"), std::string::npos) << r.output;
@@ -350,10 +353,11 @@ TEST(CliRunDevices, AReplayPlaysInTheWindow) {
 }
 
 // A run killed mid-task (SIGKILL: no destructor, no last pass) leaves an incomplete session, a
-// readable database and a recording whose every tick up to the last flushed pass is intact.
+// readable database and a recording whose every tick up to the last flushed pass is intact. Stored
+// from its start (--store): killed before its first step ended it would otherwise not be stored.
 TEST(CliRunDevices, AKilledRunLeavesItsRecordingAndAnIncompleteSession) {
   const fs::path dir = test_output_dir("cli_run_devices") / "killed";
-  const std::string run = mouse_session(dir, "--size 200x150");
+  const std::string run = mouse_session(dir, "--size 200x150 --store");
   // Kill once the recording holds over a second of ticks (10 s at most).
   const std::string kill_later =
       "for i in \\$(seq 200); do [ \\$(cat " + quoted(dir) + "/recordings/*.nrec 2>/dev/null | wc -c) -gt 700000 ] && break; sleep 0.05; done; "

@@ -130,19 +130,33 @@ TEST(CliRunTask, SloppyOperatorFailsThePassMark) {
   EXPECT_FALSE(score["passed"].get<bool>()) << score.dump(2);
 }
 
-// In a window the task plays in real time; closed after a few frames, long before the task ends,
-// it leaves its session incomplete and the database readable.
-TEST(CliRunTask, WindowClosedMidTaskLeavesAnIncompleteSession) {
+// In a window the task plays in real time; closed after a few frames, long before the task ends, it
+// is no session: nothing stored, its recording removed, the run says so. With --store it leaves its
+// session incomplete and the database readable.
+TEST(CliRunTask, WindowClosedMidTaskIsStoredOnlyWithStore) {
   const fs::path dir = test_output_dir("cli_run_task") / "window";
   fs::remove_all(dir);
-  ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' " + test::needle_sim_exe().string() +
-                                " run --size 480x360 --frames 5 --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db"));
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("presented 5 frames"), std::string::npos) << r.output;
-  EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
+  const auto run = [&](const std::string& flags) {
+    return run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' " + test::needle_sim_exe().string() +
+                       " run --size 480x360 --frames 5 " + flags + " --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db"));
+  };
+  const ProcessResult look = run("");
+  ASSERT_EQ(look.exit_code, 0) << look.output;
+  EXPECT_NE(look.output.find("the session is not stored: a run with --frames is stored only with --store; its recording is "
+                             "removed"),
+            std::string::npos)
+      << look.output;
+  EXPECT_TRUE(training::SessionStore(dir / "sessions.db").sessions().empty());
+  EXPECT_TRUE(fs::is_empty(dir / "recordings")) << "no recording left of a session that never happened";
+
+  const ProcessResult kept = run("--store");
+  ASSERT_EQ(kept.exit_code, 0) << kept.output;
+  EXPECT_NE(kept.output.find("presented 5 frames"), std::string::npos) << kept.output;
+  EXPECT_EQ(kept.output.find("Vulkan validation"), std::string::npos) << kept.output;
   training::SessionStore store(dir / "sessions.db");
   ASSERT_EQ(store.sessions().size(), 1u);
   EXPECT_FALSE(store.sessions()[0].complete);
+  EXPECT_TRUE(fs::exists(store.sessions()[0].recording_path));
   EXPECT_FALSE(fs::exists(dir / "score.json"));
 }
 

@@ -50,6 +50,7 @@ struct UserFolders {
 struct MouseScript {
   std::string lines;
   Eigen::Vector3d device_start;
+  double pixel_m = 0.0;  // a pixel of the window at the tool's start, in device metres
 };
 
 using PlanMaker = std::vector<DeskWaypoint> (*)(const training::Task&, const DeskStart&, const Eigen::Vector3d&);
@@ -65,10 +66,11 @@ MouseScript mouse_plan_script(const std::string& name, PlanMaker make_plan) {
   Eigen::Vector2d cursor = mouse_cursor_start(task, start, kWindow);
   cursor.x() = std::max(cursor.x(), -double(kWindow.width) / kWindow.height);
   cursor.y() = std::min(cursor.y(), 1.0);
-  const Eigen::Vector3d device_start(cursor.x() * 0.1, cursor.y() * 0.1, 0.1);
+  const haptics::MouseView view = app::mouse_view(engine::load_scene(task.scene).camera, start);
+  const Eigen::Vector3d device_start = mouse_device_start(view, cursor);
   const std::vector<DeskWaypoint> plan = make_plan(task, start, device_start);
   const double half = 0.5 * kWindow.height;
-  MousePlayer mouse(plan, device_start, cursor, 1.0 / half);
+  MousePlayer mouse(plan, start, view, cursor, 1.0 / half);
   std::ostringstream lines;
   for (double t = 0.0; t <= plan_seconds(plan) + 1.0; t += kPlanStep_s) {
     const MouseInput input = mouse.step(t);
@@ -83,7 +85,7 @@ MouseScript mouse_plan_script(const std::string& name, PlanMaker make_plan) {
       lines << "click --repeat " << std::lround(std::abs(input.notches)) << " --delay 5 " << (input.notches > 0 ? 4 : 5) << "\n";
     lines << "sleep " << kPlanStep_s << "\n";
   }
-  return {lines.str(), device_start};
+  return {lines.str(), device_start, view.metres_per_half_height(0.0) / half};
 }
 
 // Waits (up to `seconds`) until `pattern` is in `count` lines of the app's output, else stops the
@@ -129,9 +131,8 @@ std::vector<training::SessionInfo> sessions_of(const UserFolders& user) {
 void expect_the_first_reading_is_the_placed_cursor(const training::SessionInfo& session, const MouseScript& script) {
   const haptics::Session recording = haptics::read_session(session.recording_path);
   ASSERT_FALSE(recording.records.empty());
-  const double pixel_m = 0.1 / (0.5 * kWindow.height);
   for (int i = 0; i < 2; ++i)
-    EXPECT_NEAR(recording.records.front().reading.position_m[i], script.device_start[i], pixel_m) << "axis " << i;
+    EXPECT_NEAR(recording.records.front().reading.position_m[i], script.device_start[i], script.pixel_m) << "axis " << i;
 }
 
 // The start screen with the keyboard remembered and no trainee: `choose` (xdotool lines) picks
@@ -187,7 +188,7 @@ TEST(CliStartScreen, ATraineeStartsTheTaskWithTheMouseAndFinishesItPivotIncluded
                                   mouse_plan_script("penetrable_sphere", penetrable_plan), 5);
 }
 
-// The layered target (issue 14), fourth in the list: three Downs (one key a call, each seen on its
+// The layered target, fourth in the list: three Downs (one key a call, each seen on its
 // own frame), Left to the mouse; the wheel pushes the needle through skin, fat and muscle.
 TEST(CliStartScreen, ATraineeDoesTheLayeredTargetWithTheMouse) {
   const PlanMaker plan = [](const training::Task& t, const DeskStart& s, const Eigen::Vector3d& d) {
@@ -201,14 +202,15 @@ TEST(CliStartScreen, ATraineeDoesTheLayeredTargetWithTheMouse) {
 
 // The keyboard chosen with Right on the start screen, then its keys in the task's window: each
 // press is one step of the pose the device reads (1 mm, 1°, a fifth with Shift), as the recording
-// shows; Esc stops the task (the session stays incomplete) and Esc quits.
+// shows; once the first step has ended (the approach's 15 s limit: the session is then under way and
+// stored) Esc stops the task (the session stays incomplete) and Esc quits. E tilts: R is Retry.
 TEST(CliStartScreen, TheKeyboardsKeysMoveAndTurnTheNeedleInTheWindow) {
   const UserFolders user(test_output_dir("cli_start_screen") / "keyboard");
   std::ofstream(user.settings()) << R"({"version": 1, "trainee": "eve", "device": "mouse", "window": {"width": 640, "height": 360}})";
   const ProcessResult r = drive(user, open_start_screen(user) + "xdotool key Right; sleep 0.5; xdotool key Return\n" +
                                           wait_for("^real-time: ", 60, "the task did not start") + "sleep 1\n" +
-                                          "xdotool key --delay 100 d d d d d r r r w w w w Left Left shift+Up\n" +
-                                          "sleep 1; xdotool key Escape; sleep 2; xdotool key Escape\n" + kWaitForTheApp);
+                                          "xdotool key --delay 100 d d d d d e e e w w w w Left Left shift+Up\n" +
+                                          "sleep 16; xdotool key Escape; sleep 2; xdotool key Escape\n" + kWaitForTheApp);
   const std::vector<training::SessionInfo> sessions = sessions_of(user);
   ASSERT_EQ(sessions.size(), 1u) << r.output;
   const training::SessionInfo& session = sessions[0];
@@ -220,10 +222,19 @@ TEST(CliStartScreen, TheKeyboardsKeysMoveAndTurnTheNeedleInTheWindow) {
   const haptics::DeviceReading& last = recording.records.back().reading;
   const double degree = 3.141592653589793 / 180.0;
   EXPECT_NEAR(last.joint_rad[0], 5 * degree, 1e-9) << "D swings";
-  EXPECT_NEAR(last.joint_rad[1], 3 * degree, 1e-9) << "R tilts away";
-  EXPECT_NEAR(last.position_m[0], -0.002, 1e-9) << "Left";
-  EXPECT_NEAR(last.position_m[1], 0.0002, 1e-9) << "Shift+Up: a fifth of a step";
-  EXPECT_NEAR(last.position_m[2], 0.104, 1e-9) << "W pushes in";
+  EXPECT_NEAR(last.joint_rad[1], 3 * degree, 1e-9) << "E tilts away";
+  // W pushes in along the needle, 1 mm a press: along its axis in the newest state, which in free
+  // space is where the wrist holds it (swung 5 deg, tilted 3 deg) to within the coupling's lag, under
+  // 0.1 deg here: 4 mm along it within 5 um of 4 mm along the wrist's direction.
+  const fs::path task_file = source_dir() / "assets/tasks/penetrable_sphere.json";
+  const DeskStart start = desk_start(task_file, "keyboard", user.root / "plan");
+  haptics::DeskPose turned;
+  turned.wrist_rad[0] = 5 * degree, turned.wrist_rad[1] = 3 * degree;
+  const haptics::NeedleDirection along = app::needle_direction(start, turned);
+  const double* d = along.device;
+  EXPECT_NEAR(last.position_m[0], -0.002 + 0.004 * d[0], 5e-6) << "Left, and W along the needle";
+  EXPECT_NEAR(last.position_m[1], 0.0002 + 0.004 * d[1], 5e-6) << "Shift+Up: a fifth of a step";
+  EXPECT_NEAR(last.position_m[2], 0.1 + 0.004 * d[2], 5e-6) << "W pushes in along the needle";
 }
 
 // A task whose one step holds from the first tick (the tip starts out of the tissue, far from

@@ -116,7 +116,8 @@ TEST(CliUsage, UnknownCommandsAndOptionsAreUsageErrors) {
   expect_usage_error("frobnicate", "needle-sim: unknown command 'frobnicate'");
   expect_usage_error("run --frobnicate", "needle-sim run: The following argument was not expected: --frobnicate");
   expect_usage_error("render --scene a.json --gltf b.gltf --out x.png", "needle-sim render: --scene excludes --gltf");
-  expect_usage_error("--db x.db run", "--db and --station before a command are the start screen's");
+  expect_usage_error("--db x.db run", "--db, --station and --debug before a command are the start screen's");
+  expect_usage_error("--debug run", "--db, --station and --debug before a command are the start screen's");
 }
 
 }  // namespace

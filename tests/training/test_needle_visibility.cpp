@@ -109,7 +109,8 @@ TEST(NeedleVisibility, TheMetricIsTheTimeMeanShareAndTheScoreWeighsIt) {
   };
   EXPECT_EQ(component(in_plane).value, 1.0);
   EXPECT_EQ(component(beside).value, 0.0);
-  EXPECT_EQ(component(in_plane).weight, ScoreWeights::kDefaultNeedleVisibility);
+  // The hand-built task's weights (the defaults, 100, and the probe's 10) renormalised to 100.
+  EXPECT_NEAR(component(in_plane).weight, ScoreWeights::kDefaultNeedleVisibility * 100.0 / 110.0, 1e-12);
   // Without a probe there is no metric and no component.
   Task plain = t;
   plain.ultrasound_probe.reset();

@@ -186,7 +186,7 @@ std::vector<StepResult> two_results() {
   a.metrics.duration_s = 10, a.metrics.tip_error_m = 0.002, a.metrics.axis_deviation_deg = 4;
   a.metrics.lateral_load_Ns = 0.25, a.metrics.lateral_peak_N = 0.5, a.metrics.peak_force_N = 1.0;
   a.metrics.path_length_m = 0.1, a.metrics.ideal_path_m = 0.08, a.metrics.normalized_jerk = 360.0;
-  a.metrics.reinsertions = 1;
+  a.metrics.reinsertions = 1, a.metrics.tissue_time_s = 8.0, a.metrics.peak_needle_force_N = 1.0;
   StepResult b{"b", {StepOutcome::kTimedOut, 10, 30}, {}};
   b.metrics.duration_s = 20, b.metrics.axis_deviation_deg = 8, b.metrics.lateral_load_Ns = 0.25;
   b.metrics.lateral_peak_N = 0.25, b.metrics.peak_force_N = 2.0, b.metrics.force_sd_N = 0.1;
@@ -216,13 +216,15 @@ TEST(Score, WeightedComponentsByHand) {
   // completion 1/2 x 30 = 15; tip 1 - 0.002/0.01 = 0.8 x 15 = 12; axis 1 - 6/20 = 0.7 x 10 = 7;
   // lateral 1 - 0.5/1 = 0.5 x 10 = 5; peak 2 <= 3 -> 10; steadiness 1 - 0.1/0.5 = 0.8 x 5 = 4;
   // path 0.1/0.2 = 0.5 x 5 = 2.5; smoothness 1 - ln(360/sqrt360)/ln(1e6/sqrt360) x 5;
-  // time 30 <= 60 -> 5; retries 1/(1 + 2) x 5.
+  // time: not reached (a step timed out: the task was not done) -> 0; retries 1/(1 + 2) x 5.
   const double smooth = 1.0 - std::log(std::sqrt(360.0)) / std::log(1e6 / std::sqrt(360.0));
-  const double expected = 15 + 12 + 7 + 5 + 10 + 4 + 2.5 + 5 * smooth + 5 + 5.0 / 3;
+  const double expected = 15 + 12 + 7 + 5 + 10 + 4 + 2.5 + 5 * smooth + 0 + 5.0 / 3;
   EXPECT_NEAR(s.total, expected, 1e-9);
   ASSERT_EQ(s.components.size(), 10u);
   EXPECT_EQ(s.components[7].name, "smoothness");
   EXPECT_NEAR(s.components[7].value, smooth, 1e-12);
+  EXPECT_EQ(s.components[8].name, "time");
+  EXPECT_EQ(s.components[8].status, ComponentStatus::kNotReached);
   EXPECT_FALSE(s.passed);
   ASSERT_EQ(s.reasons_failed.size(), 2u);  // below 70, and a step not completed
   EXPECT_NE(s.reasons_failed[1].find("1 step(s) not completed"), std::string::npos);

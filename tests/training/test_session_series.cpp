@@ -67,7 +67,7 @@ TEST(SessionSeries, JointDeviceSessionOnThePenetrableTask) {
   expect_values(p.lateral.lines[0], {0.0, 5.0, 0.0});
 
   EXPECT_EQ(p.depth.unit, "mm");
-  EXPECT_EQ(p.depth.title, "Depth along insertion_axis");
+  EXPECT_EQ(p.depth.title, "Depth along the insertion axis");  // the marker's name in words
   ASSERT_EQ(p.depth.lines.size(), 1u);
   expect_values(p.depth.lines[0], {0.0, 20.0, -5.0}, 1e-6);  // the sideways 10 mm does not count
   ASSERT_EQ(p.depth.guides.size(), 2u);  // the insert step's band, 2.5 to 3.5 cm

@@ -30,7 +30,7 @@ struct RunOptions {
   app::WindowOptions window;
   std::optional<long long> frames;
   std::string section;  // "": off
-  bool headless = false, no_hud = false;
+  bool headless = false, no_hud = false, debug = false, store = false, practice = false;
 };
 
 std::string default_trainee() {
@@ -53,6 +53,7 @@ int run(const RunOptions& o) {
   app::WindowOptions window = o.window;
   if (o.frames) window.frames = long(*o.frames);
   window.hud = !o.no_hud;
+  window.debug = o.debug;
   if (!o.section.empty())
     window.section = o.section == "cut" ? engine::Section::Mode::Cut : engine::Section::Mode::Translucent;
   if (window.screenshot && window.frames == 0) throw UsageError("--screenshot needs --frames N (the frame to capture)");
@@ -79,8 +80,13 @@ int run(const RunOptions& o) {
   if (o.local) task.local_db = *o.local;
   task.out_dir = o.out_dir;
   task.messages = window.messages = printed_messages("needle-sim run");
+  task.practice = o.practice;
+  if (o.practice && device.kind == Kind::kReplay)
+    throw UsageError("--practice: a replay runs as it was recorded (a practice run's recording replays as practice)");
 
   const bool in_window = !o.headless && engine::Window::display_available();
+  // A window closed after --frames frames is a look at the window, not a session, unless --store.
+  task.store = o.store ? app::StoreWhen::kAlways : in_window && o.frames ? app::StoreWhen::kNever : app::StoreWhen::kUnderWay;
   if (!o.headless && !in_window) std::printf("no display: running headless\n");
   if (o.scene) {
     const engine::Scene scene = engine::load_scene(*o.scene);
@@ -127,6 +133,11 @@ Runner declare(CLI::App& app) {
   add_whole(app, "--frames", o->frames, kWindowFrames, "N", "window: close after N frames");
   add_text(app, "--screenshot", o->window.screenshot, "FILE", "window: save frame N as presented (needs --frames)");
   add_flag(app, "--no-hud", o->no_hud, "window: no panels");
+  add_flag(app, "--debug", o->debug, "window: the status panel (device, frame time, render scale); F3 toggles it");
+  add_flag(app, "--store", o->store,
+           "store the session from its start, whatever happens (by default a session is stored once\n"
+           "its first step has ended, and a window run with --frames not at all)");
+  add_flag(app, "--practice", o->practice, "practice: the task's steps without their time limits");
   add_choice(app, "--section", o->section, {"cut", "translucent"},
              "the tissue cut along the needle's plane (cut) or see-through (translucent), in the\n"
              "pictures and at the window's start (there X cycles off, cut, translucent)");

@@ -36,6 +36,7 @@ bool is_group(const CLI::App* app) { return app->get_parent() && !app->get_subco
 
 struct StartScreenOptions {
   std::optional<std::string> db, station;
+  bool debug = false;
 };
 
 int start_screen(const StartScreenOptions& options, const CLI::App& root) {
@@ -47,7 +48,7 @@ int start_screen(const StartScreenOptions& options, const CLI::App& root) {
     return 2;
   }
   return app::run_start_screen({asset_dir() / "tasks", app::db_location(options.db), app::station_name(options.station),
-                                app::default_settings_file(), printed_messages("needle-sim")});
+                                app::default_settings_file(), printed_messages("needle-sim"), options.debug});
 }
 
 int run_command(const CLI::App* command, const Runner& runner) {
@@ -82,6 +83,7 @@ int main(int argc, char** argv) {
   StartScreenOptions start;
   add_text(root, "--db", start.db, "FILE|URI", "the start screen's session store: an SQLite file or postgresql://...");
   add_text(root, "--station", start.station, "NAME", "the station its sessions ran on (default: the host name)");
+  add_flag(root, "--debug", start.debug, "the start screen and its tasks with the status panel (F3 toggles it)");
 
   // The command tree: "bench render" under a group app "bench".
   std::map<const CLI::App*, Runner> runners;
@@ -132,9 +134,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   const CLI::App* app = chosen(root);
-  if (app != &root && (start.db || start.station)) {
+  if (app != &root && (start.db || start.station || start.debug)) {
     std::fprintf(stderr,
-                 "needle-sim: --db and --station before a command are the start screen's; give them after '%s'\n",
+                 "needle-sim: --db, --station and --debug before a command are the start screen's; give them after '%s'\n",
                  full_name(app).substr(root.get_name().size() + 1).c_str());
     return 2;
   }

@@ -39,7 +39,7 @@ long draw_trainee_frames_until(const std::atomic<bool>& stop) {
     options.announce_device = false;
     engine::GpuDevice device(options);
     engine::HeadlessTarget target(device, {1280, 720});
-    app::TraineeFrame frame(device, target, {1, true});
+    app::TraineeFrame frame(device, target, {1, true, std::nullopt, true});  // with the status panel, as measured
     engine::GpuScene scene(frame.renderer(), session.scene());
     app::FrameContent content = app::scripted_content(scene);
     content.panel = [&session] { session.draw_panel(); };

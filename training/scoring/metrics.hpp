@@ -11,6 +11,7 @@ inline constexpr double kNotApplicable = std::numeric_limits<double>::quiet_NaN(
 
 struct Metrics {
   double duration_s = 0.0;
+  double tissue_time_s = 0.0;                  // time the needle was in tissue
   double tip_error_m = kNotApplicable;         // tip to the target marker at the end
   double axis_deviation_deg = kNotApplicable;  // needle axis to the planned axis
   double lateral_load_Ns = 0.0;                // integral of |lateral multipliers| in tissue
@@ -20,7 +21,7 @@ struct Metrics {
   double peak_needle_force_N = 0.0;            // peak |world's force on the needle| (needle_force.hpp), scene N
   double peak_hand_force_N = 0.0;              // peak of it at the hand, force scale times, N: the scored peak
   double force_limited_s = 0.0;                // time the device held the force back at its limit
-  double passivity_damped_s = 0.0;             // time the passivity damper acted (the world was not passive)
+  double passivity_damped_s = 0.0;             // time the passivity controller acted (the world owed energy)
   double force_sd_N = kNotApplicable;          // steadiness while holding a force
   double path_length_m = 0.0;                  // tip path
   double ideal_path_m = 0.0;                   // straight line, start to end

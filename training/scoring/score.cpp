@@ -10,8 +10,8 @@ namespace {
 
 double clamp01(double x) { return std::clamp(x, 0.0, 1.0); }
 
-// 1 at zero, falling linearly to 0 at the reference; 1 when the metric does not apply.
-double falling(double value, double reference) { return std::isnan(value) ? 1.0 : clamp01(1.0 - value / reference); }
+// 1 at zero, falling linearly to 0 at the reference (a metric that does not apply scores nothing).
+double falling(double value, double reference) { return std::isnan(value) ? 0.0 : clamp01(1.0 - value / reference); }
 
 // Mean of the applicable (non-NaN) values; NaN when none.
 template <class Get>
@@ -30,14 +30,6 @@ std::string format(double x) {
   return out.str();
 }
 
-// Smoothness on a log scale (normalized jerk spans orders of magnitude): 1 at the minimum-jerk
-// profile's sqrt(360), 0 at the reference.
-double smoothness(double normalized_jerk, double reference) {
-  if (std::isnan(normalized_jerk)) return 1.0;
-  const double minimum = std::sqrt(360.0);
-  return clamp01(1.0 - std::log(std::max(normalized_jerk, minimum) / minimum) / std::log(reference / minimum));
-}
-
 }  // namespace
 
 Metrics combine_metrics(const std::vector<StepResult>& steps) {
@@ -45,6 +37,7 @@ Metrics combine_metrics(const std::vector<StepResult>& steps) {
   for (const StepResult& s : steps) {
     const Metrics& x = s.metrics;
     m.duration_s += x.duration_s;
+    m.tissue_time_s += x.tissue_time_s;
     m.lateral_load_Ns += x.lateral_load_Ns;
     m.lateral_peak_N = std::max(m.lateral_peak_N, x.lateral_peak_N);
     m.peak_force_N = std::max(m.peak_force_N, x.peak_force_N);
@@ -82,39 +75,96 @@ Metrics combine_metrics(const std::vector<StepResult>& steps) {
   return m;
 }
 
+long completed_steps(const std::vector<StepResult>& steps) {
+  return std::count_if(steps.begin(), steps.end(), [](const StepResult& s) { return s.record.outcome == StepOutcome::kCompleted; });
+}
+
+bool component_reached(const std::string& name, const Metrics& m, bool every_step_completed) {
+  const bool touched = m.peak_needle_force_N > 0.0 || m.tissue_time_s > 0.0;  // the world pushed on the needle
+  const bool punctured = m.punctures > 0;
+  if (name == "tip_error") return !std::isnan(m.tip_error_m);
+  if (name == "axis_deviation") return !std::isnan(m.axis_deviation_deg);
+  if (name == "lateral_load") return m.tissue_time_s > 0.0;
+  if (name == "peak_force" || name == "retries") return touched;
+  if (name == "force_steadiness") return !std::isnan(m.force_sd_N);
+  if (name == "path_efficiency") return m.path_length_m > 0.0;
+  if (name == "smoothness") return !std::isnan(m.normalized_jerk);
+  if (name == "time") return every_step_completed;
+  if (name == "needle_visibility") return !std::isnan(m.needle_visibility);
+  if (name == "overshoot") return !std::isnan(m.overshoot_m);
+  if (name == "bone_contacts") return punctured || m.bone_contacts > 0;
+  if (name == "redirections") return punctured || m.redirections > 0;
+  if (name == "loss_of_resistance") return !std::isnan(m.advance_after_loss_m);  // a loss was found in the syringe's space
+  return true;  // completion
+}
+
+double smoothness_score(double normalized_jerk, double reference) {
+  if (std::isnan(normalized_jerk)) return 0.0;
+  const double minimum = std::sqrt(360.0);
+  return clamp01(1.0 - std::log(std::max(normalized_jerk, minimum) / minimum) / std::log(reference / minimum));
+}
+
+const char* component_status_name(ComponentStatus status) {
+  switch (status) {
+    case ComponentStatus::kApplied: return "applied";
+    case ComponentStatus::kNotReached: return "not_reached";
+    case ComponentStatus::kNotApplicable: return "not_applicable";
+  }
+  return "applied";
+}
+
 Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& steps, const Metrics& m) {
   const ScoreWeights& w = spec.weights;
   const ScoreReferences& r = spec.references;
-  const long completed = std::count_if(steps.begin(), steps.end(),
-                                       [](const StepResult& s) { return s.record.outcome == StepOutcome::kCompleted; });
+  const ScoreMeasures& task = spec.measures;
+  const long completed = completed_steps(steps);
   const double peak = m.peak_hand_force_N, safe = spec.safe_force_N;
-  Score score;
-  score.components = {
-      {"completion", steps.empty() ? 0.0 : double(completed) / double(steps.size()), w.completion},
-      {"tip_error", falling(m.tip_error_m, r.tip_error_m), w.tip_error},
-      {"axis_deviation", falling(m.axis_deviation_deg, r.axis_deviation_deg), w.axis_deviation},
-      {"lateral_load", falling(m.lateral_load_Ns, r.lateral_load_Ns), w.lateral_load},
-      {"peak_force", peak <= safe ? 1.0 : clamp01(1.0 - (peak - safe) / safe), w.peak_force},
-      {"force_steadiness", falling(m.force_sd_N, r.force_sd_N), w.force_steadiness},
-      {"path_efficiency", m.path_length_m > 0.0 ? clamp01(m.ideal_path_m / m.path_length_m) : 1.0, w.path_efficiency},
-      {"smoothness", smoothness(m.normalized_jerk, r.normalized_jerk), w.smoothness},
-      {"time", m.duration_s <= r.time_s ? 1.0 : r.time_s / m.duration_s, w.time},
-      {"retries", 1.0 / (1.0 + m.reinsertions + m.rigid_contacts), w.retries},
+  // name, value, weight, whether the task measures it.
+  struct Part {
+    const char* name;
+    double value, weight;
+    bool measured;
   };
-  // Only a task with an ultrasound probe weighs the needle's visibility (docs/SCORING.md).
+  std::vector<Part> parts = {
+      {"completion", steps.empty() ? 0.0 : double(completed) / double(steps.size()), w.completion, true},
+      {"tip_error", falling(m.tip_error_m, r.tip_error_m), w.tip_error, task.tip_error},
+      {"axis_deviation", falling(m.axis_deviation_deg, r.axis_deviation_deg), w.axis_deviation, task.axis_deviation},
+      {"lateral_load", falling(m.lateral_load_Ns, r.lateral_load_Ns), w.lateral_load, task.lateral_load},
+      {"peak_force", peak <= safe ? 1.0 : clamp01(1.0 - (peak - safe) / safe), w.peak_force, true},
+      {"force_steadiness", falling(m.force_sd_N, r.force_sd_N), w.force_steadiness, task.force_steadiness},
+      {"path_efficiency", m.path_length_m > 0.0 ? clamp01(m.ideal_path_m / m.path_length_m) : 0.0, w.path_efficiency, true},
+      {"smoothness", smoothness_score(m.normalized_jerk, r.normalized_jerk), w.smoothness, true},
+      {"time", m.duration_s <= r.time_s ? 1.0 : r.time_s / m.duration_s, w.time, true},
+      {"retries", 1.0 / (1.0 + m.reinsertions + m.rigid_contacts), w.retries, true},
+  };
+  // Only a task with an ultrasound probe weighs the needle's visibility, only a task on a layered
+  // tissue the technique through its layers (their weights are 0 otherwise; docs/SCORING.md).
   if (w.needle_visibility > 0.0)
-    score.components.push_back({"needle_visibility", std::isnan(m.needle_visibility) ? 1.0 : m.needle_visibility,
-                                w.needle_visibility});
-  // Only a task on a layered tissue weighs the technique through its layers (docs/SCORING.md).
-  if (w.overshoot > 0.0) score.components.push_back({"overshoot", falling(m.overshoot_m, r.overshoot_m), w.overshoot});
-  if (w.bone_contacts > 0.0) score.components.push_back({"bone_contacts", 1.0 / (1.0 + m.bone_contacts), w.bone_contacts});
-  if (w.redirections > 0.0) score.components.push_back({"redirections", 1.0 / (1.0 + m.redirections), w.redirections});
+    parts.push_back({"needle_visibility", std::isnan(m.needle_visibility) ? 0.0 : m.needle_visibility, w.needle_visibility, true});
+  if (w.overshoot > 0.0) parts.push_back({"overshoot", falling(m.overshoot_m, r.overshoot_m), w.overshoot, true});
+  if (w.bone_contacts > 0.0) parts.push_back({"bone_contacts", 1.0 / (1.0 + m.bone_contacts), w.bone_contacts, true});
+  if (w.redirections > 0.0) parts.push_back({"redirections", 1.0 / (1.0 + m.redirections), w.redirections, true});
   // Only a task with a syringe weighs the loss of resistance: how little the tip went on after it, less
-  // for every false loss; nothing when no loss was found (docs/SCORING.md, "Syringe").
+  // for every false loss (docs/SCORING.md, "Syringe"); not reached when no loss was found.
   if (w.loss_of_resistance > 0.0) {
-    const double stop = std::isnan(m.advance_after_loss_m) ? 0.0 : falling(m.advance_after_loss_m, r.loss_advance_m);
     const double false_losses = std::isnan(m.false_losses) ? 0.0 : m.false_losses;
-    score.components.push_back({"loss_of_resistance", stop / (1.0 + false_losses), w.loss_of_resistance});
+    parts.push_back({"loss_of_resistance", falling(m.advance_after_loss_m, r.loss_advance_m) / (1.0 + false_losses),
+                     w.loss_of_resistance, true});
+  }
+  // The task's weights over the components it measures, renormalised to 100.
+  double measured_weight = 0.0;
+  for (const Part& p : parts)
+    if (p.measured) measured_weight += p.weight;
+  Score score;
+  for (const Part& p : parts) {
+    ScoreComponent c{p.name, 0.0, 0.0, ComponentStatus::kNotApplicable};
+    if (p.measured && p.weight > 0.0) {  // then measured_weight > 0
+      const bool reached = component_reached(p.name, m, !steps.empty() && completed == long(steps.size()));
+      c.weight = p.weight * 100.0 / measured_weight;
+      c.status = reached ? ComponentStatus::kApplied : ComponentStatus::kNotReached;
+      if (reached) c.value = p.value;
+    }
+    score.components.push_back(c);
   }
   for (const ScoreComponent& c : score.components) score.total += c.points();
   if (score.total < spec.pass_score)

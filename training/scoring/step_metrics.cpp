@@ -36,6 +36,7 @@ void StepMetricsAccumulator::add(const haptics::ToolSnapshot& state, const Conta
   m_.peak_axial_force_N = std::max(m_.peak_axial_force_N, std::abs(needle.along_N));
   m_.peak_needle_force_N = std::max(m_.peak_needle_force_N, needle.total_N);
   m_.peak_hand_force_N = std::max(m_.peak_hand_force_N, task_.force_scale * needle.total_N);
+  if (state.contact == haptics::ContactState::kTissue) m_.tissue_time_s += dt;
   if (state.limits & haptics::kLimitForce) m_.force_limited_s += dt;
   if (state.limits & haptics::kLimitPassivityDamper) m_.passivity_damped_s += dt;
   if (step_.condition.type == ConditionType::kForceHeld) {

@@ -9,7 +9,7 @@ namespace needle::training {
 
 ForceDepth force_depth(const std::vector<haptics::TickSample>& samples, const Task* task) {
   ForceDepth out;
-  out.plot = {"Axial force against depth", "N", "depth (mm)", {}, {}, {}};
+  out.plot = {"Force along the needle against depth", "N", "depth (mm)", {}, {}, {}};
   out.pressure = {"Plunger pressure against depth", "kPa", "depth (mm)", {}, {}, {}};
   const bool syringe = task && task->syringe;
   if (!syringe) out.pressure.missing = task ? "task " + task->name + " has no syringe" : "no task";

@@ -44,7 +44,12 @@ json punctures_json(const std::vector<PunctureResult>& punctures) {
 json components_json(const std::vector<ScoreComponent>& components) {
   json out = json::array();
   for (const ScoreComponent& c : components)
-    out.push_back({{"name", c.name}, {"value", c.value}, {"weight", c.weight}, {"points", c.points()}});
+    out.push_back({{"name", c.name},
+                   {"value", c.value},
+                   {"weight", c.weight},
+                   {"points", c.points()},
+                   {"applied", c.status == ComponentStatus::kApplied},
+                   {"status", component_status_name(c.status)}});
   return out;
 }
 

@@ -43,7 +43,7 @@ Series series(const std::string& name, const std::vector<haptics::TickSample>& s
 }
 
 Plot depth_plot(const std::vector<haptics::TickSample>& samples, const Task* task) {
-  Plot plot{"Depth along the insertion axis", "mm", {}, {}, {}};
+  Plot plot{"Depth along the insertion axis", "mm", "t (s)", {}, {}, {}};
   if (!task) {
     plot.missing = "no task to measure the depth against";
     return plot;
@@ -54,7 +54,9 @@ Plot depth_plot(const std::vector<haptics::TickSample>& samples, const Task* tas
     return plot;
   }
   const Marker& marker = task->markers[size_t(axis)];
-  plot.title = "Depth along " + marker.name;
+  std::string name = marker.name;  // the marker's name in words: "insertion axis"
+  std::replace(name.begin(), name.end(), '_', ' ');
+  plot.title = "Depth along the " + name;
   plot.lines.push_back(series("depth", samples, [&](const haptics::TickSample& s) {
     return 1000.0 * depth_along(marker, vec3(s.state.needle_tip_m));
   }));
@@ -81,9 +83,9 @@ int insertion_axis_marker(const Task& task) {
 
 SessionPlots session_plots(const std::vector<haptics::TickSample>& samples, const Task* task) {
   SessionPlots p;
-  p.force = {"Force", "N", {}, {}, {}};
-  p.lateral = {"Lateral tissue load |lambda|", "N", {}, {}, {}};
-  p.tracking = {"Tracking error |q_m - q_v|", "mrad", {}, {}, {}};
+  p.force = {"Forces", "N", "t (s)", {}, {}, {}};
+  p.lateral = {"Sideways load on the needle", "N", "t (s)", {}, {}, {}};
+  p.tracking = {"How far the needle lags the hand (joint angles)", "mrad", "t (s)", {}, {}, {}};
   if (samples.empty()) {
     for (Plot* plot : {&p.force, &p.lateral, &p.depth, &p.tracking}) plot->missing = "the recording has no samples";
     p.depth.title = "Depth along the insertion axis";
@@ -92,19 +94,19 @@ SessionPlots session_plots(const std::vector<haptics::TickSample>& samples, cons
   }
   const double scale = task ? task->force_scale : 1.0;
   p.force.lines.push_back(series("force at the hand", samples, [scale](const auto& s) { return hand_force_N(s.state, scale); }));
-  p.force.lines.push_back(series("tissue along the needle", samples, [](const auto& s) { return s.state.tissue.axial_force_N; }));
-  p.force.lines.push_back(series("rigid contact", samples, [](const auto& s) { return norm3(s.state.environment_force_n); }));
-  p.force.lines.push_back(series("hand's push (sensed)", samples, [](const auto& s) { return norm3(s.state.operator_force_n); }));
+  p.force.lines.push_back(series("force along the needle (tissue)", samples, [](const auto& s) { return s.state.tissue.axial_force_N; }));
+  p.force.lines.push_back(series("force on bone or a rigid surface", samples, [](const auto& s) { return norm3(s.state.environment_force_n); }));
+  p.force.lines.push_back(series("the hand's push (sensed)", samples, [](const auto& s) { return norm3(s.state.operator_force_n); }));
   if (task) p.force.guides.push_back({task->scoring.safe_force_N, "safe limit at the hand"});
-  p.lateral.lines.push_back(series("|lambda| in tissue", samples, [](const auto& s) { return lateral_load_N(s.state); }));
+  p.lateral.lines.push_back(series("sideways load on the needle", samples, [](const auto& s) { return lateral_load_N(s.state); }));
   p.depth = depth_plot(samples, task);
   if (joint_space(samples)) {
-    p.tracking.lines.push_back(series("|q_m - q_v|", samples, joint_tracking_mrad));
+    p.tracking.lines.push_back(series("lag of the needle behind the hand", samples, joint_tracking_mrad));
   } else {
     // The recording holds neither the workspace scale, the device-to-scene rotation nor the
     // coupling stiffness, so the stretch in metres is not derivable; its force K * stretch is.
-    p.tracking = {"Tracking: coupling force |K (x_d - x_v)|", "N", {}, {}, {}};
-    p.tracking.lines.push_back(series("coupling force", samples, [](const auto& s) { return norm3(s.state.operator_force_n); }));
+    p.tracking = {"How hard the hand pulls the needle along", "N", "t (s)", {}, {}, {}};
+    p.tracking.lines.push_back(series("pull between the hand and the needle", samples, [](const auto& s) { return norm3(s.state.operator_force_n); }));
   }
   return p;
 }

@@ -275,6 +275,13 @@ StoredSession SessionStore::load(int64_t id) const {
     for (const SqlRow& row :
          db_->query("SELECT name, value, weight FROM score_components WHERE session_id = ? ORDER BY position", {id}, what).rows)
       out.components.push_back({row.text(0), row.real(1), row.real(2)});
+    // The store keeps a component's value and weight; whether it applied follows from them and the
+    // session's metrics as the score decided it (a score from before the statuses: any points, applied).
+    const bool every_step_completed = !out.steps.empty() && completed_steps(out.steps) == long(out.steps.size());
+    for (ScoreComponent& c : out.components)
+      c.status = c.weight == 0.0                                                                ? ComponentStatus::kNotApplicable
+                 : c.value > 0.0 || component_reached(c.name, out.overall, every_step_completed) ? ComponentStatus::kApplied
+                                                                                                 : ComponentStatus::kNotReached;
   }
   if (version >= 4) {
     const SqlResult c = db_->query("SELECT outcome, score, digest, detail, checked_at, checked_by FROM session_checks "

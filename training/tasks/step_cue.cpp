@@ -78,7 +78,51 @@ std::string depth_line(const Task& task, const StepCue& cue) {
   return format("depth %.0f mm: in the band (%.0f-%.0f mm)", mm, lo, hi);
 }
 
+const char* contact_words(ContactRequirement c) {
+  switch (c) {
+    case ContactRequirement::kRigidSurface: return ", on the surface";
+    case ContactRequirement::kTissue: return ", in the tissue";
+    case ContactRequirement::kFree: return ", out of contact";
+    case ContactRequirement::kAny: break;
+  }
+  return "";
+}
+
 }  // namespace
+
+std::string condition_words(const Task& task, const Step& step) {
+  const Condition& c = step.condition;
+  std::string words;
+  switch (c.type) {
+    case ConditionType::kTipNear:
+      words = format("the tip within %.0f mm of the ", c.within_m * 1000.0) + point_name(task, step, c.marker);
+      break;
+    case ConditionType::kAxisAligned:
+      words = format("the needle within %.0f deg of the planned axis", c.within_rad * kDeg);
+      break;
+    case ConditionType::kDepthInBand:
+      words = format("the tip %.0f-%.0f mm deep along the planned axis", c.min * 1000.0, c.max * 1000.0);
+      break;
+    case ConditionType::kForceHeld:
+      words = format("a force of %.1f-%.1f N", c.min, c.max);
+      break;
+    case ConditionType::kTargetReached:
+      words = format("the tip within %.0f mm of the target", c.within_m * 1000.0);
+      break;
+    case ConditionType::kWithdrawn:
+      words = format("the needle out, over %.0f mm from the ", c.within_m * 1000.0) + point_name(task, step, c.marker);
+      break;
+    case ConditionType::kTipInLayer:
+      words = "the tip in the " + layer_name(task, c.layer);
+      break;
+    case ConditionType::kPunctured:
+      words = "the " + layer_name(task, c.layer) + " punctured";
+      break;
+  }
+  if (c.type != ConditionType::kWithdrawn) words += contact_words(c.contact);
+  if (c.hold_s > 0.0) words += format(", held %.1f s", c.hold_s);
+  return words;
+}
 
 int gauge_marker(const Task& task, size_t step) {
   const auto usable = [&](int m) {

@@ -1,5 +1,5 @@
 // What is left to do in the current step, in numbers and words a novice can act on without the task
-// file (docs/TASKS.md, "Cues"): how far and which way the point the step is about (the entry, the
+// file (docs/SCORING.md, "The trainee panel"): how far and which way the point the step is about (the entry, the
 // target) lies from the tip, the turn onto the planned axis in the desk devices' own terms (turn
 // clockwise as seen, tilt the hub away), the depth along the gauge's axis against the step's band,
 // the force against a band to hold. The 3D view's axes come in as plain vectors: training knows no
@@ -49,6 +49,10 @@ int gauge_marker(const Task& task, size_t step);
 // The tip's depth along that marker: along an axis from its origin, under a sphere's surface (its
 // radius less the tip's distance from the centre: negative above the surface).
 double gauge_depth(const Marker& marker, const Vec3& tip);
+
+// What the step's condition asks, in words: "the tip within 10 mm of the entry", "the tip 25-35 mm
+// deep along the planned axis, held 0.5 s", "the needle within 5 deg of the planned axis".
+std::string condition_words(const Task& task, const Step& step);
 
 // The cue in words, one line each, most urgent first, e.g. "entry 14 mm away: 8 mm left, 11 mm down,
 // 3 mm away from you", "off the axis 14°: turn clockwise 12°, tilt the hub away 8°", "depth 12 mm:

@@ -22,16 +22,32 @@ int interspace_at(const PatientLandmarks& l, const Vec3& p) {
   return -1;
 }
 
-int interspace_index(const std::string& name) {
-  static constexpr const char* kNames[] = {"L1-L2", "L2-L3", "L3-L4", "L4-L5", "L5-S1"};
-  for (int i = 0; i < PatientLandmarks::kInterspaces; ++i)
-    if (name == kNames[i]) return i;
-  return -1;
-}
-
 const char* interspace_name(int index) {
   static constexpr const char* kNames[] = {"L1-L2", "L2-L3", "L3-L4", "L4-L5", "L5-S1"};
   return index >= 0 && index < PatientLandmarks::kInterspaces ? kNames[index] : "none";
+}
+
+int interspace_index(const std::string& name) {
+  for (int i = 0; i < PatientLandmarks::kInterspaces; ++i)
+    if (name == interspace_name(i)) return i;
+  return -1;
+}
+
+Task practice_task(Task task) {
+  for (Step& step : task.steps) step.time_limit_s = 0.0;
+  task.practice = true;
+  return task;
+}
+
+ScoreMeasures score_measures(const Task& task) {
+  ScoreMeasures m{false, false, false, false};
+  for (const Step& s : task.steps) {
+    m.tip_error = m.tip_error || s.condition.type == ConditionType::kTargetReached || s.guidance.target >= 0;
+    m.axis_deviation = m.axis_deviation || s.condition.type == ConditionType::kAxisAligned || s.guidance.axis >= 0;
+    m.force_steadiness = m.force_steadiness || s.condition.type == ConditionType::kForceHeld;
+  }
+  m.lateral_load = std::any_of(task.layers.begin(), task.layers.end(), [](const TaskLayer& l) { return !l.rigid; });
+  return m;
 }
 
 int Task::marker_index(const std::string& marker_name) const {

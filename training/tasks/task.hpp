@@ -134,11 +134,22 @@ struct ScoreReferences {
   double loss_advance_m = 0.008;
 };
 
+// Which of the components that depend on the task's design it measures (docs/SCORING.md, "Score"):
+// a component the task does not measure is not applicable, and the others share its weight. Set on
+// load from the steps and the tissue (training::score_measures).
+struct ScoreMeasures {
+  bool tip_error = true;         // a step with a target (target_reached, or a guidance target)
+  bool axis_deviation = true;    // a step with a planned axis (axis_aligned, or a guidance axis)
+  bool force_steadiness = true;  // a force_held step
+  bool lateral_load = true;      // penetrable tissue (a layer that is not rigid)
+};
+
 struct ScoringSpec {
   double safe_force_N = 3.0;
   double pass_score = 70.0;
   ScoreWeights weights;
   ScoreReferences references;
+  ScoreMeasures measures;
 };
 
 // A task's name: 1 to kMaxNameBytes letters, digits, '_' or '-' (it becomes part of file names);
@@ -212,6 +223,8 @@ struct Task {
   // a task on no patient.
   std::optional<PatientLandmarks> landmarks;
   std::optional<TaskSyringe> syringe;                   // the loss-of-resistance syringe on the needle, when it has one
+  // An untimed practice run of the task (docs/TASKS.md, "Practice"): no step has a time limit.
+  bool practice = false;
 
   int marker_index(const std::string& name) const;  // -1 when absent
   int layer_index(const std::string& name) const;   // -1 when absent
@@ -221,6 +234,13 @@ Task load_task(const std::filesystem::path& file);
 // A task from the text of its file as it was at `source` (a recording keeps it): paths in it are
 // relative to `source`'s folder, errors read "SOURCE (as recorded): /json/pointer: what is wrong".
 Task parse_task(const std::string& text, const std::filesystem::path& source);
+
+// `task` as a practice run: every step's time limit lifted (the session may then last as long as
+// io::kMaxSessionSeconds), `practice` set; the rest, its score included, as the task says.
+Task practice_task(Task task);
+
+// What the task's steps and tissue give its score to measure (ScoreMeasures).
+ScoreMeasures score_measures(const Task& task);
 
 // How long a session of `task` may last (docs/TASKS.md, "Limits"): when every step has a time
 // limit, their sum (by then every step has ended) plus kTaskEndMargin_s; never more than

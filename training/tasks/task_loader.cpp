@@ -83,6 +83,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     }
     t.scoring = scoring(root.contains("scoring") ? root["scoring"] : json::object(), "/scoring", t.ultrasound_probe.has_value(),
                         !t.layers.empty() && t.layers.size() > 1, t.syringe.has_value());
+    t.scoring.measures = score_measures(t);
     return t;
   }
 

@@ -1,5 +1,6 @@
 #include "training/tasks/task_progress.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdio>
@@ -42,6 +43,12 @@ bool step_outcome_from_name(const std::string& name, StepOutcome& outcome) {
       return true;
     }
   return false;
+}
+
+std::string step_outcome_words(StepOutcome outcome) {
+  std::string words = step_outcome_name(outcome);
+  std::replace(words.begin(), words.end(), '_', ' ');
+  return words;
 }
 
 std::string step_failure_reason(const Task& task, const StepRecord& record) {

@@ -25,6 +25,7 @@ enum class StepOutcome {
 };
 
 const char* step_outcome_name(StepOutcome outcome);                          // "pending", "completed", ...
+std::string step_outcome_words(StepOutcome outcome);                         // for people: "timed out", "tip moved"
 bool step_outcome_from_name(const std::string& name, StepOutcome& outcome);  // false if unknown
 
 struct StepRecord {
