@@ -1,6 +1,8 @@
 #include "app/echo_scene.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 
 namespace needle::app {
 namespace {
@@ -25,13 +27,33 @@ engine::EchoPrimitive echo_primitive(const haptics::SurfacePrimitive& p, const E
 
 glm::dvec3 glm_of(const training::Vec3& v) { return {v[0], v[1], v[2]}; }
 
+// A grid layer's grid in the world frame (values shared, not copied, between the layers of one grid).
+std::shared_ptr<const engine::EchoGrid> echo_grid(const std::shared_ptr<const haptics::SdfGrid>& shared_grid,
+                                                  const Eigen::Vector3d& base_in_world) {
+  const haptics::SdfGrid& grid = *shared_grid;
+  auto out = std::make_shared<engine::EchoGrid>();
+  out->origin = world(grid.origin(), base_in_world);
+  out->spacing_m = grid.spacing();
+  out->quantum_m = grid.quantum();
+  out->nodes = glm::uvec3(grid.nodes()[0], grid.nodes()[1], grid.nodes()[2]);
+  out->values = std::shared_ptr<const std::vector<int16_t>>(shared_grid, &grid.values());  // kept alive by the grid
+  return out;
+}
+
 }  // namespace
 
 engine::EchoScene echo_scene(const haptics::Scenario& scenario, const engine::Scene& scene) {
   engine::EchoScene out;
+  std::map<const haptics::SdfGrid*, std::shared_ptr<const engine::EchoGrid>> grids;
   for (const haptics::TissueLayer& layer : scenario.scene.tissue.layers()) {
     engine::EchoLayer echo;
     echo.name = layer.name;
+    if (const auto& grid = layer.shape.grid()) {
+      auto& shared = grids[grid.get()];
+      if (!shared) shared = echo_grid(grid, scenario.base_in_world);
+      echo.grid = shared;
+      echo.grid_offset_m = layer.shape.grid_offset();
+    }
     const haptics::ImplicitSurface& surface = layer.shape.surface();
     echo.intersection = surface.combine() == haptics::ImplicitSurface::Combine::Intersection;
     for (const haptics::SurfacePrimitive& p : surface.primitives()) echo.primitives.push_back(echo_primitive(p, scenario.base_in_world));
@@ -71,6 +93,19 @@ engine::UltrasoundProbe to_engine(const training::UltrasoundProbeSpec& p) {
   out.frequency_MHz = p.frequency_MHz;
   out.slice_thickness_m = p.slice_thickness_m;
   return out;
+}
+
+engine::UltrasoundProbe paramedian_sagittal_oblique_probe(const engine::EchoScene& scene, const glm::dvec3& over, double offset_m,
+                                                          double medial_tilt_rad) {
+  engine::UltrasoundProbe probe;
+  probe.direction = {-std::sin(medial_tilt_rad), 0.0, -std::cos(medial_tilt_rad)};
+  probe.lateral = {0.0, 1.0, 0.0};
+  probe.depth_m = 0.08;
+  probe.width_m = 0.06;
+  probe.frequency_MHz = 5.0;
+  const glm::dvec3 beside = over + glm::dvec3(offset_m, 0.0, 0.0);
+  probe.position = beside;
+  return engine::probe_on_skin(scene, probe, beside - 0.1 * probe.direction);
 }
 
 ProbePlan task_probe(const training::Task& task, const engine::EchoScene& echo) {

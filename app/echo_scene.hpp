@@ -24,6 +24,16 @@ bool layers_have_acoustics(const training::Task& task);
 
 engine::UltrasoundProbe to_engine(const training::UltrasoundProbeSpec& probe);
 
+// The paramedian sagittal oblique view of a lumbar patient (its spine along +y, its back facing +z):
+// a 5 MHz linear probe 60 mm wide imaging 80 mm deep, its array along the spine, `offset_m` to the
+// patient's right of the midline point `over` (world) and its beam tilted `medial_tilt_rad` toward
+// the midline, lowered onto the skin: the laminae's "sawtooth" and the interlaminar windows between
+// them, through which the flavum, the dura and the front of the canal show. The view is the one
+// Karmakar et al. (Br J Anaesth 2009;102:845-854) image before a paramedian epidural; the offset,
+// tilt, width and depth are the caller's (design values there).
+engine::UltrasoundProbe paramedian_sagittal_oblique_probe(const engine::EchoScene& scene, const glm::dvec3& over, double offset_m,
+                                                          double medial_tilt_rad);
+
 struct ProbePlan {
   engine::UltrasoundProbe probe;
   bool follow_needle = false;  // the view's probe moves over the tip in the needle's plane

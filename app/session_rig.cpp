@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <random>
 #include <nlohmann/json.hpp>
 
 #include "haptics/control/gains.hpp"
@@ -122,6 +123,13 @@ std::vector<std::string> replay_notes(const std::string& path, const haptics::Re
   return notes;
 }
 
+// The options' seed, or one from the system's entropy: a random patient new each attempt.
+uint64_t patient_seed(const RigOptions& options) {
+  if (options.patient_seed) return *options.patient_seed;
+  std::random_device entropy;
+  return (uint64_t(entropy()) << 32) ^ entropy();
+}
+
 }  // namespace
 
 training::Task session_task(const fs::path& task_file, const haptics::DeviceSpec& device, bool practice) {
@@ -180,7 +188,7 @@ SessionRig::Recorded SessionRig::make_sim(const training::Task& task, const RigO
                                ": a task's sim runs the task's own scenario (--device sim, --operator SCRIPT)");
   const fs::path scenario_file = options.out_dir / "scenario.json";
   const fs::path script = training::operator_script_path(task, options.operator_spec);
-  haptics::Scenario scenario = training::scenario_with_operator(task, script, scenario_file);
+  haptics::Scenario scenario = training::scenario_with_operator(task, script, scenario_file, patient_seed(options));
   rate_hz_ = options.rate_hz.value_or(1.0 / scenario.period_s);
   sim_ = std::make_unique<haptics::SimSession>(std::move(scenario), rate_hz_);
   device_ = &sim_->device();
@@ -234,7 +242,7 @@ SessionRig::Recorded SessionRig::make_live(const training::Task& task, const Rig
   owned_device_ = std::move(needle);
   owned_device_->open();
   owned_device_->home();
-  Recorded recorded{training::task_scenario_json(task), nullptr};
+  Recorded recorded{training::task_scenario_json(task, patient_seed(options)), nullptr};
   scenario_ = std::make_unique<haptics::Scenario>(training::write_scenario(recorded.scenario, options.out_dir / "scenario.json"));
   rate_hz_ = options.rate_hz.value_or(1000.0);
   const haptics::TaskCoupling task_coupling = coupling_for(options.device, options.camera);
@@ -245,6 +253,8 @@ SessionRig::Recorded SessionRig::make_live(const training::Task& task, const Rig
   description_ = options.device.text();
   return recorded;
 }
+
+const haptics::Scenario& SessionRig::scenario() const { return sim_ ? sim_->scenario() : *scenario_; }
 
 std::optional<ToolStart> SessionRig::tool_start() const {
   if (!task_space_) return std::nullopt;

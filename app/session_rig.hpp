@@ -36,6 +36,9 @@ struct RigOptions {
   engine::Camera camera;                // the view the trainee sees: task-space devices move in its axes
   std::string session_uid;              // the stored session's id (SessionInfo::uid), kept in the
                                         // recording's context: a recording names its own session
+  // The seed a task with a random patient draws this attempt's patient with (kept in the recording
+  // as the patient it drew); none: a new one from the system's entropy each session.
+  std::optional<uint64_t> patient_seed;
 };
 
 // The task a session on `device` runs: for replay:FILE the task as its recording keeps it (the
@@ -79,6 +82,8 @@ class SessionRig {
   // Where a task-space device's tool starts (its first reading lands there); nullopt for the
   // joint-space and replayed devices.
   std::optional<ToolStart> tool_start() const;
+  // The scenario the session runs (its patient, when it has one, is the one this session drew).
+  const haptics::Scenario& scenario() const;
   // For the session store and the recording header: "sim (good)", "mouse", "replay of ...".
   const std::string& description() const { return description_; }
   // JSON for the recording header (haptics::SessionHeader::context).

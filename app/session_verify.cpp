@@ -12,6 +12,7 @@
 #include "haptics/realtime/haptic_loop.hpp"
 #include "training/sessions/recording_identity.hpp"
 #include "training/sessions/session_review.hpp"
+#include "training/tasks/patient_session.hpp"
 
 namespace needle::app {
 namespace {
@@ -46,9 +47,10 @@ training::SessionResult replay_result(const fs::path& recording, const fs::path&
   RigOptions options;
   options.device = {haptics::DeviceSpec::Kind::kReplay, std::nullopt, recording.string()};
   options.out_dir = scratch;
-  const training::Task task = session_task({}, options.device);
+  training::Task task = session_task({}, options.device);
   task_name = task.name;
   SessionRig rig(task, options);
+  training::apply_patient(task, rig.scenario());  // the recorded patient's landmarks
   if (!rig.can_complete())
     throw haptics::RecordingError(recording.string() +
                                   ": its run did not run to its end (cut short, or stopped): a complete session's "

@@ -8,6 +8,7 @@
 #include <cctype>
 
 #include "app/default_db.hpp"
+#include "app/patient_meshes.hpp"
 #include "app/ultrasound_window.hpp"
 #include "engine/gpu_device.hpp"
 #include "engine/gpu_scene.hpp"
@@ -15,6 +16,7 @@
 #include "engine/ui_pass.hpp"
 #include "haptics/safety/fault_cause.hpp"
 #include "io/file_write.hpp"
+#include "training/tasks/patient_session.hpp"
 #include "ui/guidance_overlay.hpp"
 #include "ui/syringe_gauge.hpp"
 #include "training/sessions/postgres_connection.hpp"
@@ -58,6 +60,14 @@ TaskSessionOptions with_session_uid(TaskSessionOptions options) {
   return options;
 }
 
+// The session's rig, and the task given the landmarks of the patient the rig's scenario runs on (a
+// random patient's own) before anything scores it.
+std::unique_ptr<SessionRig> rig_on_patient(training::Task& task, const RigOptions& options) {
+  auto rig = std::make_unique<SessionRig>(task, options);
+  training::apply_patient(task, rig->scenario());
+  return rig;
+}
+
 TaskSessionOptions with_task_settings(TaskSessionOptions options, const engine::Scene& scene) {
   options.rig.out_dir = options.out_dir;
   options.rig.camera = scene.camera;
@@ -89,10 +99,11 @@ TaskSession::TaskSession(TaskSessionOptions options)
     : options_(with_session_uid(std::move(options))),
       task_(session_task(options_.task, options_.rig.device, options_.practice)),
       scene_(engine::load_scene(task_.scene)),
-      rig_(std::make_unique<SessionRig>(task_, with_task_settings(options_, scene_).rig)),
+      rig_(rig_on_patient(task_, with_task_settings(options_, scene_).rig)),
       store_(open_store(options_, offline_)),
       recording_path_(new_recording_path(local_db(options_), task_.name)),
       feed_(task_) {
+  scene_ = with_patient(std::move(scene_), rig_->scenario());  // the patient the rig runs, drawn
   haptics::LoopConfig config;
   config.rate_hz = rig_->rate_hz();
   config.sample_capacity = 1 << 15;  // 33 s at 1 kHz: room for the recorder's worst stall

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,9 @@ enum class AssetRole { Tissue, Tool, Bone, Marker };
 struct SceneAsset {
   std::string name;
   std::filesystem::path gltf;  // absolute, resolved against the scene file's folder
+  // A model made in memory instead of a glTF file (a generated patient's meshes, added by the app;
+  // never read from a scene file).
+  std::shared_ptr<const Model> model;
   AssetRole role = AssetRole::Tissue;
   glm::vec3 translation{0.0f};
   glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};

@@ -52,12 +52,28 @@ struct EchoPrimitive {
   double radius = 0.0;
 };
 
+// A layer's region sampled on a grid, as a generated anatomy's layers are (haptics' SdfGrid in plain
+// types): φ at the nodes origin + (i, j, k)·spacing in whole quanta (x fastest, then y, then z),
+// trilinear between them, its gradient the normal; outside the grid's box φ is the distance to the
+// box plus the nearest box point's φ where that is positive (the region is clipped to the box).
+// World frame, metres. Several layers may share one grid at different offsets.
+struct EchoGrid {
+  glm::dvec3 origin{0.0};
+  double spacing_m = 1e-3;
+  double quantum_m = 1e-6;
+  glm::uvec3 nodes{2u};
+  std::shared_ptr<const std::vector<int16_t>> values;  // nodes.x · nodes.y · nodes.z
+};
+
 struct EchoLayer {
   static constexpr size_t kMaxPrimitives = 8;
   std::string name;
-  std::vector<EchoPrimitive> primitives;  // 1 to kMaxPrimitives
+  std::vector<EchoPrimitive> primitives;  // 1 to kMaxPrimitives; none with a grid
   bool intersection = false;              // combined by max; else by min
   EchoMaterial material;
+  // Or the region {φ_grid + grid_offset_m ≤ 0} of a grid (no primitives then).
+  std::shared_ptr<const EchoGrid> grid;
+  double grid_offset_m = 0.0;
 };
 
 // The needle as a reflector: a steel cylinder from the tip back along the axis.
@@ -72,6 +88,8 @@ struct EchoNeedle {
 // needle's state (the same field the scene's tissue mesh is deformed by).
 struct EchoScene {
   static constexpr size_t kMaxLayers = 16;
+  static constexpr size_t kMaxGrids = 16;                      // distinct grids the layers use
+  static constexpr size_t kMaxGridValues = size_t(1) << 26;    // their nodes in all (128 MiB)
   std::vector<EchoLayer> layers;
   std::optional<TissueParams> deformation;
   EchoNeedle needle;
@@ -151,7 +169,8 @@ double rest_interpolation_error(const EchoScene& scene, const UltrasoundProbe& p
 
 class UltrasoundView {
  public:
-  // std::invalid_argument for a scene beyond the pass's limits (layers, primitives) or sizes of 0.
+  // std::invalid_argument for a scene beyond the pass's limits (layers, primitives, grids and their
+  // nodes) or sizes of 0.
   UltrasoundView(const GpuDevice& device, EchoScene scene, const UltrasoundSettings& settings = {});
   ~UltrasoundView();
   UltrasoundView(const UltrasoundView&) = delete;

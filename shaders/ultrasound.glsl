@@ -35,10 +35,16 @@ layout(set = 0, binding = 0, std140) uniform Echo {
   Load loads[MAX_LOADS];
 } echo;
 
-// The scene's layers, outside in, and their primitives (engine/ultrasound.hpp, EchoLayer).
+// The scene's layers, outside in, and their primitives or grids (engine/ultrasound.hpp, EchoLayer).
 struct Layer {
-  uvec4 shape;    // x first primitive, y count, z 1 intersection / 0 union
+  uvec4 shape;    // x first primitive, y count, z 1 intersection / 0 union, w grid + 1 (0: primitives)
   vec4 material;  // x impedance (MRayl), y attenuation (dB/(cm MHz)), z echogenicity, w scatterer density
+  vec4 grid;      // x the grid's offset (m)
+};
+struct Grid {
+  vec4 origin_spacing;  // xyz origin, w spacing (m)
+  uvec4 nodes_first;    // xyz node counts, w its first value in grid_words
+  vec4 quantum;         // x quantum (m)
 };
 struct Primitive {
   vec4 a_kind;    // xyz a, w kind: 0 sphere, 1 plane, 2 capsule
@@ -49,7 +55,10 @@ struct Primitive {
 layout(set = 0, binding = 1, std140) uniform Layers {
   Layer layers[16];
   Primitive primitives[128];
+  Grid grids[16];
 };
+// The grids' values, 16-bit whole quanta, two to a word (engine/ultrasound/ultrasound_pass.cpp, grid_values).
+layout(set = 0, binding = 9, std430) readonly buffer GridValues { uint grid_words[]; };
 
 // Per sample (x) of each line (y): its received echo (xy: in-phase, quadrature): the specular
 // echoes (interfaces, needle wall, reverberation) the line pass adds to the cleared image, then
@@ -145,8 +154,43 @@ LayerSample evaluate_primitive(Primitive p, vec3 x) {
   return point_distance(x, p.a_kind.xyz, p.b_radius.w);
 }
 
+// Value i of the grids' buffer, sign-extended from its 16 bits.
+float grid_value(uint i) {
+  uint word = grid_words[i >> 1];
+  return float((i & 1u) == 0u ? int(word << 16) >> 16 : int(word) >> 16);
+}
+
+// A grid's φ + offset and its normal (echo_model.cpp, evaluate_grid): trilinear, the gradient
+// normalised; outside the box, the distance to it plus the nearest box point's positive φ.
+LayerSample evaluate_grid(uint g, float offset, vec3 x) {
+  vec3 lo = grids[g].origin_spacing.xyz;
+  float h = grids[g].origin_spacing.w;
+  uvec3 n = grids[g].nodes_first.xyz;
+  vec3 p = clamp(x, lo, lo + h * vec3(n - 1u));
+  vec3 u = (p - lo) / h;
+  ivec3 c = clamp(ivec3(floor(u)), ivec3(0), ivec3(n) - 2);
+  vec3 f = clamp(u - vec3(c), 0.0, 1.0);
+  uint base = grids[g].nodes_first.w + (uint(c.z) * n.y + uint(c.y)) * n.x + uint(c.x);
+  uint sy = n.x, sz = n.x * n.y;
+  float v000 = grid_value(base), v100 = grid_value(base + 1u), v010 = grid_value(base + sy), v110 = grid_value(base + sy + 1u);
+  float v001 = grid_value(base + sz), v101 = grid_value(base + sz + 1u), v011 = grid_value(base + sz + sy), v111 = grid_value(base + sz + sy + 1u);
+  vec3 gf = 1.0 - f;
+  float value = gf.z * (gf.y * (gf.x * v000 + f.x * v100) + f.y * (gf.x * v010 + f.x * v110)) +
+                f.z * (gf.y * (gf.x * v001 + f.x * v101) + f.y * (gf.x * v011 + f.x * v111));
+  vec3 gradient = vec3(gf.z * (gf.y * (v100 - v000) + f.y * (v110 - v010)) + f.z * (gf.y * (v101 - v001) + f.y * (v111 - v011)),
+                       gf.z * (gf.x * (v010 - v000) + f.x * (v110 - v100)) + f.z * (gf.x * (v011 - v001) + f.x * (v111 - v101)),
+                       gf.y * (gf.x * (v001 - v000) + f.x * (v101 - v100)) + f.y * (gf.x * (v011 - v010) + f.x * (v111 - v110)));
+  float inside = grids[g].quantum.x * value + offset;
+  vec3 outside = x - p;
+  float gap = length(outside);
+  if (gap > 0.0) return LayerSample(gap + max(inside, 0.0), outside / gap);
+  float len = length(gradient);
+  return LayerSample(inside, len > 0.0 ? gradient / len : vec3(1.0, 0.0, 0.0));
+}
+
 LayerSample evaluate_layer(uint k, vec3 x) {
   uvec4 shape = layers[k].shape;
+  if (shape.w != 0u) return evaluate_grid(shape.w - 1u, layers[k].grid.x, x);
   bool intersection = shape.z == 1u;
   LayerSample best = LayerSample(intersection ? -1e30 : 1e30, vec3(1.0, 0.0, 0.0));
   for (uint i = 0; i < shape.y; ++i) {

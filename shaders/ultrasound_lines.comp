@@ -43,15 +43,23 @@ vec2 needle_hit(vec3 origin) {
 // The last layer whose region holds x (-1 in none), and a clearance: how far along the beam from
 // x no primitive's surface is crossed, so no layer's membership changes. A primitive's |φ| is
 // its distance (spheres, capsules, planes); at rest a plane is crossed only where the beam meets
-// it. While the tissue is deformed the beam is curved in rest space: half the least |φ| (the rest
-// position moves up to twice as fast as the point for a displacement gradient up to 0.5, a design
-// value; docs/RENDERING.md, "How the passes find the layers").
+// it. A grid's |φ| is the distance to within a factor √3 (its trilinear interpolant changes at most
+// that much faster, docs/TISSUE.md): its clearance |φ|/√3. While the tissue is deformed the beam is
+// curved in rest space: half the least (the rest position moves up to twice as fast as the point
+// for a displacement gradient up to 0.5, a design value; docs/RENDERING.md, "How the passes find
+// the layers").
 int layer_and_clearance(vec3 x, vec3 beam, out float clearance) {
   bool at_rest = LOADS == 0u;
   int found = -1;
   clearance = 1e30;
   for (int k = int(echo.counts.z) - 1; k >= 0; --k) {
     uvec4 shape = layers[k].shape;
+    if (shape.w != 0u) {
+      float s = evaluate_grid(shape.w - 1u, layers[k].grid.x, x).phi;
+      clearance = min(clearance, abs(s) * (at_rest ? 0.57735 : 0.288675));
+      if (found < 0 && s < 0.0) found = k;
+      continue;
+    }
     bool intersection = shape.z == 1u;
     float phi = intersection ? -1e30 : 1e30;
     for (uint i = 0; i < shape.y; ++i) {

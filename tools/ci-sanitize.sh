@@ -18,7 +18,10 @@ suites+='|SimHolonomic|SimNonholonomic|SimFeel|SimHandPassivity|PassivityClosedL
 suites+='|SessionLimits|SessionReviewTest|SessionStoreFailure|SessionsThatCount|ShippedTasks/ScriptedSessions|LayeredSessions|EpiduralTasks/SyringeSessions|ReviewPanels|ReviewPanelsLayered'
 suites+='|CliBench[A-Za-z]*|CliHapticsBench|CliHapticsSimulate|CliRecordings|CliReport|CliReviewWindow|CliReportLayered|CliRunDevices|CliRunTask|CliWrites|Tasks/RunReplay'
 suites+='|CliPostgres|CliHostileFiles|CliVerify'
-tests='BenchTickAllocations\.(NonholonomicContact|LayeredTissue)TickAllocatesNothing|RecordingReplay\.(ControllerReplayIsBitForBit|ATickTheDeviceHeldAtItsForceLimitIsMarkedInTheRecording)'
+# Generating a patient samples about ten million nodes of analytic shapes (Eigen's small vectors):
+# under a second unsanitized, a minute or more sanitized, for each patient a test makes.
+suites+='|PatientGeneration|ShippedPatients/PatientSessions|PatientSessionsRandom|PatientScenes|CliPatient'
+tests='BenchTickAllocations\.(NonholonomicContact|LayeredTissue|PatientTissue)TickAllocatesNothing|RecordingReplay\.(ControllerReplayIsBitForBit|ATickTheDeviceHeldAtItsForceLimitIsMarkedInTheRecording)'
 tests+='|LayeredDimple\.TheScriptedHandsDimpleIsThePhysicsDeflection|SimComponents\.DeviceEnergyBalancesTheWorkDoneOnIt|CliStartScreen\.(ATraineeStarts|ATraineeDoes|TheKeyboards|TheScorePanels|WithoutADisplayItSaysSoAndRunStill)[A-Za-z]*'
 skip=${SANITIZE_SKIP-"^((ShaderBuild|Layout|$suites)\\.|($tests)\$)"}
 

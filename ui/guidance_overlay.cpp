@@ -18,6 +18,7 @@ using training::operator-;
 
 const ImU32 kNow = IM_COL32(255, 255, 255, 255);
 const ImU32 kNormal = IM_COL32(230, 110, 255, 255);
+const ImU32 kLandmark = IM_COL32(255, 200, 60, 255);
 
 // How far the planned axis is drawn behind its origin and ahead along its direction.
 constexpr double kAxisBehind_m = 0.03;
@@ -126,6 +127,18 @@ void draw_depth_gauge(Painter& paint, const training::Task& task, int marker, co
   paint.tick(at(depth), at(depth + 0.01), kNow, label);
 }
 
+// A patient's landmarks: Tuffier's line between the iliac crests' tops (drawn 3 cm beyond each),
+// and each spinous process's tip with its level.
+void draw_landmarks(Painter& paint, const training::PatientLandmarks& l) {
+  const training::Vec3 across = l.crest_tops[1] - l.crest_tops[0];
+  const double beyond = 0.03 / training::norm(across);
+  const training::Vec3 a = l.crest_tops[0] - beyond * across, b = l.crest_tops[1] + beyond * across;
+  paint.line(a, b, kLandmark, 2.0f);
+  paint.ring(b, kLandmark, 4.0f, "Tuffier's line");
+  static constexpr const char* kLevels[] = {"L1", "L2", "L3", "L4", "L5", "S1"};
+  for (size_t i = 0; i < l.spinous_tips.size(); ++i) paint.ring(l.spinous_tips[i], kLandmark, 5.0f, kLevels[i]);
+}
+
 }  // namespace
 
 training::ViewAxes view_axes(const engine::Camera& camera) {
@@ -152,6 +165,7 @@ void draw_guidance(const GuidanceView& view) {
     paint.ring(target, kTargetColour, 9.0f, label);
     paint.cross(target, kTargetColour, 4.0f);
   }
+  if (g.landmarks && task.landmarks) draw_landmarks(paint, *task.landmarks);
   if (g.normal_markers >= 0) {
     for (const training::Vec3& p : normal_marker_positions(task, task.markers[g.normal_markers], view.tip)) paint.dot(p, kNormal, 5.0f);
   }

@@ -17,13 +17,18 @@ GpuScene::GpuScene(const SceneRenderer& renderer, Scene scene) : scene_(std::mov
   for (size_t a = 0; a < scene_.assets.size(); ++a) {
     const SceneAsset& asset = scene_.assets[a];
     transforms_.push_back(asset.transform());
+    if (!asset.deformation && asset.model) {
+      model_of_asset_.push_back(models_.size());
+      models_.push_back(renderer.pass().upload(*asset.model));
+      continue;
+    }
     if (!asset.deformation) {
       auto [it, fresh] = shared.try_emplace(asset.gltf, models_.size());
       if (fresh) models_.push_back(renderer.pass().upload(load_gltf(asset.gltf)));
       model_of_asset_.push_back(it->second);
       continue;
     }
-    add_deformable(renderer, load_gltf(asset.gltf), a);
+    add_deformable(renderer, asset.model ? *asset.model : load_gltf(asset.gltf), a);
   }
 }
 
@@ -54,7 +59,7 @@ void GpuScene::add_deformable(const SceneRenderer& renderer, Model model, size_t
 
 GpuScene::GpuScene(const SceneRenderer& renderer, const Model& model, const Scene& view,
                    const std::optional<TissueParams>& deformation) {
-  scene_.assets.push_back(SceneAsset{"model", {}, AssetRole::Tissue});
+  scene_.assets.push_back(SceneAsset{"model", {}, nullptr, AssetRole::Tissue});
   scene_.assets[0].deformation = deformation;
   scene_.camera = view.camera;
   scene_.lights = view.lights;

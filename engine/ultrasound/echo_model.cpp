@@ -33,6 +33,37 @@ LayerSample evaluate_primitive(const EchoPrimitive& p, const glm::dvec3& x) {
   return {0.0, glm::dvec3(1.0, 0.0, 0.0)};
 }
 
+// A grid's φ + offset and its normal (haptics/tissue/sdf_grid.cpp's, in glm: the same trilinear
+// interpolant and the same rule outside the box).
+LayerSample evaluate_grid(const EchoGrid& g, double offset, const glm::dvec3& x) {
+  const glm::dvec3 hi = g.origin + g.spacing_m * glm::dvec3(g.nodes - glm::uvec3(1u));
+  const glm::dvec3 p = glm::clamp(x, g.origin, hi);
+  glm::ivec3 c;
+  glm::dvec3 f;
+  for (int a = 0; a < 3; ++a) {
+    const double u = (p[a] - g.origin[a]) / g.spacing_m;
+    c[a] = std::clamp(int(std::floor(u)), 0, int(g.nodes[a]) - 2);
+    f[a] = std::clamp(u - c[a], 0.0, 1.0);
+  }
+  const auto v = [&](int i, int j, int k) {
+    return double((*g.values)[(size_t(c.z + k) * g.nodes.y + size_t(c.y + j)) * g.nodes.x + size_t(c.x + i)]);
+  };
+  const double v000 = v(0, 0, 0), v100 = v(1, 0, 0), v010 = v(0, 1, 0), v110 = v(1, 1, 0);
+  const double v001 = v(0, 0, 1), v101 = v(1, 0, 1), v011 = v(0, 1, 1), v111 = v(1, 1, 1);
+  const double gx = 1.0 - f.x, gy = 1.0 - f.y, gz = 1.0 - f.z;
+  const double value = gz * (gy * (gx * v000 + f.x * v100) + f.y * (gx * v010 + f.x * v110)) +
+                       f.z * (gy * (gx * v001 + f.x * v101) + f.y * (gx * v011 + f.x * v111));
+  const glm::dvec3 gradient(gz * (gy * (v100 - v000) + f.y * (v110 - v010)) + f.z * (gy * (v101 - v001) + f.y * (v111 - v011)),
+                            gz * (gx * (v010 - v000) + f.x * (v110 - v100)) + f.z * (gx * (v011 - v001) + f.x * (v111 - v101)),
+                            gy * (gx * (v001 - v000) + f.x * (v101 - v100)) + f.y * (gx * (v011 - v010) + f.x * (v111 - v110)));
+  const double inside = g.quantum_m * value + offset;
+  const glm::dvec3 out = x - p;
+  const double gap = glm::length(out);
+  if (gap > 0.0) return {gap + std::max(inside, 0.0), out / gap};
+  const double len = glm::length(gradient);
+  return {inside, len > 0.0 ? gradient / len : glm::dvec3(1.0, 0.0, 0.0)};
+}
+
 double impedance(const EchoScene& scene, int layer) {
   return layer < 0 ? kGelImpedance_MRayl : scene.layers[size_t(layer)].material.impedance_MRayl;
 }
@@ -117,6 +148,7 @@ double sample_depth(const UltrasoundProbe& probe, const UltrasoundSettings& sett
 }
 
 LayerSample evaluate(const EchoLayer& layer, const glm::dvec3& x) {
+  if (layer.grid) return evaluate_grid(*layer.grid, layer.grid_offset_m, x);
   LayerSample best{layer.intersection ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity(),
                    glm::dvec3(1.0, 0.0, 0.0)};
   for (const EchoPrimitive& p : layer.primitives) {

@@ -54,8 +54,14 @@ static_assert(sizeof(EchoUniforms) == 16 * (14 + 2 * kKernelVec4s) + 32 * kMaxLo
 
 // Mirrors of the Layers block (std140) and the Lines buffer (std430).
 struct LayerGpu {
-  glm::uvec4 shape;
+  glm::uvec4 shape;    // x first primitive, y count, z intersection, w grid + 1 (0: primitives)
   glm::vec4 material;
+  glm::vec4 grid;      // x the grid's offset (m)
+};
+struct GridGpu {
+  glm::vec4 origin_spacing;  // xyz origin, w spacing (m)
+  glm::uvec4 nodes_first;    // xyz node counts, w its first value in the grid values' buffer
+  glm::vec4 quantum;         // x quantum (m)
 };
 struct PrimitiveGpu {
   glm::vec4 a_kind;
@@ -64,6 +70,7 @@ struct PrimitiveGpu {
 struct LayersGpu {
   LayerGpu layers[EchoScene::kMaxLayers];
   PrimitiveGpu primitives[kMaxPrimitives];
+  GridGpu grids[EchoScene::kMaxGrids];
 };
 struct InterfaceGpu {
   float depth;
@@ -81,7 +88,7 @@ struct LineRecordGpu {
 };
 static_assert(sizeof(LineRecordGpu) == 32 + 16 * ScanLine::kMaxInterfaces, "std430 layout of LineRecord");
 
-enum Binding : uint32_t { kUniforms, kLayers, kEchoes, kAxial, kLines, kPicture, kRuns, kUniformsStorage, kRestOffsets, kBindings };
+enum Binding : uint32_t { kUniforms, kLayers, kEchoes, kAxial, kLines, kPicture, kRuns, kUniformsStorage, kRestOffsets, kGridValues, kBindings };
 
 VkDescriptorType descriptor_type(uint32_t binding) {
   switch (binding) {
@@ -90,6 +97,7 @@ VkDescriptorType descriptor_type(uint32_t binding) {
       return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     case kLines:
     case kUniformsStorage:
+    case kGridValues:
       return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     default:
       return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
@@ -119,21 +127,60 @@ void check(const EchoScene& scene, const UltrasoundSettings& settings) {
   if (scene.layers.size() > EchoScene::kMaxLayers)
     throw std::invalid_argument("the ultrasound takes " + std::to_string(EchoScene::kMaxLayers) + " layers, not " +
                                 std::to_string(scene.layers.size()));
-  for (const EchoLayer& layer : scene.layers)
+  for (const EchoLayer& layer : scene.layers) {
+    if (layer.grid) {
+      if (!layer.primitives.empty()) throw std::invalid_argument("layer \"" + layer.name + "\" has both a grid and primitives");
+      const glm::uvec3 n = layer.grid->nodes;
+      if (n.x < 2 || n.y < 2 || n.z < 2 || !layer.grid->values || layer.grid->values->size() != size_t(n.x) * n.y * n.z)
+        throw std::invalid_argument("layer \"" + layer.name + "\": its grid's values are not its nodes' count");
+      continue;
+    }
     if (layer.primitives.empty() || layer.primitives.size() > EchoLayer::kMaxPrimitives)
       throw std::invalid_argument("layer \"" + layer.name + "\" has " + std::to_string(layer.primitives.size()) +
                                   " primitives; the ultrasound takes 1 to " + std::to_string(EchoLayer::kMaxPrimitives));
+  }
 }
 
-LayersGpu pack_layers(const EchoScene& scene) {
+// The scene's distinct grids, in the order their layers first use them.
+std::vector<const EchoGrid*> distinct_grids(const EchoScene& scene) {
+  std::vector<const EchoGrid*> grids;
+  for (const EchoLayer& l : scene.layers)
+    if (l.grid && std::find(grids.begin(), grids.end(), l.grid.get()) == grids.end()) grids.push_back(l.grid.get());
+  if (grids.size() > EchoScene::kMaxGrids)
+    throw std::invalid_argument("the ultrasound takes " + std::to_string(EchoScene::kMaxGrids) + " grids, not " + std::to_string(grids.size()));
+  size_t values = 0;
+  for (const EchoGrid* g : grids) values += g->values->size();
+  if (values > EchoScene::kMaxGridValues)
+    throw std::invalid_argument("the ultrasound takes " + std::to_string(EchoScene::kMaxGridValues) + " grid nodes in all, not " + std::to_string(values));
+  return grids;
+}
+
+// Every grid's values one after the other (16 bits each, two to a 32-bit word), padded to a word;
+// one word when there is no grid (a buffer must not be empty).
+std::vector<int16_t> grid_values(const std::vector<const EchoGrid*>& grids) {
+  std::vector<int16_t> all;
+  for (const EchoGrid* g : grids) all.insert(all.end(), g->values->begin(), g->values->end());
+  all.resize(std::max<size_t>(2, all.size() + all.size() % 2), 0);
+  return all;
+}
+
+LayersGpu pack_layers(const EchoScene& scene, const std::vector<const EchoGrid*>& grids) {
   LayersGpu out{};
+  uint32_t first_value = 0;
+  for (size_t g = 0; g < grids.size(); ++g) {
+    out.grids[g] = {glm::vec4(glm::vec3(grids[g]->origin), float(grids[g]->spacing_m)), glm::uvec4(grids[g]->nodes, first_value),
+                    glm::vec4(float(grids[g]->quantum_m), 0.0f, 0.0f, 0.0f)};
+    first_value += uint32_t(grids[g]->values->size());
+  }
   uint32_t next = 0;
   for (size_t k = 0; k < scene.layers.size(); ++k) {
     const EchoLayer& l = scene.layers[k];
     const EchoMaterial& m = l.material;
-    out.layers[k] = {glm::uvec4(next, uint32_t(l.primitives.size()), l.intersection ? 1u : 0u, 0u),
+    const uint32_t grid = l.grid ? uint32_t(std::find(grids.begin(), grids.end(), l.grid.get()) - grids.begin()) + 1u : 0u;
+    out.layers[k] = {glm::uvec4(next, uint32_t(l.primitives.size()), l.intersection ? 1u : 0u, grid),
                      glm::vec4(float(m.impedance_MRayl), float(m.attenuation_dB_per_cm_MHz), float(m.echogenicity),
-                               float(m.scatterer_density))};
+                               float(m.scatterer_density)),
+                     glm::vec4(float(l.grid_offset_m), 0.0f, 0.0f, 0.0f)};
     for (const EchoPrimitive& p : l.primitives)
       out.primitives[next++] = {glm::vec4(glm::vec3(p.a), float(int(p.kind))), glm::vec4(glm::vec3(p.b), float(p.radius))};
   }
@@ -176,8 +223,11 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
   set_layout_ = descriptor_set_layout(device_, {bindings.begin(), bindings.end()});
   pipeline_layout_ = single_set_pipeline_layout(device_, set_layout_);
 
-  const LayersGpu packed = pack_layers(scene_);
+  const std::vector<const EchoGrid*> grids = distinct_grids(scene_);
+  const LayersGpu packed = pack_layers(scene_, grids);
   layers_ = GpuBuffer::device_local_with_data(context_, &packed, sizeof packed, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  const std::vector<int16_t> values = grid_values(grids);
+  grid_values_ = GpuBuffer::device_local_with_data(context_, values.data(), values.size() * sizeof(int16_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   echoes_ = work_image(context_, settings_.samples, settings_.lines, kComplexFormat);
   axial_ = work_image(context_, settings_.samples, settings_.lines, kComplexFormat);
   runs_ = work_image(context_, kMaxRuns, settings_.lines);
@@ -188,7 +238,7 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
 
   std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * kRing},
-                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * kRing},
+                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3 * kRing},
                                              {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 5 * kRing}}};
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pool_info.maxSets = kRing;
@@ -211,7 +261,8 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
                                                                  {},
                                                                  {},
                                                                  {uniforms_[slot].handle(), 0, VK_WHOLE_SIZE},
-                                                                 {}}};
+                                                                 {},
+                                                                 {grid_values_.handle(), 0, VK_WHOLE_SIZE}}};
     std::array<VkDescriptorImageInfo, kBindings> images{};
     images[kEchoes] = {VK_NULL_HANDLE, echoes_.view(), VK_IMAGE_LAYOUT_GENERAL};
     images[kAxial] = {VK_NULL_HANDLE, axial_.view(), VK_IMAGE_LAYOUT_GENERAL};

@@ -87,6 +87,7 @@ class UltrasoundPass {
   std::array<VkDescriptorSet, kRing> sets_{};
   std::array<GpuBuffer, kRing> uniforms_;
   GpuBuffer layers_;
+  GpuBuffer grid_values_;  // every grid layer's values, 16 bits each (EchoGrid)
   GpuImage echoes_, axial_, runs_, rest_offsets_;  // float images between the passes, in GENERAL layout
   bool work_images_ready_ = false;   // once transitioned to GENERAL
   GpuBuffer lines_;  // host-visible: read back after an image

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <tuple>
 
+#include "haptics/anatomy/patient_cache.hpp"
 #include "haptics/model/urdf_loader.hpp"
 #include "haptics/sim/scenario_limits.hpp"
 #include "haptics/sim/syringe_reader.hpp"
@@ -134,8 +136,8 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
 // Scenario files through the project's one strict reader: "FILE: /json/pointer: what is wrong".
 class ScenarioReader : io::StrictJsonReader<ScenarioError> {
  public:
-  ScenarioReader(std::string file, std::filesystem::path folder)
-      : StrictJsonReader(std::move(file)), folder_(std::move(folder)) {}
+  ScenarioReader(std::string file, std::filesystem::path folder, bool generate_patient)
+      : StrictJsonReader(std::move(file)), folder_(std::move(folder)), generate_patient_(generate_patient) {}
 
   Scenario scenario(const json& j) {
     object(j, "", {"name", "description", "master_urdf", "virtual_urdf", "robot_base_in_world_m", "period_s",
@@ -260,23 +262,17 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     return out;
   }
 
-  // The scenario's tissue: {layers: [...], stick} or the single-surface form {combine, primitives}.
+  // The scenario's tissue: {layers: [...], stick}, {patient, entry, tissues, stick} or the
+  // single-surface form {combine, primitives}.
   void tissue(const json& j, const std::string& at, Scenario& s) const {
+    if (j.is_object() && j.contains("patient")) return patient_tissue(j, at, s);
     if (!j.is_object() || !j.contains("layers")) {
       const Primitives single = surface(j, at, s.base_in_world);
       s.scene.tissue = TissueModel::single_surface(LayerShape::of_surface(single.list, single.combine));
       return;
     }
     object(j, at, {"layers", "stick"});
-    StickParams stick;
-    if (j.contains("stick")) {
-      const json& p = j["stick"];
-      const std::string where = at + "/stick";
-      object(p, where, {"stiffness_N_per_m", "band_mps"});
-      if (p.contains("stiffness_N_per_m"))
-        stick.stiffness_N_per_m = in_range(p["stiffness_N_per_m"], where + "/stiffness_N_per_m", limits::kStickStiffness);
-      if (p.contains("band_mps")) stick.band_mps = in_range(p["band_mps"], where + "/band_mps", limits::kStickBand);
-    }
+    const StickParams stick = stick_params(j, at);
     const json& list = member(j, at, "layers");
     const std::string where = at + "/layers";
     if (!list.is_array() || list.empty() || list.size() > size_t(TissueModel::kMaxLayers))
@@ -287,6 +283,60 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
       s.scene.tissue = TissueModel(std::move(layers), stick);
     } catch (const TissueLayerError& e) {
       fail(where + "/" + std::to_string(e.layer) + "/" + e.key, e.what());
+    }
+  }
+
+  StickParams stick_params(const json& j, const std::string& at) const {
+    StickParams stick;
+    if (j.contains("stick")) {
+      const json& p = j["stick"];
+      const std::string where = at + "/stick";
+      object(p, where, {"stiffness_N_per_m", "band_mps"});
+      if (p.contains("stiffness_N_per_m"))
+        stick.stiffness_N_per_m = in_range(p["stiffness_N_per_m"], where + "/stiffness_N_per_m", limits::kStickStiffness);
+      if (p.contains("band_mps")) stick.band_mps = in_range(p["band_mps"], where + "/band_mps", limits::kStickBand);
+    }
+    return stick;
+  }
+
+  // A generated patient (docs/PATIENTS.md): `patient` a patient file or its object inline, `entry`
+  // where the skin over L3–L4 on the midline lies (world), `tissues` the folder of the layers'
+  // parameter sets (default: the `tissues` folder beside the scenario's folder), `stick` optional.
+  void patient_tissue(const json& j, const std::string& at, Scenario& s) const {
+    object(j, at, {"patient", "entry", "tissues", "stick"});
+    const json& given = j["patient"];
+    anatomy::PatientParams params;
+    try {
+      params = given.is_object() ? anatomy::read_patient(given, file_, at + "/patient")
+                                 : anatomy::load_patient(existing_file(given, at + "/patient", folder_).string());
+    } catch (const anatomy::PatientError& e) {
+      throw ScenarioError(e.what());
+    }
+    const std::array<double, 3> entry = position(member(j, at, "entry"), at + "/entry");
+    const std::filesystem::path tissues =
+        j.contains("tissues") ? folder_ / string(j["tissues"], at + "/tissues") : folder_ / ".." / "tissues";
+    if (!std::filesystem::is_directory(tissues)) fail(at + "/tissues", "folder not found: " + tissues.string());
+    const StickParams stick = stick_params(j, at);
+    std::map<std::string, LayerParameters> sets;
+    for (const anatomy::PatientLayerSpec& l : anatomy::kPatientLayers) {
+      if (!sets.count(l.parameters)) {
+        const std::string set = (tissues / (std::string(l.parameters) + ".json")).string();
+        if (!std::filesystem::is_regular_file(set)) fail(at + "/tissues", "no parameter set " + set + " for the layer \"" + l.name + "\"");
+        sets.emplace(l.parameters, MechanicsReader(set).parameter_set(io::read_json_file<ScenarioError>(set)));
+      }
+      s.patient_layers.push_back({l.name, sets.at(l.parameters).mechanics, sets.at(l.parameters).injection});
+    }
+    if (!generate_patient_) return;
+    s.patient = anatomy::shared_patient(params, Eigen::Vector3d(entry[0], entry[1], entry[2]) - s.base_in_world);
+    std::vector<TissueLayer> layers;
+    for (const anatomy::PatientLayer& l : s.patient->layers) {
+      const LayerParameters& set = sets.at(l.parameters);
+      layers.push_back({l.name, l.shape, set.mechanics, set.acoustics, set.injection});
+    }
+    try {
+      s.scene.tissue = TissueModel(std::move(layers), stick);
+    } catch (const TissueLayerError& e) {
+      fail(at + "/patient", std::string("the generated layer ") + std::to_string(e.layer) + " (" + e.key + "): " + e.what());
     }
   }
 
@@ -381,6 +431,7 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
   }
 
   std::filesystem::path folder_;
+  bool generate_patient_ = true;
 };
 
 }  // namespace
@@ -425,8 +476,8 @@ std::vector<HandWaypoint> read_waypoints(const json& wps, const std::string& fil
   return waypoints;
 }
 
-Scenario load_scenario(const std::string& path) {
-  return ScenarioReader(path, std::filesystem::path(path).parent_path())
+Scenario load_scenario(const std::string& path, bool generate_patient) {
+  return ScenarioReader(path, std::filesystem::path(path).parent_path(), generate_patient)
       .scenario(io::read_json_file<ScenarioError>(path));
 }
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "haptics/anatomy/patient.hpp"
 #include "haptics/control/teleoperation.hpp"
 #include "haptics/model/robot_model.hpp"
 #include "haptics/sim/force_sensor.hpp"
@@ -34,9 +35,22 @@ struct Scenario {
   int virtual_substeps = 4;
   Integrator master_integrator = Integrator::SemiImplicitEuler;
   TeleoperationGains gains;  // with the law, the tool (`tool`) and the force scale
-  // Base frame. The penetrable tissue is scene.tissue: layers (`tissue.layers`, issue 12) or the
-  // single-surface form, one layer with every parameter zero.
+  // Base frame. The penetrable tissue is scene.tissue: layers (`tissue.layers`), a generated
+  // patient's layers (`tissue.patient`, docs/PATIENTS.md) or the single-surface form, one layer with
+  // every parameter zero.
   Scene scene;
+  // The generated patient whose layers scene.tissue holds (base frame), for what else draws or
+  // images it; null for the other forms, and when the scenario was read without generating it.
+  std::shared_ptr<const anatomy::Patient> patient;
+  // A generated patient's layers, in order, with their mechanics and what they do to an injection:
+  // also when the patient itself was not generated (load_scenario(path, false)); empty for the
+  // other forms.
+  struct NamedMechanics {
+    std::string name;
+    LayerMechanics mechanics;
+    std::optional<LayerInjection> injection;
+  };
+  std::vector<NamedMechanics> patient_layers;
   VecN q0;
   HandImpedance hand;
   HandTrajectory trajectory;  // base frame
@@ -48,7 +62,10 @@ struct Scenario {
   double divergence_bound_m = 0.1;     // master/virtual tip distance beyond this is a fault
 };
 
-Scenario load_scenario(const std::string& path);
+// A scenario file. With generate_patient false, a generated patient's tissue is read and checked
+// (its file, its parameter sets) but not generated: scene.tissue stays empty, patient_layers says
+// what it would hold (what a task's list of layers needs, without seconds of sampling).
+Scenario load_scenario(const std::string& path, bool generate_patient = true);
 
 // An operator's hand: its impedance and its trajectory, in the robots' base frame.
 struct OperatorHand {

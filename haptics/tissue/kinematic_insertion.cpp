@@ -14,16 +14,18 @@ std::optional<InsertionStop> first_rigid_surface(const TissueModel& model, const
   constexpr double kHit = 1e-9;  // m
   double t = 0.0;
   for (int iteration = 0; iteration < 100000 && t <= length; ++iteration) {
-    double nearest = std::numeric_limits<double>::infinity();
+    double nearest = std::numeric_limits<double>::infinity(), step = nearest;
     int layer = -1;
     for (int i = 0; i < model.layer_count(); ++i) {
       if (!model.layer(i).mechanics.rigid) continue;
-      const double phi = model.layer(i).shape.evaluate(start + t * dir).phi;
+      const LayerShape& shape = model.layer(i).shape;
+      const double phi = shape.phi(start + t * dir);
       if (phi < nearest) nearest = phi, layer = i;
+      step = std::min(step, phi / shape.lipschitz());
     }
     if (layer < 0) return std::nullopt;
     if (nearest < kHit) return InsertionStop{layer, t};
-    t += nearest;
+    t += step;
   }
   return std::nullopt;
 }

@@ -66,7 +66,7 @@ std::optional<LayerConflict::Kind> sampled_conflict(const LayerShape& a, const L
       for (int k = 0; k < n; ++k) {
         const Eigen::Vector3d f = ((Eigen::Vector3d(i, j, k).array() + 0.5) / n).matrix();
         const Eigen::Vector3d x = box.lo + f.cwiseProduct(box.hi - box.lo);
-        const double pa = a.evaluate(x).phi, pb = b.evaluate(x).phi;
+        const double pa = a.phi(x), pb = b.phi(x);
         overlap |= pa < -eps && pb < -eps;
         a_outside_b |= pa < -eps && pb > eps;
         b_outside_a |= pb < -eps && pa > eps;
@@ -109,6 +109,15 @@ LayerShape LayerShape::box(const Eigen::Vector3d& min, const Eigen::Vector3d& ma
     faces[size_t(2 * k + 1)] = SurfacePrimitive::plane(min, -e);
   }
   return LayerShape(ImplicitSurface(faces, ImplicitSurface::Combine::Intersection), Aabb{min, max}, std::nullopt);
+}
+
+LayerShape LayerShape::grid(std::shared_ptr<const SdfGrid> grid, double offset_m) {
+  if (!grid) throw std::invalid_argument("a grid shape needs a grid");
+  if (!(offset_m >= 0.0 && offset_m < 1.0)) throw std::invalid_argument("a grid shape's offset must be in [0, 1) m");
+  LayerShape shape(ImplicitSurface(), Aabb{grid->origin(), grid->upper()}, std::nullopt);
+  shape.grid_ = std::move(grid);
+  shape.grid_offset_ = offset_m;
+  return shape;
 }
 
 const char* layer_conflict_text(LayerConflict::Kind kind) {

@@ -2,16 +2,22 @@
 // gradient): any implicit surface of haptics/constraints (sphere, plane, capsule and their union
 // or intersection), a slab between two parallel planes, or a box. Slab and box are intersections
 // of half-spaces: φ is exact inside and on the surface and a lower bound of the distance outside,
-// which is what contact detection and sphere tracing need. Each shape also carries its bounding
-// box (infinite along the axes where it is unbounded) for the layers' overlap check.
+// which is what contact detection and sphere tracing need. Or a signed distance grid (SdfGrid),
+// shared between the shapes made of it, each with its offset: a generated anatomy's structure, or
+// the layers beneath a surface at their depths (φ + d ≤ 0 is everything deeper than d). Each shape
+// also carries its bounding box (infinite along the axes where it is unbounded) for the layers'
+// overlap check.
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <span>
 
 #include "haptics/constraints/implicit_surface.hpp"
+#include "haptics/tissue/sdf_grid.hpp"
 
 namespace needle::haptics {
 
@@ -21,6 +27,10 @@ struct Aabb {
   Eigen::Vector3d hi = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
 
   bool empty() const { return (lo.array() > hi.array()).any(); }
+  // x within `margin` of the box (inside it or at most that far out on every axis).
+  bool reaches(const Eigen::Vector3d& x, double margin) const {
+    return (x.array() >= lo.array() - margin).all() && (x.array() <= hi.array() + margin).all();
+  }
   Aabb intersected(const Aabb& o) const { return {lo.cwiseMax(o.lo), hi.cwiseMin(o.hi)}; }
   Aabb merged(const Aabb& o) const { return {lo.cwiseMin(o.lo), hi.cwiseMax(o.hi)}; }
 };
@@ -42,13 +52,29 @@ class LayerShape {
   static LayerShape slab(const Eigen::Vector3d& outer_point, const Eigen::Vector3d& outward_normal, double thickness);
   // Axis-aligned, min < max on every axis.
   static LayerShape box(const Eigen::Vector3d& min, const Eigen::Vector3d& max);
+  // The grid's region moved `offset_m` ≥ 0 inwards: {x : φ(x) + offset ≤ 0}.
+  static LayerShape grid(std::shared_ptr<const SdfGrid> grid, double offset_m = 0.0);
 
-  SurfaceSample evaluate(const Eigen::Vector3d& x) const { return surface_.evaluate(x); }
-  // φ(x) ≤ kLayerSurfaceTolerance_m: inside or on the surface.
-  bool contains(const Eigen::Vector3d& x) const { return surface_.evaluate(x).phi <= kLayerSurfaceTolerance_m; }
+  SurfaceSample evaluate(const Eigen::Vector3d& x) const {
+    return grid_ ? grid_->evaluate(x, grid_offset_) : surface_.evaluate(x);
+  }
+  double phi(const Eigen::Vector3d& x) const { return grid_ ? grid_->phi(x, grid_offset_) : surface_.evaluate(x).phi; }
+  // φ(x) ≤ kLayerSurfaceTolerance_m: inside or on the surface. A grid's region lies within its box,
+  // so a point beyond the box by more than the tolerance is outside without sampling the grid.
+  bool contains(const Eigen::Vector3d& x) const {
+    if (grid_ && !bounds_.reaches(x, kLayerSurfaceTolerance_m)) return false;
+    return phi(x) <= kLayerSurfaceTolerance_m;
+  }
   const Aabb& bounds() const { return bounds_; }
-  // The shape as primitives (slab and box: the intersection of their half-spaces).
+  // The shape as primitives (slab and box: the intersection of their half-spaces); none for a grid.
   const ImplicitSurface& surface() const { return surface_; }
+  // The grid and its offset, for a grid shape (else null and 0).
+  const std::shared_ptr<const SdfGrid>& grid() const { return grid_; }
+  double grid_offset() const { return grid_offset_; }
+  // How much faster than the distance φ may change along a line: 1 for the exact and bounding
+  // primitives, √3 for a grid (each of the trilinear interpolant's partial derivatives is a blend of
+  // node differences of a distance, at most 1 each). A sphere tracer steps φ / this.
+  double lipschitz() const { return grid_ ? std::sqrt(3.0) : 1.0; }
 
   struct SlabPlanes {  // the slab {x : lo ≤ n·x ≤ hi}
     Eigen::Vector3d normal;
@@ -63,6 +89,8 @@ class LayerShape {
   ImplicitSurface surface_;
   Aabb bounds_;
   std::optional<SlabPlanes> slab_;  // kept for the exact overlap test between slabs
+  std::shared_ptr<const SdfGrid> grid_;
+  double grid_offset_ = 0.0;
 };
 
 // Layers are listed outside in: a point belongs to the last layer whose shape holds it. Two

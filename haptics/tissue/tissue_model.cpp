@@ -100,7 +100,7 @@ int TissueModel::layer_at(const Eigen::Vector3d& x) const {
 double TissueModel::distance(const Eigen::Vector3d& x) const {
   double phi = std::numeric_limits<double>::infinity();
   for (const TissueLayer& l : layers_)
-    if (!l.mechanics.rigid) phi = std::min(phi, l.shape.evaluate(x).phi);
+    if (!l.mechanics.rigid) phi = std::min(phi, l.shape.phi(x));
   return phi;
 }
 

@@ -33,7 +33,7 @@ int holding_layer(const TissueState& st) {
 // (shape, x₀, x₁) => t ∈ [0, 1] where φ changes sign on x₀ + t(x₁ − x₀) (linear in φ: exact for
 // planes, second order for curved surfaces); 0 when x₀ is already inside.
 double crossing(const LayerShape& shape, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1) {
-  const double phi0 = shape.evaluate(x0).phi, phi1 = shape.evaluate(x1).phi;
+  const double phi0 = shape.phi(x0), phi1 = shape.phi(x1);
   return phi0 == phi1 ? 0.0 : std::clamp(phi0 / (phi0 - phi1), 0.0, 1.0);
 }
 

@@ -61,6 +61,12 @@ TEST(BenchTickAllocations, LayeredTissueTickAllocatesNothing) {
   EXPECT_EQ(allocations_in_tissue("lumbar_epidural", 22.0, 1), 0);
 }
 
+TEST(BenchTickAllocations, PatientTissueTickAllocatesNothing) {
+  // The generated patient at 24 s (bench tick's patient row): the tip in the interspinous ligament,
+  // the shaft through skin, fat and the supraspinous ligament, every layer a grid.
+  EXPECT_EQ(allocations_in_tissue("epidural_patient", 24.0, 1), 0);
+}
+
 TEST(BenchTickAllocations, RigidContactAndFreeMotionTicksAllocateNothing) {
   const Scenario& sc = test::scenario("holonomic_sphere");
   Teleoperation tele(sc.master, sc.virt, sc.scene, sc.gains, sc.period_s, sc.virtual_substeps);

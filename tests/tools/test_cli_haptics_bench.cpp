@@ -20,7 +20,9 @@ nlohmann::json rows_of(const std::string& command, const std::string& json_path)
 
 TEST(CliHapticsBench, TickReportsMedianAndP99) {
   const auto rows = rows_of("bench tick --ticks 2000", test::output_dir().string() + "/bench_tick.json");
-  ASSERT_EQ(rows.size(), 3u);
+  ASSERT_EQ(rows.size(), 4u);  // 1, 2, 4 sub-steps, then the patient
+  EXPECT_EQ(rows[0]["scenario"], "nonholonomic_needle");
+  EXPECT_EQ(rows[3]["scenario"], "epidural_patient");
   for (const auto& row : rows) {
     EXPECT_GT(row["median_us"].get<double>(), 0.0);
     EXPECT_GE(row["p99_us"].get<double>(), row["median_us"].get<double>());

@@ -22,8 +22,8 @@ using nlohmann::json;
 json shipped(const std::string& name) {
   const fs::path tasks = test::source_dir() / "assets/tasks";
   json t = json::parse(std::ifstream(tasks / (name + ".json")));
-  for (const char* key : {"scene", "scenario"})
-    if (t.contains(key)) t[key] = fs::weakly_canonical(tasks / t[key].get<std::string>()).string();
+  for (const char* key : {"scene", "scenario", "patient"})
+    if (t.contains(key) && t[key] != "random") t[key] = fs::weakly_canonical(tasks / t[key].get<std::string>()).string();
   return t;
 }
 
@@ -107,6 +107,23 @@ TEST(TaskRanges, EveryProbeFieldIsRequired) {
   }
 }
 
+// A task on a generated patient: its patient, its condition and its guidance are checked against the
+// scenario (reading the task generates no patient).
+TEST(TaskRanges, APatientTasksKeysAreChecked) {
+  json t = shipped("epidural_patient_bmi22");
+  t["steps"][1]["condition"]["interspace"] = "L6-L7";
+  EXPECT_EQ(error_of(t), task_file().string() + ": /steps/1/condition/interspace: \"L6-L7\", expected L1-L2, L2-L3, L3-L4, L4-L5 or L5-S1");
+  json on_block = shipped("layered_target");
+  on_block["patient"] = "random";
+  EXPECT_EQ(error_of(on_block), task_file().string() + ": /patient: the task's /scenario has no generated patient (tissue.patient) to replace");
+  json landmarks = shipped("layered_target");
+  landmarks["steps"][0]["guidance"]["landmarks"] = true;
+  EXPECT_EQ(error_of(landmarks), task_file().string() + ": /steps/0/guidance/landmarks: landmarks need a generated patient (the task's /scenario has none)");
+  json missing = shipped("epidural_patient_bmi22");
+  missing["patient"] = "/nonexistent/patient.json";
+  EXPECT_EQ(error_of(missing), task_file().string() + ": /patient: file not found: /nonexistent/patient.json");
+}
+
 // At most 64 markers and 64 steps: a task of 100,000 markers (5 MB) took half a minute to read
 // before it was refused for a step's marker, and would draw each of them every frame.
 TEST(TaskRanges, AtMost64MarkersAnd64Steps) {
@@ -128,7 +145,8 @@ TEST(TaskRanges, AtMost64MarkersAnd64Steps) {
 }
 
 TEST(TaskRanges, TheShippedTasksAreInsideEveryRange) {
-  for (const char* name : {"rigid_sphere", "penetrable_sphere", "sphere_ultrasound", "layered_target", "epidural"}) {
+  for (const char* name : {"rigid_sphere", "penetrable_sphere", "sphere_ultrasound", "layered_target", "epidural", "epidural_patient_bmi22",
+                           "epidural_patient_bmi30", "epidural_patient_bmi40", "epidural_patient_random"}) {
     EXPECT_EQ(error_of(shipped(name)), "no error") << name;
   }
 }

@@ -46,13 +46,18 @@ TEST(TraineeHistory, TraineesMostRecentFirstAndTheLastAndBestScorePerTask) {
 TEST(TaskCatalog, TheShippedTasksWithTheirTitlesAndDescriptionsAndNoScripts) {
   const std::vector<TaskEntry> tasks = find_tasks(test::source_dir() / "assets/tasks");
   // The thesis's tasks keep their place at the top, in their files' `order` (not the file names').
-  ASSERT_EQ(tasks.size(), 6u);
+  ASSERT_EQ(tasks.size(), 10u);
   EXPECT_EQ(tasks[0].name, "penetrable_sphere");
   EXPECT_EQ(tasks[1].name, "rigid_sphere");
   EXPECT_EQ(tasks[2].name, "sphere_ultrasound");
   EXPECT_EQ(tasks[3].name, "layered_target");
   EXPECT_EQ(tasks[4].name, "epidural");
   EXPECT_EQ(tasks[5].name, "epidural_air");
+  // Then the epidural on each shipped patient and on a random one (docs/TASKS.md, "Patients").
+  EXPECT_EQ(tasks[6].name, "epidural_patient_bmi22");
+  EXPECT_EQ(tasks[7].name, "epidural_patient_bmi30");
+  EXPECT_EQ(tasks[8].name, "epidural_patient_bmi40");
+  EXPECT_EQ(tasks[9].name, "epidural_patient_random");
   for (const TaskEntry& t : tasks) {
     EXPECT_TRUE(t.error.empty()) << t.error;
     EXPECT_FALSE(t.title.empty());

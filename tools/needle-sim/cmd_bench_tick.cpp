@@ -1,5 +1,6 @@
 // needle-sim bench tick: the cost of one full servo tick (master model update, controller,
-// multipliers, virtual robot integration) in nonholonomic contact. That the same ticks allocate
+// multipliers, virtual robot integration) in nonholonomic contact, and on the generated patient
+// with the shaft through four of its layers. That the same ticks allocate
 // nothing is a test (tests/haptics/test_bench_tick_allocations.cpp), not a column: counting would
 // replace the C allocator of the program every trainee runs.
 #include <chrono>
@@ -53,42 +54,56 @@ class SyringeTick {
   haptics::SyringeSnapshot snapshot_;
 };
 
+// The patient's row: assets/scenarios/epidural_patient.json played this long puts the tip in the
+// interspinous ligament, the shaft through the skin, the fat and the supraspinous ligament.
+constexpr double kPatientSettle_s = 24.0;
+
+// (scenario, its workload, ticks, substeps, syringe) => the table's rows of their times: one, or with a
+// syringe one without and one with it, blocks of 1000 ticks of each alternating so that both rows
+// see the same machine.
+void time_ticks(BenchTable& table, const haptics::Scenario& scenario, haptics::TickWorkload& workload, int substeps, long ticks,
+                const std::optional<haptics::SyringeFluid>& fluid, const std::string& fluid_name) {
+  std::optional<SyringeTick> syringe;
+  if (fluid) syringe.emplace(scenario, *fluid, scenario.period_s);
+  const int variants = fluid ? 2 : 1;
+  std::vector<double> us[2];
+  for (long k = 0; long(us[0].size()) < ticks || long(us[variants - 1].size()) < ticks; ++k) {
+    const int variant = fluid ? int(k / 1000 % 2) : 0;
+    if (long(us[variant].size()) == ticks) continue;
+    const auto t0 = std::chrono::steady_clock::now();
+    workload.tick();
+    if (variant == 1) syringe->tick(workload.teleoperation());
+    const auto t1 = std::chrono::steady_clock::now();
+    us[variant].push_back(std::chrono::duration<double, std::micro>(t1 - t0).count());
+  }
+  for (int variant = 0; variant < variants; ++variant) {
+    double worst = 0;
+    for (double u : us[variant]) worst = std::max(worst, u);
+    table.add_row({scenario.name, substeps, variant == 0 ? "none" : fluid_name, long(us[variant].size()), percentile(us[variant], 0.5),
+                   percentile(us[variant], 0.99), worst});
+  }
+}
+
 int run(const TickFlags& f) {
   const std::string scenario_path =
       f.scenario.value_or((asset_dir() / "scenarios" / "nonholonomic_needle.json").string());
   const long ticks = long(f.ticks);
   const double settle = f.settle_s;
 
-  BenchTable table({"virtual_substeps", "syringe", "ticks", "median_us", "p99_us", "max_us"});
+  BenchTable table({"scenario", "virtual_substeps", "syringe", "ticks", "median_us", "p99_us", "max_us"});
   haptics::Scenario scenario = haptics::load_scenario(scenario_path);
   const std::optional<haptics::SyringeFluid> fluid = haptics::parse_syringe_fluid(f.syringe.c_str());
   for (int substeps : {1, 2, 4}) {
     scenario.virtual_substeps = substeps;
     haptics::TickWorkload workload(scenario, settle);
-    std::optional<SyringeTick> syringe;
-    if (fluid) syringe.emplace(scenario, *fluid, scenario.period_s);
-    // With a syringe, blocks of 1000 ticks without and with it alternate, so that both rows see the
-    // same machine.
-    const int variants = fluid ? 2 : 1;
-    std::vector<double> us[2];
-    for (long k = 0; long(us[0].size()) < ticks || long(us[variants - 1].size()) < ticks; ++k) {
-      const int variant = fluid ? int(k / 1000 % 2) : 0;
-      if (long(us[variant].size()) == ticks) continue;
-      const auto t0 = std::chrono::steady_clock::now();
-      workload.tick();
-      if (variant == 1) syringe->tick(workload.teleoperation());
-      const auto t1 = std::chrono::steady_clock::now();
-      us[variant].push_back(std::chrono::duration<double, std::micro>(t1 - t0).count());
-    }
-    for (int variant = 0; variant < variants; ++variant) {
-      double worst = 0;
-      for (double u : us[variant]) worst = std::max(worst, u);
-      table.add_row({substeps, variant == 0 ? "none" : f.syringe, long(us[variant].size()), percentile(us[variant], 0.5),
-                     percentile(us[variant], 0.99), worst});
-    }
+    time_ticks(table, scenario, workload, substeps, ticks, fluid, f.syringe);
   }
-  table.emit("servo tick in nonholonomic contact (" + scenario.name + " at t = " + std::to_string(settle) +
-                 " s, T = " + std::to_string(scenario.period_s * 1e3) + " ms)",
+  const haptics::Scenario patient = haptics::load_scenario((asset_dir() / "scenarios" / "epidural_patient.json").string());
+  haptics::TickWorkload on_patient(patient, kPatientSettle_s);
+  time_ticks(table, patient, on_patient, patient.virtual_substeps, ticks, fluid, f.syringe);
+  table.emit("servo tick in nonholonomic contact (" + scenario.name + " at t = " + std::to_string(settle) + " s, " +
+                 patient.name + " at t = " + std::to_string(kPatientSettle_s) + " s: the shaft through skin, fat, " +
+                 "supraspinous and interspinous ligament; T = " + std::to_string(scenario.period_s * 1e3) + " ms)",
              f.json);
   return 0;
 }
@@ -104,12 +119,14 @@ Runner declare(CLI::App& app) {
   add_choice(app, "--syringe", f->syringe, {"saline", "air"},
              "also time the tick with a loss-of-resistance syringe of this fluid pressed with 11 N (the scenario's\n"
              "tissue must give its layers' injection keys; e.g. assets/scenarios/epidural.json with --settle 20)");
-  add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON (syringe, median_us, p99_us, max_us, ...)");
-  app.footer("rows: 1, 2 and 4 virtual sub-steps per tick (the scenarios use 1), with --syringe each without and with it");
+  add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON (scenario, syringe, median_us, p99_us, max_us, ...)");
+  app.footer("rows: 1, 2 and 4 virtual sub-steps per tick (the scenarios use 1), then the generated patient's "
+             "(assets/scenarios/epidural_patient.json at 24 s: the shaft through skin, fat, supraspinous and interspinous ligament); "
+             "with --syringe each without and with it");
   return [f] { return run(*f); };
 }
 
-const CommandRegistrar reg{{"bench tick", "the cost of one full servo tick in nonholonomic contact", declare}};
+const CommandRegistrar reg{{"bench tick", "the cost of one full servo tick in nonholonomic contact and on the patient", declare}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -67,6 +67,10 @@ void for_each_metric(M& m, F&& f) {
   visit("bone_peak_force_N", m.bone_peak_force_N, {"force on bone, peak", "N", 1.0, true, 1});
   visit("redirections", m.redirections, {"redirections", "count", 1.0, true, 0});
   visit("forbidden_punctures", m.forbidden_punctures, {"forbidden punctures (the dura)", "count", 1.0, true, 0});
+  visit("interspace_entered", m.interspace_entered, {"interspace entered (1 = L1-L2)", "-", 1.0, true, 0});
+  visit("entry_angle_deg", m.entry_angle_deg, {"needle off the approach at entry", "deg", 1.0, true, 1});
+  visit("lor_depth_m", m.lor_depth_m, {"depth at the loss of resistance", "mm", 1000.0, true, 1});
+  visit("lor_depth_error_m", m.lor_depth_error_m, {"loss of resistance past the patient's depth", "mm", 1000.0, true, 1});
   visit("advance_after_loss_m", m.advance_after_loss_m, {"advanced after the loss of resistance", "mm", 1000.0, true, 1});
   visit("loss_pressure_before_Pa", m.loss_pressure_before_Pa, {"plunger pressure before the loss", "kPa", 1e-3, true, 1});
   visit("loss_pressure_after_Pa", m.loss_pressure_after_Pa, {"plunger pressure after the loss", "kPa", 1e-3, true, 1});

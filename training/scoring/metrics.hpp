@@ -39,6 +39,12 @@ struct Metrics {
   double bone_peak_force_N = 0.0;          // peak |force of the tool on bone|
   uint32_t redirections = 0;               // withdrawals to a shallower layer followed by a re-advance deeper
   uint32_t forbidden_punctures = 0;        // layers the step forbids punctured (the dura)
+  // A generated patient (docs/SCORING.md, "Patients"; the session's, not applicable without one or
+  // until the event happens; reported, not scored).
+  double interspace_entered = kNotApplicable;  // 1 (L1-L2) to 5 (L5-S1): where the needle first entered the skin
+  double entry_angle_deg = kNotApplicable;     // the needle to that interspace's midline approach as it entered
+  double lor_depth_m = kNotApplicable;         // from the skin along the needle when the tip first reached the epidural space
+  double lor_depth_error_m = kNotApplicable;   // that less the patient's own skin-to-epidural distance there
   // The loss-of-resistance syringe (training/scoring/syringe_events.hpp; not applicable without one).
   double advance_after_loss_m = kNotApplicable;     // the tip's furthest advance along the needle after the loss in the syringe's space
   double loss_pressure_before_Pa = kNotApplicable;  // the barrel's pressure while the plunger was held before that loss

@@ -2,7 +2,7 @@
 
 namespace needle::training {
 
-SessionScorer::SessionScorer(const Task& task) : task_(task), progress_(task), layers_(task), syringe_(task) {
+SessionScorer::SessionScorer(const Task& task) : task_(task), progress_(task), layers_(task), patient_(task), syringe_(task) {
   steps_.reserve(task.steps.size());
   for (const Step& step : task.steps) steps_.emplace_back(task, step);
 }
@@ -50,6 +50,7 @@ void SessionScorer::feed(const haptics::TickSample& sample) {
   const haptics::ToolSnapshot& s = sample.state;
   ContactEvents events = contact_events(s);
   events.layers = &layers_.feed(s, events.entry);
+  patient_.feed(s, events.entry);
   if (task_.syringe) events.syringe = &syringe_.feed(s);
   const size_t step = progress_.current_step();
   steps_[step].add(s, events);
@@ -64,6 +65,7 @@ SessionResult SessionScorer::result() const {
     r.steps.push_back({task_.steps[i].id, progress_.records()[i], steps_[i].result(),
                        step_failure_reason(task_, progress_.records()[i])});
   r.overall = combine_metrics(r.steps);
+  patient_.write(r.overall);
   r.score = score_session(task_.scoring, r.steps, r.overall);
   r.finished = progress_.finished();
   for (const PunctureRecord& p : layers_.punctures())

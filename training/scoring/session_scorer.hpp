@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "haptics/realtime/tick_sample.hpp"
+#include "training/scoring/patient_technique.hpp"
 #include "training/scoring/score.hpp"
 #include "training/scoring/step_metrics.hpp"
 #include "training/tasks/task_progress.hpp"
@@ -44,6 +45,7 @@ class SessionScorer {
   TaskProgress progress_;
   std::vector<StepMetricsAccumulator> steps_;
   LayerEventTracker layers_;
+  PatientTechniqueTracker patient_;
   SyringeEventTracker syringe_;
   ContactEvents contact_events(const haptics::ToolSnapshot& s);
 

@@ -1,5 +1,7 @@
 #include "training/tasks/condition.hpp"
 
+#include <cmath>
+
 namespace needle::training {
 
 bool contact_matches(ContactRequirement required, haptics::ContactState contact) {
@@ -38,6 +40,12 @@ bool condition_holds(const Task& task, const Condition& c, const haptics::ToolSn
       return state.tissue.tip_layer == c.layer;
     case ConditionType::kPunctured:
       return haptics::punctured(state.tissue, c.layer);
+    case ConditionType::kInterspaceEntered: {
+      // In tissue, between the interspace's spinous processes along the spine, near the midline.
+      if (!task.landmarks || state.contact != haptics::ContactState::kTissue) return false;
+      const PatientLandmarks& l = *task.landmarks;
+      return interspace_at(l, tip) == c.interspace && std::abs(tip[0] - l.entries[size_t(c.interspace)][0]) <= kInterspaceHalfWidth_m;
+    }
     case ConditionType::kForceHeld: {
       const double force = norm(vec3(state.environment_force_n));
       return force >= c.min && force <= c.max;

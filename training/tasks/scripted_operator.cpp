@@ -6,6 +6,7 @@
 #include "io/file_write.hpp"
 #include "io/input_limits.hpp"
 #include "io/strict_json.hpp"
+#include "training/tasks/patient_session.hpp"
 
 namespace needle::training {
 namespace fs = std::filesystem;
@@ -18,7 +19,7 @@ fs::path operator_script_path(const Task& task, const std::string& spec) {
   return path;
 }
 
-json task_scenario_json(const Task& task) {
+json task_scenario_json(const Task& task, uint64_t seed) {
   if (task.scenario.empty()) throw TaskError(task.source + ": /scenario: the task names no haptics scenario to run");
   json scenario = io::read_json_file<TaskError>(task.scenario);
   for (const char* key : {"master_urdf", "virtual_urdf"}) {  // relative to the task's scenario, not a copy
@@ -34,6 +35,7 @@ json task_scenario_json(const Task& task) {
         layer["parameters"] = fs::absolute(task.scenario.parent_path() / layer["parameters"].get<std::string>()).string();
     }
   }
+  inline_patient(task, scenario, task.scenario.parent_path(), seed);
   // The task's syringe on the needle: its fluid, the syringe's other numbers the scenario's own or the defaults.
   if (task.syringe) {
     if (!scenario.contains("syringe") || !scenario["syringe"].is_object()) scenario["syringe"] = json::object();
@@ -48,8 +50,8 @@ haptics::Scenario write_scenario(const json& scenario, const fs::path& file) {
   return haptics::load_scenario(file.string());
 }
 
-haptics::Scenario scenario_with_operator(const Task& task, const fs::path& script, const fs::path& merged_file) {
-  json scenario = task_scenario_json(task);
+haptics::Scenario scenario_with_operator(const Task& task, const fs::path& script, const fs::path& merged_file, uint64_t seed) {
+  json scenario = task_scenario_json(task, seed);
   // The script is read strictly here, so its errors name it and not the merged scenario.
   const json operator_script = io::read_json_file<TaskError>(script);
   const io::StrictJsonReader<TaskError> reader(script.string());

@@ -17,8 +17,9 @@ namespace needle::training {
 std::filesystem::path operator_script_path(const Task& task, const std::string& spec);
 
 // The task's haptics scenario as JSON, its robot files made absolute so it can be written
-// anywhere. TaskError when the task names no scenario or the file is not JSON.
-nlohmann::json task_scenario_json(const Task& task);
+// anywhere; a generated patient inline (patient_session.hpp: `seed` draws a task's random patient).
+// TaskError when the task names no scenario or the file is not JSON.
+nlohmann::json task_scenario_json(const Task& task, uint64_t seed = 0);
 
 // Writes a scenario's JSON to `file` (kept beside the run's results: what exactly ran) and loads
 // it from there.
@@ -29,6 +30,6 @@ haptics::Scenario write_scenario(const nlohmann::json& scenario, const std::file
 // strictly first (TaskError naming the script and the JSON pointer).
 inline constexpr double kScriptEnd_s = 4.0;
 haptics::Scenario scenario_with_operator(const Task& task, const std::filesystem::path& script,
-                                         const std::filesystem::path& merged_file);
+                                         const std::filesystem::path& merged_file, uint64_t seed = 0);
 
 }  // namespace needle::training

@@ -16,6 +16,23 @@ double session_time_bound_s(const Task& task) {
   return std::min(total, io::kMaxSessionSeconds);
 }
 
+int interspace_at(const PatientLandmarks& l, const Vec3& p) {
+  for (int k = 0; k < PatientLandmarks::kInterspaces; ++k)
+    if (p[1] <= l.spinous_tips[size_t(k)][1] && p[1] > l.spinous_tips[size_t(k + 1)][1]) return k;
+  return -1;
+}
+
+const char* interspace_name(int index) {
+  static constexpr const char* kNames[] = {"L1-L2", "L2-L3", "L3-L4", "L4-L5", "L5-S1"};
+  return index >= 0 && index < PatientLandmarks::kInterspaces ? kNames[index] : "none";
+}
+
+int interspace_index(const std::string& name) {
+  for (int i = 0; i < PatientLandmarks::kInterspaces; ++i)
+    if (name == interspace_name(i)) return i;
+  return -1;
+}
+
 Task practice_task(Task task) {
   for (Step& step : task.steps) step.time_limit_s = 0.0;
   task.practice = true;

@@ -3,6 +3,7 @@
 // optional time limit and the guidance drawn for it; plus how the task is scored.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <cstdint>
 #include <optional>
@@ -51,6 +52,7 @@ enum class ConditionType {
   kWithdrawn,      // no contact and the tip farther than `within_m` from a point marker
   kTipInLayer,     // the layered tissue's layer `layer` holds the tip (ToolSnapshot::tissue.tip_layer)
   kPunctured,      // the needle's track has passed into layer `layer` (ToolSnapshot::tissue.punctured_layers)
+  kInterspaceEntered,  // the needle is in tissue and entered the skin over the patient's interspace `interspace`
 };
 
 enum class ContactRequirement { kAny, kFree, kRigidSurface, kTissue };
@@ -64,6 +66,7 @@ struct Condition {
   double hold_s = 0.0;          // the condition must hold this long without a break
   ContactRequirement contact = ContactRequirement::kAny;
   int layer = -1;               // tip_in_layer, punctured: index in Task::layers
+  int interspace = -1;          // interspace_entered: 0 = L1-L2 ... 4 = L5-S1
 };
 
 // What the panels draw during a step; marker indices, -1 when absent.
@@ -73,6 +76,7 @@ struct Guidance {
   int target = -1;
   int depth_gauge = -1;     // axis marker the gauge measures along (band from the condition)
   int normal_markers = -1;  // surface-normal marker: the thesis's three spheres at the contact
+  bool landmarks = false;   // a patient's Tuffier's line and spinous processes (Task::landmarks)
 };
 
 struct Step {
@@ -156,6 +160,28 @@ inline constexpr int kMaxTaskOrder = 1000000;
 
 // The section view's plane a task fixes (docs/TASKS.md, "Section"), instead of the default one
 // through the needle: through `point`, `normal` unit, pointing to the side cut away (the viewer's).
+// Where a generated patient's landmarks lie, world frame (docs/PATIENTS.md): what the guidance
+// draws when asked and what the patient's conditions and metrics measure against. Set by
+// apply_patient from the scenario a session runs (a random patient is drawn for each attempt).
+struct PatientLandmarks {
+  static constexpr int kInterspaces = 5;  // L1-L2 ... L5-S1
+  std::array<Vec3, kInterspaces> entries{};     // the skin on the midline between the spinous processes
+  std::array<Vec3, kInterspaces> directions{};  // the midline approach, towards the interlaminar window's centre
+  std::array<double, kInterspaces> skin_to_epidural_m{};  // along that approach, the patient's own (NaN where bone is in the way)
+  std::array<Vec3, kInterspaces + 1> spinous_tips{};      // L1 ... L5, then the sacrum's crest at S1
+  std::array<Vec3, 2> crest_tops{};  // the iliac crests' highest points: Tuffier's line between them
+  std::string patient;               // the patient's parameters as JSON (what the session ran)
+};
+
+// The interspace whose spinous processes' tips bracket `point` along the spine (y), −1 beyond them.
+int interspace_at(const PatientLandmarks& landmarks, const Vec3& point);
+// Design value: the tip within 15 mm of the midline, between the laminae, is in the interspace.
+inline constexpr double kInterspaceHalfWidth_m = 0.015;
+
+// "L1-L2" ... "L5-S1" => 0 ... 4, -1 for anything else.
+int interspace_index(const std::string& name);
+const char* interspace_name(int index);
+
 struct SectionPlaneSpec {
   Vec3 point{};
   Vec3 normal{0.0, -1.0, 0.0};
@@ -190,6 +216,12 @@ struct Task {
   // for the depth gauge; empty otherwise.
   std::vector<std::vector<LayerStart>> layer_starts;
   std::optional<SectionPlaneSpec> section_plane;        // the section view's plane, when the task fixes it
+  // The patient a task on a generated patient runs on: "" the scenario's own, a patient file
+  // (resolved), or "random" (one drawn from the generator's ranges for each attempt).
+  std::string patient;
+  // The landmarks of the patient a session runs on (apply_patient); none before one runs, and for
+  // a task on no patient.
+  std::optional<PatientLandmarks> landmarks;
   std::optional<TaskSyringe> syringe;                   // the loss-of-resistance syringe on the needle, when it has one
   // An untimed practice run of the task (docs/TASKS.md, "Practice"): no step has a time limit.
   bool practice = false;

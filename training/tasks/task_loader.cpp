@@ -27,7 +27,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
 
   Task task(const json& root) {
     object(root, "", {"name", "title", "description", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps", "scoring",
-                      "ultrasound", "section", "hide_layer_names", "order", "syringe"});
+                      "ultrasound", "section", "hide_layer_names", "order", "patient", "syringe"});
     Task t;
     ScenarioTissue tissue;
     t.name = name(member(root, "", "name"), "/name");
@@ -43,8 +43,15 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       tissue = scenario_tissue(t.scenario);
       t.force_scale = tissue.force_scale;
       for (const haptics::TissueLayer& l : tissue.tissue.layers()) t.layers.push_back({l.name, l.mechanics.rigid, l.mechanics.puncture_force_N});
+      for (const auto& l : tissue.patient_layers) t.layers.push_back({l.name, l.mechanics.rigid, l.mechanics.puncture_force_N});
+      on_patient_ = !tissue.patient_layers.empty();
     }
-    if (root.contains("syringe")) t.syringe = read_task_syringe(root["syringe"], file_, "/syringe", tissue.tissue);
+    if (root.contains("patient")) t.patient = patient(root["patient"], "/patient");
+    if (root.contains("syringe")) {
+      std::vector<haptics::Scenario::NamedMechanics> layers = tissue.patient_layers;
+      for (const haptics::TissueLayer& l : tissue.tissue.layers()) layers.push_back({l.name, l.mechanics, l.injection});
+      t.syringe = read_task_syringe(root["syringe"], file_, "/syringe", layers);
+    }
     if (root.contains("order")) t.order = static_cast<int>(whole(root["order"], "/order", 0, kMaxTaskOrder));
     if (root.contains("hide_layer_names")) t.hide_layer_names = boolean(root["hide_layer_names"], "/hide_layer_names");
     if (root.contains("normal_marker_spacing_m"))
@@ -59,7 +66,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       if (!marker_names.insert(t.markers.back().name).second)
         fail(at + "/name", "\"" + t.markers.back().name + "\" is used twice");
       const Marker& m = t.markers.back();
-      t.layer_starts.push_back(m.kind == MarkerKind::kAxis && t.layers.size() > 1
+      t.layer_starts.push_back(m.kind == MarkerKind::kAxis && t.layers.size() > 1 && !tissue.tissue.empty()
                                    ? layer_starts_along(tissue.tissue, tissue.frame_in_world, m.position, m.direction)
                                    : std::vector<LayerStart>{});
     }
@@ -94,18 +101,34 @@ class TaskReader : io::StrictJsonReader<TaskError> {
   }
 
   // The scenario's tissue (the scenario read as a run reads it) and the frame it is in.
+  // A generated patient is read and checked but not generated (its layers are known without it):
+  // listing tasks stays quick; the session generates it.
   struct ScenarioTissue {
     haptics::TissueModel tissue;
     Vec3 frame_in_world{};
     double force_scale = 1.0;
+    std::vector<haptics::Scenario::NamedMechanics> patient_layers;
   };
   ScenarioTissue scenario_tissue(const fs::path& scenario) const {
     try {
-      const haptics::Scenario s = haptics::load_scenario(scenario.string());
-      return {s.scene.tissue, {s.base_in_world.x(), s.base_in_world.y(), s.base_in_world.z()}, s.gains.force_scale};
+      const haptics::Scenario s = haptics::load_scenario(scenario.string(), false);
+      return {s.scene.tissue, {s.base_in_world.x(), s.base_in_world.y(), s.base_in_world.z()}, s.gains.force_scale, s.patient_layers};
     } catch (const haptics::ScenarioError& e) {
       fail("/scenario", e.what());
     }
+  }
+
+  // "random", or a patient file (resolved) checked by the patient reader.
+  std::string patient(const json& value, const std::string& at) const {
+    if (!on_patient_) fail(at, "the task's /scenario has no generated patient (tissue.patient) to replace");
+    if (value.is_string() && value.get<std::string>() == "random") return "random";
+    const fs::path file = existing_file(value, at, folder_);
+    try {
+      haptics::anatomy::load_patient(file.string());
+    } catch (const haptics::anatomy::PatientError& e) {
+      fail(at, e.what());
+    }
+    return file.string();
   }
 
   bool boolean(const json& value, const std::string& at) const {
@@ -232,11 +255,18 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       object(value, at, {"type", "layer", "hold_s", "contact"});
       c.type = type == "tip_in_layer" ? ConditionType::kTipInLayer : ConditionType::kPunctured;
       c.layer = layer_ref(t, member(value, at, "layer"), at + "/layer", false);
+    } else if (type == "interspace_entered") {
+      object(value, at, {"type", "interspace", "hold_s", "contact"});
+      c.type = ConditionType::kInterspaceEntered;
+      if (!on_patient_) fail(at + "/type", "interspace_entered needs a generated patient (the task's /scenario has none)");
+      const std::string name = string(member(value, at, "interspace"), at + "/interspace");
+      c.interspace = interspace_index(name);
+      if (c.interspace < 0) fail(at + "/interspace", "\"" + name + "\", expected L1-L2, L2-L3, L3-L4, L4-L5 or L5-S1");
     } else {
       fail(at + "/type",
            "unknown step type \"" + type +
                "\" (expected tip_near, axis_aligned, depth_in_band, force_held, target_reached, withdrawn, "
-               "tip_in_layer or punctured)");
+               "tip_in_layer, punctured or interspace_entered)");
     }
     if (value.contains("hold_s")) c.hold_s = in_range(value["hold_s"], at + "/hold_s", io::kSessionTimeRange);
     if (c.type == ConditionType::kForceHeld && c.hold_s <= 0.0) fail(at + "/hold_s", "must be > 0 for force_held");
@@ -259,8 +289,12 @@ class TaskReader : io::StrictJsonReader<TaskError> {
   }
 
   Guidance guidance(const Task& t, const Step& s, const json& value, const std::string& at) const {
-    object(value, at, {"entry", "axis", "target", "depth_gauge", "normal_markers"});
+    object(value, at, {"entry", "axis", "target", "depth_gauge", "normal_markers", "landmarks"});
     Guidance g;
+    if (value.contains("landmarks")) {
+      g.landmarks = boolean(value["landmarks"], at + "/landmarks");
+      if (g.landmarks && !on_patient_) fail(at + "/landmarks", "landmarks need a generated patient (the task's /scenario has none)");
+    }
     if (value.contains("entry")) g.entry = point_ref(t, value["entry"], at + "/entry");
     if (value.contains("axis")) g.axis = axis_ref(t, value["axis"], at + "/axis");
     if (value.contains("target")) g.target = point_ref(t, value["target"], at + "/target");
@@ -411,6 +445,7 @@ class TaskReader : io::StrictJsonReader<TaskError> {
   }
 
   fs::path folder_;
+  bool on_patient_ = false;  // the scenario's tissue is a generated patient
 };
 
 }  // namespace

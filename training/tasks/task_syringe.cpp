@@ -10,7 +10,7 @@ const char* syringe_technique_name(SyringeTechnique technique) {
 }
 
 TaskSyringe read_task_syringe(const nlohmann::json& j, const std::string& file, const std::string& at,
-                              const haptics::TissueModel& tissue) {
+                              const std::vector<haptics::Scenario::NamedMechanics>& layers) {
   const io::StrictJsonReader<TaskError> r(file);
   r.object(j, at, {"fluid", "technique", "space"});
   TaskSyringe s;
@@ -23,18 +23,17 @@ TaskSyringe read_task_syringe(const nlohmann::json& j, const std::string& file, 
     s.technique = SyringeTechnique::kIntermittent;
   else if (technique != "continuous")
     r.fail(at + "/technique", "expected \"continuous\" or \"intermittent\", got \"" + technique + "\"");
-  if (tissue.layer_count() < 2) r.fail(at, "a syringe needs the scenario's layered tissue (/scenario)");
+  if (layers.size() < 2) r.fail(at, "a syringe needs the scenario's layered tissue (/scenario)");
   std::string names;
-  for (int i = 0; i < tissue.layer_count(); ++i) {
-    const haptics::TissueLayer& layer = tissue.layer(i);
+  for (const haptics::Scenario::NamedMechanics& layer : layers) {
     if (layer.mechanics.rigid) continue;
     if (!layer.injection)
       r.fail(at, "the scenario's layer \"" + layer.name + "\" has no injection parameters, which the syringe needs");
     names += (names.empty() ? "\"" : ", \"") + layer.name + "\"";
   }
   const std::string space = r.string(r.member(j, at, "space"), at + "/space");
-  for (int i = 0; i < tissue.layer_count(); ++i)
-    if (tissue.layer(i).name == space && !tissue.layer(i).mechanics.rigid) s.space = i;
+  for (size_t i = 0; i < layers.size(); ++i)
+    if (layers[i].name == space && !layers[i].mechanics.rigid) s.space = int(i);
   if (s.space < 0) r.fail(at + "/space", "no soft layer named \"" + space + "\" in the scenario's tissue (its layers: " + names + ")");
   return s;
 }

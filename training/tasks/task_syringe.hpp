@@ -8,7 +8,7 @@
 #include <string>
 
 #include "haptics/syringe/syringe_model.hpp"
-#include "haptics/tissue/tissue_model.hpp"
+#include "haptics/sim/scenario.hpp"
 
 namespace needle::training {
 
@@ -25,9 +25,10 @@ struct TaskSyringe {
 };
 
 // {"fluid": "saline" | "air", "technique": "continuous" | "intermittent", "space": LAYER} at `at` of
-// `file`, read strictly (TaskError "FILE: /syringe/...: what"). The tissue's layers must all say what
-// they do to an injection (a layer without is named), and `space` must be one of its non-rigid layers.
+// `file`, read strictly (TaskError "FILE: /syringe/...: what"). The scenario tissue's layers (a
+// layered tissue's or a generated patient's, in order) must all say what they do to an injection (a
+// layer without is named), and `space` must be one of its non-rigid layers.
 TaskSyringe read_task_syringe(const nlohmann::json& j, const std::string& file, const std::string& at,
-                              const haptics::TissueModel& tissue);
+                              const std::vector<haptics::Scenario::NamedMechanics>& layers);
 
 }  // namespace needle::training

@@ -1,0 +1,129 @@
+// A generated patient drawn (app/patient_meshes.hpp): the three shipped patients' backs, and the
+// midsagittal section through L3-L4 with each structure's cut in its colour, against goldens
+// (tests/engine/image_compare.hpp's tolerance), under the validation layer. PatientScenes generates
+// patients: SANITIZE_SKIP (tests/README.md).
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "app/echo_scene.hpp"
+#include "app/patient_look.hpp"
+#include "app/patient_meshes.hpp"
+#include "engine/gpu_device.hpp"
+#include "engine/gpu_scene.hpp"
+#include "engine/render_target.hpp"
+#include "engine/scene_renderer.hpp"
+#include "engine/screen_projection.hpp"
+#include "engine/ultrasound.hpp"
+#include "tests/engine/image_compare.hpp"
+#include "tests/support/process_folder.hpp"
+#include "tests/support/test_paths.hpp"
+#include "training/tasks/scripted_operator.hpp"
+
+namespace needle::test {
+namespace {
+
+constexpr engine::Extent kSize{320, 240};
+
+// The scenario a session of the task runs (its patient inline), loaded.
+haptics::Scenario task_scenario(const std::string& task) {
+  const training::Task t = training::load_task(source_dir() / "assets/tasks" / (task + ".json"));
+  return training::write_scenario(training::task_scenario_json(t), process_folder(output_dir() / "patient_scenes") / (task + ".json"));
+}
+
+engine::Scene patient_scene(const haptics::Scenario& scenario) {
+  return app::with_patient(engine::load_scene(source_dir() / "assets/scenes/lumbar_patient.json"), scenario);
+}
+
+engine::GpuDevice& device() {
+  static engine::GpuDevice d(engine::DeviceOptions{.validation = true, .announce_device = false});
+  return d;
+}
+
+TEST(PatientScenes, TheThreePatientsBacks) {
+  for (const char* patient : {"bmi22", "bmi30", "bmi40"}) {
+    SCOPED_TRACE(patient);
+    const haptics::Scenario scenario = task_scenario(std::string("epidural_patient_") + patient);
+    engine::HeadlessTarget target(device(), kSize);
+    engine::SceneRenderer renderer(device(), target);
+    engine::GpuScene scene(renderer, patient_scene(scenario));
+    engine::RgbaImage image;
+    ASSERT_TRUE(renderer.draw(target, scene.frame_params(), &image));
+    EXPECT_TRUE(matches_golden(image, std::string("patient_back_") + patient));
+  }
+  EXPECT_TRUE(device().validation_messages().empty()) << device().validation_messages().front();
+}
+
+// The midsagittal plane through the L3-L4 entry, seen from the patient's right (the task's section):
+// the cut shows the skin, the fat, the ligaments and the spinous processes (bone) in their colours.
+TEST(PatientScenes, TheSectionThroughL3L4ShowsEachStructureInItsColour) {
+  const haptics::Scenario scenario = task_scenario("epidural_patient_bmi22");
+  engine::HeadlessTarget target(device(), kSize);
+  engine::SceneRenderer renderer(device(), target);
+  engine::GpuScene scene(renderer, patient_scene(scenario));
+  engine::FrameParams params = scene.frame_params();
+  engine::Section section;
+  section.point = glm::vec3(0.33f, 0.0f, 0.07f);
+  section.normal = glm::vec3(1.0f, 0.0f, 0.0f);
+  params.section = section;
+  engine::RgbaImage image;
+  ASSERT_TRUE(renderer.draw(target, params, &image));
+  EXPECT_TRUE(matches_golden(image, "patient_section_l3_l4"));
+  // The L3 spinous process's tip, 5 mm into the bone: bone's ivory, not the ligaments' or the skin's.
+  const Eigen::Vector3d tip = scenario.patient->to_model(scenario.patient->spine.spinous_tips[2]) + scenario.base_in_world;
+  const std::optional<glm::vec2> at = engine::project_to_screen(params.camera, kSize, glm::vec3(0.33f, float(tip.y()), float(tip.z() - 0.005)));
+  ASSERT_TRUE(at);
+  const size_t i = (size_t(at->y) * image.width + size_t(at->x)) * 4;
+  const glm::vec3 seen(image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]);
+  EXPECT_GT(seen.b, 150.0f) << "bone is pale (ivory), the muscle and fat would be red or yellow: " << seen.r << " " << seen.g << " " << seen.b;
+  EXPECT_TRUE(device().validation_messages().empty()) << device().validation_messages().front();
+}
+
+// The paramedian sagittal oblique ultrasound view over L3-L4 (5 MHz, 60 mm wide along the spine,
+// 80 mm deep, 12 mm to the patient's right tilted 10° toward the midline: design values within
+// the 1-2 cm and the medial tilt of the clinical view, app/echo_scene.hpp): the laminae are bright
+// steps that hide what lies below them (the sawtooth), the interlaminar windows between them let the
+// beam through to the flavum, the dura and the front of the canal. The GPU's lines against the
+// double-precision reference, and the image against its golden.
+TEST(PatientScenes, TheParamedianUltrasoundShowsTheLaminaeAndTheWindows) {
+  const haptics::Scenario scenario = task_scenario("epidural_patient_bmi22");
+  const engine::EchoScene echo = app::echo_scene(scenario, engine::Scene{});
+  ASSERT_EQ(echo.layers.size(), 12u);
+  const engine::UltrasoundProbe probe = app::paramedian_sagittal_oblique_probe(echo, {0.33, 0.0, 0.07}, 0.012, 10.0 * std::numbers::pi / 180.0);
+  engine::UltrasoundView view(device(), echo);
+  view.render(probe, nullptr);
+  const std::vector<engine::ScanLine> gpu = view.scan_lines();
+  const std::vector<engine::ScanLine> cpu = engine::trace_scan_lines(echo, probe, nullptr, view.settings());
+  ASSERT_EQ(gpu.size(), cpu.size());
+  // The GPU places a crossing by one linear interpolation of φ between its two samples (exact for
+  // planes, tests/engine/test_ultrasound.cpp); a grid's trilinear φ curves within its 1 mm cells,
+  // and where the beam grazes a face (a lamina's edge) that moves the crossing by up to half a
+  // sample, where the reference bisects to a nanometre.
+  const double tolerance_m = 0.5 * probe.depth_m / view.settings().samples;
+  const int bone = 10, flavum = 5;
+  // Along the array (the spine): where each line first meets bone, or none before its shadow.
+  std::vector<double> bone_depth(cpu.size(), -1.0);
+  bool window = false;
+  for (size_t i = 0; i < cpu.size(); ++i) {
+    ASSERT_EQ(gpu[i].interfaces.size(), cpu[i].interfaces.size()) << "line " << i;
+    for (size_t k = 0; k < cpu[i].interfaces.size(); ++k) {
+      EXPECT_NEAR(gpu[i].interfaces[k].depth_m, cpu[i].interfaces[k].depth_m, tolerance_m) << "line " << i << " interface " << k;
+      if (cpu[i].interfaces[k].to_layer == bone && bone_depth[i] < 0.0) bone_depth[i] = cpu[i].interfaces[k].depth_m;
+      window |= cpu[i].interfaces[k].to_layer == flavum;
+    }
+  }
+  // The sawtooth: runs of lines on bone (the laminae) alternate with runs whose bone lies deeper or
+  // not at all (the windows): at least two laminae with a window between them.
+  int steps = 0;
+  for (size_t i = 1; i < cpu.size(); ++i)
+    if (bone_depth[i - 1] > 0.0 && bone_depth[i] > 0.0 ? std::abs(bone_depth[i] - bone_depth[i - 1]) > 0.005
+                                                        : (bone_depth[i - 1] > 0.0) != (bone_depth[i] > 0.0))
+      ++steps;
+  EXPECT_GE(steps, 3);
+  EXPECT_TRUE(window) << "a window lets the beam reach the flavum";
+  EXPECT_TRUE(matches_golden(engine::to_picture(view.image(), probe), "ultrasound_patient_paramedian"));
+  EXPECT_TRUE(device().validation_messages().empty()) << device().validation_messages().front();
+}
+
+}  // namespace
+}  // namespace needle::test
