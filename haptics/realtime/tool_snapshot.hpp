@@ -17,7 +17,7 @@ enum class ContactState : uint32_t {
 inline constexpr int kMaxSnapshotJoints = 8;
 inline constexpr int kMaxMultipliers = 4;
 
-// The layered tissue at the needle (issue 14), as the last sub-step of the tick left it: what the
+// The layered tissue at the needle, as the last sub-step of the tick left it: what the
 // task layer needs to say "the tip is in layer L", "layer L was punctured", "bone was touched",
 // and what the renderer needs for the dimple. Layers are the scenario tissue's indices (outside
 // in); recorded from payload version 2 on (haptics/recording/session_format.hpp).

@@ -39,7 +39,7 @@ void visit_record(Visitor& v, TickSample& s, uint32_t version) {
   v(t.tick), v(t.time_s), v(t.needle_tip_m), v(t.needle_orientation), v(t.virtual_q), v(t.virtual_dq);
   v(t.joint_count), v(t.contact), v(t.active_constraint), v(t.multiplier_count), v(t.multipliers);
   v(t.operator_force_n), v(t.environment_force_n), v(t.device_force_n), v(t.fault), v(t.limits);
-  if (version >= 2) {  // the layered tissue at the needle (issue 14)
+  if (version >= 2) {  // the layered tissue at the needle
     TissueSnapshot& l = t.tissue;
     v(l.tip_layer), v(l.punctured_layers), v(l.surface_layer), v(l.bone_layer), v(l.axial_force_N), v(l.bone_force_n);
     v(l.deflection_m), v(l.surface_point_m);

@@ -35,7 +35,7 @@ inline constexpr uint32_t kSessionFormatVersion = 3;
 // The layout of one record. A new field of TickSample is appended to visit_record() behind
 // `if (version >= N)` with N the next payload version: recordings of older payloads then still
 // read, the new field at its default.
-// Payload 1: the tick, device reading and command, tool state. Payload 2 (issue 14) adds the
+// Payload 1: the tick, device reading and command, tool state. Payload 2 adds the
 // layered tissue at the needle (ToolSnapshot::tissue). Payload 3 adds the syringe: the syringe hand's
 // reading (DeviceReading::plunger_*), what it was sent (DeviceCommand::plunger_*) and the syringe's
 // state (ToolSnapshot::syringe).

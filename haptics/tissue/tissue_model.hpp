@@ -1,4 +1,4 @@
-// Layered tissue as data (issue 12): an ordered list of layers, each a shape and its mechanical
+// Layered tissue as data: an ordered list of layers, each a shape and its mechanical
 // parameters in SI units. Immutable once built; the per-tick state is TissueState
 // (haptics/tissue/tissue_step.hpp). The equations are in docs/TISSUE.md.
 #pragma once

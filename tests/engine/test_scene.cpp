@@ -247,7 +247,7 @@ TEST_F(SceneFaults, AtMostFourDirectionalLights) {
 namespace needle::engine {
 namespace {
 
-// The layered tasks' scenes (issue 14) at the start screen's and headless picture size, 960x540:
+// The layered tasks' scenes at the start screen's and headless picture size, 960x540:
 // the tool where it starts (the tip and 20 mm of its shaft, the needle's body -x) and the tissue's
 // top centre lie inside the picture, 20 px from its edges (before, the tool started above it).
 TEST(SceneFraming, TheLayeredScenesShowTheToolWhereItStartsAt960x540) {

@@ -491,10 +491,10 @@ TEST(RecordingIntegrity, PayloadTwoRecordingsReadWithoutASyringe) {
   fs::remove(path);
 }
 
-// A version-3 recording of payload 1 (what the builds before issue 14 wrote) reads exactly as it
+// A version-3 recording of payload 1 (what the builds before the layered tissue's payload wrote) reads exactly as it
 // did: the same record size, every field of payload 1 as written, the tissue at its defaults.
 TEST(RecordingIntegrity, PayloadOneRecordingsStillReadExactlyAsBefore) {
-  EXPECT_EQ(session_record_bytes(1), 684u);  // payload 1: the record_bytes of recordings made before issue 14
+  EXPECT_EQ(session_record_bytes(1), 684u);  // payload 1: the record_bytes of recordings without the layered tissue
   EXPECT_EQ(session_record_bytes(2), 684u + 4 * 4 + 8 + 24 + 8 + 24);
   SessionHeader old = kHeader;
   old.payload_version = 1;

@@ -2,7 +2,7 @@
 // sessions' checks against their recordings), a session's detail with its plots, a single plot, two sessions compared, and a replay frame of
 // the recorded session in the 3D view. The sessions are recorded closed-loop runs of the
 // penetrable task (good and sloppy operators) with their dates fixed, so the pictures are too; and
-// the layered tasks' force–depth plot (issue 14) of their recorded runs.
+// the layered tasks' force–depth plot of their recorded runs.
 #include <gtest/gtest.h>
 
 #include "tests/app/recorded_session.hpp"
@@ -124,7 +124,7 @@ TEST_F(ReviewPanels, ReplayFrameMatchesGolden) {
   }, &scene, 4), "panel_review_replay"));
 }
 
-// The layered tasks' force–depth plot (issue 14), from recorded closed-loop runs: the layered
+// The layered tasks' force–depth plot, from recorded closed-loop runs: the layered
 // target's good run alone (its boundaries skin, fat, muscle and its punctures), and the epidural's
 // good run (A) against its sloppy one (B).
 class ReviewPanelsLayered : public VulkanTest {

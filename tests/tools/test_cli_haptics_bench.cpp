@@ -1,4 +1,4 @@
-// `needle-sim bench tick` and `bench precision`: tables and the JSON keys of issue 3.
+// `needle-sim bench tick` and `bench precision`: tables and their documented JSON keys.
 #include <gtest/gtest.h>
 
 #include <chrono>

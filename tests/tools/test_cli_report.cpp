@@ -94,7 +94,7 @@ TEST_F(CliReport, PlotsOfATimeRange) {
   EXPECT_NE(backwards.output.find("--to must be later than --from"), std::string::npos) << backwards.output;
 }
 
-// A layered task's session (issue 14, the epidural's good run): the report adds the force–depth
+// A layered task's session (the epidural's good run): the report adds the force–depth
 // plot and the punctures, made again from the recording, equal to those the run scored live, and
 // the syringe's plunger pressure against depth.
 TEST(CliReportLayered, TheForceDepthPlotAndThePuncturesTheRunScored) {

@@ -54,7 +54,7 @@ TEST_P(RunReplay, ReplayingARecordedRunReproducesItsStateAndScore) {
   const std::string task = (test::source_dir() / "assets/tasks" / (std::string(GetParam().task) + ".json")).string();
   const RunOutput live = run_headless("--task " + quoted(fs::path(task)) + " --operator " + GetParam().operator_spec, dir / "live", db);
   ASSERT_TRUE(live.score.contains("recording"));
-  // score.json's layered-tissue keys (issue 14): the punctures in order, the metrics, each step's failure.
+  // score.json's layered-tissue keys: the punctures in order, the metrics, each step's failure.
   ASSERT_TRUE(live.score.contains("punctures")) << live.score.dump();
   for (const char* key : {"punctures", "overshoot_m", "bone_contacts", "bone_peak_force_N", "redirections", "forbidden_punctures"})
     EXPECT_TRUE(live.score["metrics"].contains(key)) << key;

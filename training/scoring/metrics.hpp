@@ -32,7 +32,7 @@ struct Metrics {
   uint32_t rigid_contacts = 0;                 // entries into a rigid surface the step did not ask for
   uint32_t faults = 0;                         // safety faults latched
   uint32_t first_fault = 0;                    // haptics::FaultCause of the first, 0 when none
-  // Layered tissue (issue 14; zero or not applicable without it).
+  // Layered tissue (zero or not applicable without it).
   uint32_t punctures = 0;                  // membranes punctured (layers with a puncture force passed into)
   double overshoot_m = kNotApplicable;     // the tip's travel along the needle after the last puncture until it stopped
   uint32_t bone_contacts = 0;              // the tip meeting a rigid layer (bone), chatter within 0.25 s one contact

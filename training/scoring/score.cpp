@@ -171,7 +171,7 @@ Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& step
     score.reasons_failed.push_back("score " + format(score.total) + " below the pass mark " + format(spec.pass_score));
   if (completed < long(steps.size()))
     score.reasons_failed.push_back(std::to_string(steps.size() - completed) + " step(s) not completed");
-  // A forbidden layer (the dura) or bone touched fails the task whatever the rest (issue 14).
+  // A forbidden layer (the dura) or bone touched fails the task whatever the rest.
   for (const StepResult& s : steps)
     if (s.record.outcome == StepOutcome::kForbiddenPuncture || s.record.outcome == StepOutcome::kRigidTouched ||
         s.record.outcome == StepOutcome::kAdvancedPastLoss)

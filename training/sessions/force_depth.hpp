@@ -1,4 +1,4 @@
-// The force–depth picture of a session on a layered tissue (issue 14, docs/REVIEW.md "Force
+// The force–depth picture of a session on a layered tissue (docs/REVIEW.md "Force
 // against depth"): the tissue's axial force on the needle against the tip's depth along the track,
 // where the tip first entered each layer, and the punctures, each with its peak. No ImGui: tested
 // against the recording's own states.

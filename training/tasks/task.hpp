@@ -88,7 +88,7 @@ struct Step {
   // 0: no rule; else the step fails when the tip, in tissue, stays out of the ultrasound probe's
   // imaged slice this long (the in-plane technique keeps it in view).
   double tip_out_of_plane_max_s = 0.0;
-  // Faults that end the step at once (issue 14), a bit per index in Task::layers: the track passing
+  // Faults that end the step at once, a bit per index in Task::layers: the track passing
   // into one of `forbidden_punctures` (the dura), the tip meeting one of `forbidden_touches` (bone).
   uint32_t forbidden_punctures = 0;
   uint32_t forbidden_touches = 0;
