@@ -65,17 +65,23 @@ void SdfGrid::locate(const Eigen::Vector3d& p, std::array<int, 3>& cell, Eigen::
   }
 }
 
-double SdfGrid::phi(const Eigen::Vector3d& x, double offset_m) const {
-  const Eigen::Vector3d p = x.cwiseMax(origin_).cwiseMin(upper());
+std::array<double, 8> SdfGrid::corners(const Eigen::Vector3d& p, Eigen::Vector3d& f) const {
   std::array<int, 3> c{};
-  Eigen::Vector3d f;
   locate(p, c, f);
   const size_t sx = 1, sy = size_t(nodes_[0]), sz = sy * size_t(nodes_[1]);
   const int16_t* v = values_.data() + index(c[0], c[1], c[2]);
-  const double c00 = v[0] + f.x() * (v[sx] - v[0]);
-  const double c10 = v[sy] + f.x() * (v[sy + sx] - v[sy]);
-  const double c01 = v[sz] + f.x() * (v[sz + sx] - v[sz]);
-  const double c11 = v[sz + sy] + f.x() * (v[sz + sy + sx] - v[sz + sy]);
+  return {double(v[0]),  double(v[sx]),      double(v[sy]),      double(v[sy + sx]),
+          double(v[sz]), double(v[sz + sx]), double(v[sz + sy]), double(v[sz + sy + sx])};
+}
+
+double SdfGrid::phi(const Eigen::Vector3d& x, double offset_m) const {
+  const Eigen::Vector3d p = x.cwiseMax(origin_).cwiseMin(upper());
+  Eigen::Vector3d f;
+  const std::array<double, 8> v = corners(p, f);
+  const double c00 = v[0] + f.x() * (v[1] - v[0]);
+  const double c10 = v[2] + f.x() * (v[3] - v[2]);
+  const double c01 = v[4] + f.x() * (v[5] - v[4]);
+  const double c11 = v[6] + f.x() * (v[7] - v[6]);
   const double c0 = c00 + f.y() * (c10 - c00), c1 = c01 + f.y() * (c11 - c01);
   const double inside = quantum_ * (c0 + f.z() * (c1 - c0)) + offset_m;
   const double gap = (x - p).norm();
@@ -84,14 +90,8 @@ double SdfGrid::phi(const Eigen::Vector3d& x, double offset_m) const {
 
 SurfaceSample SdfGrid::evaluate(const Eigen::Vector3d& x, double offset_m) const {
   const Eigen::Vector3d p = x.cwiseMax(origin_).cwiseMin(upper());
-  std::array<int, 3> c{};
   Eigen::Vector3d f;
-  locate(p, c, f);
-  const size_t sx = 1, sy = size_t(nodes_[0]), sz = sy * size_t(nodes_[1]);
-  const int16_t* v = values_.data() + index(c[0], c[1], c[2]);
-  // The cell's corners v[abc] (a along x, b along y, c along z), in quanta.
-  const double v000 = v[0], v100 = v[sx], v010 = v[sy], v110 = v[sy + sx];
-  const double v001 = v[sz], v101 = v[sz + sx], v011 = v[sz + sy], v111 = v[sz + sy + sx];
+  const auto [v000, v100, v010, v110, v001, v101, v011, v111] = corners(p, f);
   const double fx = f.x(), fy = f.y(), fz = f.z(), gx = 1.0 - fx, gy = 1.0 - fy, gz = 1.0 - fz;
   const double value = gz * (gy * (gx * v000 + fx * v100) + fy * (gx * v010 + fx * v110)) +
                        fz * (gy * (gx * v001 + fx * v101) + fy * (gx * v011 + fx * v111));

@@ -68,6 +68,9 @@ class SdfGrid {
   size_t index(int i, int j, int k) const { return (size_t(k) * size_t(nodes_[1]) + size_t(j)) * size_t(nodes_[0]) + size_t(i); }
   // The cell holding p (clamped into the box) and p's fractions in it.
   void locate(const Eigen::Vector3d& p, std::array<int, 3>& cell, Eigen::Vector3d& f) const;
+  // The values at the corners of the cell holding `p` (in the box), in quanta, ordered v000, v100,
+  // v010, v110, v001, v101, v011, v111 (a digit a cell step along x, y, z), and p's place `f` in it.
+  std::array<double, 8> corners(const Eigen::Vector3d& p, Eigen::Vector3d& f) const;
 
   Eigen::Vector3d origin_;
   double spacing_;
