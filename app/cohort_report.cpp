@@ -7,8 +7,8 @@
 #include "engine/gpu_device.hpp"
 #include "training/sessions/cohort_export.hpp"
 #include "training/sessions/cohort_plot.hpp"
-#include "ui/panel_picture.hpp"
 #include "ui/cohort_panel.hpp"
+#include "ui/panel_picture.hpp"
 #include "ui/review_window_frame.hpp"
 
 namespace needle::app {

@@ -42,7 +42,8 @@ std::unique_ptr<training::SessionStore> open_existing_db(const std::string& loca
 }
 
 std::filesystem::path local_folder(const std::string& location) {
-  const std::filesystem::path file = training::is_postgres_uri(location) ? default_db() : std::filesystem::path(location);
+  const std::filesystem::path file =
+      training::is_postgres_uri(location) ? default_db() : std::filesystem::path(location);
   return std::filesystem::absolute(file).parent_path();
 }
 

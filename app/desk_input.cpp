@@ -11,18 +11,29 @@ namespace {
 
 std::optional<haptics::DeskKey> desk_key(engine::Key key) {
   switch (key) {
-    case engine::Key::kLeft: return haptics::DeskKey::kLeft;
-    case engine::Key::kRight: return haptics::DeskKey::kRight;
-    case engine::Key::kDown: return haptics::DeskKey::kDown;
-    case engine::Key::kUp: return haptics::DeskKey::kUp;
-    case engine::Key::kS: return haptics::DeskKey::kOut;
-    case engine::Key::kW: return haptics::DeskKey::kIn;
-    case engine::Key::kA: return haptics::DeskKey::kSwingLeft;
-    case engine::Key::kD: return haptics::DeskKey::kSwingRight;
+    case engine::Key::kLeft:
+      return haptics::DeskKey::kLeft;
+    case engine::Key::kRight:
+      return haptics::DeskKey::kRight;
+    case engine::Key::kDown:
+      return haptics::DeskKey::kDown;
+    case engine::Key::kUp:
+      return haptics::DeskKey::kUp;
+    case engine::Key::kS:
+      return haptics::DeskKey::kOut;
+    case engine::Key::kW:
+      return haptics::DeskKey::kIn;
+    case engine::Key::kA:
+      return haptics::DeskKey::kSwingLeft;
+    case engine::Key::kD:
+      return haptics::DeskKey::kSwingRight;
     // Q and E tilt: R is the score panel's Retry, so no key has two meanings.
-    case engine::Key::kQ: return haptics::DeskKey::kTiltToward;
-    case engine::Key::kE: return haptics::DeskKey::kTiltAway;
-    default: return std::nullopt;
+    case engine::Key::kQ:
+      return haptics::DeskKey::kTiltToward;
+    case engine::Key::kE:
+      return haptics::DeskKey::kTiltAway;
+    default:
+      return std::nullopt;
   }
 }
 
@@ -32,8 +43,9 @@ int gamepad_id(const haptics::DeviceSpec& spec) {
   const std::vector<engine::GamepadInfo> pads = engine::Window::gamepads();
   if (!spec.index) {
     if (pads.empty())
-      throw std::runtime_error("gamepad: none connected (no gamepad with a standard mapping is present); connect one, "
-                               "or choose the mouse or the keyboard");
+      throw std::runtime_error(
+          "gamepad: none connected (no gamepad with a standard mapping is present); connect one, "
+          "or choose the mouse or the keyboard");
     return pads.front().id;
   }
   for (const engine::GamepadInfo& pad : pads)
@@ -66,12 +78,14 @@ haptics::NeedleDirection needle_direction(const ToolStart& start, const std::arr
 }
 
 haptics::NeedleDirection needle_direction(const ToolStart& start, const haptics::DeskPose& pose) {
-  const Eigen::Vector3d d = start.device_to_scene.transpose() *
-                            haptics::wrist_direction(start.device_to_scene, start.direction, pose.wrist_rad[0], pose.wrist_rad[1]);
+  const Eigen::Vector3d d =
+      start.device_to_scene.transpose() *
+      haptics::wrist_direction(start.device_to_scene, start.direction, pose.wrist_rad[0], pose.wrist_rad[1]);
   return {{d.x(), d.y(), d.z()}};
 }
 
-void DeskInput::frame(engine::Window& window, const std::vector<engine::Window::KeyPress>& keys, bool pointer_on_panel) {
+void DeskInput::frame(engine::Window& window, const std::vector<engine::Window::KeyPress>& keys,
+                      bool pointer_on_panel) {
   if (start_) {
     mouse_.set_needle_direction(axis_ ? needle_direction(*start_, *axis_) : needle_direction(*start_, mouse_.pose()));
     keys_.set_needle_direction(axis_ ? needle_direction(*start_, *axis_) : needle_direction(*start_, keys_.pose()));
@@ -144,7 +158,8 @@ std::string DeskInput::help(haptics::DeviceSpec::Kind kind, bool syringe) {
     return std::string("arrows: move   W/S: in and out   A/D, Q/E: turn about the tip   Shift: fine") +
            (syringe ? "   Space held: press the plunger" : "");
   if (syringe)
-    return "left stick: move   right trigger: in (out with LB)   right stick: turn about the tip   left trigger: press the "
+    return "left stick: move   right trigger: in (out with LB)   right stick: turn about the tip   left trigger: press "
+           "the "
            "plunger   Start: reset a fault";
   return "left stick: move   triggers: in and out   right stick: turn about the tip   Start: reset a fault";
 }

@@ -67,10 +67,10 @@ class DeskInput {
   haptics::MouseMapping mouse_;
   haptics::KeyboardMapping keys_;
   haptics::GamepadMapping pad_;
-  std::optional<ToolStart> start_;  // the needle's start direction and the view's axes, once known
+  std::optional<ToolStart> start_;             // the needle's start direction and the view's axes, once known
   std::optional<std::array<double, 3>> axis_;  // the needle's axis now, once a state has come
-  bool turning_ = false;          // the mouse's turning button is held
-  engine::Window::Cursor turn_from_;  // where the cursor was when it went down
+  bool turning_ = false;                       // the mouse's turning button is held
+  engine::Window::Cursor turn_from_;           // where the cursor was when it went down
   bool gamepad_ = false;
   int gamepad_id_ = 0;
   std::optional<std::chrono::steady_clock::time_point> last_frame_;

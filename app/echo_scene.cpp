@@ -56,7 +56,8 @@ engine::EchoScene echo_scene(const haptics::Scenario& scenario, const engine::Sc
     }
     const haptics::ImplicitSurface& surface = layer.shape.surface();
     echo.intersection = surface.combine() == haptics::ImplicitSurface::Combine::Intersection;
-    for (const haptics::SurfacePrimitive& p : surface.primitives()) echo.primitives.push_back(echo_primitive(p, scenario.base_in_world));
+    for (const haptics::SurfacePrimitive& p : surface.primitives())
+      echo.primitives.push_back(echo_primitive(p, scenario.base_in_world));
     if (layer.acoustics) {
       const haptics::LayerAcoustics& a = *layer.acoustics;
       echo.material = {a.impedance_MRayl, a.attenuation_dB_per_cm_MHz, a.echogenicity, a.scatterer_density};
@@ -80,7 +81,8 @@ bool layers_have_acoustics(const training::Task& task) {
   if (task.scenario.empty()) return false;
   const haptics::Scenario scenario = haptics::load_scenario(task.scenario.string());
   const auto& layers = scenario.scene.tissue.layers();
-  return std::any_of(layers.begin(), layers.end(), [](const haptics::TissueLayer& l) { return l.acoustics.has_value(); });
+  return std::any_of(layers.begin(), layers.end(),
+                     [](const haptics::TissueLayer& l) { return l.acoustics.has_value(); });
 }
 
 engine::UltrasoundProbe to_engine(const training::UltrasoundProbeSpec& p) {
@@ -95,8 +97,8 @@ engine::UltrasoundProbe to_engine(const training::UltrasoundProbeSpec& p) {
   return out;
 }
 
-engine::UltrasoundProbe paramedian_sagittal_oblique_probe(const engine::EchoScene& scene, const glm::dvec3& over, double offset_m,
-                                                          double medial_tilt_rad) {
+engine::UltrasoundProbe paramedian_sagittal_oblique_probe(const engine::EchoScene& scene, const glm::dvec3& over,
+                                                          double offset_m, double medial_tilt_rad) {
   engine::UltrasoundProbe probe;
   probe.direction = {-std::sin(medial_tilt_rad), 0.0, -std::cos(medial_tilt_rad)};
   probe.lateral = {0.0, 1.0, 0.0};

@@ -31,8 +31,8 @@ engine::UltrasoundProbe to_engine(const training::UltrasoundProbeSpec& probe);
 // them, through which the flavum, the dura and the front of the canal show. The view is the one
 // Karmakar et al. (Br J Anaesth 2009;102:845-854) image before a paramedian epidural; the offset,
 // tilt, width and depth are the caller's (design values there).
-engine::UltrasoundProbe paramedian_sagittal_oblique_probe(const engine::EchoScene& scene, const glm::dvec3& over, double offset_m,
-                                                          double medial_tilt_rad);
+engine::UltrasoundProbe paramedian_sagittal_oblique_probe(const engine::EchoScene& scene, const glm::dvec3& over,
+                                                          double offset_m, double medial_tilt_rad);
 
 struct ProbePlan {
   engine::UltrasoundProbe probe;

@@ -49,7 +49,8 @@ engine::NeedleLoad NeedleTracker::update(const haptics::ToolSnapshot& s) {
       load.contact = engine::NeedleContact::Inserted;
       load.surface_point = *entry_;
       load.surface_normal = -load.axis;
-      if (s.contact == haptics::ContactState::kTissue) load.lateral_force_on_tissue_N = lateral_force_on_tissue(s, load.axis);
+      if (s.contact == haptics::ContactState::kTissue)
+        load.lateral_force_on_tissue_N = lateral_force_on_tissue(s, load.axis);
       return load;
     }
     entry_.reset();

@@ -15,7 +15,8 @@ engine::TissueParams patient_skin_deformation() {
   return p;
 }
 
-engine::Model patient_layer_model(const haptics::anatomy::Patient& patient, size_t layer_index, const Eigen::Vector3d& base_in_world) {
+engine::Model patient_layer_model(const haptics::anatomy::Patient& patient, size_t layer_index,
+                                  const Eigen::Vector3d& base_in_world) {
   const haptics::anatomy::PatientLayer& layer = patient.layers.at(layer_index);
   const LayerLook look = patient_layer_look(layer.name);
   const haptics::anatomy::SurfaceMesh mesh = haptics::anatomy::layer_surface(patient, layer_index, look.stride);
@@ -55,7 +56,8 @@ engine::Scene with_patient(engine::Scene scene, const haptics::Scenario& scenari
     engine::SceneAsset asset;
     asset.name = layer.name;
     asset.role = layer.rigid ? engine::AssetRole::Bone : engine::AssetRole::Tissue;
-    asset.model = std::make_shared<const engine::Model>(patient_layer_model(*scenario.patient, i, scenario.base_in_world));
+    asset.model =
+        std::make_shared<const engine::Model>(patient_layer_model(*scenario.patient, i, scenario.base_in_world));
     if (layer.name == "skin") asset.deformation = patient_skin_deformation();
     scene.assets.push_back(std::move(asset));
   }

@@ -19,6 +19,7 @@ engine::TissueParams patient_skin_deformation();
 engine::Scene with_patient(engine::Scene scene, const haptics::Scenario& scenario);
 
 // The patient's layer `layer` as a model in the world frame, in its look.
-engine::Model patient_layer_model(const haptics::anatomy::Patient& patient, size_t layer, const Eigen::Vector3d& base_in_world);
+engine::Model patient_layer_model(const haptics::anatomy::Patient& patient, size_t layer,
+                                  const Eigen::Vector3d& base_in_world);
 
 }  // namespace needle::app

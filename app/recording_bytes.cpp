@@ -15,7 +15,8 @@ std::string encode_session(const haptics::Session& session) {
   for (size_t first = 0; first < session.records.size(); first += kBlockRecords) {
     const size_t count = std::min(kBlockRecords, session.records.size() - first);
     block.assign(haptics::kBlockHeaderBytes, 0);
-    for (size_t k = first; k < first + count; ++k) haptics::encode_record(session.records[k], block, session.header.payload_version);
+    for (size_t k = first; k < first + count; ++k)
+      haptics::encode_record(session.records[k], block, session.header.payload_version);
     haptics::encode_block_header(block.data(), first, uint32_t(count), session.header.payload_version);
     out.append(block.begin(), block.end());
   }

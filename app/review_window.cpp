@@ -37,7 +37,8 @@ struct Loaded {
   bool complete = false;
 
   // Loads `id` when it is not the one held, or when it has been completed since.
-  bool update(const training::SessionStore& store, const fs::path& db, int64_t wanted, const std::vector<training::SessionInfo>& list) {
+  bool update(const training::SessionStore& store, const fs::path& db, int64_t wanted,
+              const std::vector<training::SessionInfo>& list) {
     bool now_complete = false;
     for (const training::SessionInfo& s : list) now_complete |= s.id == wanted && s.complete;
     if (wanted == id && now_complete == complete) return false;
@@ -62,7 +63,8 @@ engine::RgbaImage cropped(const engine::RgbaImage& image, const ui::PanelRect& a
   const uint32_t x1 = std::min(uint32_t(std::max(at.pos.x + at.size.x, 0.0f)), image.width);
   const uint32_t y1 = std::min(uint32_t(std::max(at.pos.y + at.size.y, 0.0f)), image.height);
   engine::RgbaImage out{x1 - x0, y1 - y0, {}};
-  for (uint32_t y = y0; y < y1; ++y) out.pixels.insert(out.pixels.end(), image.at(x0, y), image.at(x0, y) + size_t(x1 - x0) * 4);
+  for (uint32_t y = y0; y < y1; ++y)
+    out.pixels.insert(out.pixels.end(), image.at(x0, y), image.at(x0, y) + size_t(x1 - x0) * 4);
   return out;
 }
 
@@ -127,7 +129,8 @@ int run_review_window(const ReviewOptions& options) {
       if (a.review && a.review->task) {
         try {
           const training::Task& task = *a.review->task;
-          if (task.ultrasound_probe || layers_have_acoustics(task)) ultrasound = std::make_unique<UltrasoundWindow>(vw.device, task);
+          if (task.ultrasound_probe || layers_have_acoustics(task))
+            ultrasound = std::make_unique<UltrasoundWindow>(vw.device, task);
         } catch (const std::exception& e) {
           options.messages.warn(std::string("no ultrasound replay: ") + e.what());
         }
@@ -168,7 +171,8 @@ int run_review_window(const ReviewOptions& options) {
         try {
           training::export_cohort(class_view.view, dir);
           class_picture = dir / "cohort_view.png";
-          class_view.state.export_message = "wrote " + (dir / "cohort.json").string() + ", the CSV tables and cohort_view.png";
+          class_view.state.export_message =
+              "wrote " + (dir / "cohort.json").string() + ", the CSV tables and cohort_view.png";
         } catch (const std::exception& e) {
           class_view.state.export_message = e.what();
         }
@@ -181,13 +185,16 @@ int run_review_window(const ReviewOptions& options) {
         if (ui::draw_session_detail(*a.review, detail, below)) {
           const fs::path dir = local_folder(options.db.string()) / "exports";
           try {
-            detail.export_message = "wrote " + training::export_session(a.review->stored, dir, a.review->punctures()).string() + " and the .csv";
+            detail.export_message = "wrote " +
+                                    training::export_session(a.review->stored, dir, a.review->punctures()).string() +
+                                    " and the .csv";
           } catch (const std::exception& e) {
             detail.export_message = e.what();
           }
         }
         playing = ui::draw_replay_bar(*a.review, t, playing, ui::rect(left, h - bar, w - left, bar));
-        if (!scene_error.empty()) ui::draw_note("3D view", ui::rect(left + 10.0f, 10.0f, 0, 0), "no replay: " + scene_error);
+        if (!scene_error.empty())
+          ui::draw_note("3D view", ui::rect(left + 10.0f, 10.0f, 0, 0), "no replay: " + scene_error);
         if (b.review) {
           bool open = true;
           ui::draw_comparison(*a.review, *b.review, ui::rect(left, 0, w - left, h - bar), &open, &span);

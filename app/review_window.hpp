@@ -1,7 +1,7 @@
 // The instructor's review window over the session database: the table of sessions, the chosen
 // session's detail with plots, its replay in the 3D view, and a second session to compare it with;
-// in its Class tab the instructor's class view (ui/cohort_panel.hpp) (docs/REVIEW.md). It reads while runs write (the store's WAL), and picks up new and finished
-// sessions every couple of seconds.
+// in its Class tab the instructor's class view (ui/cohort_panel.hpp) (docs/REVIEW.md). It reads while runs write (the
+// store's WAL), and picks up new and finished sessions every couple of seconds.
 #pragma once
 
 #include <cstdint>
@@ -17,9 +17,9 @@ namespace needle::app {
 struct ReviewOptions {
   std::filesystem::path db;
   engine::Extent size{1600, 900};
-  int64_t session = 0;  // the session to open first
+  int64_t session = 0;      // the session to open first
   bool class_view = false;  // open on the Class tab
-  long frames = 0;      // close after this many frames (0: when the user closes it)
+  long frames = 0;          // close after this many frames (0: when the user closes it)
   std::optional<std::string> screenshot;
   Messages messages;  // what the window tells its user (how frames reach it, the frames presented, ...)
 };

@@ -49,7 +49,8 @@ training::SessionResult SessionFeed::result() const {
   return scorer_.result();
 }
 
-void SessionFeed::read(const std::function<void(const training::SessionScorer&, const haptics::ToolSnapshot&)>& read) const {
+void SessionFeed::read(
+    const std::function<void(const training::SessionScorer&, const haptics::ToolSnapshot&)>& read) const {
   std::lock_guard lock(mutex_);
   read(scorer_, last_);
 }

@@ -32,8 +32,8 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
   const training::SessionInfo& info = review.stored.info;
   if (plots.chosen() && review.has_recording()) {  // checked before anything is written
     if (plots.hi < review.start_s() || plots.lo > review.end_s()) {
-      messages.warn(formatted("the plots' range %g to %g s lies outside the recording (%.3f to %.3f s)", plots.lo, plots.hi,
-                              review.start_s(), review.end_s()));
+      messages.warn(formatted("the plots' range %g to %g s lies outside the recording (%.3f to %.3f s)", plots.lo,
+                              plots.hi, review.start_s(), review.end_s()));
       return 1;
     }
     plots = ui::clamped({std::max(plots.lo, review.start_s()), std::min(plots.hi, review.end_s())},
@@ -43,9 +43,10 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
   const fs::path json = training::export_session(review.stored, out, review.punctures());
   messages.say("wrote " + json.string() + " and " + fs::path(json).replace_extension(".csv").string());
   if (!info.complete) {
-    messages.say(formatted("session %lld is incomplete (its run ended before the task did, or is still going): exported "
-                           "what is stored, with no score, step results or metrics",
-                           static_cast<long long>(id)));
+    messages.say(
+        formatted("session %lld is incomplete (its run ended before the task did, or is still going): exported "
+                  "what is stored, with no score, step results or metrics",
+                  static_cast<long long>(id)));
   }
 
   engine::GpuDevice device;
@@ -55,15 +56,17 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
   // A layered session's detail has six more metric rows and the force–depth plot.
   const engine::Extent table_size{960, 360}, detail_size{820, review.layered() ? 1640u : 1380u}, plot_size{900, 320},
       replay_size{1280, 720};
-  write_picture(out / "review_table.png", ui::panel_picture(device, table_size, [&] {
-                  ui::draw_session_table(sessions, table, whole(table_size));
-                }),
-                messages);
+  write_picture(
+      out / "review_table.png",
+      ui::panel_picture(device, table_size, [&] { ui::draw_session_table(sessions, table, whole(table_size)); }),
+      messages);
   const double t = std::clamp(at.value_or(review.end_s()), review.start_s(), review.end_s());
-  write_picture(out / "review_detail.png", ui::panel_picture(device, detail_size, [&] {
-                  ui::DetailOptions options{t, false, "", plots.chosen() ? &plots : nullptr};
-                  ui::draw_session_detail(review, options, whole(detail_size));
-                }),
+  write_picture(out / "review_detail.png",
+                ui::panel_picture(device, detail_size,
+                                  [&] {
+                                    ui::DetailOptions options{t, false, "", plots.chosen() ? &plots : nullptr};
+                                    ui::draw_session_detail(review, options, whole(detail_size));
+                                  }),
                 messages);
   if (!review.has_recording()) {
     // Sessions stored before runs kept recordings have none: not an error. A named one that
@@ -82,18 +85,20 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
       messages.say(std::string("no ") + names[k] + ": " + all[k]->missing);
       continue;
     }
-    write_picture(out / names[k], ui::panel_picture(device, plot_size, [&] {
-                    ui::draw_plot_window(review, *all[k], whole(plot_size), plots);
-                  }),
-                messages);
+    write_picture(
+        out / names[k],
+        ui::panel_picture(device, plot_size, [&] { ui::draw_plot_window(review, *all[k], whole(plot_size), plots); }),
+        messages);
   }
   // A plot against depth, or why there is none.
   const auto depth_plot = [&](const char* file, const training::Plot& plot, auto draw_window) {
     if (plot.lines.empty())
       messages.say(std::string("no ") + file + ": " + plot.missing);
     else
-      write_picture(out / file, ui::panel_picture(device, plot_size, [&] { draw_window(review.force_depth, nullptr, whole(plot_size)); }),
-                    messages);
+      write_picture(
+          out / file,
+          ui::panel_picture(device, plot_size, [&] { draw_window(review.force_depth, nullptr, whole(plot_size)); }),
+          messages);
   };
   if (review.layered()) {
     depth_plot("plot_force_depth.png", review.force_depth.plot, ui::draw_force_depth_window);
@@ -111,9 +116,9 @@ int write_session_report(const fs::path& db, int64_t id, const fs::path& out, st
   ui::PictureScene scene{engine::load_scene(review.task->scene), cursor.at(review.states, t), 0.0f};
   double shown_t = t;
   const ui::PanelRect bar = ui::rect(0, float(replay_size.height) - 64.0f, float(replay_size.width), 64.0f);
-  write_picture(out / "review_replay.png", ui::panel_picture(device, replay_size, [&] {
-                  ui::draw_replay_bar(review, shown_t, false, bar);
-                }, &scene, 4),
+  write_picture(out / "review_replay.png",
+                ui::panel_picture(
+                    device, replay_size, [&] { ui::draw_replay_bar(review, shown_t, false, bar); }, &scene, 4),
                 messages);
   return 0;
 }

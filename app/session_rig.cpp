@@ -3,8 +3,8 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
-#include <random>
 #include <nlohmann/json.hpp>
+#include <random>
 
 #include "haptics/control/gains.hpp"
 #include "haptics/devices/device_catalog.hpp"
@@ -42,7 +42,8 @@ Eigen::Matrix3d screen_axes(const engine::Camera& camera, double depth_sign) {
   const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(camera.up)));
   const glm::dvec3 up = glm::cross(right, forward);
   Eigen::Matrix3d axes;
-  axes << right.x, up.x, depth_sign * forward.x, right.y, up.y, depth_sign * forward.y, right.z, up.z, depth_sign * forward.z;
+  axes << right.x, up.x, depth_sign * forward.x, right.y, up.y, depth_sign * forward.y, right.z, up.z,
+      depth_sign * forward.z;
   return axes;
 }
 
@@ -92,8 +93,9 @@ haptics::TaskCoupling coupling_from(const json& j) {
 }
 
 json limits_json(const haptics::SafetyLimits& limits) {
-  return {{"max_force_n", limits.max_force_n},
-          {"max_torque_nm", std::vector<double>(limits.max_torque_nm, limits.max_torque_nm + haptics::kMaxDeviceJoints)}};
+  return {
+      {"max_force_n", limits.max_force_n},
+      {"max_torque_nm", std::vector<double>(limits.max_torque_nm, limits.max_torque_nm + haptics::kMaxDeviceJoints)}};
 }
 
 haptics::SafetyLimits limits_from(const json& j) {
@@ -138,7 +140,8 @@ training::Task session_task(const fs::path& task_file, const haptics::DeviceSpec
     return practice ? training::practice_task(std::move(task)) : task;
   }
   const json context = haptics::read_recording_context(device.file, haptics::read_header(device.file));
-  training::Task task = training::parse_task(context["task_text"].get<std::string>(), context["task"].get<std::string>());
+  training::Task task =
+      training::parse_task(context["task_text"].get<std::string>(), context["task"].get<std::string>());
   return context["practice"].get<bool>() ? training::practice_task(std::move(task)) : task;
 }
 
@@ -206,15 +209,18 @@ SessionRig::Recorded SessionRig::make_replay(const RigOptions& options) {
   replay->open();
   const json context = haptics::read_recording_context(path, replay->header());
   if (replay->length() == 0)
-    throw haptics::RecordingError(path + ": no ticks recorded (its run stopped before its first tick): nothing to replay");
+    throw haptics::RecordingError(path +
+                                  ": no ticks recorded (its run stopped before its first tick): nothing to replay");
   notes_ = replay_notes(path, *replay, context, complete_);
   Recorded recorded{context["scenario"], context["coupling"]};
   try {
     limits_ = limits_from(context.at("safety_limits"));
-    scenario_ = std::make_unique<haptics::Scenario>(training::write_scenario(recorded.scenario, options.out_dir / "scenario.json"));
+    scenario_ = std::make_unique<haptics::Scenario>(
+        training::write_scenario(recorded.scenario, options.out_dir / "scenario.json"));
     rate_hz_ = replay->header().rate_hz;
     owned_step_ = recorded.coupling.is_null()
-                      ? std::unique_ptr<haptics::ServoStep>(std::make_unique<haptics::TeleoperationStep>(*scenario_, 1.0 / rate_hz_))
+                      ? std::unique_ptr<haptics::ServoStep>(
+                            std::make_unique<haptics::TeleoperationStep>(*scenario_, 1.0 / rate_hz_))
                       : std::make_unique<haptics::TaskSpaceStep>(*scenario_, coupling_from(recorded.coupling));
   } catch (const json::exception& e) {
     throw haptics::RecordingError(path + ": header: context: " + e.what());
@@ -235,7 +241,8 @@ SessionRig::Recorded SessionRig::make_live(const training::Task& task, const Rig
   std::unique_ptr<haptics::HapticDevice> needle = haptics::make_device(options.device, device_options);
   desk_ = dynamic_cast<haptics::DeskDevice*>(needle.get());
   if (task.syringe) {  // the syringe hand: a second Falcon when there is one, else the app's keys, button or trigger
-    auto hand = std::make_unique<haptics::SyringeHandDevice>(std::move(needle), haptics::make_second_falcon(options.device, device_options));
+    auto hand = std::make_unique<haptics::SyringeHandDevice>(
+        std::move(needle), haptics::make_second_falcon(options.device, device_options));
     syringe_hand_ = hand.get();
     needle = std::move(hand);
   }
@@ -243,7 +250,8 @@ SessionRig::Recorded SessionRig::make_live(const training::Task& task, const Rig
   owned_device_->open();
   owned_device_->home();
   Recorded recorded{training::task_scenario_json(task, patient_seed(options)), nullptr};
-  scenario_ = std::make_unique<haptics::Scenario>(training::write_scenario(recorded.scenario, options.out_dir / "scenario.json"));
+  scenario_ = std::make_unique<haptics::Scenario>(
+      training::write_scenario(recorded.scenario, options.out_dir / "scenario.json"));
   rate_hz_ = options.rate_hz.value_or(1000.0);
   const haptics::TaskCoupling task_coupling = coupling_for(options.device, options.camera);
   recorded.coupling = coupling_json(task_coupling);

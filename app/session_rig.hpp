@@ -18,9 +18,9 @@
 #include "haptics/devices/device_spec.hpp"
 #include "haptics/devices/syringe_hand.hpp"
 #include "haptics/realtime/servo_step.hpp"
-#include "haptics/realtime/task_space_step.hpp"
 #include "haptics/realtime/sim_session.hpp"
 #include "haptics/realtime/syringe_servo_step.hpp"
+#include "haptics/realtime/task_space_step.hpp"
 #include "haptics/safety/safety_monitor.hpp"
 #include "haptics/sim/scenario.hpp"
 #include "training/tasks/task.hpp"
@@ -28,14 +28,14 @@
 namespace needle::app {
 
 struct RigOptions {
-  haptics::DeviceSpec device;           // sim (default) | mouse | keyboard | gamepad[:N] | falcon[:N] | replay:FILE
-  std::string operator_spec = "good";   // sim: good | sloppy | a script file
-  std::string firmware;                 // falcon: Novint's firmware image
-  std::optional<double> rate_hz;        // default: the scenario's for sim, 1 kHz live, as recorded for replay
-  std::filesystem::path out_dir;        // the scenario that runs is written here
-  engine::Camera camera;                // the view the trainee sees: task-space devices move in its axes
-  std::string session_uid;              // the stored session's id (SessionInfo::uid), kept in the
-                                        // recording's context: a recording names its own session
+  haptics::DeviceSpec device;          // sim (default) | mouse | keyboard | gamepad[:N] | falcon[:N] | replay:FILE
+  std::string operator_spec = "good";  // sim: good | sloppy | a script file
+  std::string firmware;                // falcon: Novint's firmware image
+  std::optional<double> rate_hz;       // default: the scenario's for sim, 1 kHz live, as recorded for replay
+  std::filesystem::path out_dir;       // the scenario that runs is written here
+  engine::Camera camera;               // the view the trainee sees: task-space devices move in its axes
+  std::string session_uid;             // the stored session's id (SessionInfo::uid), kept in the
+                                       // recording's context: a recording names its own session
   // The seed a task with a random patient draws this attempt's patient with (kept in the recording
   // as the patient it drew); none: a new one from the system's entropy each session.
   std::optional<uint64_t> patient_seed;
@@ -45,7 +45,8 @@ struct RigOptions {
 // file's text then, not the file as it is now; a practice run's as practice), else `task_file`, as
 // a practice run (training::practice_task) with `practice`. Throws haptics::RecordingError naming
 // the recording when it has no usable context, training::TaskError for the task.
-training::Task session_task(const std::filesystem::path& task_file, const haptics::DeviceSpec& device, bool practice = false);
+training::Task session_task(const std::filesystem::path& task_file, const haptics::DeviceSpec& device,
+                            bool practice = false);
 
 // Where a task-space device's tool starts and the axes its device moves in (the view's, for the
 // trainee's devices: right, up and depth as the columns).
@@ -115,7 +116,7 @@ class SessionRig {
   haptics::DeskDevice* desk_ = nullptr;
   haptics::SyringeHandDevice* syringe_hand_ = nullptr;
   std::unique_ptr<haptics::SyringeServoStep> syringe_step_;  // around the step, when the scenario has a syringe
-  const haptics::TaskSpaceStep* task_space_ = nullptr;  // the live device's step, when in task space
+  const haptics::TaskSpaceStep* task_space_ = nullptr;       // the live device's step, when in task space
   haptics::SafetyLimits limits_;
   double rate_hz_ = 1000.0;
   std::optional<uint64_t> ticks_;

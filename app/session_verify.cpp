@@ -31,8 +31,8 @@ struct ScratchFolder {
   fs::path dir;
   explicit ScratchFolder(int64_t id) {
     static std::atomic<unsigned> serial{0};
-    dir = fs::temp_directory_path() /
-          ("needle-sim-verify-" + std::to_string(::getpid()) + "-" + std::to_string(serial++) + "-" + std::to_string(id));
+    dir = fs::temp_directory_path() / ("needle-sim-verify-" + std::to_string(::getpid()) + "-" +
+                                       std::to_string(serial++) + "-" + std::to_string(id));
     fs::create_directories(dir);
   }
   ~ScratchFolder() {
@@ -82,8 +82,10 @@ VerifiedSession verify_session(const training::SessionStore& store, const fs::pa
     const training::StoredSession stored = store.load(id);
     check.score = stored.info.score;
     check.digest = training::result_digest(stored);
-    if (!stored.info.complete) throw std::runtime_error("incomplete: its run ended before the task did, and no score is stored");
-    if (stored.info.recording_path.empty()) throw std::runtime_error("no recording (the session was stored without one)");
+    if (!stored.info.complete)
+      throw std::runtime_error("incomplete: its run ended before the task did, and no score is stored");
+    if (stored.info.recording_path.empty())
+      throw std::runtime_error("no recording (the session was stored without one)");
     const fs::path file = locate_recording(store, db, stored.info, fetched);
     const haptics::SessionHeader header = haptics::read_header(file.string());  // unreadable: unverifiable
     std::vector<std::string> differences;
@@ -97,7 +99,8 @@ VerifiedSession verify_session(const training::SessionStore& store, const fs::pa
       const ScratchFolder scratch(id);
       std::string task;
       const training::SessionResult replay = replay_result(file, scratch.dir, task);
-      if (task != stored.info.task) differences.push_back("task: stored \"" + stored.info.task + "\", recording \"" + task + "\"");
+      if (task != stored.info.task)
+        differences.push_back("task: stored \"" + stored.info.task + "\", recording \"" + task + "\"");
       for (std::string& d : training::result_differences(stored, replay)) differences.push_back(std::move(d));
     }
     check.outcome = differences.empty() ? training::CheckOutcome::kVerified : training::CheckOutcome::kMismatch;

@@ -19,13 +19,14 @@ constexpr double kHeadlessMoment_s = 7.0;
 
 }  // namespace
 
-FrameContent with_views(const Show& show, ui::ViewState& view, const engine::SceneRenderer& renderer, const engine::RenderTarget& target) {
+FrameContent with_views(const Show& show, ui::ViewState& view, const engine::SceneRenderer& renderer,
+                        const engine::RenderTarget& target) {
   FrameContent content = show;
   // The view panel beside the others, the ultrasound passes (only while its window is open) and
   // the section added to the frame's parameters; the panel decides, the frame's parameters follow.
   auto ultrasound_drawn = std::make_shared<bool>(false);
-  content.views_panel = [&view, shows_needle = bool(show.needle), ultrasound = show.ultrasound,
-                         ultrasound_drawn](const std::optional<engine::NeedleLoad>& needle, const engine::Camera& camera) {
+  content.views_panel = [&view, shows_needle = bool(show.needle), ultrasound = show.ultrasound, ultrasound_drawn](
+                            const std::optional<engine::NeedleLoad>& needle, const engine::Camera& camera) {
     *ultrasound_drawn = ultrasound && view.ultrasound && needle;
     if (shows_needle) ui::draw_view_panel(view);  // a view of the tissue (not the start screen)
     if (*ultrasound_drawn) ultrasound->draw_panel(*needle, camera);
@@ -35,7 +36,8 @@ FrameContent with_views(const Show& show, ui::ViewState& view, const engine::Sce
     if (*ultrasound_drawn) ultrasound->add_to_frame(params, renderer, target.extent(), *needle);
     *ultrasound_drawn = false;
     if (!view.section) return;
-    params.section = fixed.value_or(engine::section_through_needle(params.camera, needle ? &*needle : nullptr, *view.section));
+    params.section =
+        fixed.value_or(engine::section_through_needle(params.camera, needle ? &*needle : nullptr, *view.section));
     params.section->mode = *view.section;
   };
   return content;
@@ -44,7 +46,8 @@ FrameContent with_views(const Show& show, ui::ViewState& view, const engine::Sce
 SessionWindow::SessionWindow(const WindowOptions& options)
     : options_(options),
       vw_("needle-sim", options.size, options.messages),
-      frame_(vw_.device, vw_.target, {options.msaa.value_or(vw_.default_msaa_samples()), options.hud, options.render_scale, options.debug},
+      frame_(vw_.device, vw_.target,
+             {options.msaa.value_or(vw_.default_msaa_samples()), options.hud, options.render_scale, options.debug},
              &vw_.window),
       frames_(options.frames, options.screenshot, options.messages),
       view_{options.section, options.ultrasound},
@@ -88,7 +91,9 @@ TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices
   std::optional<SyringeInput> plunger;
   if (haptics::SyringeHandDevice* hand = session.syringe_hand(); hand && !hand->has_second()) {
     const haptics::DeviceSpec& spec = session.device_spec();
-    plunger.emplace(*hand, spec.kind, spec.kind == haptics::DeviceSpec::Kind::kGamepad ? std::optional<int>(gamepad_id(spec)) : std::nullopt);
+    plunger.emplace(
+        *hand, spec.kind,
+        spec.kind == haptics::DeviceSpec::Kind::kGamepad ? std::optional<int>(gamepad_id(spec)) : std::nullopt);
   }
   if (const std::optional<ToolStart> start = session.tool_start(); desk && start) {
     desk->start_at(window.window(), session.scene().camera, *start);
@@ -100,8 +105,9 @@ TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices
   }
   engine::GpuScene scene(window.renderer(), session.scene());
   std::optional<TaskEnd> end;
-  const std::string controls_text = desk ? DeskInput::help(session.desk()->spec().kind, syringe)
-                                    : plunger ? std::string("Space held: press the plunger") : std::string();
+  const std::string controls_text = desk      ? DeskInput::help(session.desk()->spec().kind, syringe)
+                                    : plunger ? std::string("Space held: press the plunger")
+                                              : std::string();
   const char* controls = controls_text.empty() ? nullptr : controls_text.c_str();
   std::vector<ui::Choice> choices;
   if (offer_choices) {
@@ -114,7 +120,12 @@ TaskEnd run_task(SessionWindow& window, TaskSession& session, bool offer_choices
       scene,
       Show{task_content(
                session,
-               [&] { session.draw_panel(std::nullopt, controls, session.finished() ? choices : offer_choices ? stop : std::vector<ui::Choice>{}); },
+               [&] {
+                 session.draw_panel(std::nullopt, controls,
+                                    session.finished() ? choices
+                                    : offer_choices    ? stop
+                                                       : std::vector<ui::Choice>{});
+               },
                [&](engine::Window& w) {
                  const std::vector<engine::Window::KeyPress> keys = w.take_key_presses();
                  const bool typing = ui::typing();
@@ -147,7 +158,8 @@ int run_scene_headless(const engine::Scene& scene, const WindowOptions& options,
   const std::optional<engine::NeedleLoad> needle = scripted_content(gpu_scene).needle(kHeadlessMoment_s);
   engine::RgbaImage image;
   engine::FrameParams params = gpu_scene.frame_params(needle ? &*needle : nullptr);
-  if (options.section) params.section = engine::section_through_needle(params.camera, needle ? &*needle : nullptr, *options.section);
+  if (options.section)
+    params.section = engine::section_through_needle(params.camera, needle ? &*needle : nullptr, *options.section);
   renderer.draw(target, params, &image);
   const fs::path out = out_dir / "scene.png";
   engine::write_png(out, image);

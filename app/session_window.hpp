@@ -26,12 +26,12 @@ namespace needle::app {
 
 struct WindowOptions {
   engine::Extent size{1280, 720};
-  std::optional<int> msaa;  // default: 4, or 1 in a window on a CPU device
-  std::optional<float> render_scale;  // the 3D view's; nullopt: automatic (TraineeFrameSettings)
-  long frames = 0;          // close after this many frames (0: when the user closes the window)
-  std::optional<std::string> screenshot;  // save the last of `frames` as presented
-  bool hud = true;                        // the panels
-  bool debug = false;                     // the status panel from the start (F3 toggles it)
+  std::optional<int> msaa;                       // default: 4, or 1 in a window on a CPU device
+  std::optional<float> render_scale;             // the 3D view's; nullopt: automatic (TraineeFrameSettings)
+  long frames = 0;                               // close after this many frames (0: when the user closes the window)
+  std::optional<std::string> screenshot;         // save the last of `frames` as presented
+  bool hud = true;                               // the panels
+  bool debug = false;                            // the status panel from the start (F3 toggles it)
   std::optional<engine::Section::Mode> section;  // the section view at the start (X and the view panel change it)
   bool ultrasound = false;                       // the ultrasound window open at the start, in a task that has one
   ProbeOffset probe;                             // the keys' moves of a task's probe at the start

@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "haptics/devices/device_spec.hpp"
-#include "io/strict_json.hpp"
 #include "io/file_write.hpp"
+#include "io/strict_json.hpp"
 
 namespace needle::app {
 namespace fs = std::filesystem;
@@ -68,9 +68,12 @@ class SettingsReader : io::StrictJsonReader<SettingsError> {
     ViewSettings out;
     if (v.contains("section")) {
       const std::string mode = string(v["section"], "/views/section");
-      if (mode == "cut") out.section = engine::Section::Mode::Cut;
-      else if (mode == "translucent") out.section = engine::Section::Mode::Translucent;
-      else if (mode != "off") fail("/views/section", "\"" + mode + "\": expected off, cut or translucent");
+      if (mode == "cut")
+        out.section = engine::Section::Mode::Cut;
+      else if (mode == "translucent")
+        out.section = engine::Section::Mode::Translucent;
+      else if (mode != "off")
+        fail("/views/section", "\"" + mode + "\": expected off, cut or translucent");
     }
     if (v.contains("ultrasound")) {
       if (!v["ultrasound"].is_boolean()) fail("/views/ultrasound", "expected true or false");
@@ -80,10 +83,13 @@ class SettingsReader : io::StrictJsonReader<SettingsError> {
       const json& p = v["probe"];
       object(p, "/views/probe", {"along_m", "across_m", "turn_deg"});
       // A probe stays on its task's skin: a metre either way is past any task's tissue.
-      if (p.contains("along_m")) out.probe.along_m = in_range(p["along_m"], "/views/probe/along_m", {-1.0, 1.0, false, "m"});
-      if (p.contains("across_m")) out.probe.across_m = in_range(p["across_m"], "/views/probe/across_m", {-1.0, 1.0, false, "m"});
+      if (p.contains("along_m"))
+        out.probe.along_m = in_range(p["along_m"], "/views/probe/along_m", {-1.0, 1.0, false, "m"});
+      if (p.contains("across_m"))
+        out.probe.across_m = in_range(p["across_m"], "/views/probe/across_m", {-1.0, 1.0, false, "m"});
       if (p.contains("turn_deg"))
-        out.probe.turn_rad = in_range(p["turn_deg"], "/views/probe/turn_deg", {-360.0, 360.0, false, "degrees"}) * kRadPerDeg;
+        out.probe.turn_rad =
+            in_range(p["turn_deg"], "/views/probe/turn_deg", {-360.0, 360.0, false, "degrees"}) * kRadPerDeg;
     }
     return out;
   }
@@ -106,7 +112,9 @@ std::string utc_stamp() {
 fs::path default_settings_file() {
   const char* config = std::getenv("XDG_CONFIG_HOME");
   const char* home = std::getenv("HOME");
-  const fs::path base = config && *config ? fs::path(config) : home && *home ? fs::path(home) / ".config" : fs::path(".");
+  const fs::path base = config && *config ? fs::path(config)
+                        : home && *home   ? fs::path(home) / ".config"
+                                          : fs::path(".");
   return base / "needle-sim" / "settings.json";
 }
 
@@ -120,7 +128,8 @@ LoadedSettings load_settings(const fs::path& file) {
     const int version = reader.version(root);
     if (version > kSettingsVersion) {
       loaded.writable = false;
-      loaded.notice = file.string() + " was written by a newer needle-sim (settings version " + std::to_string(version) +
+      loaded.notice = file.string() + " was written by a newer needle-sim (settings version " +
+                      std::to_string(version) +
                       "): left as it is; this run starts from the defaults and does not save them";
       return loaded;
     }
@@ -131,8 +140,9 @@ LoadedSettings load_settings(const fs::path& file) {
     for (int n = 2; fs::exists(fs::symlink_status(aside, ec)); ++n) aside = stem + "_" + std::to_string(n);
     fs::rename(file, aside, ec);
     loaded.settings = Settings{};
-    loaded.notice = ec ? std::string(e.what()) + "; it could not be set aside (" + ec.message() + "): the defaults are used"
-                       : std::string(e.what()) + "; the file was set aside as " + aside.string() + " and the defaults are used";
+    loaded.notice =
+        ec ? std::string(e.what()) + "; it could not be set aside (" + ec.message() + "): the defaults are used"
+           : std::string(e.what()) + "; the file was set aside as " + aside.string() + " and the defaults are used";
   }
   return loaded;
 }

@@ -26,8 +26,9 @@ struct ViewSettings {
 };
 
 struct Settings {
-  std::string trainee;           // the last trainee; empty before the first
-  haptics::DeviceSpec device{haptics::DeviceSpec::Kind::kMouse};  // the last device: mouse, keyboard, gamepad[:N], falcon[:N]
+  std::string trainee;  // the last trainee; empty before the first
+  haptics::DeviceSpec device{
+      haptics::DeviceSpec::Kind::kMouse};  // the last device: mouse, keyboard, gamepad[:N], falcon[:N]
   engine::Extent window{1280, 720};
   ViewSettings views;
   // "render_scale": "auto" (nullopt: lowered on a CPU device while the frame misses 60 fps) or a

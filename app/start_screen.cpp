@@ -1,18 +1,17 @@
 #include "app/start_screen.hpp"
 
-#include "app/default_db.hpp"
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
 #include <optional>
 
+#include "app/default_db.hpp"
 #include "app/desk_input.hpp"
 #include "app/session_window.hpp"
 #include "app/settings.hpp"
-#include "io/file_write.hpp"
 #include "haptics/devices/falcon/falcon_device.hpp"
+#include "io/file_write.hpp"
 #include "training/sessions/store_location.hpp"
 #include "training/sessions/trainee_history.hpp"
 #include "training/tasks/task_catalog.hpp"
@@ -27,24 +26,35 @@ constexpr auto kRescan = std::chrono::seconds(2);  // devices plugged in or out 
 
 std::optional<ui::StartKey> start_key_of(engine::Key key) {
   switch (key) {
-    case engine::Key::kUp: return ui::StartKey::kUp;
-    case engine::Key::kDown: return ui::StartKey::kDown;
-    case engine::Key::kLeft: return ui::StartKey::kLeft;
-    case engine::Key::kRight: return ui::StartKey::kRight;
-    case engine::Key::kPageUp: return ui::StartKey::kPageUp;
-    case engine::Key::kPageDown: return ui::StartKey::kPageDown;
-    case engine::Key::kTab: return ui::StartKey::kTab;
-    case engine::Key::kEnter: return ui::StartKey::kEnter;
-    case engine::Key::kEscape: return ui::StartKey::kEscape;
-    case engine::Key::kP: return ui::StartKey::kPractice;
-    default: return std::nullopt;
+    case engine::Key::kUp:
+      return ui::StartKey::kUp;
+    case engine::Key::kDown:
+      return ui::StartKey::kDown;
+    case engine::Key::kLeft:
+      return ui::StartKey::kLeft;
+    case engine::Key::kRight:
+      return ui::StartKey::kRight;
+    case engine::Key::kPageUp:
+      return ui::StartKey::kPageUp;
+    case engine::Key::kPageDown:
+      return ui::StartKey::kPageDown;
+    case engine::Key::kTab:
+      return ui::StartKey::kTab;
+    case engine::Key::kEnter:
+      return ui::StartKey::kEnter;
+    case engine::Key::kEscape:
+      return ui::StartKey::kEscape;
+    case engine::Key::kP:
+      return ui::StartKey::kPractice;
+    default:
+      return std::nullopt;
   }
 }
 
 std::string record_line(const training::TaskHistory& h) {
   char line[128];
-  std::snprintf(line, sizeof line, "last %.0f, %s   best %.0f   %d done", h.last.score, h.last.passed ? "passed" : "not passed",
-                h.best, h.completed);
+  std::snprintf(line, sizeof line, "last %.0f, %s   best %.0f   %d done", h.last.score,
+                h.last.passed ? "passed" : "not passed", h.best, h.completed);
   return line;
 }
 
@@ -133,21 +143,21 @@ ui::StartAction choose(SessionWindow& window, StartScreen& screen) {
   ui::StartAction action = ui::StartAction::kNone;
   window.run(empty,
              Show{{{},
-                  [&] {
-                    screen.refresh();
-                    const ui::StartAction clicked = ui::draw_start_screen(screen.state());
-                    if (clicked != ui::StartAction::kNone) action = clicked;
-                  },
-                  [&](engine::Window& w) {
-                    w.take_scroll();
-                    const bool typing = ui::typing();
-                    for (const engine::Window::KeyPress& press : w.take_key_presses()) {
-                      const std::optional<ui::StartKey> key = start_key_of(press.key);
-                      if (!key) continue;
-                      const ui::StartAction pressed = ui::start_key(screen.state(), *key, typing);
-                      if (pressed != ui::StartAction::kNone) action = pressed;
-                    }
-                  }}},
+                   [&] {
+                     screen.refresh();
+                     const ui::StartAction clicked = ui::draw_start_screen(screen.state());
+                     if (clicked != ui::StartAction::kNone) action = clicked;
+                   },
+                   [&](engine::Window& w) {
+                     w.take_scroll();
+                     const bool typing = ui::typing();
+                     for (const engine::Window::KeyPress& press : w.take_key_presses()) {
+                       const std::optional<ui::StartKey> key = start_key_of(press.key);
+                       if (!key) continue;
+                       const ui::StartAction pressed = ui::start_key(screen.state(), *key, typing);
+                       if (pressed != ui::StartAction::kNone) action = pressed;
+                     }
+                   }}},
              [&] { return action != ui::StartAction::kNone; });
   return action;
 }
@@ -162,21 +172,26 @@ std::vector<training::SessionInfo> start_screen_sessions(const std::string& db) 
 
 std::vector<ui::StartDevice> present_devices() {
   using Kind = haptics::DeviceSpec::Kind;
-  std::vector<ui::StartDevice> devices = {{haptics::DeviceSpec{Kind::kMouse}.text(), "Mouse", DeskInput::help(Kind::kMouse), true},
-                                          {haptics::DeviceSpec{Kind::kKeyboard}.text(), "Keyboard", DeskInput::help(Kind::kKeyboard), true}};
+  std::vector<ui::StartDevice> devices = {
+      {haptics::DeviceSpec{Kind::kMouse}.text(), "Mouse", DeskInput::help(Kind::kMouse), true},
+      {haptics::DeviceSpec{Kind::kKeyboard}.text(), "Keyboard", DeskInput::help(Kind::kKeyboard), true}};
   for (const engine::GamepadInfo& pad : engine::Window::gamepads())
-    devices.push_back({haptics::DeviceSpec{Kind::kGamepad, pad.id}.text(), "Gamepad " + std::to_string(pad.id) + " (" + pad.name + ")",
-                       DeskInput::help(Kind::kGamepad), true});
+    devices.push_back({haptics::DeviceSpec{Kind::kGamepad, pad.id}.text(),
+                       "Gamepad " + std::to_string(pad.id) + " (" + pad.name + ")", DeskInput::help(Kind::kGamepad),
+                       true});
   const haptics::falcon::UsbPresence falcons = haptics::falcon::find_falcons();
   for (int i = 0; i < std::min(falcons.count, haptics::kMaxDeviceIndex + 1); ++i)
-    devices.push_back({haptics::DeviceSpec{Kind::kFalcon, i}.text(), "Falcon " + std::to_string(i),
-                       "the Falcon's handle moves the tool and you feel the forces; it is homed when the task starts "
-                       "(move the grip all the way out and back in); its firmware must have been loaded since it was powered on "
-                       "(needle-sim run --device falcon --firmware FILE loads it)",
-                       true});
+    devices.push_back(
+        {haptics::DeviceSpec{Kind::kFalcon, i}.text(), "Falcon " + std::to_string(i),
+         "the Falcon's handle moves the tool and you feel the forces; it is homed when the task starts "
+         "(move the grip all the way out and back in); its firmware must have been loaded since it was powered on "
+         "(needle-sim run --device falcon --firmware FILE loads it)",
+         true});
   if (falcons.count == 0)
-    devices.push_back({haptics::DeviceSpec{Kind::kFalcon}.text(), falcons.error.empty() ? "Falcon (none connected)" : "Falcon (USB not readable)",
-                       falcons.error.empty() ? "no Falcon connected" : "the USB bus cannot be read: " + falcons.error, false});
+    devices.push_back({haptics::DeviceSpec{Kind::kFalcon}.text(),
+                       falcons.error.empty() ? "Falcon (none connected)" : "Falcon (USB not readable)",
+                       falcons.error.empty() ? "no Falcon connected" : "the USB bus cannot be read: " + falcons.error,
+                       false});
   return devices;
 }
 
@@ -195,7 +210,8 @@ int run_start_screen(const StartScreenOptions& options) {
   SessionWindow window(window_options);
   StartScreen screen(options, settings);
   if (!loaded.notice.empty())
-    screen.state().notice = screen.state().notice.empty() ? loaded.notice : loaded.notice + "\n" + screen.state().notice;
+    screen.state().notice =
+        screen.state().notice.empty() ? loaded.notice : loaded.notice + "\n" + screen.state().notice;
   auto save = [&] {
     if (!loaded.writable) return;
     const engine::Extent size = window.window().framebuffer_extent();

@@ -2,7 +2,8 @@
 
 namespace needle::app {
 
-SyringeInput::SyringeInput(haptics::SyringeHandDevice& hand, haptics::DeviceSpec::Kind device, std::optional<int> gamepad)
+SyringeInput::SyringeInput(haptics::SyringeHandDevice& hand, haptics::DeviceSpec::Kind device,
+                           std::optional<int> gamepad)
     : hand_(hand), mouse_(device == haptics::DeviceSpec::Kind::kMouse), gamepad_(gamepad) {}
 
 void SyringeInput::frame(engine::Window& window, bool pointer_on_panel) {

@@ -2,10 +2,10 @@
 
 #include <unistd.h>
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <ctime>
-#include <cctype>
 
 #include "app/default_db.hpp"
 #include "app/patient_meshes.hpp"
@@ -16,12 +16,12 @@
 #include "engine/ui_pass.hpp"
 #include "haptics/safety/fault_cause.hpp"
 #include "io/file_write.hpp"
-#include "training/tasks/patient_session.hpp"
-#include "ui/guidance_overlay.hpp"
-#include "ui/syringe_gauge.hpp"
 #include "training/sessions/postgres_connection.hpp"
 #include "training/sessions/session_export.hpp"
 #include "training/sessions/store_location.hpp"
+#include "training/tasks/patient_session.hpp"
+#include "ui/guidance_overlay.hpp"
+#include "ui/syringe_gauge.hpp"
 
 namespace needle::app {
 namespace fs = std::filesystem;
@@ -36,7 +36,8 @@ fs::path local_db(const TaskSessionOptions& options) {
 
 // A database location with its folder made, when it is a file: SQLite makes the file, not the folder.
 std::string with_folder(const fs::path& location) {
-  if (!training::is_postgres_uri(location.string()) && location.has_parent_path()) io::make_folder(location.parent_path());
+  if (!training::is_postgres_uri(location.string()) && location.has_parent_path())
+    io::make_folder(location.parent_path());
   return location.string();
 }
 
@@ -78,7 +79,8 @@ TaskSessionOptions with_task_settings(TaskSessionOptions options, const engine::
 
 std::string file_name_part(const std::string& name) {
   std::string part;
-  for (char c : name.substr(0, training::kMaxNameBytes)) part += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
+  for (char c : name.substr(0, training::kMaxNameBytes))
+    part += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
   return part.empty() ? "task" : part;
 }
 
@@ -117,9 +119,15 @@ TaskSession::TaskSession(TaskSessionOptions options)
                              options_.rig.device.text(), rig_->context()},
       loop_->samples(), [this](const haptics::TickSample& s) { feed_.consume(s); });
   // A practice run says so where the instructor reads what a session ran on.
-  new_session_ = {options_.trainee, task_.name, task_.title, task_.source,
-                  rig_->description() + (task_.practice ? " (practice)" : ""), recording_path_.string(),
-                  options_.station, options_.rig.session_uid, training::utc_timestamp()};
+  new_session_ = {options_.trainee,
+                  task_.name,
+                  task_.title,
+                  task_.source,
+                  rig_->description() + (task_.practice ? " (practice)" : ""),
+                  recording_path_.string(),
+                  options_.station,
+                  options_.rig.session_uid,
+                  training::utc_timestamp()};
   loop_->submit(haptics::LoopCommand::set_step(&rig_->step()));
   std::error_code ignored;
   fs::remove(options_.out_dir / "score.json", ignored);  // never an earlier run's score beside this run's pictures
@@ -133,9 +141,10 @@ TaskSession::TaskSession(TaskSessionOptions options)
             "): the session is kept in this station's file for needle-sim sync");
   for (const std::string& note : rig_->notes()) say.say("note: " + note);
   if (rig_->ticks() && tick_budget_ < *rig_->ticks())
-    say.say(formatted("note: the operator script runs %.1f s, past the latest end of the task (%.1f s: its steps' time "
-                      "limits plus %.0f s): the run stops there",
-                      *duration_s(), double(tick_budget_) / rig_->rate_hz(), training::kTaskEndMargin_s));
+    say.say(
+        formatted("note: the operator script runs %.1f s, past the latest end of the task (%.1f s: its steps' time "
+                  "limits plus %.0f s): the run stops there",
+                  *duration_s(), double(tick_budget_) / rig_->rate_hz(), training::kTaskEndMargin_s));
 }
 
 TaskSession::~TaskSession() {
@@ -183,12 +192,14 @@ std::optional<double> TaskSession::duration_s() const {
 }
 
 void TaskSession::run_offline(const std::function<void(size_t)>& on_step_end) {
-  if (!rig_->ticks()) throw std::logic_error("a session on " + options_.rig.device.text() + " runs only in real time, in a window");
+  if (!rig_->ticks())
+    throw std::logic_error("a session on " + options_.rig.device.text() + " runs only in real time, in a window");
   const uint64_t ticks = tick_budget_;
   loop_->submit(haptics::LoopCommand::start(ticks));
   // One tick and one recorder pass at a time, so a step's picture shows the tick that ended it.
   // With a server, the recording goes to it every RecordingUpload::kPeriod of session time.
-  const uint64_t upload_ticks = std::max<uint64_t>(1, uint64_t(rig_->rate_hz() * RecordingUpload::kPeriod.count() / 1000.0));
+  const uint64_t upload_ticks =
+      std::max<uint64_t>(1, uint64_t(rig_->rate_hz() * RecordingUpload::kPeriod.count() / 1000.0));
   for (uint64_t k = 0; k < ticks; ++k) {
     loop_->run_unpaced(1);
     recorder_->drain();
@@ -207,9 +218,7 @@ std::string TaskSession::start_realtime() {
   return line;
 }
 
-bool TaskSession::over() const {
-  return feed_.samples() >= tick_budget_ || (!rig_->ticks() && feed_.task_finished());
-}
+bool TaskSession::over() const { return feed_.samples() >= tick_budget_ || (!rig_->ticks() && feed_.task_finished()); }
 
 void TaskSession::stop_threads(bool ran_to_end) {
   if (loop_) loop_->shutdown();
@@ -254,9 +263,10 @@ const training::SessionResult* TaskSession::finish() {
   stop_threads(rig_->can_complete());  // a replay that stays incomplete records that it did
   if (!recorder_->error().empty()) throw std::runtime_error("recording stopped: " + recorder_->error());
   if (recorder_->dropped() > 0)
-    options_.messages.say(formatted("warning: the recorder fell behind and %llu ticks were dropped from the recording and "
-                                    "the score",
-                                    static_cast<unsigned long long>(recorder_->dropped())));
+    options_.messages.say(
+        formatted("warning: the recorder fell behind and %llu ticks were dropped from the recording and "
+                  "the score",
+                  static_cast<unsigned long long>(recorder_->dropped())));
   if (!rig_->can_complete()) {
     if (!store_once_under_way()) {
       drop_unstored();
@@ -328,8 +338,11 @@ void TaskSession::draw_panel(std::optional<size_t> step, const char* controls, c
     if (!result_) ui::draw_guidance({&task_, shown, training::vec3(last.needle_tip_m), scene_.camera});
     if (const haptics::SyringeServoStep* syringe = rig_->syringe_step(); syringe && !result_) {
       const auto axis = haptics::needle_axis(last);
-      ui::draw_syringe_gauge({last.syringe, haptics::syringe_stroke_m(syringe->params()), training::vec3(last.needle_tip_m),
-                              {axis[0], axis[1], axis[2]}, scene_.camera});
+      ui::draw_syringe_gauge({last.syringe,
+                              haptics::syringe_stroke_m(syringe->params()),
+                              training::vec3(last.needle_tip_m),
+                              {axis[0], axis[1], axis[2]},
+                              scene_.camera});
     }
   });
 }
@@ -337,10 +350,12 @@ void TaskSession::draw_panel(std::optional<size_t> step, const char* controls, c
 std::optional<engine::Section> task_section(const training::Task& task, engine::Section::Mode mode) {
   if (!task.section_plane) return std::nullopt;
   const training::Vec3 &p = task.section_plane->point, &n = task.section_plane->normal;
-  return engine::Section{mode, glm::vec3(float(p[0]), float(p[1]), float(p[2])), glm::vec3(float(n[0]), float(n[1]), float(n[2]))};
+  return engine::Section{mode, glm::vec3(float(p[0]), float(p[1]), float(p[2])),
+                         glm::vec3(float(n[0]), float(n[1]), float(n[2]))};
 }
 
-int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa, std::optional<engine::Section::Mode> section) {
+int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa,
+                      std::optional<engine::Section::Mode> section) {
   const fs::path out_dir = options.out_dir;
   TaskSession run(std::move(options));
   engine::GpuDevice device;
@@ -360,7 +375,9 @@ int run_task_headless(TaskSessionOptions options, engine::Extent size, int msaa,
       const engine::NeedleLoad needle = run.needle();
       engine::FrameParams params = scene.frame_params(&needle);
       if (ultrasound) ultrasound->draw_panel(needle, params.camera);
-      if (section) params.section = task_section(run.task(), *section).value_or(engine::section_through_needle(params.camera, &needle, *section));
+      if (section)
+        params.section = task_section(run.task(), *section)
+                             .value_or(engine::section_through_needle(params.camera, &needle, *section));
       params.overlay = ui.end_frame();
       if (ultrasound) ultrasound->add_to_frame(params, renderer, target.extent(), needle);
       renderer.draw(target, params, frame == 1 ? &image : nullptr);

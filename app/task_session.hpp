@@ -12,15 +12,15 @@
 #include <string>
 #include <vector>
 
-#include "engine/extent.hpp"
-#include "engine/scene_renderer.hpp"
 #include "app/messages.hpp"
 #include "app/recording_upload.hpp"
 #include "app/session_feed.hpp"
+#include "app/session_rig.hpp"
+#include "engine/extent.hpp"
 #include "engine/scene.hpp"
+#include "engine/scene_renderer.hpp"
 #include "haptics/realtime/haptic_loop.hpp"
 #include "haptics/recording/session_recorder.hpp"
-#include "app/session_rig.hpp"
 #include "training/sessions/session_store.hpp"
 #include "ui/trainee_panel.hpp"
 
@@ -37,8 +37,8 @@ struct TaskSessionOptions {
   std::filesystem::path task;  // unused for replay:FILE, which runs the task its recording keeps
   RigOptions rig;              // its out_dir and camera are set from here and the task's scene
   std::string trainee;
-  std::filesystem::path db;     // an SQLite file or a postgresql:// URI (app/default_db.hpp)
-  std::string station;          // the station's name, stored with the session
+  std::filesystem::path db;        // an SQLite file or a postgresql:// URI (app/default_db.hpp)
+  std::string station;             // the station's name, stored with the session
   std::filesystem::path local_db;  // with a server: this station's own file, where a session the
                                    // server missed is kept for sync (default: default_db())
   std::filesystem::path out_dir;

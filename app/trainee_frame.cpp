@@ -37,7 +37,8 @@ std::optional<engine::ScriptedSphere> script_target(const engine::GpuScene& scen
 
 }  // namespace
 
-FrameContent task_content(TaskSession& session, std::function<void()> panel, std::function<void(engine::Window&)> input) {
+FrameContent task_content(TaskSession& session, std::function<void()> panel,
+                          std::function<void(engine::Window&)> input) {
   auto started = std::make_shared<bool>(false);
   if (!panel) panel = [&session] { session.draw_panel(); };
   return {[&session, started](double) -> std::optional<engine::NeedleLoad> {
@@ -68,13 +69,15 @@ TraineeFrame::TraineeFrame(const engine::GpuDevice& device, const engine::Render
 }
 
 void TraineeFrame::set_fixed_render_scale(std::optional<float> scale) {
-  if (scale) renderer_.set_render_scale(target_, *scale);
-  else renderer_.set_render_scale(target_, auto_scale_ ? auto_scale_->scale() : 1.0f);
+  if (scale)
+    renderer_.set_render_scale(target_, *scale);
+  else
+    renderer_.set_render_scale(target_, auto_scale_ ? auto_scale_->scale() : 1.0f);
   fixed_scale_ = scale;
 }
 
-bool TraineeFrame::draw(engine::RenderTarget& target, engine::GpuScene& scene, const FrameContent& content,
-                        double t_s, engine::RgbaImage* capture) {
+bool TraineeFrame::draw(engine::RenderTarget& target, engine::GpuScene& scene, const FrameContent& content, double t_s,
+                        engine::RgbaImage* capture) {
   const Clock::time_point start = Clock::now();
   const std::optional<engine::NeedleLoad> needle = content.needle ? content.needle(t_s) : std::nullopt;
   const Clock::time_point needled = Clock::now();
@@ -89,8 +92,8 @@ bool TraineeFrame::draw(engine::RenderTarget& target, engine::GpuScene& scene, c
     ui_->begin_frame(target.extent(), dt);
     const auto& assets = scene.scene().assets;
     if (status_)
-      ui::draw_status_panel({device_.device_description(), assets.empty() ? "" : assets[0].name, renderer_.msaa_samples(),
-                             clock_.mean_frame_ms(), renderer_.render_scale()});
+      ui::draw_status_panel({device_.device_description(), assets.empty() ? "" : assets[0].name,
+                             renderer_.msaa_samples(), clock_.mean_frame_ms(), renderer_.render_scale()});
     if (content.panel) content.panel();
     if (content.views_panel) content.views_panel(needle, params.camera);
     params.overlay = ui_->end_frame();

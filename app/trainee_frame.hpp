@@ -93,7 +93,7 @@ class TraineeFrame {
   ContentCost cost_;
   const engine::RenderTarget& target_;
   std::optional<float> fixed_scale_;
-  bool status_ = false;  // the status panel shown
+  bool status_ = false;                        // the status panel shown
   std::optional<AutoRenderScale> auto_scale_;  // on a CPU device that can upscale
 };
 

@@ -42,7 +42,8 @@ void UltrasoundWindow::draw_panel(const engine::NeedleLoad& needle, const engine
     const engine::UltrasoundProbe& p = plan_.probe;
     const glm::dvec3 move = kStep_m * (double(keys.along) * p.lateral + double(keys.across) * p.elevation());
     // In the task probe's frame, so that the offset can be kept (app/probe_offset.hpp).
-    set_offset({offset_.along_m + glm::dot(move, task_probe_.lateral), offset_.across_m + glm::dot(move, task_probe_.elevation()),
+    set_offset({offset_.along_m + glm::dot(move, task_probe_.lateral),
+                offset_.across_m + glm::dot(move, task_probe_.elevation()),
                 offset_.turn_rad + double(keys.turn) * kTurn_rad});
   }
   const engine::UltrasoundProbe shown = probe(needle);
@@ -70,8 +71,8 @@ engine::RgbaImage UltrasoundWindow::picture(const engine::NeedleLoad& needle) {
   return engine::to_picture(view().image(), shown);
 }
 
-void UltrasoundWindow::add_to_frame(engine::FrameParams& params, const engine::SceneRenderer& renderer, engine::Extent frame,
-                                    const engine::NeedleLoad& needle) {
+void UltrasoundWindow::add_to_frame(engine::FrameParams& params, const engine::SceneRenderer& renderer,
+                                    engine::Extent frame, const engine::NeedleLoad& needle) {
   // None when neither the probe nor the needle moved: the image shown stays.
   if (engine::CommandRecorder image = view().record(probe(needle), &needle)) {
     params.before_pass = [before = std::move(params.before_pass), image](const engine::CommandBuffer& cmd) {

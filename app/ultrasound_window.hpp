@@ -36,7 +36,9 @@ class UltrasoundWindow {
   void set_offset(const ProbeOffset& offset);
   // Where the window goes: its corner `pivot` (0 to 1 of its size) at (x, y) pixels; by default
   // its left edge's middle at (10, half the height).
-  void place(float x, float y, float pivot_x, float pivot_y) { placement_ = ui::PanelPlacement{x, y, pivot_x, pivot_y}; }
+  void place(float x, float y, float pivot_x, float pivot_y) {
+    placement_ = ui::PanelPlacement{x, y, pivot_x, pivot_y};
+  }
   // Inside a UI frame: the panel and its keys (when no panel has the keyboard), and the probe over
   // the 3D view seen by `camera` (ui/probe_overlay.hpp).
   void draw_panel(const engine::NeedleLoad& needle, const engine::Camera& camera);
@@ -58,7 +60,7 @@ class UltrasoundWindow {
   uint32_t sweep_frames_ = kSweepFrames;
   std::unique_ptr<engine::UltrasoundView> view_;  // made when first shown
   engine::UltrasoundView& view();
-  std::optional<engine::ScreenRect> rect_;        // where the window kept room, this frame
+  std::optional<engine::ScreenRect> rect_;  // where the window kept room, this frame
   std::optional<ui::PanelPlacement> placement_;
 };
 

@@ -30,9 +30,9 @@ std::vector<std::string> lines_of(const std::string& detail) {
 
 void report_session(const Messages& messages, const VerifiedSession& v) {
   const training::SessionCheck& c = v.check;
-  const std::string head = formatted("session %lld: %s", static_cast<long long>(c.session_id),
-                                     c.outcome == training::CheckOutcome::kMismatch ? "MISMATCH"
-                                                                                     : training::check_outcome_name(c.outcome));
+  const std::string head =
+      formatted("session %lld: %s", static_cast<long long>(c.session_id),
+                c.outcome == training::CheckOutcome::kMismatch ? "MISMATCH" : training::check_outcome_name(c.outcome));
   if (c.outcome == training::CheckOutcome::kUnverifiable) {
     messages.say(head + ": " + c.detail);
   } else {
@@ -74,16 +74,18 @@ int write_verify_report(const VerifyOptions& options) {
     const training::SessionCheck& c = v.check;
     ++counts[size_t(c.outcome)];
     const std::vector<std::string> lines = lines_of(c.detail);
-    sessions.push_back({{"id", c.session_id},
-                        {"outcome", training::check_outcome_name(c.outcome)},
-                        {"stored_score", training::json_number(c.score)},
-                        {"digest", c.digest},
-                        {"differences", c.outcome == training::CheckOutcome::kMismatch ? lines : std::vector<std::string>{}},
-                        {"problem", c.outcome == training::CheckOutcome::kUnverifiable ? c.detail : ""},
-                        {"notes", v.notes},
-                        {"replay_s", v.replay_s}});
+    sessions.push_back(
+        {{"id", c.session_id},
+         {"outcome", training::check_outcome_name(c.outcome)},
+         {"stored_score", training::json_number(c.score)},
+         {"digest", c.digest},
+         {"differences", c.outcome == training::CheckOutcome::kMismatch ? lines : std::vector<std::string>{}},
+         {"problem", c.outcome == training::CheckOutcome::kUnverifiable ? c.detail : ""},
+         {"notes", v.notes},
+         {"replay_s", v.replay_s}});
     for (const std::string& line : lines)
-      csv += std::to_string(c.session_id) + "," + training::check_outcome_name(c.outcome) + "," + training::csv_field(line) + "\n";
+      csv += std::to_string(c.session_id) + "," + training::check_outcome_name(c.outcome) + "," +
+             training::csv_field(line) + "\n";
   }
   const double per_minute = seconds > 0.0 ? double(results.size()) / seconds * 60.0 : 0.0;
   const json report{{"db", training::shown_location(options.db)},

@@ -13,11 +13,11 @@
 namespace needle::app {
 
 struct VerifyOptions {
-  std::string db;                 // a file or a postgresql:// URI
-  std::optional<int64_t> session; // one session; nullopt: every complete session
-  std::filesystem::path out;      // verify.json and verify_mismatches.csv go here
-  int jobs = 1;                   // replays at once
-  Messages messages;              // a line per session and the totals
+  std::string db;                  // a file or a postgresql:// URI
+  std::optional<int64_t> session;  // one session; nullopt: every complete session
+  std::filesystem::path out;       // verify.json and verify_mismatches.csv go here
+  int jobs = 1;                    // replays at once
+  Messages messages;               // a line per session and the totals
 };
 
 // Verifies, says a line per session and the totals (sessions per minute), writes OUT/verify.json

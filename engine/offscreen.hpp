@@ -15,8 +15,8 @@ class GpuDevice;
 RgbaImage render_scene_offscreen(const GpuDevice& device, const Scene& scene, Extent extent,
                                  const RendererSettings& settings = {});
 // The model at the origin seen with the view's camera, lights and background (its assets unused).
-RgbaImage render_model_offscreen(const GpuDevice& device, const Model& model, Extent extent,
-                                 const Scene& view, const RendererSettings& settings = {});
+RgbaImage render_model_offscreen(const GpuDevice& device, const Model& model, Extent extent, const Scene& view,
+                                 const RendererSettings& settings = {});
 // A view that frames the model (framing_camera) under default_lights().
 Scene framing_view(const Model& model, Extent extent);
 

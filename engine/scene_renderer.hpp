@@ -102,8 +102,8 @@ struct RendererSettings {
 
 // What one pass of a frame cost, in milliseconds.
 struct PassCost {
-  double record_ms = 0.0;                // the CPU, recording its commands
-  std::optional<double> device_ms;       // the device, running them (SceneRenderer::set_device_timings)
+  double record_ms = 0.0;           // the CPU, recording its commands
+  std::optional<double> device_ms;  // the device, running them (SceneRenderer::set_device_timings)
 };
 
 // What drawing a frame cost, in milliseconds (docs/BENCHMARKS.md, "The trainee's frame").

@@ -18,9 +18,9 @@ struct ElasticMaterial {
 // Per-tissue parameters, from the scene file.
 struct TissueParams {
   ElasticMaterial material;
-  double radius_m = 0.01;      // ε: how wide a load spreads (stiffness-like radius)
-  double falloff = 5.0;        // support radius = falloff × ε
-  int lateral_loads = 2;       // loads spreading the lateral force along the inserted shaft
+  double radius_m = 0.01;  // ε: how wide a load spreads (stiffness-like radius)
+  double falloff = 5.0;    // support radius = falloff × ε
+  int lateral_loads = 2;   // loads spreading the lateral force along the inserted shaft
 };
 
 enum class NeedleContact { Free, Touching, Inserted };
@@ -32,8 +32,8 @@ struct NeedleLoad {
   glm::dvec3 axis{1.0, 0.0, 0.0};  // unit, from hub to tip (the thesis's x5)
   // Touching: the point of the rest surface under the tip. Inserted: where the needle entered.
   glm::dvec3 surface_point{0.0};
-  glm::dvec3 surface_normal{0.0, 0.0, 1.0};  // outward, at surface_point
-  double normal_force_N = 0.0;               // λ on the surface before puncture (reported, not needed for shape)
+  glm::dvec3 surface_normal{0.0, 0.0, 1.0};   // outward, at surface_point
+  double normal_force_N = 0.0;                // λ on the surface before puncture (reported, not needed for shape)
   glm::dvec3 lateral_force_on_tissue_N{0.0};  // inserted: the needle's lateral push on the tissue
 };
 

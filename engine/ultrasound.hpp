@@ -35,10 +35,10 @@ struct ScreenRect {
 // What a layer is to sound. The defaults are a generic soft tissue (the docs say why), used for
 // a layer whose tissue file gives no ultrasound parameters.
 struct EchoMaterial {
-  double impedance_MRayl = 1.62;             // Z: the interfaces' reflection, ((Z₂ − Z₁)/(Z₂ + Z₁))
-  double attenuation_dB_per_cm_MHz = 0.5;    // α, one way, proportional to the frequency
-  double echogenicity = 0.5;                 // mean backscatter amplitude, 0 (anechoic) to 1
-  double scatterer_density = 1.0;            // share of scatterer cells that hold one, (0, 1]
+  double impedance_MRayl = 1.62;           // Z: the interfaces' reflection, ((Z₂ − Z₁)/(Z₂ + Z₁))
+  double attenuation_dB_per_cm_MHz = 0.5;  // α, one way, proportional to the frequency
+  double echogenicity = 0.5;               // mean backscatter amplitude, 0 (anechoic) to 1
+  double scatterer_density = 1.0;          // share of scatterer cells that hold one, (0, 1]
 };
 
 // A layer's region, as the haptic tissue model has it: signed distances (φ < 0 inside) of
@@ -88,8 +88,8 @@ struct EchoNeedle {
 // needle's state (the same field the scene's tissue mesh is deformed by).
 struct EchoScene {
   static constexpr size_t kMaxLayers = 16;
-  static constexpr size_t kMaxGrids = 16;                      // distinct grids the layers use
-  static constexpr size_t kMaxGridValues = size_t(1) << 26;    // their nodes in all (128 MiB)
+  static constexpr size_t kMaxGrids = 16;                    // distinct grids the layers use
+  static constexpr size_t kMaxGridValues = size_t(1) << 26;  // their nodes in all (128 MiB)
   std::vector<EchoLayer> layers;
   std::optional<TissueParams> deformation;
   EchoNeedle needle;
@@ -118,9 +118,9 @@ UltrasoundProbe probe_following(const UltrasoundProbe& probe, const NeedleLoad& 
 UltrasoundProbe probe_on_skin(const EchoScene& scene, const UltrasoundProbe& probe, const glm::dvec3& above);
 
 struct UltrasoundSettings {
-  uint32_t lines = 256;     // scan lines, the image's width in pixels
-  uint32_t samples = 512;   // per line, its height
-  bool speckle = true;      // off: the scan-line model alone, blurred by the point spread function
+  uint32_t lines = 256;    // scan lines, the image's width in pixels
+  uint32_t samples = 512;  // per line, its height
+  bool speckle = true;     // off: the scan-line model alone, blurred by the point spread function
   double dynamic_range_dB = 60.0;
   double gain_dB = 0.0;
   // A deformed tissue's rest positions (where each sample's scatterer is) are found at nodes this

@@ -16,9 +16,12 @@ std::string read_bytes(const std::filesystem::path& file, std::uintmax_t max_byt
   std::error_code ec;
   const auto status = std::filesystem::status(file, ec);
   problem.clear();
-  if (!std::filesystem::exists(status)) problem = "file not found";
-  else if (std::filesystem::is_directory(status)) problem = "is a folder, not a file";
-  else if (!std::filesystem::is_regular_file(status)) problem = "not a regular file (a device or a pipe)";
+  if (!std::filesystem::exists(status))
+    problem = "file not found";
+  else if (std::filesystem::is_directory(status))
+    problem = "is a folder, not a file";
+  else if (!std::filesystem::is_regular_file(status))
+    problem = "not a regular file (a device or a pipe)";
   else if (const auto size = std::filesystem::file_size(file, ec); !ec && size > max_bytes)
     problem = too_large + " (" + std::to_string(size) + " bytes)";
   if (!problem.empty()) return {};
@@ -35,8 +38,10 @@ std::string read_bytes(const std::filesystem::path& file, std::uintmax_t max_byt
     in.read(chunk, std::streamsize(std::min<std::uintmax_t>(sizeof chunk, max_bytes + 1 - text.size())));
     text.append(chunk, size_t(in.gcount()));
   }
-  if (in.bad()) problem = "cannot be read";
-  else if (text.size() > max_bytes) problem = too_large;
+  if (in.bad())
+    problem = "cannot be read";
+  else if (text.size() > max_bytes)
+    problem = too_large;
   return problem.empty() ? text : std::string();
 }
 

@@ -61,8 +61,8 @@ inline std::string number_text(double x) {
 }
 
 // The ranges every format shares.
-inline constexpr Range kSessionTimeRange{0.0, kMaxSessionSeconds, false, "s"};        // a time within a session
-inline constexpr Range kSessionDurationRange{0.0, kMaxSessionSeconds, true, "s"};     // a length of time within one
+inline constexpr Range kSessionTimeRange{0.0, kMaxSessionSeconds, false, "s"};     // a time within a session
+inline constexpr Range kSessionDurationRange{0.0, kMaxSessionSeconds, true, "s"};  // a length of time within one
 inline constexpr Range kWorldCoordinateRange{-kWorldExtent_m, kWorldExtent_m, false, "m"};
 inline constexpr Range kDirectionComponentRange{-kMaxDirectionComponent, kMaxDirectionComponent, false, ""};
 

@@ -164,7 +164,8 @@ class StrictJsonReader {
   std::array<double, N> numbers_in(const json& value, const std::string& at, const Range& range) const {
     const std::array<double, N> v = numbers<N>(value, at);
     for (size_t k = 0; k < N; ++k)
-      if (!range.contains(v[k])) fail(at + "/" + std::to_string(k), "must be in " + range.text() + ", got " + number_text(v[k]));
+      if (!range.contains(v[k]))
+        fail(at + "/" + std::to_string(k), "must be in " + range.text() + ", got " + number_text(v[k]));
     return v;
   }
 
@@ -207,7 +208,8 @@ class StrictJsonReader {
   }
 
   // A path relative to `folder` that names an existing regular file, made canonical.
-  std::filesystem::path existing_file(const json& value, const std::string& at, const std::filesystem::path& folder) const {
+  std::filesystem::path existing_file(const json& value, const std::string& at,
+                                      const std::filesystem::path& folder) const {
     const std::filesystem::path given = folder / string(value, at);
     std::error_code ec;
     const std::filesystem::path resolved = std::filesystem::weakly_canonical(given, ec);

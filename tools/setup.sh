@@ -14,7 +14,7 @@ packages=(
   libusb-1.0-0-dev libgtest-dev nlohmann-json3-dev liburdfdom-dev libsqlite3-dev sqlite3 libcli11-dev
   postgresql libpq-dev
   xvfb xauth xdotool
-  clang libclang-rt-14-dev llvm-14
+  clang libclang-rt-14-dev llvm-14 clang-format
 )
 
 missing=()

@@ -83,7 +83,8 @@ void filter_rows(CohortPanelState& state, bool& export_pressed) {
 void trainees_table(const training::CohortView& view, float height) {
   if (!ImGui::BeginTable("trainees", 8, kTableFlags, ImVec2(0, height))) return;
   ImGui::TableSetupScrollFreeze(0, 1);
-  for (const char* name : {"Trainee", "Task", "Attempts", "First pass", "Passed at", "Last score", "Best", "Time to target"})
+  for (const char* name :
+       {"Trainee", "Task", "Attempts", "First pass", "Passed at", "Last score", "Best", "Time to target"})
     ImGui::TableSetupColumn(name);
   ImGui::TableHeadersRow();
   for (const training::LearningCurve& c : view.curves) {
@@ -207,7 +208,8 @@ bool draw_cohort_panel(const training::CohortView& view, CohortPanelState& state
       // Every task's two plots in the height when they fit in it (a title and a legend line each).
       plot.height = std::max(5.0f * line, room.y / float(2 * tasks.size()) - 3.2f * line);
       for (const std::string& task : tasks)
-        for (const bool time_to_target : {false, true}) draw_plot(training::learning_curve_plot(view, task, time_to_target), plot);
+        for (const bool time_to_target : {false, true})
+          draw_plot(training::learning_curve_plot(view, task, time_to_target), plot);
       ImGui::EndChild();
     }
   }

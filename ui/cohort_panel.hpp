@@ -16,12 +16,12 @@
 namespace needle::ui {
 
 struct CohortPanelState {
-  training::CohortChoices choices;          // what the task, trainee and station filters offer
-  std::string task, trainee, station;       // chosen, "": any
-  char since[16] = "", until[16] = "";      // typed, YYYY-MM-DD, "": open
-  std::string error;                        // why the view shown is not the filter's (a date half typed, a store error)
-  bool show_export = false;                 // the export button (the window; the report exports by itself)
-  std::string export_message;               // what the last export did
+  training::CohortChoices choices;      // what the task, trainee and station filters offer
+  std::string task, trainee, station;   // chosen, "": any
+  char since[16] = "", until[16] = "";  // typed, YYYY-MM-DD, "": open
+  std::string error;                    // why the view shown is not the filter's (a date half typed, a store error)
+  bool show_export = false;             // the export button (the window; the report exports by itself)
+  std::string export_message;           // what the last export did
 
   // The filter the controls say (the dates as typed: cohort_view checks them).
   training::CohortFilter filter() const { return {task, trainee, station, since, until}; }

@@ -42,8 +42,8 @@ void draw_session(ImDrawList* draw, const PlotFrame& f, const DepthPlotPart& s, 
 
 // A plot against depth of `part` of session a (and b), the layer boundaries a's, the legend naming
 // the lines `line` and the marks `marks`.
-void draw_depth_plot(const training::ForceDepth& a, const training::ForceDepth* b, float height, PartOf part, const char* line,
-                     const char* marks) {
+void draw_depth_plot(const training::ForceDepth& a, const training::ForceDepth* b, float height, PartOf part,
+                     const char* line, const char* marks) {
   const DepthPlotPart pa = part(a);
   ImGui::Text("%s (%s)", pa.plot->title.c_str(), pa.plot->unit.c_str());
   const bool b_lines = b && !part(*b).plot->lines.empty();
@@ -92,13 +92,21 @@ void draw_depth_plot(const training::ForceDepth& a, const training::ForceDepth* 
 }  // namespace
 
 void draw_force_depth_plot(const training::ForceDepth& a, const training::ForceDepth* b, float height) {
-  draw_depth_plot(a, b, height, [](const training::ForceDepth& s) { return DepthPlotPart{&s.plot, &s.punctures}; },
-                  "force along the needle", "punctures");
+  draw_depth_plot(
+      a, b, height,
+      [](const training::ForceDepth& s) {
+        return DepthPlotPart{&s.plot, &s.punctures};
+      },
+      "force along the needle", "punctures");
 }
 
 void draw_plunger_pressure_plot(const training::ForceDepth& a, const training::ForceDepth* b, float height) {
-  draw_depth_plot(a, b, height, [](const training::ForceDepth& s) { return DepthPlotPart{&s.pressure, &s.losses}; },
-                  "plunger pressure", "losses of resistance");
+  draw_depth_plot(
+      a, b, height,
+      [](const training::ForceDepth& s) {
+        return DepthPlotPart{&s.pressure, &s.losses};
+      },
+      "plunger pressure", "losses of resistance");
 }
 
 }  // namespace needle::ui

@@ -61,7 +61,8 @@ class Painter {
     const float dx = pb->x - pa->x, dy = pb->y - pa->y, length = std::hypot(dx, dy);
     if (length < 1e-3f) return;
     const ImVec2 across(-dy / length * half, dx / length * half);
-    list_->AddLine(ImVec2(pa->x - across.x, pa->y - across.y), ImVec2(pa->x + across.x, pa->y + across.y), colour, 2.0f);
+    list_->AddLine(ImVec2(pa->x - across.x, pa->y - across.y), ImVec2(pa->x + across.x, pa->y + across.y), colour,
+                   2.0f);
     const float side = (across.x >= 0.0f) == label_left ? -1.0f : 1.0f;  // the tick's end on the label's side
     const ImVec2 end(pa->x + side * across.x, pa->y + side * across.y);
     if (!label_left) {
@@ -95,7 +96,8 @@ class Painter {
 
 void draw_axis(Painter& paint, const training::Task& task, const training::Marker& marker, const training::Vec3& tip) {
   if (marker.kind == training::MarkerKind::kAxis) {
-    paint.line(marker.position - kAxisBehind_m * marker.direction, marker.position + kAxisAhead_m * marker.direction, kAxisColour, 2.0f);
+    paint.line(marker.position - kAxisBehind_m * marker.direction, marker.position + kAxisAhead_m * marker.direction,
+               kAxisColour, 2.0f);
     paint.dot(marker.position, kAxisColour, 3.0f);
     return;
   }
@@ -113,8 +115,10 @@ void draw_depth_gauge(Painter& paint, const training::Task& task, int marker, co
   const auto at = [&](double depth) { return axis.position + depth * axis.direction; };
   char label[96];
   static const std::vector<training::LayerStart> kNone;  // a task built in code may leave layer_starts empty
-  for (const training::LayerStart& s : size_t(marker) < task.layer_starts.size() ? task.layer_starts[size_t(marker)] : kNone) {
-    if (s.layer < 0 || s.depth_m < -kAxisBehind_m || s.depth_m > kAxisAhead_m) continue;  // out of the tissue, off the drawn axis
+  for (const training::LayerStart& s :
+       size_t(marker) < task.layer_starts.size() ? task.layer_starts[size_t(marker)] : kNone) {
+    if (s.layer < 0 || s.depth_m < -kAxisBehind_m || s.depth_m > kAxisAhead_m)
+      continue;                                                            // out of the tissue, off the drawn axis
     const double mm = std::abs(s.depth_m) < 5e-4 ? 0.0 : s.depth_m * 1e3;  // no "-0 mm" at the skin
     if (task.hide_layer_names)
       std::snprintf(label, sizeof label, "%.0f mm", mm);
@@ -161,13 +165,15 @@ void draw_guidance(const GuidanceView& view) {
     // With a gauge, the target's label gives its depth along the gauge's axis.
     const training::Vec3& target = task.markers[g.target].position;
     char label[48] = "target";
-    if (gauge) std::snprintf(label, sizeof label, "target %.0f mm", depth_along(task.markers[g.depth_gauge], target) * 1e3);
+    if (gauge)
+      std::snprintf(label, sizeof label, "target %.0f mm", depth_along(task.markers[g.depth_gauge], target) * 1e3);
     paint.ring(target, kTargetColour, 9.0f, label);
     paint.cross(target, kTargetColour, 4.0f);
   }
   if (g.landmarks && task.landmarks) draw_landmarks(paint, *task.landmarks);
   if (g.normal_markers >= 0) {
-    for (const training::Vec3& p : normal_marker_positions(task, task.markers[g.normal_markers], view.tip)) paint.dot(p, kNormal, 5.0f);
+    for (const training::Vec3& p : normal_marker_positions(task, task.markers[g.normal_markers], view.tip))
+      paint.dot(p, kNormal, 5.0f);
   }
 }
 

@@ -16,7 +16,7 @@ namespace needle::ui {
 struct GuidanceView {
   const training::Task* task = nullptr;
   size_t step = 0;
-  training::Vec3 tip{};  // the needle tip, world frame (the markers' frame)
+  training::Vec3 tip{};   // the needle tip, world frame (the markers' frame)
   engine::Camera camera;  // the 3D view's, over the whole ImGui display
 };
 

@@ -7,8 +7,8 @@
 
 namespace needle::ui {
 
-engine::RgbaImage panel_picture(const engine::GpuDevice& device, engine::Extent extent, const std::function<void()>& draw,
-                                const PictureScene* picture, int msaa_samples) {
+engine::RgbaImage panel_picture(const engine::GpuDevice& device, engine::Extent extent,
+                                const std::function<void()>& draw, const PictureScene* picture, int msaa_samples) {
   engine::HeadlessTarget target(device, extent);
   engine::SceneRenderer renderer(device, target, {msaa_samples});
   engine::GpuScene scene = picture ? engine::GpuScene(renderer, picture->scene)

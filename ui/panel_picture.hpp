@@ -20,7 +20,8 @@ struct PictureScene {
 };
 
 // Two frames are drawn, since ImGui fits auto-sized windows on the first; the second is read back.
-engine::RgbaImage panel_picture(const engine::GpuDevice& device, engine::Extent extent, const std::function<void()>& draw,
-                                const PictureScene* scene = nullptr, int msaa_samples = 1);
+engine::RgbaImage panel_picture(const engine::GpuDevice& device, engine::Extent extent,
+                                const std::function<void()>& draw, const PictureScene* scene = nullptr,
+                                int msaa_samples = 1);
 
 }  // namespace needle::ui

@@ -77,7 +77,8 @@ std::vector<PlotLabel> plot_frame_labels(const PlotFrame& f, const std::string& 
 
 void draw_plot_frame(ImDrawList* draw, const PlotFrame& f, const std::string& x_label, bool whole_x) {
   draw->AddRectFilled(f.p0, f.p1, IM_COL32(22, 22, 28, 255));
-  for (double v : training::axis_ticks(f.y_lo, f.y_hi, 4)) draw->AddLine(ImVec2(f.p0.x, f.sy(v)), ImVec2(f.p1.x, f.sy(v)), kPlotGrid);
+  for (double v : training::axis_ticks(f.y_lo, f.y_hi, 4))
+    draw->AddLine(ImVec2(f.p0.x, f.sy(v)), ImVec2(f.p1.x, f.sy(v)), kPlotGrid);
   for (double t : training::axis_ticks(f.x_lo, f.x_hi, 8)) {
     if (whole_x && t != std::round(t)) continue;
     draw->AddLine(ImVec2(f.sx(t), f.p1.y), ImVec2(f.sx(t), f.p1.y + 4.0f), kPlotAxis);
@@ -106,7 +107,8 @@ std::vector<std::pair<PlotLabel, ImU32>> point_labels(const PlotFrame& f, const 
   return out;
 }
 
-std::vector<PlotLabel> line_labels(const PlotFrame& f, const std::vector<float>& at_x, const std::vector<std::string>& texts) {
+std::vector<PlotLabel> line_labels(const PlotFrame& f, const std::vector<float>& at_x,
+                                   const std::vector<std::string>& texts) {
   const float line = ImGui::GetTextLineHeight();
   const int rows = std::max(1, int((f.p1.y - f.p0.y) / line));
   std::vector<std::vector<PlotLabel>> placed(static_cast<size_t>(rows));
@@ -133,14 +135,20 @@ void dashed_vertical(ImDrawList* draw, float x, float top, float bottom, ImU32 c
 
 LineStyle trainee_style(size_t k) {
   // Eight hues far enough apart to tell trainees apart on the dark plot.
-  static const ImU32 kHues[] = {IM_COL32(110, 190, 255, 255), IM_COL32(255, 160, 70, 255), IM_COL32(120, 220, 140, 255),
-                                IM_COL32(240, 90, 120, 255),  IM_COL32(200, 150, 255, 255), IM_COL32(240, 230, 90, 255),
+  static const ImU32 kHues[] = {IM_COL32(110, 190, 255, 255), IM_COL32(255, 160, 70, 255),
+                                IM_COL32(120, 220, 140, 255), IM_COL32(240, 90, 120, 255),
+                                IM_COL32(200, 150, 255, 255), IM_COL32(240, 230, 90, 255),
                                 IM_COL32(90, 220, 220, 255),  IM_COL32(200, 200, 200, 255)};
   constexpr size_t hues = std::size(kHues);
   static_assert(hues * 3 == kTraineeStyles);
   const size_t style = (k / hues) % 3;
-  return {kHues[k % hues], style == 0 ? Dash::kSolid : style == 1 ? Dash::kDashed : Dash::kDotted,
-          style == 0 ? Mark::kCircle : style == 1 ? Mark::kSquare : Mark::kTriangle};
+  return {kHues[k % hues],
+          style == 0   ? Dash::kSolid
+          : style == 1 ? Dash::kDashed
+                       : Dash::kDotted,
+          style == 0   ? Mark::kCircle
+          : style == 1 ? Mark::kSquare
+                       : Mark::kTriangle};
 }
 
 LineStyle session_line_style(const ImU32 (&colours)[2], size_t k) {
@@ -163,8 +171,8 @@ void draw_styled_line(ImDrawList* draw, const std::vector<ImVec2>& points, const
         const float step = std::min(length - s, drawing ? on - phase : on + off - phase);
         if (drawing) {
           const float t0 = s / length, t1 = (s + step) / length;
-          draw->AddLine(ImVec2(a.x + (b.x - a.x) * t0, a.y + (b.y - a.y) * t0), ImVec2(a.x + (b.x - a.x) * t1, a.y + (b.y - a.y) * t1),
-                        style.colour, width);
+          draw->AddLine(ImVec2(a.x + (b.x - a.x) * t0, a.y + (b.y - a.y) * t0),
+                        ImVec2(a.x + (b.x - a.x) * t1, a.y + (b.y - a.y) * t1), style.colour, width);
         }
         s += step;
         phase = std::fmod(phase + step, on + off);
@@ -177,12 +185,15 @@ void draw_styled_line(ImDrawList* draw, const std::vector<ImVec2>& points, const
 void draw_mark(ImDrawList* draw, ImVec2 at, const LineStyle& style) {
   const float r = 3.5f;
   switch (style.mark) {
-    case Mark::kNone: return;
-    case Mark::kCircle: return draw->AddCircleFilled(at, r, style.colour);
-    case Mark::kSquare: return draw->AddRectFilled(ImVec2(at.x - r, at.y - r), ImVec2(at.x + r, at.y + r), style.colour);
+    case Mark::kNone:
+      return;
+    case Mark::kCircle:
+      return draw->AddCircleFilled(at, r, style.colour);
+    case Mark::kSquare:
+      return draw->AddRectFilled(ImVec2(at.x - r, at.y - r), ImVec2(at.x + r, at.y + r), style.colour);
     case Mark::kTriangle:
-      return draw->AddTriangleFilled(ImVec2(at.x, at.y - r - 0.5f), ImVec2(at.x + r + 0.5f, at.y + r), ImVec2(at.x - r - 0.5f, at.y + r),
-                                     style.colour);
+      return draw->AddTriangleFilled(ImVec2(at.x, at.y - r - 0.5f), ImVec2(at.x + r + 0.5f, at.y + r),
+                                     ImVec2(at.x - r - 0.5f, at.y + r), style.colour);
   }
 }
 
@@ -203,7 +214,9 @@ namespace {
 // A legend swatch: a plain line's filled square, or a piece of a styled line with its mark.
 constexpr float kSquareSwatch = 12.0f, kLineSwatch = 26.0f;
 
-float swatch_width(const LineStyle& s) { return s.dash == Dash::kSolid && s.mark == Mark::kNone ? kSquareSwatch : kLineSwatch; }
+float swatch_width(const LineStyle& s) {
+  return s.dash == Dash::kSolid && s.mark == Mark::kNone ? kSquareSwatch : kLineSwatch;
+}
 
 // Each entry's width as drawn: the swatch, ImGui's spacing, the name.
 std::vector<float> entry_widths(const std::vector<LegendEntry>& entries) {
@@ -217,14 +230,16 @@ std::vector<float> entry_widths(const std::vector<LegendEntry>& entries) {
 
 int plot_legend_rows(const std::vector<LegendEntry>& entries) {
   if (entries.empty()) return 0;
-  return legend_rows(entry_widths(entries), ImGui::GetContentRegionAvail().x, ImGui::GetStyle().ItemSpacing.x).back() + 1;
+  return legend_rows(entry_widths(entries), ImGui::GetContentRegionAvail().x, ImGui::GetStyle().ItemSpacing.x).back() +
+         1;
 }
 
 void draw_plot_legend(const PlotFrame& f, const std::vector<LegendEntry>& entries) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRect(f.p0, f.p1, kPlotAxis);
   ImGui::Dummy(ImVec2(f.width, f.height));
-  const std::vector<int> rows = legend_rows(entry_widths(entries), ImGui::GetContentRegionAvail().x, ImGui::GetStyle().ItemSpacing.x);
+  const std::vector<int> rows =
+      legend_rows(entry_widths(entries), ImGui::GetContentRegionAvail().x, ImGui::GetStyle().ItemSpacing.x);
   for (size_t i = 0; i < entries.size(); ++i) {
     if (i > 0 && rows[i] == rows[i - 1]) ImGui::SameLine();
     const ImVec2 at = ImGui::GetCursorScreenPos();
@@ -234,7 +249,8 @@ void draw_plot_legend(const PlotFrame& f, const std::vector<LegendEntry>& entrie
       draw->AddRectFilled(ImVec2(at.x, at.y + 4.0f), ImVec2(at.x + 10.0f, at.y + 12.0f), style.colour);
     } else {
       const float y = at.y + 8.0f;
-      draw_styled_line(draw, {ImVec2(at.x, y), ImVec2(at.x + w - 2.0f, y)}, LineStyle{style.colour, style.dash, Mark::kNone}, 1.5f);
+      draw_styled_line(draw, {ImVec2(at.x, y), ImVec2(at.x + w - 2.0f, y)},
+                       LineStyle{style.colour, style.dash, Mark::kNone}, 1.5f);
       draw_mark(draw, ImVec2(at.x + 0.5f * (w - 2.0f), y), style);
     }
     ImGui::Dummy(ImVec2(w, 12.0f));

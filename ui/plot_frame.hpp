@@ -55,7 +55,8 @@ void draw_plot_frame(ImDrawList* draw, const PlotFrame& frame, const std::string
 // from its top: each beside its line, on the right, or on the left where it would pass the plot's
 // right edge, in the first row where it overlaps no label before it. A label no row has room for is
 // left out (its line stays); none overlaps another or leaves the plot.
-std::vector<PlotLabel> line_labels(const PlotFrame& frame, const std::vector<float>& at_x, const std::vector<std::string>& texts);
+std::vector<PlotLabel> line_labels(const PlotFrame& frame, const std::vector<float>& at_x,
+                                   const std::vector<std::string>& texts);
 
 // A label of a point of the plot (a puncture): its text, where the point is, the label's colour.
 struct PointLabel {

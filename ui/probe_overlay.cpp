@@ -28,14 +28,13 @@ void draw_probe(const engine::UltrasoundProbe& probe, const engine::Camera& came
   const glm::dvec3 half_face = 0.5 * kProbeFaceThickness_m * probe.elevation();
   const glm::dvec3 depth = probe.depth_m * probe.direction;
   // The imaged plane: the face's centre line down to the imaging depth.
-  const std::array<std::optional<ImVec2>, 4> plane{screen(probe.position - half_width), screen(probe.position + half_width),
-                                                   screen(probe.position + half_width + depth),
-                                                   screen(probe.position - half_width + depth)};
+  const std::array<std::optional<ImVec2>, 4> plane{
+      screen(probe.position - half_width), screen(probe.position + half_width),
+      screen(probe.position + half_width + depth), screen(probe.position - half_width + depth)};
   // The face: the array's width by the housing's thickness, on the skin.
-  const std::array<std::optional<ImVec2>, 4> face{screen(probe.position - half_width - half_face),
-                                                  screen(probe.position + half_width - half_face),
-                                                  screen(probe.position + half_width + half_face),
-                                                  screen(probe.position - half_width + half_face)};
+  const std::array<std::optional<ImVec2>, 4> face{
+      screen(probe.position - half_width - half_face), screen(probe.position + half_width - half_face),
+      screen(probe.position + half_width + half_face), screen(probe.position - half_width + half_face)};
   ImDrawList* list = ImGui::GetBackgroundDrawList();
   const auto quad = [&](const std::array<std::optional<ImVec2>, 4>& q, ImU32 fill, ImU32 edge, float thickness) {
     for (const auto& p : q)

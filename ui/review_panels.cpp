@@ -5,10 +5,10 @@
 #include <cstdio>
 #include <string>
 
+#include "training/scoring/metric_fields.hpp"
 #include "ui/review_plot.hpp"
 #include "ui/score_breakdown.hpp"
 #include "ui/wrapped_text.hpp"
-#include "training/scoring/metric_fields.hpp"
 
 namespace needle::ui {
 namespace {
@@ -55,7 +55,7 @@ void header_lines(const training::SessionReview& r) {
   ImGui::TextWrapped("Session %lld: %s, %s", static_cast<long long>(i.id), i.trainee.c_str(),
                      i.task_title.empty() ? i.task.c_str() : i.task_title.c_str());
   wrapped_text(kDim, "started %s   device %s   %.1f s", i.started_at.c_str(), i.device.empty() ? "-" : i.device.c_str(),
-                     i.duration_s);
+               i.duration_s);
   if (!i.complete) {
     wrapped_text(kWarn, "INCOMPLETE: the run ended before the task did; no score, no metrics stored");
   } else {
@@ -70,7 +70,8 @@ void header_lines(const training::SessionReview& r) {
   // The device holding the force back is said, never left silent (docs/SCORING.md, "Forces").
   const double limited = r.stored.overall.force_limited_s;
   if (limited > 0.0)
-    wrapped_text(kWarn, "the device held the force back at its limit for %.1f s: the hand felt less than the scene's", limited);
+    wrapped_text(kWarn, "the device held the force back at its limit for %.1f s: the hand felt less than the scene's",
+                 limited);
 }
 
 void steps_table(const training::StoredSession& s, bool layered) {
@@ -127,9 +128,11 @@ void recording_line(const training::SessionReview& r) {
     return;
   }
   const haptics::RecordingEnd& end = r.recording_end;
-  const char* note = !end.checksummed ? " (older format, no checksums)" : !end.closed ? " (cut short: read up to its last whole block)" : "";
+  const char* note = !end.checksummed ? " (older format, no checksums)"
+                     : !end.closed    ? " (cut short: read up to its last whole block)"
+                                      : "";
   wrapped_text(kDim, "recording %s: %zu samples, %.2f to %.2f s%s", r.recording_file.filename().c_str(),
-                     r.states.size(), r.start_s(), r.end_s(), note);
+               r.states.size(), r.start_s(), r.end_s(), note);
   ImGui::TextColored(r.loop.degraded() ? kWarn : kDim, "%s", training::describe(r.loop).c_str());
 }
 
@@ -169,25 +172,30 @@ bool begin_panel(const char* title, const PanelRect& at, bool* open) {
   ImGui::SetNextWindowSize(at.size, ImGuiCond_Always);
   ImGui::SetNextWindowBgAlpha(0.92f);
   return ImGui::Begin(title, open,
-                      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+                      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                          ImGuiWindowFlags_NoSavedSettings);
 }
 
-void draw_session_table(const std::vector<training::SessionInfo>& sessions, SessionTableState& state, const PanelRect& at) {
+void draw_session_table(const std::vector<training::SessionInfo>& sessions, SessionTableState& state,
+                        const PanelRect& at) {
   if (begin_panel("Sessions", at)) {
     ImGui::SetNextItemWidth(-1.0f);
-    ImGui::InputTextWithHint("##filter", "filter: words in trainee, task, date, device, passed/failed/incomplete, verified/mismatch/unverified; -word excludes",
+    ImGui::InputTextWithHint("##filter",
+                             "filter: words in trainee, task, date, device, passed/failed/incomplete, "
+                             "verified/mismatch/unverified; -word excludes",
                              state.filter, sizeof state.filter);
     const ImGuiTableFlags flags = ImGuiTableFlags_Sortable | ImGuiTableFlags_SortMulti | ImGuiTableFlags_RowBg |
                                   ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX | ImGuiTableFlags_ScrollY |
                                   ImGuiTableFlags_SizingFixedFit;
     if (ImGui::BeginTable("sessions", 9, flags)) {
       ImGui::TableSetupScrollFreeze(0, 1);
-      ImGui::TableSetupColumn("ID", ImGuiTableColumnFlags_DefaultSort | ImGuiTableColumnFlags_PreferSortDescending, 0.0f,
-                              ImGuiID(training::SessionColumn::kId));
+      ImGui::TableSetupColumn("ID", ImGuiTableColumnFlags_DefaultSort | ImGuiTableColumnFlags_PreferSortDescending,
+                              0.0f, ImGuiID(training::SessionColumn::kId));
       ImGui::TableSetupColumn("Trainee", 0, 0.0f, ImGuiID(training::SessionColumn::kTrainee));
       ImGui::TableSetupColumn("Task", 0, 0.0f, ImGuiID(training::SessionColumn::kTask));
       ImGui::TableSetupColumn("Date (UTC)", 0, 0.0f, ImGuiID(training::SessionColumn::kDate));
-      ImGui::TableSetupColumn("Score", ImGuiTableColumnFlags_PreferSortDescending, 0.0f, ImGuiID(training::SessionColumn::kScore));
+      ImGui::TableSetupColumn("Score", ImGuiTableColumnFlags_PreferSortDescending, 0.0f,
+                              ImGuiID(training::SessionColumn::kScore));
       ImGui::TableSetupColumn("Duration", 0, 0.0f, ImGuiID(training::SessionColumn::kDuration));
       ImGui::TableSetupColumn("Result", 0, 0.0f, ImGuiID(training::SessionColumn::kResult));
       ImGui::TableSetupColumn("Check", 0, 0.0f, ImGuiID(training::SessionColumn::kCheck));
@@ -197,7 +205,8 @@ void draw_session_table(const std::vector<training::SessionInfo>& sessions, Sess
         state.sort.clear();
         for (int i = 0; i < specs->SpecsCount; ++i) {
           const ImGuiTableColumnSortSpecs& s = specs->Specs[i];
-          state.sort.push_back({training::SessionColumn(s.ColumnUserID), s.SortDirection == ImGuiSortDirection_Descending});
+          state.sort.push_back(
+              {training::SessionColumn(s.ColumnUserID), s.SortDirection == ImGuiSortDirection_Descending});
         }
         specs->SpecsDirty = false;
       }
@@ -208,7 +217,8 @@ void draw_session_table(const std::vector<training::SessionInfo>& sessions, Sess
         ImGui::TableNextColumn();
         char id[24];
         std::snprintf(id, sizeof id, "%lld", static_cast<long long>(s.id));
-        if (ImGui::Selectable(id, s.id == state.selected, ImGuiSelectableFlags_SpanAllColumns | ImGuiSelectableFlags_AllowItemOverlap))
+        if (ImGui::Selectable(id, s.id == state.selected,
+                              ImGuiSelectableFlags_SpanAllColumns | ImGuiSelectableFlags_AllowItemOverlap))
           state.selected = s.id;
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(s.trainee.c_str());
@@ -230,7 +240,9 @@ void draw_session_table(const std::vector<training::SessionInfo>& sessions, Sess
         ImGui::TableNextColumn();
         if (s.complete) {  // an incomplete session has no score to verify
           const training::Verification v = training::verification(s);
-          ImGui::TextColored(v == training::Verification::kVerified ? kGood : v == training::Verification::kMismatch ? kBad : kDim,
+          ImGui::TextColored(v == training::Verification::kVerified   ? kGood
+                             : v == training::Verification::kMismatch ? kBad
+                                                                      : kDim,
                              "%s", training::verification_word(v));
         }
         ImGui::TableNextColumn();
@@ -305,13 +317,14 @@ bool draw_replay_bar(const training::SessionReview& r, double& t, bool playing, 
   return playing;
 }
 
-void draw_comparison(const training::SessionReview& a, const training::SessionReview& b, const PanelRect& at, bool* open,
-                     TimeSpan* span) {
+void draw_comparison(const training::SessionReview& a, const training::SessionReview& b, const PanelRect& at,
+                     bool* open, TimeSpan* span) {
   if (begin_panel("Compare A and B", at, open)) {
     const training::SessionInfo &ia = a.stored.info, &ib = b.stored.info;
     ImGui::Text("A: session %lld, %s, %s", static_cast<long long>(ia.id), ia.trainee.c_str(), ia.task.c_str());
     ImGui::Text("B: session %lld, %s, %s", static_cast<long long>(ib.id), ib.trainee.c_str(), ib.task.c_str());
-    if (ImGui::BeginTable("compare", 4, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+    if (ImGui::BeginTable("compare", 4,
+                          ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
       ImGui::TableSetupColumn("session");
       ImGui::TableSetupColumn("A");
       ImGui::TableSetupColumn("B");
@@ -328,7 +341,8 @@ void draw_comparison(const training::SessionReview& a, const training::SessionRe
         ImGui::TableNextColumn();
         value_cell(vb - va, decimals);
       };
-      row("score", ia.complete ? ia.score : training::kNotApplicable, ib.complete ? ib.score : training::kNotApplicable, 1);
+      row("score", ia.complete ? ia.score : training::kNotApplicable, ib.complete ? ib.score : training::kNotApplicable,
+          1);
       for (const MetricDisplay& d : shown_metrics(a.layered())) {
         const std::string label = std::string(d.shown.label) + " (" + d.shown.unit + ")";
         row(label.c_str(), shown_value(a.stored.overall, d), shown_value(b.stored.overall, d), d.shown.decimals);
@@ -358,13 +372,15 @@ void draw_comparison(const training::SessionReview& a, const training::SessionRe
 
 void draw_force_depth_window(const training::ForceDepth& a, const training::ForceDepth* b, const PanelRect& at) {
   if (begin_panel(a.plot.title.c_str(), at))
-    draw_force_depth_plot(a, b, std::max(80.0f, ImGui::GetContentRegionAvail().y - 2.0f * ImGui::GetTextLineHeightWithSpacing()));
+    draw_force_depth_plot(
+        a, b, std::max(80.0f, ImGui::GetContentRegionAvail().y - 2.0f * ImGui::GetTextLineHeightWithSpacing()));
   ImGui::End();
 }
 
 void draw_plunger_pressure_window(const training::ForceDepth& a, const training::ForceDepth* b, const PanelRect& at) {
   if (begin_panel(a.pressure.title.c_str(), at))
-    draw_plunger_pressure_plot(a, b, std::max(80.0f, ImGui::GetContentRegionAvail().y - 2.0f * ImGui::GetTextLineHeightWithSpacing()));
+    draw_plunger_pressure_plot(
+        a, b, std::max(80.0f, ImGui::GetContentRegionAvail().y - 2.0f * ImGui::GetTextLineHeightWithSpacing()));
   ImGui::End();
 }
 

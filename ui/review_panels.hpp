@@ -4,10 +4,10 @@
 // window and the headless report lay them out the same way.
 #pragma once
 
+#include <imgui.h>
+
 #include <string>
 #include <vector>
-
-#include <imgui.h>
 
 #include "training/sessions/session_review.hpp"
 #include "training/sessions/session_table.hpp"
@@ -27,18 +27,20 @@ bool begin_panel(const char* title, const PanelRect& at, bool* open = nullptr);
 
 struct SessionTableState {
   char filter[128] = "";
-  std::vector<training::SessionSort> sort{{training::SessionColumn::kId, true}};  // ImGui's sort specs, once it has them
-  int64_t selected = 0;  // session A, 0: none
-  int64_t compared = 0;  // session B, 0: none
+  std::vector<training::SessionSort> sort{
+      {training::SessionColumn::kId, true}};  // ImGui's sort specs, once it has them
+  int64_t selected = 0;                       // session A, 0: none
+  int64_t compared = 0;                       // session B, 0: none
 };
 
 // Click a row to review it; "B" in the last column picks the session to compare it with.
-void draw_session_table(const std::vector<training::SessionInfo>& sessions, SessionTableState& state, const PanelRect& at);
+void draw_session_table(const std::vector<training::SessionInfo>& sessions, SessionTableState& state,
+                        const PanelRect& at);
 
 struct DetailOptions {
-  double cursor_s = 0.0;         // the replay's time, drawn on the plots
-  bool show_export = false;      // the export button (the window; the report exports by itself)
-  std::string export_message;    // what the last export did
+  double cursor_s = 0.0;       // the replay's time, drawn on the plots
+  bool show_export = false;    // the export button (the window; the report exports by itself)
+  std::string export_message;  // what the last export did
   // The plots' time range, one for all of them; with it the panel has a row to type it and a
   // button back to the whole session, and the plots zoom and pan (ui/review_plot.hpp).
   TimeSpan* span = nullptr;

@@ -30,7 +30,8 @@ training::Series visible(const training::Series& s, const TimeSpan& span) {
   const auto last = std::upper_bound(first, s.t.end(), span.hi);
   const size_t i0 = size_t(std::max<std::ptrdiff_t>(first - s.t.begin() - 1, 0));
   const size_t i1 = std::min(size_t(last - s.t.begin()) + 1, s.t.size());
-  return {s.name, {s.t.begin() + std::ptrdiff_t(i0), s.t.begin() + std::ptrdiff_t(i1)},
+  return {s.name,
+          {s.t.begin() + std::ptrdiff_t(i0), s.t.begin() + std::ptrdiff_t(i1)},
           {s.v.begin() + std::ptrdiff_t(i0), s.v.begin() + std::ptrdiff_t(i1)}};
 }
 
@@ -48,7 +49,8 @@ void zoom_and_pan(const training::Plot& plot, TimeSpan& span, const TimeSpan& sh
     const double t = shown.lo + double(io.MousePos.x - p0.x) * seconds_per_pixel;
     span = zoomed(shown, whole, t, std::pow(0.8, double(io.MouseWheel)));  // a notch: a fifth narrower
   }
-  if (ImGui::IsItemActive() && io.MouseDelta.x != 0.0f) span = panned(shown, whole, -double(io.MouseDelta.x) * seconds_per_pixel);
+  if (ImGui::IsItemActive() && io.MouseDelta.x != 0.0f)
+    span = panned(shown, whole, -double(io.MouseDelta.x) * seconds_per_pixel);
   if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) span = {};
   ImGui::SetCursorScreenPos(back);
 }
@@ -99,7 +101,8 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
   }
   // The legend's rows past its first taken from the plot, when the height is the legend's too.
   const int more_rows = o.fit_legend ? std::max(0, plot_legend_rows(legend) - 1) : 0;
-  const PlotFrame f = plot_frame(x.lo, x.hi, y.lo, y.hi, o.height - float(more_rows) * ImGui::GetTextLineHeightWithSpacing());
+  const PlotFrame f =
+      plot_frame(x.lo, x.hi, y.lo, y.hi, o.height - float(more_rows) * ImGui::GetTextLineHeightWithSpacing());
   const ImVec2 p0 = f.p0, p1 = f.p1;
   if (o.span) zoom_and_pan(plot, *o.span, shown, whole, p0, p1);
   ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -117,7 +120,8 @@ void draw_plot(const training::Plot& plot, const PlotOptions& o) {
     draw->AddLine(ImVec2(p0.x, f.sy(g.value)), ImVec2(p1.x, f.sy(g.value)), kPlotGuide);
     const ImVec2 size = ImGui::CalcTextSize(g.label.c_str());
     const float above = f.sy(g.value) - size.y;  // below the line when it runs along the top
-    draw->AddText(ImVec2(p1.x - size.x - 2.0f, above < p0.y ? f.sy(g.value) + 1.0f : above), kPlotGuide, g.label.c_str());
+    draw->AddText(ImVec2(p1.x - size.x - 2.0f, above < p0.y ? f.sy(g.value) + 1.0f : above), kPlotGuide,
+                  g.label.c_str());
   }
   std::vector<ImVec2> points;
   for (const auto& [series, style] : in_span) {

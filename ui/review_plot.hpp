@@ -17,9 +17,9 @@ struct PlotOptions {
   // The height holds the legend's rows past its first too (a legend that wraps, as a class's
   // learning curves' does, takes them from the plot), so the whole stays in the room given.
   bool fit_legend = false;
-  std::optional<double> cursor_s;                // the replay's time
+  std::optional<double> cursor_s;                            // the replay's time
   const std::vector<training::StepResult>* steps = nullptr;  // their start times, as dashed lines
-  const training::Plot* other = nullptr;                   // session B's lines, drawn over (comparison)
+  const training::Plot* other = nullptr;                     // session B's lines, drawn over (comparison)
   // The time range shown, y scaled to what lies in it; over the plot the wheel zooms it about the
   // pointer, a drag pans it and a double click shows the whole plot again. Null: the whole plot.
   TimeSpan* span = nullptr;

@@ -1,8 +1,7 @@
 #include "ui/review_replay.hpp"
 
-#include <glm/glm.hpp>
-
 #include <cmath>
+#include <glm/glm.hpp>
 
 namespace needle::ui {
 

@@ -30,7 +30,8 @@ std::string component_label(const std::string& name) {
 
 void draw_score_breakdown(const std::vector<training::ScoreComponent>& components, int columns) {
   if (components.empty()) return;
-  if (!ImGui::BeginTable("breakdown", 2 * columns, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) return;
+  if (!ImGui::BeginTable("breakdown", 2 * columns, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp))
+    return;
   const ImVec4 dim(0.6f, 0.6f, 0.6f, 1.0f);
   for (size_t k = 0; k < components.size(); ++k) {
     const training::ScoreComponent& c = components[k];

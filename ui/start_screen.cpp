@@ -72,23 +72,33 @@ StartAction start_key(StartState& s, StartKey key, bool typing) {
     case StartKey::kDown:
       if (tasks) s.task = (s.task + 1) % tasks;
       break;
-    case StartKey::kLeft: step_device(s, -1); break;
-    case StartKey::kRight: step_device(s, 1); break;
+    case StartKey::kLeft:
+      step_device(s, -1);
+      break;
+    case StartKey::kRight:
+      step_device(s, 1);
+      break;
     case StartKey::kPageUp:
     case StartKey::kPageDown: {
       const auto& known = s.known_trainees;
       if (known.empty()) break;
       const auto at = std::find(known.begin(), known.end(), trainee_name(s));
-      const size_t i = at == known.end() ? 0
+      const size_t i = at == known.end()            ? 0
                        : key == StartKey::kPageDown ? (size_t(at - known.begin()) + 1) % known.size()
-                                                     : (size_t(at - known.begin()) + known.size() - 1) % known.size();
+                                                    : (size_t(at - known.begin()) + known.size() - 1) % known.size();
       set_trainee_name(s, known[i]);
       break;
     }
-    case StartKey::kTab: s.focus_name = true; break;
-    case StartKey::kPractice: s.practice = !s.practice; break;
-    case StartKey::kEnter: return try_start(s);
-    case StartKey::kEscape: return StartAction::kQuit;
+    case StartKey::kTab:
+      s.focus_name = true;
+      break;
+    case StartKey::kPractice:
+      s.practice = !s.practice;
+      break;
+    case StartKey::kEnter:
+      return try_start(s);
+    case StartKey::kEscape:
+      return StartAction::kQuit;
   }
   return StartAction::kNone;
 }
@@ -133,7 +143,8 @@ StartAction draw_start_screen(StartState& s) {
     for (size_t i = 0; i < s.tasks.size(); ++i) {
       const StartTask& t = s.tasks[i];
       ImGui::PushID(int(i));
-      if (ImGui::Selectable(t.title.empty() ? "(a task file that does not load)" : t.title.c_str(), s.task == i)) s.task = i;
+      if (ImGui::Selectable(t.title.empty() ? "(a task file that does not load)" : t.title.c_str(), s.task == i))
+        s.task = i;
       ImGui::Indent(em);
       if (!t.error.empty()) {
         ImGui::PushTextWrapPos(0.0f);

@@ -31,10 +31,10 @@ struct StartState {
   size_t task = 0;
   std::vector<StartDevice> devices;
   size_t device = 0;
-  std::string notice;        // under the buttons: a settings message, why a start failed
-  bool focus_name = false;   // put the keyboard in the name field on the next frame
-  bool leave_name = false;   // take it out of the name field on the next frame, keeping the name
-  bool practice = false;     // start the task as practice: its steps without time limits
+  std::string notice;       // under the buttons: a settings message, why a start failed
+  bool focus_name = false;  // put the keyboard in the name field on the next frame
+  bool leave_name = false;  // take it out of the name field on the next frame, keeping the name
+  bool practice = false;    // start the task as practice: its steps without time limits
 };
 
 enum class StartAction { kNone, kStart, kQuit };

@@ -34,5 +34,4 @@ struct StatusInfo {
 // Draws the panel into the current ImGui frame.
 void draw_status_panel(const StatusInfo& info);
 
-
 }  // namespace needle::ui

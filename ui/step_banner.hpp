@@ -1,7 +1,7 @@
 // The banner over the 3D view when a step ends (docs/SCORING.md, "The trainee panel"): for a few
 // seconds, "Step 2 of 5 timed out: insert" and why ("The 20 s limit passed; the step needed the tip
-// 25-35 mm deep along the planned axis, in the tissue, held 0.5 s."), or "completed" and what comes next. Worked out from the step
-// records and the newest state's time alone, so a picture taken as a step ends shows it too.
+// 25-35 mm deep along the planned axis, in the tissue, held 0.5 s."), or "completed" and what comes next. Worked out
+// from the step records and the newest state's time alone, so a picture taken as a step ends shows it too.
 #pragma once
 
 #include <optional>

@@ -69,7 +69,8 @@ void draw_syringe_gauge(const SyringeGaugeView& v) {
   };
   const double stroke = std::max(v.stroke_m, 1e-3), travel = std::clamp(y.travel_m, 0.0, stroke);
   const double nozzle = kHubBehindTip_m, barrel = nozzle + kNozzle_m, barrel_end = barrel + stroke + kStopper_m + 0.006;
-  const double stopper = barrel + (stroke - travel);  // the stopper's face on the fluid: it moves in as the plunger travels
+  const double stopper =
+      barrel + (stroke - travel);  // the stopper's face on the fluid: it moves in as the plunger travels
   quad(nozzle, barrel, 0.0025, kBarrel, true);
   quad(barrel, stopper, kBarrelRadius_m, y.fluid == 2 ? kAir : kSaline, true);
   quad(stopper, stopper + kStopper_m, kBarrelRadius_m, kStopperColour, true);
@@ -83,14 +84,18 @@ void draw_syringe_gauge(const SyringeGaugeView& v) {
   const auto middle = at(0.5 * (barrel + barrel_end), 0.0), edge = at(0.5 * (barrel + barrel_end), kBarrelRadius_m);
   if (!middle || !edge) return;
   char lines[3][64];
-  std::snprintf(lines[0], sizeof lines[0], "plunger %.0f mmHg (%.1f kPa)", y.pressure_Pa * kMmHgPerPa, y.pressure_Pa * 1e-3);
+  std::snprintf(lines[0], sizeof lines[0], "plunger %.0f mmHg (%.1f kPa)", y.pressure_Pa * kMmHgPerPa,
+                y.pressure_Pa * 1e-3);
   std::snprintf(lines[1], sizeof lines[1], "pressed %.1f N", y.thumb_force_N);
-  std::snprintf(lines[2], sizeof lines[2], "travel %.1f of %.0f mm (%s)", travel * 1e3, stroke * 1e3, y.fluid == 2 ? "air" : "saline");
+  std::snprintf(lines[2], sizeof lines[2], "travel %.1f of %.0f mm (%s)", travel * 1e3, stroke * 1e3,
+                y.fluid == 2 ? "air" : "saline");
   float width = 0.0f;
   for (const char* line : lines) width = std::max(width, ImGui::CalcTextSize(line).x);
-  const float line_height = ImGui::GetTextLineHeight(), reach = std::hypot(edge->x - middle->x, edge->y - middle->y) + 8.0f;
+  const float line_height = ImGui::GetTextLineHeight(),
+              reach = std::hypot(edge->x - middle->x, edge->y - middle->y) + 8.0f;
   const bool left = middle->x > 0.5f * display.x;
-  const float x = std::clamp(left ? middle->x - reach - width : middle->x + reach, 4.0f, std::max(4.0f, display.x - width - 4.0f));
+  const float x =
+      std::clamp(left ? middle->x - reach - width : middle->x + reach, 4.0f, std::max(4.0f, display.x - width - 4.0f));
   float y_px = std::clamp(middle->y - 1.5f * line_height, 4.0f, std::max(4.0f, display.y - 3.0f * line_height - 4.0f));
   for (const char* line : lines) {
     const ImVec2 p(x, y_px);

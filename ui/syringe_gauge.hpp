@@ -15,11 +15,11 @@ namespace needle::ui {
 inline constexpr double kHubBehindTip_m = 0.095;
 
 struct SyringeGaugeView {
-  haptics::SyringeSnapshot syringe;  // fluid 0: nothing is drawn
-  double stroke_m = 0.028;           // the plunger's travel when the syringe is empty
-  training::Vec3 tip{};              // the needle, world frame
+  haptics::SyringeSnapshot syringe;    // fluid 0: nothing is drawn
+  double stroke_m = 0.028;             // the plunger's travel when the syringe is empty
+  training::Vec3 tip{};                // the needle, world frame
   training::Vec3 axis{1.0, 0.0, 0.0};  // unit, hub to tip
-  engine::Camera camera;             // the 3D view's, over the whole ImGui display
+  engine::Camera camera;               // the 3D view's, over the whole ImGui display
 };
 
 void draw_syringe_gauge(const SyringeGaugeView& view);

@@ -36,8 +36,8 @@ float x_at(const Bar& b, double value, double lo, double hi) {
 
 // A fill from lo to `value`, inset, and a tick across the bar at `at`.
 void fill(const Bar& b, double from, double to, double lo, double hi, ImU32 colour, float inset = 3.0f) {
-  b.draw->AddRectFilled(ImVec2(x_at(b, from, lo, hi), b.origin.y + inset), ImVec2(x_at(b, to, lo, hi), b.origin.y + b.height - inset),
-                        colour);
+  b.draw->AddRectFilled(ImVec2(x_at(b, from, lo, hi), b.origin.y + inset),
+                        ImVec2(x_at(b, to, lo, hi), b.origin.y + b.height - inset), colour);
 }
 void tick(const Bar& b, double at, double lo, double hi, ImU32 colour, float thickness = 2.0f) {
   const float x = x_at(b, at, lo, hi);
@@ -55,7 +55,8 @@ void countdown_gauge(double left_s, double limit_s) {
   fill(b, 0.0, left_s, 0.0, limit_s, colour);
   end_bar(b);
   if (left_s <= kCountdownWarn_s)
-    wrapped_text(left_s <= kCountdownDanger_s ? kBadText : kWarnText, "%.0f s left of %.0f s", std::ceil(left_s), limit_s);
+    wrapped_text(left_s <= kCountdownDanger_s ? kBadText : kWarnText, "%.0f s left of %.0f s", std::ceil(left_s),
+                 limit_s);
   else
     wrapped_text(kPlainText, "%.0f s left of %.0f s", std::ceil(left_s), limit_s);
 }
@@ -67,8 +68,9 @@ void force_gauge(double force, double safe, double band_min, double band_max) {
   const bool over = force > safe;
   fill(b, 0.0, force, 0.0, full, over ? IM_COL32(220, 70, 60, 255) : IM_COL32(120, 200, 255, 255));
   if (band_max > band_min)
-    b.draw->AddRect(ImVec2(x_at(b, band_min, 0.0, full), b.origin.y), ImVec2(x_at(b, band_max, 0.0, full), b.origin.y + b.height),
-                    IM_COL32(255, 220, 80, 255), 0.0f, 0, 2.0f);
+    b.draw->AddRect(ImVec2(x_at(b, band_min, 0.0, full), b.origin.y),
+                    ImVec2(x_at(b, band_max, 0.0, full), b.origin.y + b.height), IM_COL32(255, 220, 80, 255), 0.0f, 0,
+                    2.0f);
   end_bar(b);
   if (over)
     wrapped_text(kBadText, "force at the hand %.2f N: OVER the safe %.1f N", force, safe);
@@ -80,8 +82,9 @@ void sideways_gauge(double sideways, double safe) {
   const double full = safe * 1.5;
   const double warn = kSidewaysWarnShare * safe, danger = kSidewaysDangerShare * safe;
   const Bar b = begin_bar();
-  const ImU32 colour = sideways >= danger ? IM_COL32(220, 70, 60, 255) : sideways >= warn ? IM_COL32(240, 150, 40, 255)
-                                                                                          : IM_COL32(120, 200, 255, 255);
+  const ImU32 colour = sideways >= danger ? IM_COL32(220, 70, 60, 255)
+                       : sideways >= warn ? IM_COL32(240, 150, 40, 255)
+                                          : IM_COL32(120, 200, 255, 255);
   fill(b, 0.0, sideways, 0.0, full, colour);
   tick(b, warn, 0.0, full, IM_COL32(240, 150, 40, 255));
   end_bar(b);
@@ -100,8 +103,9 @@ void distance_gauge(const training::Task& task, size_t step, const training::Ste
   fill(b, 0.0, cue.distance_m, 0.0, kFull_m, kEntryColour);
   tick(b, task.steps[step].condition.within_m, 0.0, kFull_m, IM_COL32(255, 255, 255, 255));
   end_bar(b);
-  wrapped_text(kPlainText, "to the %s %.1f mm (within %.0f mm)", cue.point == task.steps[step].guidance.target ? "target" : "point",
-              cue.distance_m * 1000.0, task.steps[step].condition.within_m * 1000.0);
+  wrapped_text(kPlainText, "to the %s %.1f mm (within %.0f mm)",
+               cue.point == task.steps[step].guidance.target ? "target" : "point", cue.distance_m * 1000.0,
+               task.steps[step].condition.within_m * 1000.0);
 }
 
 void axis_gauge(const training::StepCue& cue) {
@@ -123,13 +127,15 @@ void depth_gauge(const training::Task& task, size_t step, const training::StepCu
   double deepest = 0.04;
   if (!std::isnan(cue.band_max_m)) deepest = std::max(deepest, cue.band_max_m);
   if (s.guidance.target >= 0 && task.markers[size_t(cue.gauge)].kind == training::MarkerKind::kAxis)
-    deepest = std::max(deepest, training::gauge_depth(task.markers[size_t(cue.gauge)], task.markers[size_t(s.guidance.target)].position));
+    deepest = std::max(deepest, training::gauge_depth(task.markers[size_t(cue.gauge)],
+                                                      task.markers[size_t(s.guidance.target)].position));
   const double lo = -0.01, hi = deepest + 0.01;
   const Bar b = begin_bar();
   if (!std::isnan(cue.band_min_m)) fill(b, cue.band_min_m, cue.band_max_m, lo, hi, kBandColour, 0.0f);
   if (size_t(cue.gauge) < task.layer_starts.size())
     for (const training::LayerStart& start : task.layer_starts[size_t(cue.gauge)])
-      if (start.layer >= 0 && start.depth_m > lo && start.depth_m < hi) tick(b, start.depth_m, lo, hi, kLayerStartColour, 1.0f);
+      if (start.layer >= 0 && start.depth_m > lo && start.depth_m < hi)
+        tick(b, start.depth_m, lo, hi, kLayerStartColour, 1.0f);
   tick(b, 0.0, lo, hi, IM_COL32(150, 150, 160, 255), 1.0f);  // the surface, or the axis's origin
   tick(b, cue.depth_m, lo, hi, IM_COL32(255, 255, 255, 255), 3.0f);
   end_bar(b);
@@ -138,9 +144,10 @@ void depth_gauge(const training::Task& task, size_t step, const training::StepCu
     wrapped_text(kPlainText, "depth %.0f mm   band %.0f-%.0f mm", mm, cue.band_min_m * 1000.0, cue.band_max_m * 1000.0);
   else
     wrapped_text(kPlainText, "depth %.0f mm%s", mm,
-          mm >= 0                                                                     ? ""
-          : task.markers[size_t(cue.gauge)].kind == training::MarkerKind::kSurfaceNormal ? " (above the surface)"
-                                                                                      : " (before the planned path begins)");
+                 mm >= 0 ? ""
+                 : task.markers[size_t(cue.gauge)].kind == training::MarkerKind::kSurfaceNormal
+                     ? " (above the surface)"
+                     : " (before the planned path begins)");
 }
 
 }  // namespace needle::ui

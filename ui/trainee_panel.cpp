@@ -31,7 +31,8 @@ void metric_line(const char* name, double value, const char* unit, double scale 
 
 // A layer as the trainee may see it: its name, or its number when the task hides the names.
 std::string layer_label(const training::Task& task, int layer) {
-  if (task.hide_layer_names || layer < 0 || size_t(layer) >= task.layers.size()) return "layer " + std::to_string(layer + 1);
+  if (task.hide_layer_names || layer < 0 || size_t(layer) >= task.layers.size())
+    return "layer " + std::to_string(layer + 1);
   return task.layers[size_t(layer)].name;
 }
 
@@ -48,7 +49,8 @@ void tissue_lines(const training::Task& task, const haptics::TissueSnapshot& t) 
       ++count;
       if (!task.hide_layer_names) punctured += (punctured.empty() ? "" : ", ") + task.layers[i].name;
     }
-  ImGui::TextWrapped("punctures: %d%s%s%s", count, punctured.empty() ? "" : " (", punctured.c_str(), punctured.empty() ? "" : ")");
+  ImGui::TextWrapped("punctures: %d%s%s%s", count, punctured.empty() ? "" : " (", punctured.c_str(),
+                     punctured.empty() ? "" : ")");
   if (t.bone_layer >= 0) ImGui::TextColored(kBad, "on bone: %s", layer_label(task, t.bone_layer).c_str());
 }
 
@@ -114,7 +116,8 @@ void draw_result(const training::SessionResult& r) {
   // dural puncture is named in the panel, not only as a component's lost points).
   const training::Metrics& m = r.overall;
   if (m.bone_contacts > 0 || m.forbidden_punctures > 0 || m.redirections > 0) ImGui::Separator();
-  if (m.bone_contacts > 0) wrapped_text(kBad, "bone contacts: %u (peak %.1f N on the bone)", m.bone_contacts, m.bone_peak_force_N);
+  if (m.bone_contacts > 0)
+    wrapped_text(kBad, "bone contacts: %u (peak %.1f N on the bone)", m.bone_contacts, m.bone_peak_force_N);
   if (m.forbidden_punctures > 0) ImGui::TextColored(kBad, "forbidden punctures: %u", m.forbidden_punctures);
   if (m.redirections > 0) ImGui::TextColored(kBad, "redirections: %u", m.redirections);
   std::vector<std::string> advice = what_to_improve(r.score);
@@ -159,8 +162,9 @@ std::vector<std::string> what_to_improve(const training::Score& score) {
   for (const training::ScoreComponent& c : score.components) {
     if (c.status == training::ComponentStatus::kApplied && c.weight - c.points() > 1.0) lost.push_back(&c);
   }
-  std::sort(lost.begin(), lost.end(),
-            [](const training::ScoreComponent* a, const training::ScoreComponent* b) { return a->weight - a->points() > b->weight - b->points(); });
+  std::sort(lost.begin(), lost.end(), [](const training::ScoreComponent* a, const training::ScoreComponent* b) {
+    return a->weight - a->points() > b->weight - b->points();
+  });
   std::vector<std::string> out;
   for (size_t i = 0; i < lost.size() && i < 2; ++i) {
     auto it = advice.find(lost[i]->name);
@@ -172,7 +176,8 @@ std::vector<std::string> what_to_improve(const training::Score& score) {
 void draw_trainee_panel(const TraineeView& v) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x - 10.0f, 10.0f), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
-  ImGui::SetNextWindowSize(ImVec2(340.0f * ImGui::GetFontSize() / 13.0f, 0.0f), ImGuiCond_Always);  // 340 px at 13 px text
+  ImGui::SetNextWindowSize(ImVec2(340.0f * ImGui::GetFontSize() / 13.0f, 0.0f),
+                           ImGuiCond_Always);  // 340 px at 13 px text
   ImGui::SetNextWindowBgAlpha(0.85f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
                                  ImGuiWindowFlags_NoSavedSettings;

@@ -22,8 +22,8 @@ struct Choice {
 struct TraineeView {
   const training::Task* task = nullptr;
   const training::TaskProgress* progress = nullptr;
-  training::Metrics step_metrics;        // the current step's, live
-  double now_s = 0.0;                    // the newest state's time: the countdown, the banner's age
+  training::Metrics step_metrics;  // the current step's, live
+  double now_s = 0.0;              // the newest state's time: the countdown, the banner's age
   // What is left to do in the step (training::step_cue, in the 3D view's axes) and it in words
   // (training::cue_lines): the panel's cues and its distance, axis and depth gauges.
   std::optional<training::StepCue> cue;
@@ -36,9 +36,9 @@ struct TraineeView {
   // The layered tissue at the needle now, in a task with layers: the panel shows the
   // layer holding the tip and the punctures so far (names hidden when the task says so).
   std::optional<haptics::TissueSnapshot> tissue;
-  double loop_rate_hz = 0.0;   // measured rate of the haptic loop
-  const char* fault = nullptr; // latched safety fault, nullptr when none
-  std::function<void()> reset_fault;  // when set, a latched fault shows a button that calls it
+  double loop_rate_hz = 0.0;                        // measured rate of the haptic loop
+  const char* fault = nullptr;                      // latched safety fault, nullptr when none
+  std::function<void()> reset_fault;                // when set, a latched fault shows a button that calls it
   const training::SessionResult* result = nullptr;  // set once the task is over
   // The step to describe (a picture taken as a step ends shows that step); default: the current one.
   std::optional<size_t> step;

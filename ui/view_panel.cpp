@@ -6,9 +6,12 @@ namespace needle::ui {
 
 void next_section_mode(ViewState& view) {
   using Mode = engine::Section::Mode;
-  if (!view.section) view.section = Mode::Cut;
-  else if (*view.section == Mode::Cut) view.section = Mode::Translucent;
-  else view.section.reset();
+  if (!view.section)
+    view.section = Mode::Cut;
+  else if (*view.section == Mode::Cut)
+    view.section = Mode::Translucent;
+  else
+    view.section.reset();
 }
 
 void draw_view_panel(ViewState& view) {
@@ -29,8 +32,10 @@ void draw_view_panel(ViewState& view) {
   ImGui::SameLine();
   changed |= ImGui::RadioButton("translucent", &mode, 2);
   if (changed) {
-    if (mode == 0) view.section.reset();
-    else view.section = mode == 1 ? Mode::Cut : Mode::Translucent;
+    if (mode == 0)
+      view.section.reset();
+    else
+      view.section = mode == 1 ? Mode::Cut : Mode::Translucent;
   }
   if (view.has_ultrasound) ImGui::Checkbox("Ultrasound (U)", &view.ultrasound);
   ImGui::End();

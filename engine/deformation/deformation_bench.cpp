@@ -4,9 +4,9 @@
 
 #include "engine/deformation/deformation_field.hpp"
 #include "engine/deformation/deformation_pass.hpp"
+#include "engine/deformation/vertex_grid.hpp"
 #include "engine/gpu_device.hpp"
 #include "engine/passes/gpu_model.hpp"
-#include "engine/deformation/vertex_grid.hpp"
 #include "engine/vulkan/vulkan_context.hpp"
 
 namespace needle::engine {
@@ -71,7 +71,8 @@ void DeformationBench::deform_on_cpu() {
   State& s = *state_;
   for (const VertexRange& range : s.grid.ranges_near(s.visit)) {
     for (uint32_t v = range.first; v < range.first + range.count; ++v) {
-      s.cpu_state[v] = deform(s.field, s.world_position(s.rest.vertices[v]), glm::dvec3(s.rest.vertices[v].normal)).position;
+      s.cpu_state[v] =
+          deform(s.field, s.world_position(s.rest.vertices[v]), glm::dvec3(s.rest.vertices[v].normal)).position;
     }
   }
 }

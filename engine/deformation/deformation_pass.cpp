@@ -35,7 +35,8 @@ double similarity_scale(const glm::dmat4& m) {
                  std::abs(glm::dot(l[0], l[1])) < tol * s && std::abs(glm::dot(l[1], l[2])) < tol * s &&
                  std::abs(glm::dot(l[0], l[2])) < tol * s;
   if (!similar) {
-    throw std::invalid_argument("a deformable tissue's transform must be a rotation, a translation and a uniform scale");
+    throw std::invalid_argument(
+        "a deformable tissue's transform must be a rotation, a translation and a uniform scale");
   }
   return s;
 }
@@ -43,12 +44,13 @@ double similarity_scale(const glm::dmat4& m) {
 }  // namespace
 
 DeformationPass::DeformationPass(const VulkanContext& context) : context_(context), device_(context.device()) {
-  set_layout_ = descriptor_set_layout(device_, {
-                                                  {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-                                                  {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-                                                  {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-                                                  {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-                                              });
+  set_layout_ = descriptor_set_layout(
+      device_, {
+                   {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+                   {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+                   {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+                   {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+               });
   pipeline_layout_ = single_set_pipeline_layout(device_, set_layout_);
   pipeline_ = compute_pipeline(device_, pipeline_layout_, deform_comp_spv, sizeof(deform_comp_spv));
 }
@@ -81,8 +83,8 @@ void DeformationPass::add_target(const GpuPrimitive& gpu, const Primitive& rest,
   t.rest = GpuBuffer::device_local_with_data(context_, rest_data.data(), rest_data.size() * sizeof(float),
                                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 
-  std::array<VkDescriptorPoolSize, 2> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kRing},
-                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3 * kRing}}};
+  std::array<VkDescriptorPoolSize, 2> sizes{
+      {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kRing}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3 * kRing}}};
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pool_info.maxSets = kRing;
   pool_info.poolSizeCount = uint32_t(sizes.size());
@@ -90,7 +92,8 @@ void DeformationPass::add_target(const GpuPrimitive& gpu, const Primitive& rest,
   VK_CHECK(vkCreateDescriptorPool(device_, &pool_info, nullptr, &t.pool));
   for (size_t slot = 0; slot < kRing; ++slot) {
     t.uniforms[slot] = GpuBuffer::host_visible(context_, sizeof(FieldUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-    t.ranges[slot] = GpuBuffer::host_visible(context_, kMaxRanges * 2 * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    t.ranges[slot] =
+        GpuBuffer::host_visible(context_, kMaxRanges * 2 * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     alloc.descriptorPool = t.pool;
     alloc.descriptorSetCount = 1;
@@ -117,8 +120,8 @@ void DeformationPass::add_target(const GpuPrimitive& gpu, const Primitive& rest,
 DeformationPass::PendingTarget DeformationPass::prepare(const Target& t, const DeformationField& field,
                                                         bool every_vertex) const {
   if (field.loads.size() > kMaxLoads) {
-    throw std::invalid_argument("deformation field has " + std::to_string(field.loads.size()) + " loads; the pass takes " +
-                                std::to_string(kMaxLoads));
+    throw std::invalid_argument("deformation field has " + std::to_string(field.loads.size()) +
+                                " loads; the pass takes " + std::to_string(kMaxLoads));
   }
   PendingTarget p;
   FieldUniforms u{};
@@ -131,7 +134,8 @@ DeformationPass::PendingTarget DeformationPass::prepare(const Target& t, const D
     const Kelvinlet& k = field.loads[i];
     glm::dvec3 c = glm::dvec3(t.world_to_model * glm::dvec4(k.center, 1.0));
     glm::dvec3 f = w * k.force;
-    u.loads[i] = {glm::vec4(glm::vec3(c), float(k.epsilon / t.scale)), glm::vec4(glm::vec3(f), float(k.support / t.scale))};
+    u.loads[i] = {glm::vec4(glm::vec3(c), float(k.epsilon / t.scale)),
+                  glm::vec4(glm::vec3(f), float(k.support / t.scale))};
     p.support.push_back({c, k.support / t.scale});
   }
   std::vector<VertexRange> ranges;
@@ -141,7 +145,8 @@ DeformationPass::PendingTarget DeformationPass::prepare(const Target& t, const D
     std::vector<Sphere> reach = p.support;
     reach.insert(reach.end(), t.applied_support.begin(), t.applied_support.end());  // to put back to rest
     ranges = t.grid.ranges_near(reach);
-    if (ranges.size() > kMaxRanges) ranges = {{ranges.front().first, ranges.back().first + ranges.back().count - ranges.front().first}};
+    if (ranges.size() > kMaxRanges)
+      ranges = {{ranges.front().first, ranges.back().first + ranges.back().count - ranges.front().first}};
   }
   for (const VertexRange& r : ranges) {
     p.ranges.insert(p.ranges.end(), {r.first, p.items});
@@ -164,7 +169,8 @@ std::function<void(VkCommandBuffer)> DeformationPass::update(const DeformationFi
   return [this, pending, field](VkCommandBuffer cmd) { record(cmd, *pending, field); };
 }
 
-void DeformationPass::record(VkCommandBuffer cmd, const std::vector<PendingTarget>& pending, const DeformationField& field) {
+void DeformationPass::record(VkCommandBuffer cmd, const std::vector<PendingTarget>& pending,
+                             const DeformationField& field) {
   const size_t slot = ring_;
   ring_ = (ring_ + 1) % kRing;
   stats_ = {0, 0, false};

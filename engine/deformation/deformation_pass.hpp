@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "engine/deformation/deformation_field.hpp"
-#include "engine/vulkan/gpu_buffer.hpp"
-#include "engine/passes/gpu_model.hpp"
 #include "engine/deformation/vertex_grid.hpp"
+#include "engine/passes/gpu_model.hpp"
+#include "engine/vulkan/gpu_buffer.hpp"
 
 namespace needle::engine {
 

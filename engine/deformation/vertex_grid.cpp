@@ -69,8 +69,10 @@ std::vector<VertexRange> VertexGrid::ranges_near(const std::vector<Sphere>& sphe
       for (int y = lo.y; y <= hi.y; ++y) {
         // Distance in (y, z) from the centre to this row of cells; the slice of the sphere left
         // over bounds the row's x range.
-        double dy = std::max({0.0, origin_.y + y * cell_size_ - s.center.y, s.center.y - (origin_.y + (y + 1) * cell_size_)});
-        double dz = std::max({0.0, origin_.z + z * cell_size_ - s.center.z, s.center.z - (origin_.z + (z + 1) * cell_size_)});
+        double dy =
+            std::max({0.0, origin_.y + y * cell_size_ - s.center.y, s.center.y - (origin_.y + (y + 1) * cell_size_)});
+        double dz =
+            std::max({0.0, origin_.z + z * cell_size_ - s.center.z, s.center.z - (origin_.z + (z + 1) * cell_size_)});
         double left = s.radius * s.radius - dy * dy - dz * dz;
         if (left < 0.0) continue;
         double rx = std::sqrt(left);

@@ -30,8 +30,8 @@ class AccessorView {
   uint32_t index(size_t i) const;
 
  private:
-  friend AccessorView view_accessor(const tinygltf::Model&, int, const std::string&,
-                                    const std::string&, const AccessorRule&);
+  friend AccessorView view_accessor(const tinygltf::Model&, int, const std::string&, const std::string&,
+                                    const AccessorRule&);
   const uint8_t* base_ = nullptr;
   size_t stride_ = 0;
   size_t count_ = 0;
@@ -47,12 +47,11 @@ struct ByteSpan {
 };
 
 // Validates bufferView `index` (used as `usage`) against its buffer and returns its bytes.
-ByteSpan view_buffer_view(const tinygltf::Model& gltf, int index, const std::string& file,
-                          const std::string& usage);
+ByteSpan view_buffer_view(const tinygltf::Model& gltf, int index, const std::string& file, const std::string& usage);
 
 // Validates accessor `index` (used as `usage`, e.g. "POSITION of meshes[0].primitives[1]")
 // against its bufferView and buffer, then returns a view on it. Throws AssetError.
-AccessorView view_accessor(const tinygltf::Model& gltf, int index, const std::string& file,
-                           const std::string& usage, const AccessorRule& rule);
+AccessorView view_accessor(const tinygltf::Model& gltf, int index, const std::string& file, const std::string& usage,
+                           const AccessorRule& rule);
 
 }  // namespace needle::engine

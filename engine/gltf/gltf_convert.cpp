@@ -10,8 +10,8 @@
 
 #include "engine/gltf/gltf_accessor.hpp"
 #include "engine/gltf/gltf_errors.hpp"
-#include "engine/gltf_loader.hpp"
 #include "engine/gltf/mesh_normals.hpp"
+#include "engine/gltf_loader.hpp"
 
 namespace needle::engine {
 namespace {
@@ -45,16 +45,16 @@ tinygltf::Image decoded_image(const Model& gltf, size_t index, const std::string
 
 Texture to_rgba8(const tinygltf::Image& image, const std::string& file, const std::string& name) {
   const int channels = image.component;
-  if (image.width < 1 || image.height < 1 || channels < 1 || channels > 4 ||
-      (image.bits != 8 && image.bits != 16))
-    asset_fail(file, name, "unsupported image " + std::to_string(image.width) + "x" +
-                               std::to_string(image.height) + ", " + std::to_string(channels) +
-                               " channels of " + std::to_string(image.bits) + " bits");
+  if (image.width < 1 || image.height < 1 || channels < 1 || channels > 4 || (image.bits != 8 && image.bits != 16))
+    asset_fail(file, name,
+               "unsupported image " + std::to_string(image.width) + "x" + std::to_string(image.height) + ", " +
+                   std::to_string(channels) + " channels of " + std::to_string(image.bits) + " bits");
   const uint64_t texels = uint64_t(image.width) * uint64_t(image.height);
   const uint64_t bytes_per_value = uint64_t(image.bits / 8);
   if (image.image.size() != texels * uint64_t(channels) * bytes_per_value)
-    asset_fail(file, name, "pixel data has " + std::to_string(image.image.size()) +
-                               " bytes, expected width x height x channels x bytes per channel");
+    asset_fail(file, name,
+               "pixel data has " + std::to_string(image.image.size()) +
+                   " bytes, expected width x height x channels x bytes per channel");
   Texture texture{static_cast<uint32_t>(image.width), static_cast<uint32_t>(image.height), {}};
   texture.rgba8.resize(texels * 4);
   auto value = [&](uint64_t i) -> uint8_t {  // channel value i, reduced to 8 bits
@@ -79,8 +79,7 @@ std::vector<Texture> convert_textures(const Model& gltf, const std::string& file
   for (size_t t = 0; t < gltf.textures.size(); ++t) {
     const int source = gltf.textures[t].source;
     if (source < 0 || static_cast<size_t>(source) >= gltf.images.size())
-      asset_fail(file, element_name("textures", t),
-                 "source image " + std::to_string(source) + " does not exist");
+      asset_fail(file, element_name("textures", t), "source image " + std::to_string(source) + " does not exist");
     const size_t s = static_cast<size_t>(source);
     textures.push_back(to_rgba8(decoded_image(gltf, s, file), file, element_name("images", s)));
   }
@@ -95,26 +94,29 @@ Material convert_material(const Model& gltf, size_t index, const std::string& fi
   const tinygltf::PbrMetallicRoughness& pbr = in.pbrMetallicRoughness;
   Material out;
   if (pbr.baseColorFactor.size() != 4)
-    asset_fail(file, name, "baseColorFactor has " + std::to_string(pbr.baseColorFactor.size()) +
-                               " numbers, expected 4");
-  out.base_color_factor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1],
-                                    pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
+    asset_fail(file, name,
+               "baseColorFactor has " + std::to_string(pbr.baseColorFactor.size()) + " numbers, expected 4");
+  out.base_color_factor =
+      glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
   if (pbr.baseColorTexture.index >= 0) {
     if (static_cast<size_t>(pbr.baseColorTexture.index) >= gltf.textures.size())
-      asset_fail(file, name, "baseColorTexture " + std::to_string(pbr.baseColorTexture.index) +
-                                 " does not exist");
+      asset_fail(file, name, "baseColorTexture " + std::to_string(pbr.baseColorTexture.index) + " does not exist");
     if (pbr.baseColorTexture.texCoord != 0)
-      asset_fail(file, name, "baseColorTexture uses TEXCOORD_" +
-                                 std::to_string(pbr.baseColorTexture.texCoord) +
-                                 ", only TEXCOORD_0 is supported");
+      asset_fail(file, name,
+                 "baseColorTexture uses TEXCOORD_" + std::to_string(pbr.baseColorTexture.texCoord) +
+                     ", only TEXCOORD_0 is supported");
     out.base_color_texture = pbr.baseColorTexture.index;
   }
   out.metallic_factor = static_cast<float>(pbr.metallicFactor);
   out.roughness_factor = static_cast<float>(pbr.roughnessFactor);
-  if (in.alphaMode == "OPAQUE") out.alpha_mode = AlphaMode::Opaque;
-  else if (in.alphaMode == "MASK") out.alpha_mode = AlphaMode::Mask;
-  else if (in.alphaMode == "BLEND") out.alpha_mode = AlphaMode::Blend;
-  else asset_fail(file, name, "alphaMode \"" + in.alphaMode + "\", expected OPAQUE, MASK or BLEND");
+  if (in.alphaMode == "OPAQUE")
+    out.alpha_mode = AlphaMode::Opaque;
+  else if (in.alphaMode == "MASK")
+    out.alpha_mode = AlphaMode::Mask;
+  else if (in.alphaMode == "BLEND")
+    out.alpha_mode = AlphaMode::Blend;
+  else
+    asset_fail(file, name, "alphaMode \"" + in.alphaMode + "\", expected OPAQUE, MASK or BLEND");
   out.alpha_cutoff = static_cast<float>(in.alphaCutoff);
   out.double_sided = in.doubleSided;
   return out;
@@ -122,17 +124,15 @@ Material convert_material(const Model& gltf, size_t index, const std::string& fi
 
 // ---- primitives -----------------------------------------------------------------------
 
-std::vector<uint32_t> triangle_list(const std::vector<uint32_t>& v, int mode,
-                                    const std::string& file, const std::string& name) {
+std::vector<uint32_t> triangle_list(const std::vector<uint32_t>& v, int mode, const std::string& file,
+                                    const std::string& name) {
   switch (mode) {
     case TINYGLTF_MODE_TRIANGLES:
-      if (v.size() % 3 != 0)
-        asset_fail(file, name, std::to_string(v.size()) + " indices is not a multiple of 3");
+      if (v.size() % 3 != 0) asset_fail(file, name, std::to_string(v.size()) + " indices is not a multiple of 3");
       return v;
     case TINYGLTF_MODE_TRIANGLE_STRIP:
     case TINYGLTF_MODE_TRIANGLE_FAN: {
-      if (v.size() < 3)
-        asset_fail(file, name, std::to_string(v.size()) + " indices, a strip or fan needs 3");
+      if (v.size() < 3) asset_fail(file, name, std::to_string(v.size()) + " indices, a strip or fan needs 3");
       std::vector<uint32_t> out;
       out.reserve(3 * (v.size() - 2));
       for (size_t i = 0; i + 2 < v.size(); ++i) {
@@ -146,9 +146,10 @@ std::vector<uint32_t> triangle_list(const std::vector<uint32_t>& v, int mode,
       return out;
     }
     default:
-      asset_fail(file, name, "mode " + std::to_string(mode) +
-                                 " (points or lines) is not supported: only triangles, "
-                                 "triangle strips and triangle fans");
+      asset_fail(file, name,
+                 "mode " + std::to_string(mode) +
+                     " (points or lines) is not supported: only triangles, "
+                     "triangle strips and triangle fans");
   }
 }
 
@@ -159,8 +160,9 @@ std::vector<uint32_t> read_indices(const Model& gltf, int accessor, size_t verti
   for (size_t i = 0; i < indices.size(); ++i) {
     indices[i] = view.index(i);
     if (indices[i] >= vertices)
-      asset_fail(file, what, "index " + std::to_string(i) + " is " + std::to_string(indices[i]) + ", not below the " +
-                                 std::to_string(vertices) + " vertices");
+      asset_fail(file, what,
+                 "index " + std::to_string(i) + " is " + std::to_string(indices[i]) + ", not below the " +
+                     std::to_string(vertices) + " vertices");
   }
   return indices;
 }
@@ -187,8 +189,7 @@ std::vector<std::vector<uint32_t>> coarser_indices(const Model& gltf, const tiny
 
 Primitive convert_primitive(const Model& gltf, size_t mesh, size_t index, const std::string& file) {
   const tinygltf::Primitive& in = gltf.meshes[mesh].primitives[index];
-  const std::string name =
-      element_name("meshes", mesh) + "." + element_name("primitives", index);
+  const std::string name = element_name("meshes", mesh) + "." + element_name("primitives", index);
   auto attribute = [&](const char* semantic) {
     const auto it = in.attributes.find(semantic);
     return it == in.attributes.end() ? -1 : it->second;
@@ -197,13 +198,14 @@ Primitive convert_primitive(const Model& gltf, size_t mesh, size_t index, const 
 
   const int position_accessor = attribute("POSITION");
   if (position_accessor < 0) asset_fail(file, name, "has no POSITION attribute");
-  const AccessorView positions = view_accessor(gltf, position_accessor, file, usage("POSITION"),
-                                               {{TINYGLTF_TYPE_VEC3}, {kFloat}});
+  const AccessorView positions =
+      view_accessor(gltf, position_accessor, file, usage("POSITION"), {{TINYGLTF_TYPE_VEC3}, {kFloat}});
   const size_t n = positions.count();
   auto same_count = [&](const AccessorView& view, const char* semantic) {
     if (view.count() != n)
-      asset_fail(file, name, std::string(semantic) + " has " + std::to_string(view.count()) +
-                                 " elements but POSITION has " + std::to_string(n));
+      asset_fail(file, name,
+                 std::string(semantic) + " has " + std::to_string(view.count()) + " elements but POSITION has " +
+                     std::to_string(n));
     return view;
   };
 
@@ -216,16 +218,16 @@ Primitive convert_primitive(const Model& gltf, size_t mesh, size_t index, const 
       asset_fail(file, usage("POSITION"), "vertex " + std::to_string(i) + " is not finite");
   }
   if (const int a = attribute("TEXCOORD_0"); a >= 0) {
-    const AccessorView uv = same_count(
-        view_accessor(gltf, a, file, usage("TEXCOORD_0"), {{TINYGLTF_TYPE_VEC2}, {kFloat, kU8, kU16}, true}),
-        "TEXCOORD_0");
+    const AccessorView uv =
+        same_count(view_accessor(gltf, a, file, usage("TEXCOORD_0"), {{TINYGLTF_TYPE_VEC2}, {kFloat, kU8, kU16}, true}),
+                   "TEXCOORD_0");
     for (size_t i = 0; i < n; ++i) out.vertices[i].uv = {uv.component(i, 0), uv.component(i, 1)};
   }
   if (const int a = attribute("COLOR_0"); a >= 0) {
-    const AccessorView color = same_count(
-        view_accessor(gltf, a, file, usage("COLOR_0"),
-                      {{TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, {kFloat, kU8, kU16}, true}),
-        "COLOR_0");
+    const AccessorView color =
+        same_count(view_accessor(gltf, a, file, usage("COLOR_0"),
+                                 {{TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, {kFloat, kU8, kU16}, true}),
+                   "COLOR_0");
     for (size_t i = 0; i < n; ++i)
       for (int c = 0; c < color.components(); ++c) out.vertices[i].color[c] = color.component(i, c);
   }
@@ -241,8 +243,8 @@ Primitive convert_primitive(const Model& gltf, size_t mesh, size_t index, const 
   out.coarser_indices = coarser_indices(gltf, in, n, file, name);
 
   if (const int a = attribute("NORMAL"); a >= 0) {
-    const AccessorView normals = same_count(
-        view_accessor(gltf, a, file, usage("NORMAL"), {{TINYGLTF_TYPE_VEC3}, {kFloat}}), "NORMAL");
+    const AccessorView normals =
+        same_count(view_accessor(gltf, a, file, usage("NORMAL"), {{TINYGLTF_TYPE_VEC3}, {kFloat}}), "NORMAL");
     for (size_t i = 0; i < n; ++i)
       out.vertices[i].normal = {normals.component(i, 0), normals.component(i, 1), normals.component(i, 2)};
   } else {
@@ -268,18 +270,17 @@ glm::mat4 local_transform(const tinygltf::Node& node, const std::string& file, c
   }
   auto check_size = [&](const std::vector<double>& v, size_t size, const char* what) {
     if (!v.empty() && v.size() != size)
-      asset_fail(file, name, std::string(what) + " has " + std::to_string(v.size()) +
-                                 " numbers, expected " + std::to_string(size));
+      asset_fail(file, name,
+                 std::string(what) + " has " + std::to_string(v.size()) + " numbers, expected " + std::to_string(size));
     return !v.empty();
   };
   glm::dmat4 m(1.0);
   if (check_size(node.translation, 3, "translation"))
     m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
   if (check_size(node.rotation, 4, "rotation"))  // glTF stores x, y, z, w
-    m *= glm::mat4_cast(glm::normalize(
-        glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2])));
-  if (check_size(node.scale, 3, "scale"))
-    m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+    m *= glm::mat4_cast(
+        glm::normalize(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2])));
+  if (check_size(node.scale, 3, "scale")) m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
   return glm::mat4(m);
 }
 
@@ -320,14 +321,16 @@ struct NodeWalker {
                    "node " + std::to_string(p.index) + " does not exist");
       const size_t i = static_cast<size_t>(p.index);
       if (p.depth > kMaxNodeDepth)
-        asset_fail(file, element_name("nodes", i), "nested deeper than " + std::to_string(kMaxNodeDepth) + " levels of the node hierarchy");
+        asset_fail(file, element_name("nodes", i),
+                   "nested deeper than " + std::to_string(kMaxNodeDepth) + " levels of the node hierarchy");
       // glTF nodes form disjoint trees; a second visit means a cycle or a shared child.
       if (visited[i]) asset_fail(file, element_name("nodes", i), "is reached twice (a cycle or more than one parent)");
       visited[i] = true;
       const tinygltf::Node& node = gltf.nodes[i];
       const glm::mat4 world = p.parent * local_transform(node, file, element_name("nodes", i));
       if (!finite(world))
-        asset_fail(file, element_name("nodes", i), "its transform, with its parents', is beyond what 32-bit floats hold");
+        asset_fail(file, element_name("nodes", i),
+                   "its transform, with its parents', is beyond what 32-bit floats hold");
       if (node.mesh >= 0) {
         if (static_cast<size_t>(node.mesh) >= gltf.meshes.size())
           asset_fail(file, element_name("nodes", i), "mesh " + std::to_string(node.mesh) + " does not exist");
@@ -336,7 +339,8 @@ struct NodeWalker {
           instances.push_back({first_primitive[mesh] + static_cast<uint32_t>(k), world, node.name});
       }
       // Children pushed last first, so they are walked in their order.
-      for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back({*child, world, i, p.depth + 1});
+      for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+        stack.push_back({*child, world, i, p.depth + 1});
     }
   }
 };
@@ -380,7 +384,8 @@ engine::Model convert_gltf(const tinygltf::Model& gltf, const std::string& file)
   std::vector<uint32_t> first_primitive;
   for (size_t m = 0; m < gltf.meshes.size(); ++m) {
     // glTF 2.0 requires at least one primitive a mesh (mesh.primitives: minItems 1).
-    if (gltf.meshes[m].primitives.empty()) asset_fail(file, element_name("meshes", m), "has no primitives (glTF requires at least one)");
+    if (gltf.meshes[m].primitives.empty())
+      asset_fail(file, element_name("meshes", m), "has no primitives (glTF requires at least one)");
     first_primitive.push_back(static_cast<uint32_t>(out.primitives.size()));
     for (size_t p = 0; p < gltf.meshes[m].primitives.size(); ++p)
       out.primitives.push_back(convert_primitive(gltf, m, p, file));

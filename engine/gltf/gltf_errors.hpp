@@ -7,8 +7,7 @@
 
 namespace needle::engine {
 
-[[noreturn]] inline void asset_fail(const std::string& file, const std::string& element,
-                                    const std::string& what) {
+[[noreturn]] inline void asset_fail(const std::string& file, const std::string& element, const std::string& what) {
   throw AssetError(file + ": " + element + ": " + what);
 }
 

@@ -32,14 +32,17 @@ uint32_t le32(const std::vector<unsigned char>& b, size_t at) {
 // forgets the BIN chunk's 8-byte header when it compares the chunk length with the file length.
 std::string glb_json(const std::vector<unsigned char>& bytes, const std::string& file) {
   const uint64_t size = bytes.size();
-  if (size < 20) asset_fail(file, "GLB header", "file has " + std::to_string(size) + " bytes, less than the 20-byte header");
+  if (size < 20)
+    asset_fail(file, "GLB header", "file has " + std::to_string(size) + " bytes, less than the 20-byte header");
   if (le32(bytes, 4) != 2) asset_fail(file, "GLB header", "version " + std::to_string(le32(bytes, 4)) + ", expected 2");
   const uint64_t length = le32(bytes, 8);
   if (length > size)
-    asset_fail(file, "GLB header", "length " + std::to_string(length) + " exceeds the file's " + std::to_string(size) + " bytes");
+    asset_fail(file, "GLB header",
+               "length " + std::to_string(length) + " exceeds the file's " + std::to_string(size) + " bytes");
   const uint64_t json_length = le32(bytes, 12);
   if (le32(bytes, 16) != 0x4E4F534Au || json_length == 0 || 20 + json_length > length)
-    asset_fail(file, "GLB JSON chunk", "missing, empty or longer than the file (" + std::to_string(json_length) + " bytes)");
+    asset_fail(file, "GLB JSON chunk",
+               "missing, empty or longer than the file (" + std::to_string(json_length) + " bytes)");
   const uint64_t bin_at = 20 + json_length;
   if (bin_at < length) {
     if (bin_at + 8 > length) asset_fail(file, "GLB BIN chunk", "truncated chunk header");
@@ -89,8 +92,9 @@ void check_uris(const std::string& json_text, const fs::path& folder, const std:
         actual = fs::file_size(path);
       }
       if (is_buffer && length.is_number_unsigned() && length.get<uint64_t>() != actual)
-        asset_fail(file, name, "byteLength " + std::to_string(length.get<uint64_t>()) + " but uri \"" +
-                                   uri.substr(0, 64) + "\" holds " + std::to_string(actual) + " bytes");
+        asset_fail(file, name,
+                   "byteLength " + std::to_string(length.get<uint64_t>()) + " but uri \"" + uri.substr(0, 64) +
+                       "\" holds " + std::to_string(actual) + " bytes");
     }
   }
 }
@@ -129,8 +133,8 @@ bool refuse_write(std::string* err, const std::string&, const std::vector<unsign
 
 // Images in a bufferView are decoded by convert_gltf once the bufferView is bounds-checked:
 // tinygltf 2.7 hands them over without checking the bufferView against its buffer.
-bool decode_or_defer(tinygltf::Image* image, int index, std::string* err, std::string* warn, int width,
-                     int height, const unsigned char* bytes, int size, void*) {
+bool decode_or_defer(tinygltf::Image* image, int index, std::string* err, std::string* warn, int width, int height,
+                     const unsigned char* bytes, int size, void*) {
   if (image->bufferView >= 0) return true;
   return tinygltf::LoadImageData(image, index, err, warn, width, height, bytes, size, nullptr);
 }
@@ -159,8 +163,8 @@ Model load_gltf(const fs::path& file) {
   std::string err, warn;
   bool ok = false;
   try {
-    ok = binary ? loader.LoadBinaryFromMemory(&gltf, &err, &warn, bytes.data(),
-                                              static_cast<unsigned>(bytes.size()), guard.base_dir)
+    ok = binary ? loader.LoadBinaryFromMemory(&gltf, &err, &warn, bytes.data(), static_cast<unsigned>(bytes.size()),
+                                              guard.base_dir)
                 : loader.LoadASCIIFromString(&gltf, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
                                              static_cast<unsigned>(bytes.size()), guard.base_dir);
   } catch (const std::exception& e) {

@@ -41,8 +41,8 @@ void FrameTimestamps::write(VkCommandBuffer cmd, uint32_t slot, Index index, boo
     VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     barrier.srcAccessMask = kSceneSelfSrcAccess;
     barrier.dstAccessMask = kSceneSelfDstAccess;
-    vkCmdPipelineBarrier(cmd, kSceneSelfStages, kSceneSelfStages, VK_DEPENDENCY_BY_REGION_BIT, 1, &barrier, 0, nullptr, 0,
-                         nullptr);
+    vkCmdPipelineBarrier(cmd, kSceneSelfStages, kSceneSelfStages, VK_DEPENDENCY_BY_REGION_BIT, 1, &barrier, 0, nullptr,
+                         0, nullptr);
   } else {
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0,
                          nullptr, 0, nullptr);

@@ -28,7 +28,8 @@ GpuPrimitive upload_primitive(const VulkanContext& context, const Primitive& p) 
   for (const auto& coarser : p.coarser_indices) lists.push_back(&coarser);
   std::vector<uint32_t> all;
   for (const std::vector<uint32_t>* list : lists) {
-    GpuLevel level{uint32_t(all.size()), uint32_t(list->size()), build_triangle_chunks(p.vertices, *list, kTrianglesPerChunk)};
+    GpuLevel level{uint32_t(all.size()), uint32_t(list->size()),
+                   build_triangle_chunks(p.vertices, *list, kTrianglesPerChunk)};
     for (TriangleChunk& chunk : level.chunks) chunk.first_index += level.first_index;
     gpu.levels.push_back(std::move(level));
     all.insert(all.end(), list->begin(), list->end());
@@ -43,7 +44,8 @@ GpuPrimitive upload_primitive(const VulkanContext& context, const Primitive& p) 
 }
 
 std::vector<MeshVertex> read_back_vertices(const VulkanContext& context, const GpuPrimitive& gpu) {
-  GpuBuffer host = GpuBuffer::host_visible(context, gpu.vertex_count * sizeof(MeshVertex), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  GpuBuffer host =
+      GpuBuffer::host_visible(context, gpu.vertex_count * sizeof(MeshVertex), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   context.submit_and_wait([&](VkCommandBuffer cmd) {
     VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
@@ -83,8 +85,8 @@ GpuModel::GpuModel(const VulkanContext& context, const Model& model, const Mater
     if (m.alpha_mode == AlphaMode::Opaque) u.base_color.a = 1.0f;
     std::memcpy(uniforms.data() + i * stride, &u, sizeof u);
   }
-  material_uniforms_ = GpuBuffer::device_local_with_data(context, uniforms.data(), uniforms.size(),
-                                                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  material_uniforms_ =
+      GpuBuffer::device_local_with_data(context, uniforms.data(), uniforms.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
 
   std::array<VkDescriptorPoolSize, 2> sizes{{{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, uint32_t(materials_.size())},
                                              {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uint32_t(materials_.size())}}};
@@ -103,9 +105,9 @@ GpuModel::GpuModel(const VulkanContext& context, const Model& model, const Mater
   VK_CHECK(vkAllocateDescriptorSets(device_, &alloc, sets_.data()));
   for (size_t i = 0; i < materials_.size(); ++i) {
     int t = materials_[i].base_color_texture;
-    VkDescriptorImageInfo image{binding.sampler,
-                                t >= 0 && size_t(t) < textures_.size() ? textures_[size_t(t)].view() : binding.white_texture,
-                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorImageInfo image{
+        binding.sampler, t >= 0 && size_t(t) < textures_.size() ? textures_[size_t(t)].view() : binding.white_texture,
+        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorBufferInfo buffer{material_uniforms_.handle(), i * stride, sizeof(MaterialUniforms)};
     std::array<VkWriteDescriptorSet, 2> writes{};
     writes[0] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};

@@ -7,10 +7,10 @@
 
 #include <vector>
 
-#include "engine/vulkan/gpu_buffer.hpp"
-#include "engine/vulkan/gpu_image.hpp"
 #include "engine/model.hpp"
 #include "engine/passes/triangle_chunks.hpp"
+#include "engine/vulkan/gpu_buffer.hpp"
+#include "engine/vulkan/gpu_image.hpp"
 
 namespace needle::engine {
 
@@ -35,10 +35,10 @@ struct GpuPrimitive {
   GpuBuffer vertices;
   GpuBuffer indices;  // the full mesh's, then each coarser level's
   uint32_t vertex_count = 0;
-  uint32_t index_count = 0;  // of the full mesh
+  uint32_t index_count = 0;      // of the full mesh
   std::vector<GpuLevel> levels;  // the full mesh, then Primitive::coarser_indices
-  Sphere bounds;  // of the rest vertices, model space: how big the mesh looks, to choose a level
-  Bounds box;     // of the rest vertices, model space
+  Sphere bounds;                 // of the rest vertices, model space: how big the mesh looks, to choose a level
+  Bounds box;                    // of the rest vertices, model space
 };
 
 // Uploads one primitive's vertices and indices to device-local buffers.

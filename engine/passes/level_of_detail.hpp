@@ -22,6 +22,7 @@ double projected_radius_px(const Sphere& world, const Camera& camera, Extent ext
 
 // The finest level (triangle counts, finest first) whose front half, spread over a disc of this
 // radius, gives each triangle at least min_pixels; the coarsest when none does.
-size_t choose_level(const std::vector<uint32_t>& triangles, double radius_px, double min_pixels = kMinPixelsPerTriangle);
+size_t choose_level(const std::vector<uint32_t>& triangles, double radius_px,
+                    double min_pixels = kMinPixelsPerTriangle);
 
 }  // namespace needle::engine

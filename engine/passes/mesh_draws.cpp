@@ -15,7 +15,8 @@ size_t level_to_draw(const GpuPrimitive& p, const glm::mat4& model_to_world, con
   if (p.levels.size() < 2) return 0;
   std::vector<uint32_t> triangles;
   for (const GpuLevel& level : p.levels) triangles.push_back(level.index_count / 3);
-  return choose_level(triangles, projected_radius_px(world_sphere(p.bounds, model_to_world), camera, {extent.width, extent.height}));
+  return choose_level(
+      triangles, projected_radius_px(world_sphere(p.bounds, model_to_world), camera, {extent.width, extent.height}));
 }
 
 }  // namespace
@@ -29,7 +30,8 @@ Sphere world_sphere(const Sphere& model_space, const glm::mat4& model_to_world) 
 Bounds world_box(const Bounds& b, const glm::mat4& model_to_world) {
   Bounds out{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
   for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y, (corner & 4) ? b.max.z : b.min.z);
+    const glm::vec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                      (corner & 4) ? b.max.z : b.min.z);
     const glm::vec3 w(model_to_world * glm::vec4(p, 1.0f));
     out.min = glm::min(out.min, w), out.max = glm::max(out.max, w);
   }
@@ -56,15 +58,17 @@ MeshDraws collect_draws(const FrameParams& params, VkExtent2D extent, const Draw
       if (p.index_count == 0) continue;
       const Material& m = item.model->material_of(instance.primitive);
       float depth = glm::length(glm::vec3(transform[3]) - params.camera.position);
-      const GpuLevel& level = p.levels[options.level_of_detail ? level_to_draw(p, transform, params.camera, extent) : 0];
+      const GpuLevel& level =
+          p.levels[options.level_of_detail ? level_to_draw(p, transform, params.camera, extent) : 0];
       if (level.index_count == 0) continue;
       const bool sectioned = params.section && item.sectioned;
       const std::vector<IndexRange> all{{level.first_index, level.index_count}};
       std::vector<IndexRange> ranges =
           !options.cull_chunks ? all
-          : cut && sectioned   ? (options.cull_cut_away ? ranges_kept_by_cut(level.chunks, transform, cut_plane, item.moved) : all)
-          : !m.double_sided    ? visible_ranges(level.chunks, transform, params.camera.position, item.moved)
-                               : all;
+          : cut && sectioned
+              ? (options.cull_cut_away ? ranges_kept_by_cut(level.chunks, transform, cut_plane, item.moved) : all)
+          : !m.double_sided ? visible_ranges(level.chunks, transform, params.camera.position, item.moved)
+                            : all;
       Bounds reach;
       if (sectioned) {
         reach = world_box(p.box, transform);
@@ -79,7 +83,8 @@ MeshDraws collect_draws(const FrameParams& params, VkExtent2D extent, const Draw
           .push_back({item.model, instance.primitive, transform, depth, std::move(ranges), sectioned, reach});
     }
   }
-  std::sort(draws.blended.begin(), draws.blended.end(), [](const MeshDraw& a, const MeshDraw& b) { return a.depth > b.depth; });
+  std::sort(draws.blended.begin(), draws.blended.end(),
+            [](const MeshDraw& a, const MeshDraw& b) { return a.depth > b.depth; });
   return draws;
 }
 
@@ -110,8 +115,8 @@ size_t bind_and_draw(VkCommandBuffer cmd, const MeshDraw& d, VkPipelineLayout la
   return triangles;
 }
 
-size_t record_draws(VkCommandBuffer cmd, const std::vector<MeshDraw>& draws, bool blended, const MeshPipelines& pipelines,
-                    const DrawOptions& options) {
+size_t record_draws(VkCommandBuffer cmd, const std::vector<MeshDraw>& draws, bool blended,
+                    const MeshPipelines& pipelines, const DrawOptions& options) {
   VkPipeline bound = VK_NULL_HANDLE;
   size_t triangles = 0;
   for (const MeshDraw& d : draws) {

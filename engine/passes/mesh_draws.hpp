@@ -64,7 +64,7 @@ size_t bind_and_draw(VkCommandBuffer cmd, const MeshDraw& draw, VkPipelineLayout
 
 // Records `draws` (with blending when `blended`) in a render pass whose frame set is bound;
 // returns the triangles sent to the device.
-size_t record_draws(VkCommandBuffer cmd, const std::vector<MeshDraw>& draws, bool blended, const MeshPipelines& pipelines,
-                    const DrawOptions& options);
+size_t record_draws(VkCommandBuffer cmd, const std::vector<MeshDraw>& draws, bool blended,
+                    const MeshPipelines& pipelines, const DrawOptions& options);
 
 }  // namespace needle::engine

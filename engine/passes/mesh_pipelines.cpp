@@ -28,7 +28,8 @@ MeshPipelines::MeshPipelines(const VulkanContext& context, VkRenderPass render_p
     spec.variant = {(index & 1) != 0, (index & 2) != 0, (index & 4) != 0, (index & 8) != 0};
     spec.depth.depthTestEnable = VK_TRUE;
     spec.depth.depthCompareOp = VK_COMPARE_OP_LESS;
-    spec.depth.depthWriteEnable = spec.variant.blended ? VK_FALSE : VK_TRUE;  // blended surfaces do not hide what lies behind
+    spec.depth.depthWriteEnable =
+        spec.variant.blended ? VK_FALSE : VK_TRUE;  // blended surfaces do not hide what lies behind
     spec.blends = {color_writes(spec.variant.blended)};
     spec.render_pass = render_pass;
     spec.samples = samples;
@@ -50,11 +51,13 @@ VkPipeline MeshPipelines::pipeline(const MeshVariant& variant) const { return pi
 
 void MeshPipelines::create_layouts_and_sampler() {
   frame_layout_ = descriptor_set_layout(
-      device_, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}});
-  material_layout_ = descriptor_set_layout(device_, {
-                                                        {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-                                                        {1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-                                                    });
+      device_,
+      {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}});
+  material_layout_ = descriptor_set_layout(
+      device_, {
+                   {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+                   {1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+               });
 
   std::array<VkDescriptorSetLayout, 2> sets{frame_layout_, material_layout_};
   VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(DrawPushConstants)};
@@ -90,8 +93,19 @@ VkPipeline MeshPipelines::make(const MeshPipelineSpec& spec) const {
                             spec.alpha};
   const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(), sizeof constants, &constants};
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
-  stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, modules[0], "main", nullptr};
-  stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, modules[1], "main",
+  stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+               nullptr,
+               0,
+               VK_SHADER_STAGE_VERTEX_BIT,
+               modules[0],
+               "main",
+               nullptr};
+  stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+               nullptr,
+               0,
+               VK_SHADER_STAGE_FRAGMENT_BIT,
+               modules[1],
+               "main",
                &specialization};
 
   VkVertexInputBindingDescription binding{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX};

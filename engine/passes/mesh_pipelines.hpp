@@ -60,7 +60,6 @@ class MeshPipelines {
  private:
   void create_layouts_and_sampler();
 
-
   VkDevice device_;
   VkDescriptorSetLayout frame_layout_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout material_layout_ = VK_NULL_HANDLE;

@@ -77,9 +77,10 @@ void ScaledScene::ensure(VkExtent2D extent, VkRenderPass scene_pass, const Targe
   if (!scene_fits) {
     if (framebuffer_) vkDestroyFramebuffer(device_, framebuffer_, nullptr);
     framebuffer_ = VK_NULL_HANDLE;
-    color_ = GpuImage(context_, {extent, color_format_, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT});
-    depth_ = GpuImage(context_, {extent, depth_format_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_SAMPLE_COUNT_1_BIT,
-                                 VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT});
+    color_ =
+        GpuImage(context_, {extent, color_format_, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT});
+    depth_ = GpuImage(context_, {extent, depth_format_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                                 VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT});
     framebuffer_ = make_framebuffer(device_, scene_pass, {color_.view(), depth_.view()}, extent);
     quad_.set_image(color_.view());
   }

@@ -32,7 +32,8 @@ class ScaledScene {
   // (device, target, MSAA samples) => why the scene cannot be drawn scaled into `target`, empty
   // when it can: the upscale needs single-sampled attachments and a colour format the device
   // samples with linear filtering.
-  static std::string unsupported(const VulkanContext& context, const TargetImages& target, VkSampleCountFlagBits samples);
+  static std::string unsupported(const VulkanContext& context, const TargetImages& target,
+                                 VkSampleCountFlagBits samples);
 
   // Attachments of `extent` and their framebuffer for `scene_pass`, and the upscale's
   // framebuffers over `target`'s images; each replaced (after the device is idle) when its extent

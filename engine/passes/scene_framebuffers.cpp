@@ -19,14 +19,16 @@ void SceneFramebuffers::make(const TargetImages& target, VkRenderPass render_pas
   const bool msaa = attachments_.samples != VK_SAMPLE_COUNT_1_BIT;
   if (msaa) {
     // Not transient: a frame with translucent tissue keeps it between its passes.
-    msaa_color_ = GpuImage(context_, {extent, attachments_.color, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, attachments_.samples});
+    msaa_color_ =
+        GpuImage(context_, {extent, attachments_.color, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, attachments_.samples});
   }
   depth_ = GpuImage(context_, {extent, attachments_.depth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                                attachments_.samples, VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT});
   const VkDevice device = context_.device();
   for (VkImageView target_view : target.image_views()) {
-    const std::vector<VkImageView> views = msaa ? std::vector<VkImageView>{msaa_color_.view(), depth_.view(), target_view}
-                                                : std::vector<VkImageView>{target_view, depth_.view()};
+    const std::vector<VkImageView> views =
+        msaa ? std::vector<VkImageView>{msaa_color_.view(), depth_.view(), target_view}
+             : std::vector<VkImageView>{target_view, depth_.view()};
     framebuffers_.push_back(make_framebuffer(device, render_pass, views, extent));
     VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
     VkSemaphore done;

@@ -33,7 +33,8 @@ double lap_ms(Clock::time_point& since) {
 ScenePass::ScenePass(const VulkanContext& context, const TargetImages& target, const RendererSettings& settings)
     : context_(context),
       device_(context.device()),
-      attachments_{target.format(), depth_stencil_format(context.physical_device()), context.max_msaa(settings.msaa_samples)},
+      attachments_{target.format(), depth_stencil_format(context.physical_device()),
+                   context.max_msaa(settings.msaa_samples)},
       options_{settings.level_of_detail, settings.cull_chunks, settings.cull_cut_away, true, settings.translucency},
       final_layout_(target.final_layout()),
       passes_(device_, attachments_),
@@ -82,7 +83,8 @@ VkExtent2D ScenePass::scene_extent(VkExtent2D target) const {
 
 void ScenePass::set_device_timings(bool on) {
   if (!timestamps_.enable(on))
-    cost_.before_pass.device_ms = cost_.scene.device_ms = cost_.upscale.device_ms = cost_.overlay.device_ms = std::nullopt;
+    cost_.before_pass.device_ms = cost_.scene.device_ms = cost_.upscale.device_ms = cost_.overlay.device_ms =
+        std::nullopt;
 }
 
 void ScenePass::create_frame_slots() {
@@ -234,13 +236,14 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
   const VkImageLayout scene_layout = scaled ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : final_layout_;
   std::array<VkClearValue, 3> clears{};
   // The background is linear; the target holds encoded values (srgb.hpp).
-  clears[0].color = {{srgb_encode(params.background.r), srgb_encode(params.background.g), srgb_encode(params.background.b),
-                      1.0f}};
+  clears[0].color = {
+      {srgb_encode(params.background.r), srgb_encode(params.background.g), srgb_encode(params.background.b), 1.0f}};
   clears[1].depthStencil = {1.0f, 0};
   clears[2].color = clears[0].color;
   VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-  pass.renderPass = translucent ? passes_.get({VK_ATTACHMENT_LOAD_OP_CLEAR, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, true})
-                                : passes_.get({VK_ATTACHMENT_LOAD_OP_CLEAR, scene_layout});
+  pass.renderPass = translucent
+                        ? passes_.get({VK_ATTACHMENT_LOAD_OP_CLEAR, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, true})
+                        : passes_.get({VK_ATTACHMENT_LOAD_OP_CLEAR, scene_layout});
   pass.framebuffer = scaled ? scaled_->framebuffer() : framebuffers_.framebuffer(image);
   pass.renderArea = {{0, 0}, extent};
   pass.clearValueCount = attachments_.samples != VK_SAMPLE_COUNT_1_BIT ? 3 : 2;
@@ -256,15 +259,18 @@ void ScenePass::record(VkCommandBuffer cmd, const TargetImages& target, uint32_t
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout(), 0, 1, &frame_set, 0, nullptr);
   triangles_drawn_ = record_draws(cmd, draws.opaque, false, pipelines_, options_);
   if (params.section && params.section->mode == Section::Mode::Cut) {
-    if (!caps_) caps_ = std::make_unique<SectionCaps>(context_, pipelines_, render_pass_, attachments_.samples, uint32_t(kFramesInFlight));
+    if (!caps_)
+      caps_ = std::make_unique<SectionCaps>(context_, pipelines_, render_pass_, attachments_.samples,
+                                            uint32_t(kFramesInFlight));
     triangles_drawn_ += caps_->record(cmd, slot, draws.opaque, *params.section, params.camera, extent);
   }
   triangles_drawn_ += record_draws(cmd, draws.blended, true, pipelines_, options_);
   if (translucent) {
     vkCmdEndRenderPass(cmd);
-    if (!translucent_) translucent_ = std::make_unique<TranslucentPass>(context_, pipelines_, attachments_, render_pass_);
-    triangles_drawn_ += translucent_->record_accumulation(cmd, scaled ? scaled_->depth_view() : framebuffers_.depth_view(),
-                                                          extent, frame_set, draws.translucent);
+    if (!translucent_)
+      translucent_ = std::make_unique<TranslucentPass>(context_, pipelines_, attachments_, render_pass_);
+    triangles_drawn_ += translucent_->record_accumulation(
+        cmd, scaled ? scaled_->depth_view() : framebuffers_.depth_view(), extent, frame_set, draws.translucent);
     pass.renderPass = passes_.get({VK_ATTACHMENT_LOAD_OP_LOAD, scene_layout});
     vkCmdBeginRenderPass(cmd, &pass, VK_SUBPASS_CONTENTS_INLINE);
     translucent_->record_composite(cmd);

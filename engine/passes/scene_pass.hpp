@@ -93,7 +93,7 @@ class ScenePass {
   float render_scale_ = 1.0f;
   std::unique_ptr<ScaledScene> scaled_;
   MeshPipelines pipelines_;
-  std::unique_ptr<SectionCaps> caps_;               // made for the first cut frame
+  std::unique_ptr<SectionCaps> caps_;             // made for the first cut frame
   std::unique_ptr<TranslucentPass> translucent_;  // made for the first frame with translucent tissue
   VkDescriptorPool frame_pool_ = VK_NULL_HANDLE;
   std::array<FrameSlot, kFramesInFlight> slots_;

@@ -14,7 +14,8 @@ VkFormat depth_stencil_format(VkPhysicalDevice device) {
     vkGetPhysicalDeviceFormatProperties(device, format, &properties);
     if (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT) return format;
   }
-  throw std::runtime_error("the Vulkan device has no depth format with stencil (D32_SFLOAT_S8_UINT, D24_UNORM_S8_UINT)");
+  throw std::runtime_error(
+      "the Vulkan device has no depth format with stencil (D32_SFLOAT_S8_UINT, D24_UNORM_S8_UINT)");
 }
 
 SceneRenderPasses::~SceneRenderPasses() {
@@ -39,13 +40,15 @@ VkRenderPass make_scene_render_pass(VkDevice device, const SceneAttachments& for
   color.storeOp = msaa && !kind.keep ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
   color.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   color.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  color.initialLayout = load == VK_ATTACHMENT_LOAD_OP_LOAD ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
+  color.initialLayout =
+      load == VK_ATTACHMENT_LOAD_OP_LOAD ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
   color.finalLayout = msaa ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : final_layout;
   attachments.push_back(color);
 
   VkAttachmentDescription depth = color;
   depth.format = formats.depth;
-  depth.loadOp = load == VK_ATTACHMENT_LOAD_OP_LOAD ? VK_ATTACHMENT_LOAD_OP_DONT_CARE : load;  // the overlay tests no depth
+  depth.loadOp =
+      load == VK_ATTACHMENT_LOAD_OP_LOAD ? VK_ATTACHMENT_LOAD_OP_DONT_CARE : load;  // the overlay tests no depth
   depth.stencilLoadOp = depth.loadOp;
   depth.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   depth.storeOp = kind.keep ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
@@ -95,13 +98,8 @@ VkRenderPass make_scene_render_pass(VkDevice device, const SceneAttachments& for
   to_capture.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
   to_capture.dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_HOST_BIT;
   to_capture.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_HOST_READ_BIT;
-  const VkSubpassDependency self{0,
-                                 0,
-                                 kSceneSelfStages,
-                                 kSceneSelfStages,
-                                 kSceneSelfSrcAccess,
-                                 kSceneSelfDstAccess,
-                                 VK_DEPENDENCY_BY_REGION_BIT};
+  const VkSubpassDependency self{
+      0, 0, kSceneSelfStages, kSceneSelfStages, kSceneSelfSrcAccess, kSceneSelfDstAccess, VK_DEPENDENCY_BY_REGION_BIT};
   return make_render_pass(device, attachments, subpass, {dependency, to_capture, self});
 }
 

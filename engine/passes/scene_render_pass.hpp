@@ -26,7 +26,8 @@ VkFormat depth_stencil_format(VkPhysicalDevice device);
 // the meshes' colour writes before the overlay (FrameTimestamps::write).
 constexpr VkPipelineStageFlags kSceneSelfStages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
 constexpr VkAccessFlags kSceneSelfSrcAccess = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-constexpr VkAccessFlags kSceneSelfDstAccess = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+constexpr VkAccessFlags kSceneSelfDstAccess =
+    VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
 
 // How a pass into the scene's attachments starts and ends.
 struct SceneRenderPassKind {
@@ -44,13 +45,15 @@ struct SceneRenderPassKind {
 };
 
 // (attachments, kind) => a render pass over (colour, depth[, resolve]).
-VkRenderPass make_scene_render_pass(VkDevice device, const SceneAttachments& attachments, const SceneRenderPassKind& kind);
+VkRenderPass make_scene_render_pass(VkDevice device, const SceneAttachments& attachments,
+                                    const SceneRenderPassKind& kind);
 
 // The scene's render passes, each made the first time it is asked for and kept until the end:
 // compatible with each other, any serves to make pipelines and framebuffers.
 class SceneRenderPasses {
  public:
-  SceneRenderPasses(VkDevice device, const SceneAttachments& attachments) : device_(device), attachments_(attachments) {}
+  SceneRenderPasses(VkDevice device, const SceneAttachments& attachments)
+      : device_(device), attachments_(attachments) {}
   ~SceneRenderPasses();
   SceneRenderPasses(const SceneRenderPasses&) = delete;
   SceneRenderPasses& operator=(const SceneRenderPasses&) = delete;

@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "engine/gpu_device.hpp"
-#include "engine/render_target.hpp"
 #include "engine/passes/scene_pass.hpp"
+#include "engine/render_target.hpp"
 
 namespace needle::engine {
 
@@ -23,7 +23,9 @@ int SceneRenderer::msaa_samples() const { return int(pass_->samples()); }
 
 size_t SceneRenderer::triangles_drawn() const { return pass_->triangles_drawn(); }
 
-void SceneRenderer::set_render_scale(const RenderTarget& target, float scale) { pass_->set_render_scale(target.images(), scale); }
+void SceneRenderer::set_render_scale(const RenderTarget& target, float scale) {
+  pass_->set_render_scale(target.images(), scale);
+}
 
 float SceneRenderer::render_scale() const { return pass_->render_scale(); }
 

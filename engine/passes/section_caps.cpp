@@ -29,8 +29,9 @@ VkRect2D screen_rect(const Bounds& box, const Camera& camera, VkExtent2D extent)
   const glm::mat4 view_proj = view_projection(camera, {extent.width, extent.height});
   glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
   for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec4 clip = view_proj * glm::vec4((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
-                                                 (corner & 4) ? box.max.z : box.min.z, 1.0f);
+    const glm::vec4 clip =
+        view_proj * glm::vec4((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
+                              (corner & 4) ? box.max.z : box.min.z, 1.0f);
     if (clip.w <= 0.0f) return {{0, 0}, extent};
     // The viewport flips y: NDC y up is the framebuffer's row 0 at the top.
     const glm::vec2 ndc = glm::vec2(clip) / clip.w;
@@ -59,8 +60,8 @@ std::array<MeshVertex, 6> cap_quad(const Section& section, const std::vector<Sph
     const glm::dvec3 d = s.center - centre;
     half = std::max({half, std::abs(glm::dot(d, u)) + s.radius, std::abs(glm::dot(d, v)) + s.radius});
   }
-  const glm::dvec3 corners[4] = {centre - half * u - half * v, centre + half * u - half * v, centre + half * u + half * v,
-                                 centre - half * u + half * v};
+  const glm::dvec3 corners[4] = {centre - half * u - half * v, centre + half * u - half * v,
+                                 centre + half * u + half * v, centre - half * u + half * v};
   std::array<MeshVertex, 6> quad;
   const int order[6] = {0, 1, 2, 0, 2, 3};
   for (size_t i = 0; i < quad.size(); ++i) {
@@ -74,8 +75,8 @@ std::array<MeshVertex, 6> cap_quad(const Section& section, const std::vector<Sph
 SectionCaps::SectionCaps(const VulkanContext& context, const MeshPipelines& pipelines, VkRenderPass render_pass,
                          VkSampleCountFlagBits samples, uint32_t slots)
     : device_(context.device()), layout_(pipelines.layout()) {
-  const std::vector<VkDynamicState> stencil_state{VK_DYNAMIC_STATE_STENCIL_COMPARE_MASK,
-                                                  VK_DYNAMIC_STATE_STENCIL_WRITE_MASK, VK_DYNAMIC_STATE_STENCIL_REFERENCE};
+  const std::vector<VkDynamicState> stencil_state{
+      VK_DYNAMIC_STATE_STENCIL_COMPARE_MASK, VK_DYNAMIC_STATE_STENCIL_WRITE_MASK, VK_DYNAMIC_STATE_STENCIL_REFERENCE};
   MeshPipelineSpec stencil{section_stencil_frag_spv, sizeof(section_stencil_frag_spv)};
   stencil.variant = {true, false, true, false};  // every face
   stencil.depth.stencilTestEnable = VK_TRUE;
@@ -102,7 +103,8 @@ SectionCaps::SectionCaps(const VulkanContext& context, const MeshPipelines& pipe
     caps_[textured ? 1 : 0] = pipelines.make(cap);
   }
   for (uint32_t i = 0; i < slots; ++i)
-    quads_.push_back(GpuBuffer::host_visible(context, sizeof(std::array<MeshVertex, 6>), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT));
+    quads_.push_back(
+        GpuBuffer::host_visible(context, sizeof(std::array<MeshVertex, 6>), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT));
 }
 
 SectionCaps::~SectionCaps() {
@@ -110,8 +112,8 @@ SectionCaps::~SectionCaps() {
   for (VkPipeline p : caps_) vkDestroyPipeline(device_, p, nullptr);
 }
 
-size_t SectionCaps::record(VkCommandBuffer cmd, uint32_t slot, const std::vector<MeshDraw>& draws, const Section& section,
-                           const Camera& camera, VkExtent2D extent) {
+size_t SectionCaps::record(VkCommandBuffer cmd, uint32_t slot, const std::vector<MeshDraw>& draws,
+                           const Section& section, const Camera& camera, VkExtent2D extent) {
   std::vector<const MeshDraw*> cut;
   std::vector<Sphere> bounds;
   for (const MeshDraw& d : draws) {

@@ -54,10 +54,10 @@ VkRenderPass make_pass(VkDevice device, const SceneAttachments& scene) {
       attachments.push_back(resolve);
     }
   }
-  const std::array<VkAttachmentReference, 2> colors{{{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL},
-                                                     {1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}}};
-  const std::array<VkAttachmentReference, 2> resolves{{{3, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL},
-                                                       {4, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}}};
+  const std::array<VkAttachmentReference, 2> colors{
+      {{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}, {1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}}};
+  const std::array<VkAttachmentReference, 2> resolves{
+      {{3, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}, {4, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}}};
   const VkAttachmentReference depth_ref{2, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
   VkSubpassDescription subpass{};
   subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;

@@ -58,8 +58,8 @@ class TranslucentPass {
   ViewportQuad composite_;
   VkImageView depth_ = VK_NULL_HANDLE;
   VkExtent2D extent_{};
-  GpuImage accumulation_, revealage_;              // multisampled, as the scene; unused at 1 sample
-  GpuImage accumulation_read_, revealage_read_;    // one sample, what the composite reads
+  GpuImage accumulation_, revealage_;            // multisampled, as the scene; unused at 1 sample
+  GpuImage accumulation_read_, revealage_read_;  // one sample, what the composite reads
   VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
 };
 

@@ -38,8 +38,20 @@ ViewportQuad::ViewportQuad(VkDevice device, const uint32_t* frag, size_t frag_by
   VkShaderModule vert_module = shader_module(device_, viewport_quad_vert_spv, sizeof(viewport_quad_vert_spv));
   VkShaderModule frag_module = shader_module(device_, frag, frag_bytes);
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
-  stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vert_module, "main", nullptr};
-  stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, frag_module, "main", nullptr};
+  stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+               nullptr,
+               0,
+               VK_SHADER_STAGE_VERTEX_BIT,
+               vert_module,
+               "main",
+               nullptr};
+  stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+               nullptr,
+               0,
+               VK_SHADER_STAGE_FRAGMENT_BIT,
+               frag_module,
+               "main",
+               nullptr};
   VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
   assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
@@ -51,8 +63,15 @@ ViewportQuad::ViewportQuad(VkDevice device, const uint32_t* frag, size_t frag_by
   multisample.rasterizationSamples = samples;
   VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   const VkPipelineColorBlendAttachmentState blend_attachment = color_writes(blended);
-  const GraphicsPipelineStates states{{stages.begin(), stages.end()}, &vertex_input, &assembly, &raster, &multisample,
-                                      &depth, &blend_attachment, pipeline_layout_, render_pass};
+  const GraphicsPipelineStates states{{stages.begin(), stages.end()},
+                                      &vertex_input,
+                                      &assembly,
+                                      &raster,
+                                      &multisample,
+                                      &depth,
+                                      &blend_attachment,
+                                      pipeline_layout_,
+                                      render_pass};
   const VkResult r = create_graphics_pipeline(device_, states, &pipeline_);
   vkDestroyShaderModule(device_, vert_module, nullptr);
   vkDestroyShaderModule(device_, frag_module, nullptr);

@@ -5,9 +5,9 @@
 #include <stdexcept>
 
 #include "engine/deformation/deformation_pass.hpp"
+#include "engine/deformation/needle_pose.hpp"
 #include "engine/gltf_loader.hpp"
 #include "engine/passes/gpu_model.hpp"
-#include "engine/deformation/needle_pose.hpp"
 #include "engine/passes/scene_pass.hpp"
 
 namespace needle::engine {
@@ -41,8 +41,8 @@ void GpuScene::add_deformable(const SceneRenderer& renderer, Model model, size_t
     size_t uses = std::count_if(model.instances.begin(), model.instances.end(),
                                 [&](const MeshInstance& i) { return i.primitive == p; });
     if (uses > 1) {
-      throw AssetError(scene_.assets[asset].name + ": a deformable tissue cannot reuse a mesh in " + std::to_string(uses) +
-                       " nodes");
+      throw AssetError(scene_.assets[asset].name + ": a deformable tissue cannot reuse a mesh in " +
+                       std::to_string(uses) + " nodes");
     }
     grids.push_back(VertexGrid::sort_vertices(model.primitives[p], 0.5 * tissue.falloff * tissue.radius_m));
   }
@@ -92,8 +92,10 @@ FrameParams GpuScene::frame_params(const NeedleLoad* needle) {
   FrameParams params{scene_.camera, scene_.lights, scene_.background, {}, {}, {}, {}};
   for (size_t i = 0; i < scene_.assets.size(); ++i) {
     bool posed = needle && scene_.assets[i].role == AssetRole::Tool;
-    params.items.push_back({models_[model_of_asset_[i]].get(), posed ? needle_pose(needle->tip, needle->axis) : transforms_[i],
-                            {}, scene_.assets[i].role == AssetRole::Tissue});
+    params.items.push_back({models_[model_of_asset_[i]].get(),
+                            posed ? needle_pose(needle->tip, needle->axis) : transforms_[i],
+                            {},
+                            scene_.assets[i].role == AssetRole::Tissue});
   }
   const NeedleLoad free_needle;
   std::vector<std::function<void(VkCommandBuffer)>> passes;

@@ -24,8 +24,8 @@ RgbaImage render_scene_offscreen(const GpuDevice& device, const Scene& scene, Ex
   return render_once(device, extent, settings, scene);
 }
 
-RgbaImage render_model_offscreen(const GpuDevice& device, const Model& model, Extent extent,
-                                 const Scene& view, const RendererSettings& settings) {
+RgbaImage render_model_offscreen(const GpuDevice& device, const Model& model, Extent extent, const Scene& view,
+                                 const RendererSettings& settings) {
   return render_once(device, extent, settings, model, view);
 }
 

@@ -17,8 +17,11 @@ void write_png(const std::filesystem::path& file, const RgbaImage& image) {
   if (file.has_parent_path()) io::make_folder(file.parent_path());
   // Encoded in memory, then written whole and checked (a full disk is an error, not an empty PNG).
   std::string png;
-  const auto append = [](void* to, void* data, int size) { static_cast<std::string*>(to)->append(static_cast<char*>(data), size_t(size)); };
-  if (!stbi_write_png_to_func(append, &png, int(image.width), int(image.height), 4, image.pixels.data(), int(image.width * 4))) {
+  const auto append = [](void* to, void* data, int size) {
+    static_cast<std::string*>(to)->append(static_cast<char*>(data), size_t(size));
+  };
+  if (!stbi_write_png_to_func(append, &png, int(image.width), int(image.height), 4, image.pixels.data(),
+                              int(image.width * 4))) {
     throw std::runtime_error(file.string() + ": cannot encode the PNG");
   }
   io::write_file(file, png);

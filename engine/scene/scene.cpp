@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
-#include <cstdio>
 #include <set>
 #include <stdexcept>
 
@@ -45,11 +45,11 @@ class SceneReader : io::StrictJsonReader<AssetError> {
  private:
   // What a scene's numbers may be (docs/SCENE_FORMAT.md, "Ranges"): the renderer works in floats,
   // and a number past these gives a blank or broken picture, not an error, unless refused here.
-  static constexpr double kMaxLength_m = 1e4;     // positions, translations, near, far
-  static constexpr double kMaxComponent = 1e6;    // rotation and direction components, scale factors
+  static constexpr double kMaxLength_m = 1e4;   // positions, translations, near, far
+  static constexpr double kMaxComponent = 1e6;  // rotation and direction components, scale factors
   static constexpr double kMinScale = 1e-6;
-  static constexpr double kMaxDepthRatio = 1e7;   // far / near: beyond it the depth buffer resolves nothing
-  static constexpr double kMaxLight = 1e3;        // colour components, intensities
+  static constexpr double kMaxDepthRatio = 1e7;  // far / near: beyond it the depth buffer resolves nothing
+  static constexpr double kMaxLight = 1e3;       // colour components, intensities
   // Each asset is a glTF read, uploaded and drawn every frame; the shipped scenes have at most 6,
   // 256 leaves room for a patient's every structure; a scene of 50,000 needles (7 MB) had drawn no
   // frame after a minute.
@@ -70,8 +70,7 @@ class SceneReader : io::StrictJsonReader<AssetError> {
 
   template <int N>
   glm::vec<N, float> vector(const json& value, const std::string& at, double limit) const {
-    if (!value.is_array() || value.size() != N)
-      fail(at, "expected an array of " + std::to_string(N) + " numbers");
+    if (!value.is_array() || value.size() != N) fail(at, "expected an array of " + std::to_string(N) + " numbers");
     glm::vec<N, float> v;
     for (int k = 0; k < N; ++k) v[k] = bounded(value[static_cast<size_t>(k)], at + "/" + std::to_string(k), limit);
     return v;
@@ -95,12 +94,18 @@ class SceneReader : io::StrictJsonReader<AssetError> {
     a.name = string(member(value, at, "name"), at + "/name");
     a.gltf = existing_file(member(value, at, "gltf"), at + "/gltf", folder_);
     const std::string role = string(member(value, at, "role"), at + "/role");
-    if (role == "tissue") a.role = AssetRole::Tissue;
-    else if (role == "tool") a.role = AssetRole::Tool;
-    else if (role == "bone") a.role = AssetRole::Bone;
-    else if (role == "marker") a.role = AssetRole::Marker;
-    else fail(at + "/role", "\"" + role + "\", expected tissue, tool, bone or marker");
-    if (value.contains("translation")) a.translation = vector<3>(value["translation"], at + "/translation", kMaxLength_m);
+    if (role == "tissue")
+      a.role = AssetRole::Tissue;
+    else if (role == "tool")
+      a.role = AssetRole::Tool;
+    else if (role == "bone")
+      a.role = AssetRole::Bone;
+    else if (role == "marker")
+      a.role = AssetRole::Marker;
+    else
+      fail(at + "/role", "\"" + role + "\", expected tissue, tool, bone or marker");
+    if (value.contains("translation"))
+      a.translation = vector<3>(value["translation"], at + "/translation", kMaxLength_m);
     if (value.contains("rotation")) {
       const glm::vec4 q = vector<4>(value["rotation"], at + "/rotation", kMaxComponent);  // x, y, z, w as in glTF
       if (glm::length(q) < 1e-6f) fail(at + "/rotation", "the zero quaternion is not a rotation");
@@ -175,7 +180,8 @@ class SceneReader : io::StrictJsonReader<AssetError> {
         DirectionalLight light;
         light.direction = direction(member(list[i], where, "direction"), where + "/direction");
         if (list[i].contains("color")) light.color = color(list[i]["color"], where + "/color");
-        if (list[i].contains("intensity")) light.intensity = bounded(list[i]["intensity"], where + "/intensity", kMaxLight);
+        if (list[i].contains("intensity"))
+          light.intensity = bounded(list[i]["intensity"], where + "/intensity", kMaxLight);
         if (light.intensity < 0.0f) fail(where + "/intensity", "must be >= 0");
         lights.directional.push_back(light);
       }

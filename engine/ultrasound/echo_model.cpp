@@ -53,9 +53,10 @@ LayerSample evaluate_grid(const EchoGrid& g, double offset, const glm::dvec3& x)
   const double gx = 1.0 - f.x, gy = 1.0 - f.y, gz = 1.0 - f.z;
   const double value = gz * (gy * (gx * v000 + f.x * v100) + f.y * (gx * v010 + f.x * v110)) +
                        f.z * (gy * (gx * v001 + f.x * v101) + f.y * (gx * v011 + f.x * v111));
-  const glm::dvec3 gradient(gz * (gy * (v100 - v000) + f.y * (v110 - v010)) + f.z * (gy * (v101 - v001) + f.y * (v111 - v011)),
-                            gz * (gx * (v010 - v000) + f.x * (v110 - v100)) + f.z * (gx * (v011 - v001) + f.x * (v111 - v101)),
-                            gy * (gx * (v001 - v000) + f.x * (v101 - v100)) + f.y * (gx * (v011 - v010) + f.x * (v111 - v110)));
+  const glm::dvec3 gradient(
+      gz * (gy * (v100 - v000) + f.y * (v110 - v010)) + f.z * (gy * (v101 - v001) + f.y * (v111 - v011)),
+      gz * (gx * (v010 - v000) + f.x * (v110 - v100)) + f.z * (gx * (v011 - v001) + f.x * (v111 - v101)),
+      gy * (gx * (v001 - v000) + f.x * (v101 - v100)) + f.y * (gx * (v011 - v010) + f.x * (v111 - v110)));
   const double inside = g.quantum_m * value + offset;
   const glm::dvec3 out = x - p;
   const double gap = glm::length(out);
@@ -76,13 +77,18 @@ double time_gain(const UltrasoundProbe& probe, double depth_m) {
 // linear interpolation of its φ at the ends when it does not change sign there.
 double crossing_depth(const EchoScene& scene, const DeformationField& field, int k, const glm::dvec3& origin,
                       const glm::dvec3& beam, double z0, double z1) {
-  const auto phi = [&](double z) { return evaluate(scene.layers[size_t(k)], rest_position(field, origin + z * beam)).phi; };
+  const auto phi = [&](double z) {
+    return evaluate(scene.layers[size_t(k)], rest_position(field, origin + z * beam)).phi;
+  };
   double lo = z0, hi = z1, phi_lo = phi(z0), phi_hi = phi(z1);
-  if (phi_lo * phi_hi > 0.0 || phi_lo == phi_hi) return z0 + std::clamp(phi_lo / (phi_lo - phi_hi), 0.0, 1.0) * (z1 - z0);
+  if (phi_lo * phi_hi > 0.0 || phi_lo == phi_hi)
+    return z0 + std::clamp(phi_lo / (phi_lo - phi_hi), 0.0, 1.0) * (z1 - z0);
   while (hi - lo > 1e-9) {
     const double mid = 0.5 * (lo + hi), phi_mid = phi(mid);
-    if ((phi_mid < 0.0) == (phi_lo < 0.0)) lo = mid, phi_lo = phi_mid;
-    else hi = mid;
+    if ((phi_mid < 0.0) == (phi_lo < 0.0))
+      lo = mid, phi_lo = phi_mid;
+    else
+      hi = mid;
   }
   return 0.5 * (lo + hi);
 }
@@ -116,8 +122,9 @@ ScanLine trace_line(const EchoScene& scene, const UltrasoundProbe& probe, const 
       const double r = reflection(impedance(scene, current), kNeedleImpedance_MRayl);
       amplitude *= 1.0 - r * r * hit->weight;
     }
-    const double alpha = current < 0 ? 0.0 : nepers_per_m(scene.layers[size_t(current)].material.attenuation_dB_per_cm_MHz,
-                                                          probe.frequency_MHz);
+    const double alpha = current < 0 ? 0.0
+                                     : nepers_per_m(scene.layers[size_t(current)].material.attenuation_dB_per_cm_MHz,
+                                                    probe.frequency_MHz);
     amplitude *= std::exp(-2.0 * alpha * (z - z_prev));
     if (std::isinf(out.shadow_depth_m) && amplitude * time_gain(probe, z) < kShadowLevel) out.shadow_depth_m = z;
     z_prev = z;
@@ -149,8 +156,9 @@ double sample_depth(const UltrasoundProbe& probe, const UltrasoundSettings& sett
 
 LayerSample evaluate(const EchoLayer& layer, const glm::dvec3& x) {
   if (layer.grid) return evaluate_grid(*layer.grid, layer.grid_offset_m, x);
-  LayerSample best{layer.intersection ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity(),
-                   glm::dvec3(1.0, 0.0, 0.0)};
+  LayerSample best{
+      layer.intersection ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity(),
+      glm::dvec3(1.0, 0.0, 0.0)};
   for (const EchoPrimitive& p : layer.primitives) {
     const LayerSample s = evaluate_primitive(p, x);
     if (layer.intersection ? s.phi > best.phi : s.phi < best.phi) best = s;
@@ -191,8 +199,8 @@ uint32_t rest_node_spacing(const DeformationField& field, const UltrasoundSettin
 }
 
 glm::dvec3 interpolated_rest_position(const DeformationField& field, const UltrasoundProbe& probe,
-                                      const UltrasoundSettings& settings, uint32_t spacing, const glm::dvec3& line_origin,
-                                      uint32_t j) {
+                                      const UltrasoundSettings& settings, uint32_t spacing,
+                                      const glm::dvec3& line_origin, uint32_t j) {
   const uint32_t n = j / spacing;
   const auto offset = [&](uint32_t node) {
     const glm::dvec3 x = line_origin + sample_depth(probe, settings, node * spacing) * probe.direction;
@@ -246,7 +254,8 @@ std::vector<ScanLine> trace_scan_lines(const EchoScene& scene, const UltrasoundP
   const DeformationField field = echo::echo_field(scene, needle);
   std::vector<ScanLine> lines;
   lines.reserve(settings.lines);
-  for (uint32_t i = 0; i < settings.lines; ++i) lines.push_back(echo::trace_line(scene, probe, needle, settings, field, i));
+  for (uint32_t i = 0; i < settings.lines; ++i)
+    lines.push_back(echo::trace_line(scene, probe, needle, settings, field, i));
   return lines;
 }
 
@@ -263,8 +272,10 @@ double rest_interpolation_error(const EchoScene& scene, const UltrasoundProbe& p
   for (uint32_t i = 0; i < settings.lines; ++i) {
     const glm::dvec3 origin = echo::line_origin(probe, settings, i);
     for (uint32_t j = 0; j < settings.samples; ++j) {
-      const glm::dvec3 exact = echo::rest_position(field, origin + echo::sample_depth(probe, settings, j) * probe.direction);
-      worst = std::max(worst, glm::length(echo::interpolated_rest_position(field, probe, settings, spacing, origin, j) - exact));
+      const glm::dvec3 exact =
+          echo::rest_position(field, origin + echo::sample_depth(probe, settings, j) * probe.direction);
+      worst = std::max(
+          worst, glm::length(echo::interpolated_rest_position(field, probe, settings, spacing, origin, j) - exact));
     }
   }
   return worst;

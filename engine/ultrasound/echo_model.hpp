@@ -12,20 +12,20 @@
 
 namespace needle::engine::echo {
 
-constexpr double kSoundSpeed_mps = 1540.0;        // the scanner's assumed speed of sound in tissue
-constexpr double kBackscatterLevel = 0.05;        // −26 dB: echogenicity 1 against a perfect reflector
-constexpr double kTimeGain_dB_per_cm_MHz = 0.8;   // time-gain compensation, one way
+constexpr double kSoundSpeed_mps = 1540.0;                 // the scanner's assumed speed of sound in tissue
+constexpr double kBackscatterLevel = 0.05;                 // −26 dB: echogenicity 1 against a perfect reflector
+constexpr double kTimeGain_dB_per_cm_MHz = 0.8;            // time-gain compensation, one way
 constexpr double kSpecularWidth_rad = 0.5235987755982988;  // 30°: exp(−θ²/w²) of the angle to the normal
-constexpr double kGelImpedance_MRayl = 1.5;       // coupling gel, outside every layer (water-like)
-constexpr double kNeedleImpedance_MRayl = 45.0;   // stainless steel, ρc = 7900 kg/m³ × 5700 m/s
-constexpr double kReverberationRatio = 0.3;       // each echo of the needle's tail against the last (−10 dB)
+constexpr double kGelImpedance_MRayl = 1.5;                // coupling gel, outside every layer (water-like)
+constexpr double kNeedleImpedance_MRayl = 45.0;            // stainless steel, ρc = 7900 kg/m³ × 5700 m/s
+constexpr double kReverberationRatio = 0.3;                // each echo of the needle's tail against the last (−10 dB)
 constexpr int kReverberationEchoes = 4;
-constexpr double kShadowLevel = 0.01;             // −40 dB: where a line's shadow begins
-constexpr double kPulseCycles = 2.0;              // the pulse's length in wavelengths
-constexpr double kFNumber = 2.0;                  // lateral resolution = λ × F-number
-constexpr double kScattererCell_m = 1e-4;         // the scatterer field's grid
-constexpr int kRestIterations = 4;                // fixed-point steps from deformed to rest position
-constexpr int kMaxKernelRadius = 16;              // samples (or lines) either side of the PSF's centre
+constexpr double kShadowLevel = 0.01;      // −40 dB: where a line's shadow begins
+constexpr double kPulseCycles = 2.0;       // the pulse's length in wavelengths
+constexpr double kFNumber = 2.0;           // lateral resolution = λ × F-number
+constexpr double kScattererCell_m = 1e-4;  // the scatterer field's grid
+constexpr int kRestIterations = 4;         // fixed-point steps from deformed to rest position
+constexpr int kMaxKernelRadius = 16;       // samples (or lines) either side of the PSF's centre
 
 // Nepers per metre, one way, of α dB/(cm·MHz) at f MHz.
 double nepers_per_m(double dB_per_cm_MHz, double frequency_MHz);
@@ -68,8 +68,8 @@ uint32_t rest_node_spacing(const DeformationField& field, const UltrasoundSettin
 // Sample j's rest position on a line as the GPU finds it (shaders/ultrasound.glsl, rest_of_sample):
 // the offsets rest − x at the nodes `spacing` samples apart, linearly interpolated.
 glm::dvec3 interpolated_rest_position(const DeformationField& field, const UltrasoundProbe& probe,
-                                      const UltrasoundSettings& settings, uint32_t spacing, const glm::dvec3& line_origin,
-                                      uint32_t j);
+                                      const UltrasoundSettings& settings, uint32_t spacing,
+                                      const glm::dvec3& line_origin, uint32_t j);
 
 // Where a scan line meets the needle's near wall, and how strongly the wall sends the echo back:
 // the elevation beam's weight at the needle's offset from the image plane times the specular

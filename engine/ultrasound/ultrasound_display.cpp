@@ -19,7 +19,8 @@ UltrasoundDisplay::UltrasoundDisplay(const ScenePass& scene_pass, const Ultrasou
 
 void UltrasoundDisplay::record(VkCommandBuffer cmd, ScreenRect rect, VkExtent2D target) const {
   const float x0 = std::max(0.0f, rect.x), y0 = std::max(0.0f, rect.y);
-  const float x1 = std::min(float(target.width), rect.x + rect.width), y1 = std::min(float(target.height), rect.y + rect.height);
+  const float x1 = std::min(float(target.width), rect.x + rect.width),
+              y1 = std::min(float(target.height), rect.y + rect.height);
   if (x1 <= x0 || y1 <= y0) return;
   const VkViewport viewport{rect.x, rect.y, rect.width, rect.height, 0.0f, 1.0f};
   const VkRect2D scissor{{int32_t(std::floor(x0)), int32_t(std::floor(y0))},

@@ -32,8 +32,8 @@ constexpr uint32_t kLinesPerItem = 16;
 constexpr uint32_t kSliceLines = 64;
 static_assert(kSliceLines % kWorkgroup[0] == 0 && kSliceLines % kWorkgroup[1] == 0 && kSliceLines % kLinesPerItem == 0,
               "a slice starts a work group of every pass");
-constexpr size_t kMaxLoads = 8;      // ultrasound.glsl MAX_LOADS
-constexpr size_t kKernelVec4s = 5;   // ultrasound.glsl KERNEL_VEC4S
+constexpr size_t kMaxLoads = 8;     // ultrasound.glsl MAX_LOADS
+constexpr size_t kKernelVec4s = 5;  // ultrasound.glsl KERNEL_VEC4S
 constexpr size_t kMaxPrimitives = 128;
 static_assert(4 * kKernelVec4s > size_t(echo::kMaxKernelRadius), "the kernel's weights fit the uniform");
 
@@ -54,9 +54,9 @@ static_assert(sizeof(EchoUniforms) == 16 * (14 + 2 * kKernelVec4s) + 32 * kMaxLo
 
 // Mirrors of the Layers block (std140) and the Lines buffer (std430).
 struct LayerGpu {
-  glm::uvec4 shape;    // x first primitive, y count, z intersection, w grid + 1 (0: primitives)
+  glm::uvec4 shape;  // x first primitive, y count, z intersection, w grid + 1 (0: primitives)
   glm::vec4 material;
-  glm::vec4 grid;      // x the grid's offset (m)
+  glm::vec4 grid;  // x the grid's offset (m)
 };
 struct GridGpu {
   glm::vec4 origin_spacing;  // xyz origin, w spacing (m)
@@ -88,7 +88,19 @@ struct LineRecordGpu {
 };
 static_assert(sizeof(LineRecordGpu) == 32 + 16 * ScanLine::kMaxInterfaces, "std430 layout of LineRecord");
 
-enum Binding : uint32_t { kUniforms, kLayers, kEchoes, kAxial, kLines, kPicture, kRuns, kUniformsStorage, kRestOffsets, kGridValues, kBindings };
+enum Binding : uint32_t {
+  kUniforms,
+  kLayers,
+  kEchoes,
+  kAxial,
+  kLines,
+  kPicture,
+  kRuns,
+  kUniformsStorage,
+  kRestOffsets,
+  kGridValues,
+  kBindings
+};
 
 VkDescriptorType descriptor_type(uint32_t binding) {
   switch (binding) {
@@ -108,7 +120,8 @@ VkDescriptorType descriptor_type(uint32_t binding) {
 // complex echoes (half the memory the convolutions read: on lavapipe the axial pass took half the
 // time, docs/BENCHMARKS.md, "Fifth round").
 constexpr VkFormat kComplexFormat = VK_FORMAT_R32G32_SFLOAT;
-GpuImage work_image(const VulkanContext& context, uint32_t width, uint32_t height, VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT) {
+GpuImage work_image(const VulkanContext& context, uint32_t width, uint32_t height,
+                    VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT) {
   return GpuImage(context, {{width, height}, format, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
 }
 
@@ -116,20 +129,24 @@ GpuImage work_image(const VulkanContext& context, uint32_t width, uint32_t heigh
 void check_device(const VulkanContext& context) {
   VkFormatProperties properties;
   vkGetPhysicalDeviceFormatProperties(context.physical_device(), kComplexFormat, &properties);
-  if (!context.storage_image_extended_formats() || !(properties.optimalTilingFeatures & VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT))
-    throw VulkanError("the ultrasound image needs R32G32_SFLOAT storage images (shaderStorageImageExtendedFormats), which " +
-                      context.device_description() + " does not offer");
+  if (!context.storage_image_extended_formats() ||
+      !(properties.optimalTilingFeatures & VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT))
+    throw VulkanError(
+        "the ultrasound image needs R32G32_SFLOAT storage images (shaderStorageImageExtendedFormats), which " +
+        context.device_description() + " does not offer");
 }
 
 void check(const EchoScene& scene, const UltrasoundSettings& settings) {
-  if (settings.lines == 0 || settings.samples == 0) throw std::invalid_argument("an ultrasound image needs lines and samples");
+  if (settings.lines == 0 || settings.samples == 0)
+    throw std::invalid_argument("an ultrasound image needs lines and samples");
   if (settings.sweep_frames == 0) throw std::invalid_argument("an ultrasound sweep takes at least one frame");
   if (scene.layers.size() > EchoScene::kMaxLayers)
     throw std::invalid_argument("the ultrasound takes " + std::to_string(EchoScene::kMaxLayers) + " layers, not " +
                                 std::to_string(scene.layers.size()));
   for (const EchoLayer& layer : scene.layers) {
     if (layer.grid) {
-      if (!layer.primitives.empty()) throw std::invalid_argument("layer \"" + layer.name + "\" has both a grid and primitives");
+      if (!layer.primitives.empty())
+        throw std::invalid_argument("layer \"" + layer.name + "\" has both a grid and primitives");
       const glm::uvec3 n = layer.grid->nodes;
       if (n.x < 2 || n.y < 2 || n.z < 2 || !layer.grid->values || layer.grid->values->size() != size_t(n.x) * n.y * n.z)
         throw std::invalid_argument("layer \"" + layer.name + "\": its grid's values are not its nodes' count");
@@ -137,7 +154,8 @@ void check(const EchoScene& scene, const UltrasoundSettings& settings) {
     }
     if (layer.primitives.empty() || layer.primitives.size() > EchoLayer::kMaxPrimitives)
       throw std::invalid_argument("layer \"" + layer.name + "\" has " + std::to_string(layer.primitives.size()) +
-                                  " primitives; the ultrasound takes 1 to " + std::to_string(EchoLayer::kMaxPrimitives));
+                                  " primitives; the ultrasound takes 1 to " +
+                                  std::to_string(EchoLayer::kMaxPrimitives));
   }
 }
 
@@ -147,11 +165,13 @@ std::vector<const EchoGrid*> distinct_grids(const EchoScene& scene) {
   for (const EchoLayer& l : scene.layers)
     if (l.grid && std::find(grids.begin(), grids.end(), l.grid.get()) == grids.end()) grids.push_back(l.grid.get());
   if (grids.size() > EchoScene::kMaxGrids)
-    throw std::invalid_argument("the ultrasound takes " + std::to_string(EchoScene::kMaxGrids) + " grids, not " + std::to_string(grids.size()));
+    throw std::invalid_argument("the ultrasound takes " + std::to_string(EchoScene::kMaxGrids) + " grids, not " +
+                                std::to_string(grids.size()));
   size_t values = 0;
   for (const EchoGrid* g : grids) values += g->values->size();
   if (values > EchoScene::kMaxGridValues)
-    throw std::invalid_argument("the ultrasound takes " + std::to_string(EchoScene::kMaxGridValues) + " grid nodes in all, not " + std::to_string(values));
+    throw std::invalid_argument("the ultrasound takes " + std::to_string(EchoScene::kMaxGridValues) +
+                                " grid nodes in all, not " + std::to_string(values));
   return grids;
 }
 
@@ -168,21 +188,23 @@ LayersGpu pack_layers(const EchoScene& scene, const std::vector<const EchoGrid*>
   LayersGpu out{};
   uint32_t first_value = 0;
   for (size_t g = 0; g < grids.size(); ++g) {
-    out.grids[g] = {glm::vec4(glm::vec3(grids[g]->origin), float(grids[g]->spacing_m)), glm::uvec4(grids[g]->nodes, first_value),
-                    glm::vec4(float(grids[g]->quantum_m), 0.0f, 0.0f, 0.0f)};
+    out.grids[g] = {glm::vec4(glm::vec3(grids[g]->origin), float(grids[g]->spacing_m)),
+                    glm::uvec4(grids[g]->nodes, first_value), glm::vec4(float(grids[g]->quantum_m), 0.0f, 0.0f, 0.0f)};
     first_value += uint32_t(grids[g]->values->size());
   }
   uint32_t next = 0;
   for (size_t k = 0; k < scene.layers.size(); ++k) {
     const EchoLayer& l = scene.layers[k];
     const EchoMaterial& m = l.material;
-    const uint32_t grid = l.grid ? uint32_t(std::find(grids.begin(), grids.end(), l.grid.get()) - grids.begin()) + 1u : 0u;
+    const uint32_t grid =
+        l.grid ? uint32_t(std::find(grids.begin(), grids.end(), l.grid.get()) - grids.begin()) + 1u : 0u;
     out.layers[k] = {glm::uvec4(next, uint32_t(l.primitives.size()), l.intersection ? 1u : 0u, grid),
                      glm::vec4(float(m.impedance_MRayl), float(m.attenuation_dB_per_cm_MHz), float(m.echogenicity),
                                float(m.scatterer_density)),
                      glm::vec4(float(l.grid_offset_m), 0.0f, 0.0f, 0.0f)};
     for (const EchoPrimitive& p : l.primitives)
-      out.primitives[next++] = {glm::vec4(glm::vec3(p.a), float(int(p.kind))), glm::vec4(glm::vec3(p.b), float(p.radius))};
+      out.primitives[next++] = {glm::vec4(glm::vec3(p.a), float(int(p.kind))),
+                                glm::vec4(glm::vec3(p.b), float(p.radius))};
   }
   return out;
 }
@@ -201,7 +223,6 @@ double sum(const std::vector<float>& w, int power) {
   for (size_t k = 1; k < w.size(); ++k) s += 2.0 * std::pow(double(w[k]), power);
   return s;
 }
-
 
 void compute_barrier(VkCommandBuffer cmd, VkPipelineStageFlags src_stage, VkAccessFlags src, VkAccessFlags dst) {
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
@@ -227,15 +248,18 @@ UltrasoundPass::UltrasoundPass(const VulkanContext& context, EchoScene scene, co
   const LayersGpu packed = pack_layers(scene_, grids);
   layers_ = GpuBuffer::device_local_with_data(context_, &packed, sizeof packed, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   const std::vector<int16_t> values = grid_values(grids);
-  grid_values_ = GpuBuffer::device_local_with_data(context_, values.data(), values.size() * sizeof(int16_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  grid_values_ = GpuBuffer::device_local_with_data(context_, values.data(), values.size() * sizeof(int16_t),
+                                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   echoes_ = work_image(context_, settings_.samples, settings_.lines, kComplexFormat);
   axial_ = work_image(context_, settings_.samples, settings_.lines, kComplexFormat);
   runs_ = work_image(context_, kMaxRuns, settings_.lines);
   rest_offsets_ = work_image(context_, settings_.samples + 1, settings_.lines);  // rest_nodes() at a spacing of 1
-  lines_ = GpuBuffer::host_visible(context_, settings_.lines * sizeof(LineRecordGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  image_ = GpuImage(context_, {{settings_.lines, settings_.samples},
-                               VK_FORMAT_R8G8B8A8_UNORM,
-                               VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
+  lines_ =
+      GpuBuffer::host_visible(context_, settings_.lines * sizeof(LineRecordGpu), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  image_ =
+      GpuImage(context_, {{settings_.lines, settings_.samples},
+                          VK_FORMAT_R8G8B8A8_UNORM,
+                          VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
 
   std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * kRing},
                                              {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3 * kRing},
@@ -295,10 +319,12 @@ void UltrasoundPass::set_sweep_frames(uint32_t frames) {
 
 void UltrasoundPass::divide_lines() {
   // Slice k: groups of kSliceLines lines [k G / n, (k + 1) G / n) of the image's G, n at most G.
-  const uint32_t groups = (settings_.lines + kSliceLines - 1) / kSliceLines, n = std::min(settings_.sweep_frames, groups);
+  const uint32_t groups = (settings_.lines + kSliceLines - 1) / kSliceLines,
+                 n = std::min(settings_.sweep_frames, groups);
   slices_.clear();
   for (uint32_t k = 0; k < n; ++k)
-    slices_.push_back({std::min(settings_.lines, k * groups / n * kSliceLines), std::min(settings_.lines, (k + 1) * groups / n * kSliceLines)});
+    slices_.push_back({std::min(settings_.lines, k * groups / n * kSliceLines),
+                       std::min(settings_.lines, (k + 1) * groups / n * kSliceLines)});
   made_.assign(n, {});
   next_slice_ = 0;
 }
@@ -324,37 +350,41 @@ void UltrasoundPass::set_device_timings(bool on) {
 std::optional<std::array<double, UltrasoundPass::kPasses>> UltrasoundPass::read_pass_ms() const {
   if (!timed_ || timed_slot_ >= kRing) return std::nullopt;
   std::array<uint64_t, kPasses + 1> ticks{};
-  VK_CHECK(vkGetQueryPoolResults(device_, timestamps_, uint32_t(timed_slot_ * (kPasses + 1)), uint32_t(ticks.size()), sizeof ticks,
-                                 ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+  VK_CHECK(vkGetQueryPoolResults(device_, timestamps_, uint32_t(timed_slot_ * (kPasses + 1)), uint32_t(ticks.size()),
+                                 sizeof ticks, ticks.data(), sizeof(uint64_t),
+                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
   const uint32_t bits = context_.timestamp_valid_bits();
   const uint64_t mask = bits >= 64 ? ~uint64_t(0) : (uint64_t(1) << bits) - 1;
   std::array<double, kPasses> ms{};
-  for (size_t p = 0; p < kPasses; ++p) ms[p] = double((ticks[p + 1] - ticks[p]) & mask) * context_.timestamp_period_ns() * 1e-6;
+  for (size_t p = 0; p < kPasses; ++p)
+    ms[p] = double((ticks[p + 1] - ticks[p]) & mask) * context_.timestamp_period_ns() * 1e-6;
   return ms;
 }
 
 VkPipeline UltrasoundPass::pipeline(size_t pass, uint32_t constant) {
   const auto key = std::pair{pass, constant};
   if (const auto found = pipelines_.find(key); found != pipelines_.end()) return found->second;
-  static constexpr std::array<std::pair<const uint32_t*, size_t>, kPasses> kCode{{
-      {ultrasound_lines_comp_spv, sizeof(ultrasound_lines_comp_spv)},
-      {ultrasound_rest_comp_spv, sizeof(ultrasound_rest_comp_spv)},
-      {ultrasound_echoes_comp_spv, sizeof(ultrasound_echoes_comp_spv)},
-      {ultrasound_axial_comp_spv, sizeof(ultrasound_axial_comp_spv)},
-      {ultrasound_image_comp_spv, sizeof(ultrasound_image_comp_spv)}}};
+  static constexpr std::array<std::pair<const uint32_t*, size_t>, kPasses> kCode{
+      {{ultrasound_lines_comp_spv, sizeof(ultrasound_lines_comp_spv)},
+       {ultrasound_rest_comp_spv, sizeof(ultrasound_rest_comp_spv)},
+       {ultrasound_echoes_comp_spv, sizeof(ultrasound_echoes_comp_spv)},
+       {ultrasound_axial_comp_spv, sizeof(ultrasound_axial_comp_spv)},
+       {ultrasound_image_comp_spv, sizeof(ultrasound_image_comp_spv)}}};
   const VkSpecializationMapEntry entry{kConstantId[pass], 0, sizeof constant};
   const VkSpecializationInfo info{1, &entry, sizeof constant, &constant};
   return pipelines_[key] = compute_pipeline(device_, pipeline_layout_, kCode[pass].first, kCode[pass].second, &info,
                                             VK_PIPELINE_CREATE_DISPATCH_BASE_BIT);  // a slice's lines (record)
 }
 
-std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProbe& probe, const NeedleLoad* needle, bool unless_shown) {
+std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProbe& probe, const NeedleLoad* needle,
+                                                            bool unless_shown) {
   const UltrasoundSettings& s = settings_;
   const double dz = probe.depth_m / s.samples, dx = probe.width_m / s.lines;
   const std::vector<float> axial = gaussian_weights(echo::axial_sigma_m(probe), dz);
   const std::vector<float> lateral = gaussian_weights(echo::lateral_sigma_m(probe), dx);
   const DeformationField field = echo::echo_field(scene_, needle);
-  if (field.loads.size() > kMaxLoads) throw std::invalid_argument("the ultrasound takes " + std::to_string(kMaxLoads) + " tissue loads");
+  if (field.loads.size() > kMaxLoads)
+    throw std::invalid_argument("the ultrasound takes " + std::to_string(kMaxLoads) + " tissue loads");
 
   EchoUniforms u{};
   u.origin = glm::vec4(glm::vec3(probe.position), 0.0f);
@@ -368,8 +398,8 @@ std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProb
   u.beam = glm::vec4(float(echo::nepers_per_m(1.0, probe.frequency_MHz)),
                      float(echo::nepers_per_m(echo::kTimeGain_dB_per_cm_MHz, probe.frequency_MHz)),
                      float(echo::kBackscatterLevel), float(echo::kSpecularWidth_rad));
-  u.media = glm::vec4(float(echo::kGelImpedance_MRayl), float(echo::kNeedleImpedance_MRayl), float(echo::kReverberationRatio),
-                      float(echo::kShadowLevel));
+  u.media = glm::vec4(float(echo::kGelImpedance_MRayl), float(echo::kNeedleImpedance_MRayl),
+                      float(echo::kReverberationRatio), float(echo::kShadowLevel));
   if (needle) {
     u.needle_tip = glm::vec4(glm::vec3(needle->tip), 1.0f);
     u.needle_axis = glm::vec4(glm::vec3(glm::normalize(needle->axis)), float(scene_.needle.length_m));
@@ -378,8 +408,10 @@ std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProb
                        float(echo::kReverberationEchoes), 0.0f);
   // The tissue's level after the point spread function is its backscatter whatever the sampling:
   // speckle's mean power over 1/√(Σ h²) of the 2-D kernel, a uniform level (no speckle) over 1/Σ h.
-  const double normalisation = s.speckle ? 1.0 / std::sqrt(sum(axial, 2) * sum(lateral, 2)) : 1.0 / (sum(axial, 1) * sum(lateral, 1));
-  u.display = glm::vec4(float(s.dynamic_range_dB), float(s.gain_dB), float(normalisation), float(echo::kScattererCell_m));
+  const double normalisation =
+      s.speckle ? 1.0 / std::sqrt(sum(axial, 2) * sum(lateral, 2)) : 1.0 / (sum(axial, 1) * sum(lateral, 1));
+  u.display =
+      glm::vec4(float(s.dynamic_range_dB), float(s.gain_dB), float(normalisation), float(echo::kScattererCell_m));
   u.material = glm::vec4(float(field.material.a()), float(field.material.b()), 0.0f, 0.0f);
   for (size_t k = 0; k < axial.size(); ++k) u.axial_weights[k / 4][int(k % 4)] = axial[k];
   for (size_t k = 0; k < lateral.size(); ++k) u.lateral_weights[k / 4][int(k % 4)] = lateral[k];
@@ -405,8 +437,9 @@ std::function<void(VkCommandBuffer)> UltrasoundPass::update(const UltrasoundProb
   };
 }
 
-void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms, const std::array<VkPipeline, kPasses>& pipelines,
-                            uint32_t spacing, uint32_t lateral_radius, std::optional<size_t> slice) {
+void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms,
+                            const std::array<VkPipeline, kPasses>& pipelines, uint32_t spacing, uint32_t lateral_radius,
+                            std::optional<size_t> slice) {
   const size_t slot = ring_;
   ring_ = (ring_ + 1) % kRing;
   std::memcpy(uniforms_[slot].mapped(), uniforms.data(), uniforms.size());
@@ -420,12 +453,14 @@ void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uni
   // come before this image's writes.
   compute_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-  transition_image(cmd, image_.image(), image_layout_, VK_IMAGE_LAYOUT_GENERAL,
-                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
-                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
+  transition_image(
+      cmd, image_.image(), image_layout_, VK_IMAGE_LAYOUT_GENERAL,
+      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
+      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
   if (!work_images_ready_) {
     for (const GpuImage* work : {&echoes_, &axial_, &runs_, &rest_offsets_})
-      transition_image(cmd, work->image(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+      transition_image(cmd, work->image(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                       VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
                        VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                        VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     work_images_ready_ = true;
@@ -435,12 +470,13 @@ void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uni
   VkMemoryBarrier before_clear{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   before_clear.srcAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
   before_clear.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &before_clear, 0, nullptr, 0,
-                       nullptr);
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &before_clear,
+                       0, nullptr, 0, nullptr);
   const VkClearColorValue zero{};
   const VkImageSubresourceRange whole{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
   vkCmdClearColorImage(cmd, echoes_.image(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &whole);
-  compute_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+  compute_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &sets_[slot], 0, nullptr);
   // A timestamp after each pass: the barrier after each makes a CPU device (lavapipe) finish the
   // pass before it takes the next (engine/passes/scene_pass.cpp, write_timestamp).
@@ -465,11 +501,12 @@ void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uni
   struct Groups {
     uint32_t base_x, base_y, x, y;
   };
-  const std::array<Groups, kPasses> groups{{{first / kWorkgroup[0], 0, groups_of(lines, kWorkgroup[0]), 1},
-                                            {first / kWorkgroup[1], 0, groups_of(lines, kWorkgroup[1]), nodes},
-                                            {0, first_group, groups_of(samples, kWorkgroup[2]), line_groups},
-                                            {0, first_group, groups_of(samples, kWorkgroup[3]), line_groups},
-                                            {0, reach_first, groups_of(samples, kWorkgroup[4]), reach_end - reach_first}}};
+  const std::array<Groups, kPasses> groups{
+      {{first / kWorkgroup[0], 0, groups_of(lines, kWorkgroup[0]), 1},
+       {first / kWorkgroup[1], 0, groups_of(lines, kWorkgroup[1]), nodes},
+       {0, first_group, groups_of(samples, kWorkgroup[2]), line_groups},
+       {0, first_group, groups_of(samples, kWorkgroup[3]), line_groups},
+       {0, reach_first, groups_of(samples, kWorkgroup[4]), reach_end - reach_first}}};
   for (size_t p = 0; p < kPasses; ++p) {
     if (p > 0)
       compute_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
@@ -480,8 +517,8 @@ void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uni
       vkCmdDispatchBase(cmd, g.base_x, g.base_y, 0, g.x, g.y, 1);
     }
     if (timed_) {
-      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0, nullptr, 0,
-                           nullptr);
+      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr,
+                           0, nullptr, 0, nullptr);
       vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, first_query + uint32_t(p) + 1);
     }
   }
@@ -489,32 +526,38 @@ void UltrasoundPass::record(VkCommandBuffer cmd, const std::vector<uint8_t>& uni
   // The picture goes to fragment shaders (the UI pass); the scan lines to the host.
   transition_image(cmd, image_.image(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT);
+                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT);
   VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   to_host.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
   to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0,
+                       nullptr, 0, nullptr);
   image_layout_ = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 }
 
 RgbaImage UltrasoundPass::read_image() const {
-  RgbaImage out{settings_.lines, settings_.samples, std::vector<uint8_t>(size_t(settings_.lines) * settings_.samples * 4)};
+  RgbaImage out{settings_.lines, settings_.samples,
+                std::vector<uint8_t>(size_t(settings_.lines) * settings_.samples * 4)};
   if (image_layout_ == VK_IMAGE_LAYOUT_UNDEFINED) return out;  // no image yet: black
   GpuBuffer host = GpuBuffer::host_visible(context_, out.pixels.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   context_.submit_and_wait([&](VkCommandBuffer cmd) {
-    transition_image(cmd, image_.image(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                     VK_ACCESS_TRANSFER_READ_BIT);
+    transition_image(cmd, image_.image(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {settings_.lines, settings_.samples, 1};
     vkCmdCopyImageToBuffer(cmd, image_.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.handle(), 1, &region);
-    transition_image(cmd, image_.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                     VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0);
+    transition_image(cmd, image_.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0);
     VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0,
+                         nullptr);
   });
   std::memcpy(out.pixels.data(), host.mapped(), out.pixels.size());
   return out;

@@ -39,7 +39,8 @@ class UltrasoundPass {
   // `unless_shown`, once there is an image: the next slice of the sweep (settings().sweep_frames)
   // whose lines were last recorded from other uniforms, or none (an empty function) when every
   // slice's were these (the scene and settings are the pass's own, so the lines would be the same).
-  std::function<void(VkCommandBuffer)> update(const UltrasoundProbe& probe, const NeedleLoad* needle, bool unless_shown = false);
+  std::function<void(VkCommandBuffer)> update(const UltrasoundProbe& probe, const NeedleLoad* needle,
+                                              bool unless_shown = false);
   // From the next image on, every line made again when it changes; std::invalid_argument for 0.
   void set_sweep_frames(uint32_t frames);
 
@@ -73,8 +74,9 @@ class UltrasoundPass {
   void divide_lines();
   // `spacing`: the rest nodes' (echo.kernel.w), `lateral_radius` the lateral kernel's (echo.kernel.y);
   // `slice`: the sweep's slice recorded, none: all.
-  void record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms, const std::array<VkPipeline, kPasses>& pipelines,
-              uint32_t spacing, uint32_t lateral_radius, std::optional<size_t> slice);
+  void record(VkCommandBuffer cmd, const std::vector<uint8_t>& uniforms,
+              const std::array<VkPipeline, kPasses>& pipelines, uint32_t spacing, uint32_t lateral_radius,
+              std::optional<size_t> slice);
 
   const VulkanContext& context_;
   VkDevice device_;
@@ -87,10 +89,10 @@ class UltrasoundPass {
   std::array<VkDescriptorSet, kRing> sets_{};
   std::array<GpuBuffer, kRing> uniforms_;
   GpuBuffer layers_;
-  GpuBuffer grid_values_;  // every grid layer's values, 16 bits each (EchoGrid)
+  GpuBuffer grid_values_;                          // every grid layer's values, 16 bits each (EchoGrid)
   GpuImage echoes_, axial_, runs_, rest_offsets_;  // float images between the passes, in GENERAL layout
-  bool work_images_ready_ = false;   // once transitioned to GENERAL
-  GpuBuffer lines_;  // host-visible: read back after an image
+  bool work_images_ready_ = false;                 // once transitioned to GENERAL
+  GpuBuffer lines_;                                // host-visible: read back after an image
   GpuImage image_;
   VkImageLayout image_layout_ = VK_IMAGE_LAYOUT_UNDEFINED;
   size_t ring_ = 0;

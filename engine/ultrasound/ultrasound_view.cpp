@@ -30,7 +30,8 @@ void UltrasoundView::render(const UltrasoundProbe& probe, const NeedleLoad* need
 }
 
 CommandRecorder UltrasoundView::draw(const SceneRenderer& renderer, ScreenRect rect, Extent frame) {
-  if (!display_ || &display_->scene_pass() != &renderer.pass()) display_ = std::make_unique<UltrasoundDisplay>(renderer.pass(), *pass_);
+  if (!display_ || &display_->scene_pass() != &renderer.pass())
+    display_ = std::make_unique<UltrasoundDisplay>(renderer.pass(), *pass_);
   if (!pass_->has_image()) return {};
   return [display = display_.get(), rect, frame](const CommandBuffer& cmd) {
     display->record(cmd.handle, rect, {frame.width, frame.height});

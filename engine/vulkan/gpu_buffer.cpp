@@ -26,7 +26,8 @@ GpuBuffer::GpuBuffer(const VulkanContext& context, VkDeviceSize size, VkBufferUs
   try {
     vk_check_size(vkAllocateMemory(device_, &alloc, nullptr, &memory_), "vkAllocateMemory", what, device);
     vk_check_size(vkBindBufferMemory(device_, buffer_, memory_, 0), "vkBindBufferMemory", what, device);
-    if (memory & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT) VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
+    if (memory & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
+      VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
   } catch (...) {
     reset();
     throw;

@@ -26,9 +26,7 @@ GpuDevice::~GpuDevice() = default;
 
 std::string GpuDevice::device_description() const { return context_->device_description(); }
 
-bool GpuDevice::is_cpu_device() const {
-  return context_->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-}
+bool GpuDevice::is_cpu_device() const { return context_->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
 
 double GpuDevice::timestamp_period_ns() const { return context_->timestamp_period_ns(); }
 

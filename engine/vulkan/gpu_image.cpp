@@ -4,8 +4,8 @@
 #include <string>
 #include <utility>
 
-#include "engine/vulkan/gpu_buffer.hpp"
 #include "engine/model.hpp"
+#include "engine/vulkan/gpu_buffer.hpp"
 #include "engine/vulkan/vk_check.hpp"
 #include "engine/vulkan/vulkan_context.hpp"
 
@@ -87,7 +87,8 @@ GpuImage GpuImage::texture(const VulkanContext& context, const Texture& texels) 
   }
   GpuBuffer staging = GpuBuffer::host_visible(context, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
   std::memcpy(staging.mapped(), texels.rgba8.data(), size);
-  GpuImage image(context, {{texels.width, texels.height}, VK_FORMAT_R8G8B8A8_SRGB,
+  GpuImage image(context, {{texels.width, texels.height},
+                           VK_FORMAT_R8G8B8A8_SRGB,
                            VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT});
   context.submit_and_wait([&](VkCommandBuffer cmd) {
     transition_image(cmd, image.image(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,

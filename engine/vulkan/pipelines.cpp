@@ -15,7 +15,8 @@ VkShaderModule shader_module(VkDevice device, const uint32_t* code, size_t bytes
   return module;
 }
 
-VkDescriptorSetLayout descriptor_set_layout(VkDevice device, const std::vector<VkDescriptorSetLayoutBinding>& bindings) {
+VkDescriptorSetLayout descriptor_set_layout(VkDevice device,
+                                            const std::vector<VkDescriptorSetLayoutBinding>& bindings) {
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   info.bindingCount = uint32_t(bindings.size());
   info.pBindings = bindings.data();
@@ -38,7 +39,13 @@ VkPipeline compute_pipeline(VkDevice device, VkPipelineLayout layout, const uint
   const VkShaderModule module = shader_module(device, code, bytes);
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   info.flags = flags;
-  info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_COMPUTE_BIT, module, "main", specialization};
+  info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                nullptr,
+                0,
+                VK_SHADER_STAGE_COMPUTE_BIT,
+                module,
+                "main",
+                specialization};
   info.layout = layout;
   VkPipeline pipeline = VK_NULL_HANDLE;
   const VkResult r = vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
@@ -49,7 +56,8 @@ VkPipeline compute_pipeline(VkDevice device, VkPipelineLayout layout, const uint
 
 VkPipelineColorBlendAttachmentState color_writes(bool blended) {
   VkPipelineColorBlendAttachmentState blend{};
-  blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  blend.colorWriteMask =
+      VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
   if (!blended) return blend;
   blend.blendEnable = VK_TRUE;
   blend.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
@@ -90,7 +98,8 @@ VkResult create_graphics_pipeline(VkDevice device, const GraphicsPipelineStates&
 }
 
 VkRenderPass make_render_pass(VkDevice device, const std::vector<VkAttachmentDescription>& attachments,
-                              const VkSubpassDescription& subpass, const std::vector<VkSubpassDependency>& dependencies) {
+                              const VkSubpassDescription& subpass,
+                              const std::vector<VkSubpassDependency>& dependencies) {
   VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
   info.attachmentCount = uint32_t(attachments.size());
   info.pAttachments = attachments.data();

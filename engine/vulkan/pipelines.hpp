@@ -33,7 +33,7 @@ struct GraphicsPipelineStates {
   const VkPipelineColorBlendAttachmentState* blend_attachment = nullptr;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkRenderPass render_pass = VK_NULL_HANDLE;
-  uint32_t color_attachments = 1;  // blend_attachment points to this many states
+  uint32_t color_attachments = 1;                   // blend_attachment points to this many states
   std::vector<VkDynamicState> more_dynamic_states;  // besides the viewport and scissor
 };
 // The result of vkCreateGraphicsPipelines, for the caller to free its modules before throwing.
@@ -41,7 +41,8 @@ VkResult create_graphics_pipeline(VkDevice device, const GraphicsPipelineStates&
 
 // A render pass of one subpass over `attachments`, ordered by `dependencies`.
 VkRenderPass make_render_pass(VkDevice device, const std::vector<VkAttachmentDescription>& attachments,
-                              const VkSubpassDescription& subpass, const std::vector<VkSubpassDependency>& dependencies);
+                              const VkSubpassDescription& subpass,
+                              const std::vector<VkSubpassDependency>& dependencies);
 
 // A framebuffer of `render_pass` over `attachments` (in the pass's order), one layer of `extent`.
 VkFramebuffer make_framebuffer(VkDevice device, VkRenderPass render_pass, const std::vector<VkImageView>& attachments,

@@ -23,7 +23,8 @@ HeadlessTarget::HeadlessTarget(const GpuDevice& device, Extent extent)
 
 WindowTarget::WindowTarget(const GpuDevice& device, Window& window)
     : RenderTarget(nullptr), device_(device), window_(window) {
-  no_shared_memory_ = device.is_cpu_device() ? SharedMemoryImages::unavailable(device.context(), window) : "not a CPU device";
+  no_shared_memory_ =
+      device.is_cpu_device() ? SharedMemoryImages::unavailable(device.context(), window) : "not a CPU device";
   if (no_shared_memory_.empty()) {
     replace_images(std::make_unique<SharedMemoryImages>(device.context(), window));
     presentation_ = Presentation::SharedMemory;
@@ -60,7 +61,9 @@ bool WindowTarget::set_presentation(Presentation mode) {
 
 std::string WindowTarget::presentation_note() const {
   if (presentation_ == Presentation::SharedMemory) return "frames through X11 shared memory (MIT-SHM)";
-  const char* mode = presentation_ == Presentation::Mailbox ? "mailbox" : presentation_ == Presentation::Immediate ? "immediate" : "FIFO";
+  const char* mode = presentation_ == Presentation::Mailbox     ? "mailbox"
+                     : presentation_ == Presentation::Immediate ? "immediate"
+                                                                : "FIFO";
   std::string note = std::string("frames through the Vulkan swapchain (") + mode + ")";
   if (device_.is_cpu_device()) note += "; not through X11 shared memory: " + no_shared_memory_;
   return note;

@@ -21,7 +21,8 @@ namespace needle::engine {
 namespace {
 
 constexpr VkExternalMemoryHandleTypeFlagBits kHostMemory = VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_ALLOCATION_BIT_EXT;
-constexpr VkImageUsageFlags kUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;  // drawn, captured
+constexpr VkImageUsageFlags kUsage =
+    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;  // drawn, captured
 
 // Xlib reports a request's failure to one process-wide handler (by default: print and exit), so
 // attaching a segment, which fails on a server on another machine, is tried with this one in place.
@@ -45,8 +46,8 @@ bool attach(Display* display, XShmSegmentInfo& segment) {
 // A 32-bit pixel with blue in the lowest byte is VK_FORMAT_B8G8R8A8_UNORM's memory order.
 bool is_bgrx(Display* display, const XWindowAttributes& attributes) {
   const Visual* v = attributes.visual;
-  return ImageByteOrder(display) == LSBFirst && (attributes.depth == 24 || attributes.depth == 32) && v->red_mask == 0xff0000 &&
-         v->green_mask == 0x00ff00 && v->blue_mask == 0x0000ff;
+  return ImageByteOrder(display) == LSBFirst && (attributes.depth == 24 || attributes.depth == 32) &&
+         v->red_mask == 0xff0000 && v->green_mask == 0x00ff00 && v->blue_mask == 0x0000ff;
 }
 
 // A private System V segment of `bytes` attached here (segment.shmid and shmaddr set, read-only to
@@ -63,7 +64,8 @@ bool make_segment(XShmSegmentInfo& segment, size_t bytes) {
 }
 
 VkDeviceSize host_pointer_alignment(const VulkanContext& context) {
-  VkPhysicalDeviceExternalMemoryHostPropertiesEXT host{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTERNAL_MEMORY_HOST_PROPERTIES_EXT};
+  VkPhysicalDeviceExternalMemoryHostPropertiesEXT host{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTERNAL_MEMORY_HOST_PROPERTIES_EXT};
   VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &host};
   vkGetPhysicalDeviceProperties2(context.physical_device(), &properties);
   return host.minImportedHostPointerAlignment;
@@ -79,8 +81,10 @@ bool imports_linear_images(const VulkanContext& context) {
   info.usage = kUsage;
   VkExternalImageFormatProperties external_properties{VK_STRUCTURE_TYPE_EXTERNAL_IMAGE_FORMAT_PROPERTIES};
   VkImageFormatProperties2 properties{VK_STRUCTURE_TYPE_IMAGE_FORMAT_PROPERTIES_2, &external_properties};
-  if (vkGetPhysicalDeviceImageFormatProperties2(context.physical_device(), &info, &properties) != VK_SUCCESS) return false;
-  return external_properties.externalMemoryProperties.externalMemoryFeatures & VK_EXTERNAL_MEMORY_FEATURE_IMPORTABLE_BIT;
+  if (vkGetPhysicalDeviceImageFormatProperties2(context.physical_device(), &info, &properties) != VK_SUCCESS)
+    return false;
+  return external_properties.externalMemoryProperties.externalMemoryFeatures &
+         VK_EXTERNAL_MEMORY_FEATURE_IMPORTABLE_BIT;
 }
 
 }  // namespace
@@ -114,8 +118,10 @@ struct SharedMemoryImages::X11 {
 };
 
 std::string SharedMemoryImages::unavailable(const VulkanContext& context, const Window& window) {
-  if (!context.imports_host_memory()) return "the Vulkan device cannot draw into host memory (no VK_EXT_external_memory_host)";
-  if (!imports_linear_images(context)) return "the Vulkan device cannot draw a linear BGRA8 image in imported host memory";
+  if (!context.imports_host_memory())
+    return "the Vulkan device cannot draw into host memory (no VK_EXT_external_memory_host)";
+  if (!imports_linear_images(context))
+    return "the Vulkan device cannot draw a linear BGRA8 image in imported host memory";
   Display* display = glfwGetX11Display();
   const ::Window x_window = display ? glfwGetX11Window(window.handle()) : 0;
   if (!display || !x_window) return "not an X11 window";
@@ -136,7 +142,8 @@ std::string SharedMemoryImages::unavailable(const VulkanContext& context, const 
 
 SharedMemoryImages::SharedMemoryImages(const VulkanContext& context, Window& window)
     : context_(context), window_(window), x11_(std::make_unique<X11>()) {
-  if (const std::string why = unavailable(context, window); !why.empty()) throw VulkanError("X11 shared memory presentation: " + why);
+  if (const std::string why = unavailable(context, window); !why.empty())
+    throw VulkanError("X11 shared memory presentation: " + why);
   x11_->display = glfwGetX11Display();
   x11_->window = glfwGetX11Window(window.handle());
   XGetWindowAttributes(x11_->display, x11_->window, &x11_->attributes);
@@ -198,16 +205,20 @@ bool SharedMemoryImages::recreate() {
 
   // The segment: whole pages of the import's alignment, holding the image as the device lays it out.
   const VkDeviceSize alignment = std::max<VkDeviceSize>(host_pointer_alignment(context_), 1);
-  const VkDeviceSize bytes = (std::max(needs.size, layout.rowPitch * extent_.height) + alignment - 1) / alignment * alignment;
+  const VkDeviceSize bytes =
+      (std::max(needs.size, layout.rowPitch * extent_.height) + alignment - 1) / alignment * alignment;
   X11& x = *x11_;
   if (!make_segment(x.segment, bytes))
-    throw VulkanError("X11 shared memory presentation: no segment of " + std::to_string(bytes) + " bytes (shmget, shmat)");
-  x.image = XShmCreateImage(x.display, x.attributes.visual, unsigned(x.attributes.depth), ZPixmap, x.segment.shmaddr, &x.segment,
-                            unsigned(layout.rowPitch / 4), extent_.height);
+    throw VulkanError("X11 shared memory presentation: no segment of " + std::to_string(bytes) +
+                      " bytes (shmget, shmat)");
+  x.image = XShmCreateImage(x.display, x.attributes.visual, unsigned(x.attributes.depth), ZPixmap, x.segment.shmaddr,
+                            &x.segment, unsigned(layout.rowPitch / 4), extent_.height);
   if (!x.image || x.image->bits_per_pixel != 32 || size_t(x.image->bytes_per_line) != layout.rowPitch)
-    throw VulkanError("X11 shared memory presentation: the server's image of this window is not 32 bits a pixel, rows of " +
-                      std::to_string(layout.rowPitch) + " bytes");
-  if (!attach(x.display, x.segment)) throw VulkanError("X11 shared memory presentation: the X server refused the segment");
+    throw VulkanError(
+        "X11 shared memory presentation: the server's image of this window is not 32 bits a pixel, rows of " +
+        std::to_string(layout.rowPitch) + " bytes");
+  if (!attach(x.display, x.segment))
+    throw VulkanError("X11 shared memory presentation: the X server refused the segment");
   x.attached = true;
 
   auto host_pointer_properties = reinterpret_cast<PFN_vkGetMemoryHostPointerPropertiesEXT>(

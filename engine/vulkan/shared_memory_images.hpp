@@ -46,8 +46,8 @@ class SharedMemoryImages final : public TargetImages {
   void show_pending();
 
  private:
-  struct X11;         // the segment and the window's X objects (shared_memory_images.cpp)
-  bool recreate();    // false while the window has no area
+  struct X11;       // the segment and the window's X objects (shared_memory_images.cpp)
+  bool recreate();  // false while the window has no area
   void release();
 
   const VulkanContext& context_;

@@ -72,7 +72,8 @@ bool Swapchain::recreate() {
   info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
   info.preTransform = caps.currentTransform;
   info.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
-  info.presentMode = present_mode_;  // FIFO unless set_present_mode: always available; paces the frame loop to the display
+  info.presentMode =
+      present_mode_;  // FIFO unless set_present_mode: always available; paces the frame loop to the display
   info.clipped = VK_TRUE;
   info.oldSwapchain = swapchain_;
   VkSwapchainKHR fresh;
@@ -121,7 +122,8 @@ bool Swapchain::set_present_mode(VkPresentModeKHR mode) {
   uint32_t count = 0;
   VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(context_.physical_device(), context_.surface(), &count, nullptr));
   std::vector<VkPresentModeKHR> modes(count);
-  VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(context_.physical_device(), context_.surface(), &count, modes.data()));
+  VK_CHECK(
+      vkGetPhysicalDeviceSurfacePresentModesKHR(context_.physical_device(), context_.surface(), &count, modes.data()));
   if (std::find(modes.begin(), modes.end(), mode) == modes.end()) return false;
   if (mode != present_mode_) stale_ = true;
   present_mode_ = mode;

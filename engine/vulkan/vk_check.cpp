@@ -5,7 +5,8 @@ namespace needle::engine {
 const char* vk_result_name(VkResult result) {
   switch (result) {
 #define NEEDLE_VK_RESULT(r) \
-  case r: return #r;
+  case r:                   \
+    return #r;
     NEEDLE_VK_RESULT(VK_SUCCESS)
     NEEDLE_VK_RESULT(VK_NOT_READY)
     NEEDLE_VK_RESULT(VK_TIMEOUT)
@@ -26,7 +27,8 @@ const char* vk_result_name(VkResult result) {
     NEEDLE_VK_RESULT(VK_ERROR_NATIVE_WINDOW_IN_USE_KHR)
     NEEDLE_VK_RESULT(VK_ERROR_OUT_OF_DATE_KHR)
 #undef NEEDLE_VK_RESULT
-    default: return "VkResult (other)";
+    default:
+      return "VkResult (other)";
   }
 }
 

@@ -23,7 +23,8 @@ inline void vk_check(VkResult result, const char* call) {
 // `device`, said so; any other failure is vk_check's.
 inline void vk_check_size(VkResult result, const char* call, const std::string& what, const std::string& device) {
   if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY)
-    throw VulkanError(what + " is too large for this device (" + device + "): " + vk_result_name(result) + " from " + call);
+    throw VulkanError(what + " is too large for this device (" + device + "): " + vk_result_name(result) + " from " +
+                      call);
   vk_check(result, call);
 }
 

@@ -24,21 +24,31 @@ bool has_layer(const char* name) {
 
 int type_rank(VkPhysicalDeviceType type) {
   switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 3;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 1;
-    default: return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return 4;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return 3;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return 1;
+    default:
+      return 0;
   }
 }
 
 const char* type_name(VkPhysicalDeviceType type) {
   switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "CPU";
-    default: return "other";
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return "discrete GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return "integrated GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return "virtual GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return "CPU";
+    default:
+      return "other";
   }
 }
 
@@ -85,8 +95,9 @@ void VulkanContext::create_instance(const DeviceOptions& options, const Window* 
   std::vector<const char*> layers;
   if (options.validation) {
     if (!has_layer(kValidationLayer)) {
-      throw VulkanError("validation was requested but VK_LAYER_KHRONOS_validation is not installed "
-                        "(Debian package vulkan-validationlayers)");
+      throw VulkanError(
+          "validation was requested but VK_LAYER_KHRONOS_validation is not installed "
+          "(Debian package vulkan-validationlayers)");
     }
     layers.push_back(kValidationLayer);
     extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
@@ -167,7 +178,8 @@ void VulkanContext::pick_physical_device() {
     // hand-offs simple; every device we target has one.
     std::optional<uint32_t> family;
     for (uint32_t i = 0; i < family_count; ++i) {
-      bool graphics = (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT);
+      bool graphics =
+          (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT);
       VkBool32 present = VK_TRUE;
       if (surface_) vkGetPhysicalDeviceSurfaceSupportKHR(candidate, i, surface_, &present);
       if (graphics && present) {
@@ -177,7 +189,8 @@ void VulkanContext::pick_physical_device() {
     }
     int rank = type_rank(props.deviceType);
     if (!family) {
-      rejected += std::string(" ") + props.deviceName + " (no graphics+compute" + (surface_ ? "+present" : "") + " queue);";
+      rejected +=
+          std::string(" ") + props.deviceName + " (no graphics+compute" + (surface_ ? "+present" : "") + " queue);";
       continue;
     }
     if (props.apiVersion < VK_API_VERSION_1_1) {
@@ -193,7 +206,9 @@ void VulkanContext::pick_physical_device() {
     }
   }
   if (!physical_device_) {
-    throw VulkanError("no usable Vulkan device" + (rejected.empty() ? std::string(" (none found: is mesa-vulkan-drivers installed?)") : ":" + rejected));
+    throw VulkanError("no usable Vulkan device" + (rejected.empty()
+                                                       ? std::string(" (none found: is mesa-vulkan-drivers installed?)")
+                                                       : ":" + rejected));
   }
   vkGetPhysicalDeviceMemoryProperties(physical_device_, &memory_properties_);
 }

@@ -58,8 +58,7 @@ class VulkanContext {
  private:
   static VKAPI_ATTR VkBool32 VKAPI_CALL on_debug_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                          VkDebugUtilsMessageTypeFlagsEXT type,
-                                                         const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                                         void* self);
+                                                         const VkDebugUtilsMessengerCallbackDataEXT* data, void* self);
   void create_instance(const DeviceOptions& options, const Window* window);
   void pick_physical_device();
   void create_device();

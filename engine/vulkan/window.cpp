@@ -20,18 +20,29 @@ namespace {
 Key key_of(int key) {
   if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z) return Key(int(Key::kA) + (key - GLFW_KEY_A));
   switch (key) {
-    case GLFW_KEY_UP: return Key::kUp;
-    case GLFW_KEY_DOWN: return Key::kDown;
-    case GLFW_KEY_LEFT: return Key::kLeft;
-    case GLFW_KEY_RIGHT: return Key::kRight;
-    case GLFW_KEY_PAGE_UP: return Key::kPageUp;
-    case GLFW_KEY_PAGE_DOWN: return Key::kPageDown;
-    case GLFW_KEY_TAB: return Key::kTab;
+    case GLFW_KEY_UP:
+      return Key::kUp;
+    case GLFW_KEY_DOWN:
+      return Key::kDown;
+    case GLFW_KEY_LEFT:
+      return Key::kLeft;
+    case GLFW_KEY_RIGHT:
+      return Key::kRight;
+    case GLFW_KEY_PAGE_UP:
+      return Key::kPageUp;
+    case GLFW_KEY_PAGE_DOWN:
+      return Key::kPageDown;
+    case GLFW_KEY_TAB:
+      return Key::kTab;
     case GLFW_KEY_ENTER:
-    case GLFW_KEY_KP_ENTER: return Key::kEnter;
-    case GLFW_KEY_ESCAPE: return Key::kEscape;
-    case GLFW_KEY_F3: return Key::kF3;
-    default: return Key::kOther;
+    case GLFW_KEY_KP_ENTER:
+      return Key::kEnter;
+    case GLFW_KEY_ESCAPE:
+      return Key::kEscape;
+    case GLFW_KEY_F3:
+      return Key::kF3;
+    default:
+      return Key::kOther;
   }
 }
 
@@ -70,9 +81,8 @@ Window::Window(const std::string& title, int width, int height) {
   window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (!window_) throw std::runtime_error("GLFW could not create a window");
   glfwSetWindowUserPointer(window_, this);
-  glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) {
-    static_cast<Window*>(glfwGetWindowUserPointer(w))->resized_ = true;
-  });
+  glfwSetFramebufferSizeCallback(
+      window_, [](GLFWwindow* w, int, int) { static_cast<Window*>(glfwGetWindowUserPointer(w))->resized_ = true; });
   // Installed before the UI pass's ImGui backend, which chains to them.
   glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) {
     static_cast<Window*>(glfwGetWindowUserPointer(w))->scroll_ += dy;
@@ -81,7 +91,8 @@ Window::Window(const std::string& title, int width, int height) {
     if (action == GLFW_RELEASE) return;
     auto* self = static_cast<Window*>(glfwGetWindowUserPointer(w));
     if (key == GLFW_KEY_UP || key == GLFW_KEY_DOWN) self->scroll_ += key == GLFW_KEY_UP ? 1.0 : -1.0;
-    if (self->key_presses_.size() < kMaxKeyPresses) self->key_presses_.push_back({key_of(key), (mods & GLFW_MOD_SHIFT) != 0});
+    if (self->key_presses_.size() < kMaxKeyPresses)
+      self->key_presses_.push_back({key_of(key), (mods & GLFW_MOD_SHIFT) != 0});
   });
 }
 
@@ -158,7 +169,8 @@ std::vector<Window::KeyPress> Window::take_key_presses() {
 }
 
 bool Window::take_key_press(Key key) {
-  const auto end = std::remove_if(key_presses_.begin(), key_presses_.end(), [key](const KeyPress& p) { return p.key == key; });
+  const auto end =
+      std::remove_if(key_presses_.begin(), key_presses_.end(), [key](const KeyPress& p) { return p.key == key; });
   const bool taken = end != key_presses_.end();
   key_presses_.erase(end, key_presses_.end());
   return taken;

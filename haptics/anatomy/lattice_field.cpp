@@ -20,7 +20,9 @@ LatticeField::LatticeField(const Lattice& lattice, const Eigen::Vector3d& lo, co
   values_.assign(total, lattice.quanta(fill_m));
 }
 
-Eigen::Vector3d LatticeField::position(int i, int j, int k) const { return lattice_.spacing_m * Eigen::Vector3d(i, j, k); }
+Eigen::Vector3d LatticeField::position(int i, int j, int k) const {
+  return lattice_.spacing_m * Eigen::Vector3d(i, j, k);
+}
 
 int16_t LatticeField::at(int i, int j, int k, int16_t outside) const {
   if (i < first_[0] || j < first_[1] || k < first_[2] || i >= first_[0] + count_[0] || j >= first_[1] + count_[1] ||
@@ -54,7 +56,8 @@ void LatticeField::assign_beneath(const std::function<double(double x, double y,
       const double inverse_norm = 1.0 / std::sqrt(1.0 + dzdx * dzdx + dzdy * dzdy);
       for (int k = 0; k < count_[2]; ++k) {
         const double z = column.z() + lattice_.spacing_m * k;
-        values_[index(first_[0] + i, first_[1] + j, first_[2] + k)] = lattice_.quanta((z - top) * inverse_norm - offset_m);
+        values_[index(first_[0] + i, first_[1] + j, first_[2] + k)] =
+            lattice_.quanta((z - top) * inverse_norm - offset_m);
       }
     }
 }

@@ -49,7 +49,8 @@ class LatticeField {
   // Every node: the region beneath a height field, φ = (z − height(x, y)) / √(1 + |∇height|²) −
   // offset, the distance to the surface's tangent plane (exact for a plane, close for a gently curved
   // surface); `height` gives the height and writes the slopes. Shapes' frame.
-  void assign_beneath(const std::function<double(double x, double y, double& dzdx, double& dzdy)>& height, double offset_m);
+  void assign_beneath(const std::function<double(double x, double y, double& dzdx, double& dzdy)>& height,
+                      double offset_m);
   // Union: each node within `reach_m` of the primitive's box takes min(value, φ). With reach at
   // least the fill, a node's value stays a lower bound of its distance to the union.
   void add(const ShapePrimitive& p, double reach_m);
@@ -65,7 +66,8 @@ class LatticeField {
 
  private:
   size_t index(int i, int j, int k) const {
-    return (size_t(k - first_[2]) * size_t(count_[1]) + size_t(j - first_[1])) * size_t(count_[0]) + size_t(i - first_[0]);
+    return (size_t(k - first_[2]) * size_t(count_[1]) + size_t(j - first_[1])) * size_t(count_[0]) +
+           size_t(i - first_[0]);
   }
   template <class F>
   void for_nodes(const std::array<int, 3>& lo, const std::array<int, 3>& hi, F f);

@@ -104,9 +104,11 @@ VertebraDimensions vertebra_closed_form(const PatientParams& p, int level) {
   v.canal_depth_m = kCanalLength.of(p.sex) * s * mm;
   // [Cook2021]'s width at L5, the other levels in [Guj2012]'s proportion to it.
   const double interpedicular = l1_to_l5(kL1Interpedicular.of(p.sex), kL5Interpedicular.of(p.sex), level);
-  v.canal_width_m = (kL5CanalWidth.of(p.sex) * interpedicular / kL5Interpedicular.of(p.sex) * s + kCanalWidthPerYear * age) * mm;
+  v.canal_width_m =
+      (kL5CanalWidth.of(p.sex) * interpedicular / kL5Interpedicular.of(p.sex) * s + kCanalWidthPerYear * age) * mm;
   v.pedicle_height_m =
-      (kL5PedicleHeight.of(p.sex) * kPedicleHeightShape[l] / kPedicleHeightShape[4] * s + kPedicleHeightPerYear * age) * mm;
+      (kL5PedicleHeight.of(p.sex) * kPedicleHeightShape[l] / kPedicleHeightShape[4] * s + kPedicleHeightPerYear * age) *
+      mm;
   v.pedicle_width_m = (kL5PedicleWidth.of(p.sex) * kPedicleWidthRatio[l] * s + kPedicleWidthPerYear * age) * mm;
   v.lamina_thickness_m = kLaminaThickness * s * mm;
   v.spinous_process_length_m = kSpinousLength[l] * s * mm;
@@ -125,11 +127,11 @@ PatientDimensions patient_dimensions(const PatientParams& p) {
   PatientDimensions d;
   for (int level = 0; level < kLumbarLevels; ++level) {
     VertebraDimensions v = vertebra_closed_form(p, level);
-    for (double* x : {&v.body_height_m, &v.body_anterior_height_m, &v.body_depth_m, &v.body_width_m, &v.canal_depth_m,
-                      &v.canal_width_m, &v.pedicle_height_m, &v.pedicle_width_m, &v.lamina_thickness_m,
-                      &v.spinous_process_length_m, &v.spinous_process_height_m, &v.spinous_process_thickness_m,
-                      &v.transverse_process_span_m, &v.disc_posterior_height_m, &v.disc_anterior_height_m,
-                      &v.interlaminar_gap_neutral_m})
+    for (double* x :
+         {&v.body_height_m, &v.body_anterior_height_m, &v.body_depth_m, &v.body_width_m, &v.canal_depth_m,
+          &v.canal_width_m, &v.pedicle_height_m, &v.pedicle_width_m, &v.lamina_thickness_m, &v.spinous_process_length_m,
+          &v.spinous_process_height_m, &v.spinous_process_thickness_m, &v.transverse_process_span_m,
+          &v.disc_posterior_height_m, &v.disc_anterior_height_m, &v.interlaminar_gap_neutral_m})
       *x *= 1.0 + 0.04 * vary();
     d.vertebrae[size_t(level)] = v;
   }

@@ -20,14 +20,14 @@ inline constexpr std::array<const char*, 5> kInterspaceNames{"L1-L2", "L2-L3", "
 
 // One lumbar vertebra (metres) and the disc and interspace below it.
 struct VertebraDimensions {
-  double body_height_m = 0.0;            // posterior height of the body (VBPH)
-  double body_anterior_height_m = 0.0;   // VBAH
-  double body_depth_m = 0.0;             // antero-posterior length of the endplate (VBSL)
-  double body_width_m = 0.0;             // transverse
-  double canal_depth_m = 0.0;            // antero-posterior length of the canal (VCL)
-  double canal_width_m = 0.0;            // transverse (VCW, the interpedicular distance)
-  double pedicle_height_m = 0.0;         // PH
-  double pedicle_width_m = 0.0;          // PW
+  double body_height_m = 0.0;           // posterior height of the body (VBPH)
+  double body_anterior_height_m = 0.0;  // VBAH
+  double body_depth_m = 0.0;            // antero-posterior length of the endplate (VBSL)
+  double body_width_m = 0.0;            // transverse
+  double canal_depth_m = 0.0;           // antero-posterior length of the canal (VCL)
+  double canal_width_m = 0.0;           // transverse (VCW, the interpedicular distance)
+  double pedicle_height_m = 0.0;        // PH
+  double pedicle_width_m = 0.0;         // PW
   double lamina_thickness_m = 0.0;
   double spinous_process_length_m = 0.0;  // from the canal's posterior border to the tip
   double spinous_process_height_m = 0.0;  // cranio-caudal, at the tip

@@ -41,7 +41,8 @@ Patient generate_patient(const PatientParams& params, const Eigen::Vector3d& l3_
   const PatientDimensions& d = s.dims;
   Lattice lattice = base_lattice;
   const int skin_q = int(std::lround(d.skin_thickness_m / lattice.quantum_m));
-  const int deep_q = int(std::lround(offset_for_depth(s, d.skin_to_epidural_l3_l4_m, d.skin_thickness_m) / lattice.quantum_m));
+  const int deep_q =
+      int(std::lround(offset_for_depth(s, d.skin_to_epidural_l3_l4_m, d.skin_thickness_m) / lattice.quantum_m));
   const double offset = deep_q * lattice.quantum_m;
   p.fat_thickness_m = offset - skin_q * lattice.quantum_m;
   for (int k = 0; k < 5; ++k) {
@@ -62,10 +63,12 @@ Patient generate_patient(const PatientParams& params, const Eigen::Vector3d& l3_
   const double half_x = s.lateral_extent_m + 8.0 * mm;
   double top = -1e9;
   for (double x = -half_x; x <= half_x; x += 5.0 * mm)
-    for (double y = s.lo.y() - 8.0 * mm; y <= s.hi.y() + 8.0 * mm; y += 5.0 * mm) top = std::max(top, skin_height(s, x, y, offset));
+    for (double y = s.lo.y() - 8.0 * mm; y <= s.hi.y() + 8.0 * mm; y += 5.0 * mm)
+      top = std::max(top, skin_height(s, x, y, offset));
   LatticeField body(lattice, Vector3d(-half_x, s.lo.y() - 8.0 * mm, s.lo.z() - 10.0 * mm),
                     Vector3d(half_x, s.hi.y() + 8.0 * mm, top + 3.0 * mm), 0, 0.0);
-  body.assign_beneath([&](double x, double y, double& dzdx, double& dzdy) { return s.deep_top(x, y, &dzdx, &dzdy); }, offset);
+  body.assign_beneath([&](double x, double y, double& dzdx, double& dzdy) { return s.deep_top(x, y, &dzdx, &dzdy); },
+                      offset);
 
   // Each structure: its primitives, 3 nodes of margin, a lower bound of the distance (the fill) of
   // 8 mm for bone (a tracer's steps) and 4 mm for the rest; then the cuts, in order of precedence.
@@ -102,13 +105,18 @@ Patient generate_patient(const PatientParams& params, const Eigen::Vector3d& l3_
   const auto body_grid = body.grid();
   const auto dura_grid = dura.grid();
   const double dura_offset = std::lround(d.dura_thickness_m / lattice.quantum_m) * lattice.quantum_m;
-  const std::array<LayerShape, kPatientLayers.size()> shapes{
-      LayerShape::grid(body_grid, 0.0),       LayerShape::grid(body_grid, skin_q * lattice.quantum_m),
-      LayerShape::grid(body_grid, offset),    LayerShape::grid(supraspinous.grid()),
-      LayerShape::grid(interspinous.grid()),  LayerShape::grid(flavum.grid()),
-      LayerShape::grid(epidural.grid()),      LayerShape::grid(dura_grid),
-      LayerShape::grid(dura_grid, dura_offset), LayerShape::grid(disc.grid()),
-      LayerShape::grid(bone.grid()),          LayerShape::grid(crest.grid())};
+  const std::array<LayerShape, kPatientLayers.size()> shapes{LayerShape::grid(body_grid, 0.0),
+                                                             LayerShape::grid(body_grid, skin_q * lattice.quantum_m),
+                                                             LayerShape::grid(body_grid, offset),
+                                                             LayerShape::grid(supraspinous.grid()),
+                                                             LayerShape::grid(interspinous.grid()),
+                                                             LayerShape::grid(flavum.grid()),
+                                                             LayerShape::grid(epidural.grid()),
+                                                             LayerShape::grid(dura_grid),
+                                                             LayerShape::grid(dura_grid, dura_offset),
+                                                             LayerShape::grid(disc.grid()),
+                                                             LayerShape::grid(bone.grid()),
+                                                             LayerShape::grid(crest.grid())};
   for (size_t i = 0; i < shapes.size(); ++i)
     p.layers.push_back({kPatientLayers[i].name, shapes[i], kPatientLayers[i].parameters, kPatientLayers[i].rigid});
   std::vector<const SdfGrid*> counted;

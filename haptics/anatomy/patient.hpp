@@ -37,13 +37,13 @@ struct Approach {
 
 struct Patient {
   PatientParams params;
-  Spine spine;                     // the patient's frame
-  Eigen::Vector3d origin;          // where the patient frame's origin lies in the model's frame
-  double fat_thickness_m = 0.0;    // subcutaneous, over the deep tissue
+  Spine spine;                   // the patient's frame
+  Eigen::Vector3d origin;        // where the patient frame's origin lies in the model's frame
+  double fat_thickness_m = 0.0;  // subcutaneous, over the deep tissue
   std::vector<PatientLayer> layers;
-  std::array<Approach, 5> approaches;  // "L1-L2" ... "L5-S1", model frame
+  std::array<Approach, 5> approaches;         // "L1-L2" ... "L5-S1", model frame
   std::array<Eigen::Vector3d, 2> crest_tops;  // the iliac crests' highest points, model frame (Tuffier's line)
-  size_t field_bytes = 0;          // the grids' memory, each shared grid once
+  size_t field_bytes = 0;                     // the grids' memory, each shared grid once
 
   Eigen::Vector3d to_model(const Eigen::Vector3d& patient_point) const { return patient_point + origin; }
 };
@@ -56,17 +56,17 @@ struct PatientLayerSpec {
   bool rigid;
 };
 inline constexpr std::array<PatientLayerSpec, 12> kPatientLayers{{{"skin", "skin", false},
-                                                                 {"subcutaneous fat", "subcutaneous_fat", false},
-                                                                 {"erector spinae", "muscle", false},
-                                                                 {"supraspinous ligament", "spinal_ligament", false},
-                                                                 {"interspinous ligament", "spinal_ligament", false},
-                                                                 {"ligamentum flavum", "ligamentum_flavum", false},
-                                                                 {"epidural space", "epidural_space", false},
-                                                                 {"dura", "dura", false},
-                                                                 {"cerebrospinal fluid", "cerebrospinal_fluid", false},
-                                                                 {"intervertebral disc", "spinal_ligament", false},
-                                                                 {"bone", "bone", true},
-                                                                 {"iliac crest", "bone", true}}};
+                                                                  {"subcutaneous fat", "subcutaneous_fat", false},
+                                                                  {"erector spinae", "muscle", false},
+                                                                  {"supraspinous ligament", "spinal_ligament", false},
+                                                                  {"interspinous ligament", "spinal_ligament", false},
+                                                                  {"ligamentum flavum", "ligamentum_flavum", false},
+                                                                  {"epidural space", "epidural_space", false},
+                                                                  {"dura", "dura", false},
+                                                                  {"cerebrospinal fluid", "cerebrospinal_fluid", false},
+                                                                  {"intervertebral disc", "spinal_ligament", false},
+                                                                  {"bone", "bone", true},
+                                                                  {"iliac crest", "bone", true}}};
 
 // Design value: a 1 mm lattice resolves the 4 mm flavum and the 5 mm posterior epidural space on the
 // needle's path with its sampling error a few hundredths of a millimetre on their faces (docs/PATIENTS.md),

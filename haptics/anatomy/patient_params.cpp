@@ -18,8 +18,8 @@ PatientParams read_patient(const nlohmann::json& j, const std::string& file, con
   p.height_m = r.in_range(r.member(j, at, "height_m"), at + "/height_m", kHeightRange);
   p.weight_kg = r.in_range(r.member(j, at, "weight_kg"), at + "/weight_kg", kWeightRange);
   if (!kBmiRange.contains(p.bmi()))
-    r.fail(at + "/weight_kg", "gives a BMI of " + io::number_text(p.bmi()) + " with height_m " + io::number_text(p.height_m) +
-                                  ": the BMI must be in " + kBmiRange.text());
+    r.fail(at + "/weight_kg", "gives a BMI of " + io::number_text(p.bmi()) + " with height_m " +
+                                  io::number_text(p.height_m) + ": the BMI must be in " + kBmiRange.text());
   const std::string sex = r.string(r.member(j, at, "sex"), at + "/sex");
   if (sex != "female" && sex != "male") r.fail(at + "/sex", "expected \"female\" or \"male\", got \"" + sex + "\"");
   p.sex = sex == "female" ? Sex::Female : Sex::Male;
@@ -37,7 +37,7 @@ PatientParams load_patient(const std::string& path) {
 }
 
 nlohmann::json patient_json(const PatientParams& p) {
-  return {{"height_m", p.height_m}, {"weight_kg", p.weight_kg}, {"sex", sex_name(p.sex)},
+  return {{"height_m", p.height_m},   {"weight_kg", p.weight_kg},           {"sex", sex_name(p.sex)},
           {"age_years", p.age_years}, {"posture", posture_name(p.posture)}, {"seed", p.seed}};
 }
 
@@ -61,12 +61,13 @@ PatientParams random_patient(uint64_t seed) {
   PatientParams p;
   // Rounded as a file would give them (1 mm, 0.1 kg, a whole year), so the patient a session
   // records in JSON is exactly the one it ran.
-  p.height_m = std::round(in(kRandomHeightRange) * 1000.0) / 1000.0;
-  p.weight_kg = std::round(in(kRandomBmiRange) * p.height_m * p.height_m * 10.0) / 10.0;
+  p.height_m = std::round(in(kRandomHeightRange)*1000.0) / 1000.0;
+  p.weight_kg = std::round(in(kRandomBmiRange)*p.height_m * p.height_m * 10.0) / 10.0;
   p.age_years = std::round(in(kRandomAgeRange));
   p.sex = rng.uniform() < 0.5 ? Sex::Female : Sex::Male;
   p.posture = rng.uniform() < 0.5 ? Posture::SittingFlexed : Posture::Lateral;
-  do p.seed = uint32_t(rng.next()); while (p.seed == 0);
+  do p.seed = uint32_t(rng.next());
+  while (p.seed == 0);
   return p;
 }
 

@@ -71,13 +71,14 @@ nlohmann::json patient_report(const Patient& p) {
     const ApproachDepths depths = approach_depths(p, geometry, k);
     const Approach& a = p.approaches[size_t(k)];
     const double cephalad = std::atan2(a.direction().y(), -a.direction().z()) * 180.0 / M_PI;
-    out[kInterspaceNames[size_t(k)]] = {{"skin_to_epidural_m", length(depths.epidural_m)},
-                                        {"supraspinous_to_epidural_m", length(difference(depths.epidural_m, depths.supraspinous_m))},
-                                        {"skin_to_dura_m", length(depths.dura_m)},
-                                        {"skin_to_flavum_m", length(depths.flavum_m)},
-                                        {"entry_m", point(a.entry)},
-                                        {"window_m", point(a.window)},
-                                        {"cephalad_angle_deg", cephalad}};
+    out[kInterspaceNames[size_t(k)]] = {
+        {"skin_to_epidural_m", length(depths.epidural_m)},
+        {"supraspinous_to_epidural_m", length(difference(depths.epidural_m, depths.supraspinous_m))},
+        {"skin_to_dura_m", length(depths.dura_m)},
+        {"skin_to_flavum_m", length(depths.flavum_m)},
+        {"entry_m", point(a.entry)},
+        {"window_m", point(a.window)},
+        {"cephalad_angle_deg", cephalad}};
   }
   out["skin_thickness_m"] = d.skin_thickness_m;
   out["fat_thickness_m"] = p.fat_thickness_m;

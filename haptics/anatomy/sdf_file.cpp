@@ -1,7 +1,7 @@
 #include "haptics/anatomy/sdf_file.hpp"
 
-#include <bit>
 #include <algorithm>
+#include <bit>
 #include <cstring>
 
 #include "io/file_read.hpp"
@@ -46,13 +46,15 @@ void write_sdf_file(const std::string& path, const SdfGrid& grid) { io::write_fi
 
 SdfGrid read_sdf_file(const std::string& path) {
   std::string problem;
-  const std::string bytes = io::read_bytes(path, kHeaderBytes + uint64_t(SdfGrid::kMaxNodes) * sizeof(int16_t), problem);
+  const std::string bytes =
+      io::read_bytes(path, kHeaderBytes + uint64_t(SdfGrid::kMaxNodes) * sizeof(int16_t), problem);
   if (!problem.empty()) throw SdfFileError(path + ": " + problem);
   if (bytes.size() < kHeaderBytes || std::memcmp(bytes.data(), kMagic, 4) != 0)
     throw SdfFileError(path + ": not a signed distance grid (no NSDF header)");
   size_t at = 4;
   const uint32_t version = get<uint32_t>(bytes, at);
-  if (version != kVersion) throw SdfFileError(path + ": NSDF version " + std::to_string(version) + ", this build reads 1");
+  if (version != kVersion)
+    throw SdfFileError(path + ": NSDF version " + std::to_string(version) + ", this build reads 1");
   std::array<int, 3> nodes{};
   uint64_t count = 1;
   for (int& n : nodes) {
@@ -64,11 +66,12 @@ SdfGrid read_sdf_file(const std::string& path) {
   for (int a = 0; a < 3; ++a) origin[a] = get<double>(bytes, at);
   const double spacing = get<double>(bytes, at), quantum = get<double>(bytes, at);
   if (count > uint64_t(SdfGrid::kMaxNodes))
-    throw SdfFileError(path + ": nodes: at most " + std::to_string(SdfGrid::kMaxNodes) + " in all, the header says " + std::to_string(count));
+    throw SdfFileError(path + ": nodes: at most " + std::to_string(SdfGrid::kMaxNodes) + " in all, the header says " +
+                       std::to_string(count));
   const uint64_t expected = kHeaderBytes + count * sizeof(int16_t);
   if (bytes.size() != expected)
-    throw SdfFileError(path + ": " + std::to_string(bytes.size()) + " bytes, its node counts need " + std::to_string(expected) +
-                       (bytes.size() < expected ? " (cut short)" : " (extra bytes)"));
+    throw SdfFileError(path + ": " + std::to_string(bytes.size()) + " bytes, its node counts need " +
+                       std::to_string(expected) + (bytes.size() < expected ? " (cut short)" : " (extra bytes)"));
   std::vector<int16_t> values(count);
   std::memcpy(values.data(), bytes.data() + kHeaderBytes, count * sizeof(int16_t));
   try {

@@ -39,6 +39,8 @@ double primitive_phi(const ShapePrimitive& p, const Eigen::Vector3d& x);
 void primitive_bounds(const ShapePrimitive& p, Eigen::Vector3d& lo, Eigen::Vector3d& hi);
 
 // The rotation about the x axis by `angle` (radians): y turns towards z.
-inline Eigen::Matrix3d rotation_x(double angle) { return Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitX()).toRotationMatrix(); }
+inline Eigen::Matrix3d rotation_x(double angle) {
+  return Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitX()).toRotationMatrix();
+}
 
 }  // namespace needle::haptics::anatomy

@@ -28,7 +28,8 @@ double lamina_top_y(const VertebraDimensions& v) { return half_height(v) - 0.2 *
 
 // The segment's lordosis from its disc's wedge, less the posture's flexion (radians).
 double segment_angle(const VertebraDimensions& upper, double flexion_deg) {
-  return std::atan2(upper.disc_anterior_height_m - upper.disc_posterior_height_m, upper.body_depth_m) - flexion_deg * kDeg;
+  return std::atan2(upper.disc_anterior_height_m - upper.disc_posterior_height_m, upper.body_depth_m) -
+         flexion_deg * kDeg;
 }
 
 // Frames stacked from L3 (upright, at the origin) up and down through the discs.
@@ -131,17 +132,18 @@ void add_vertebra(Spine& s, int level, double lamina_bottom) {
     lamina.half = Vector3d(0.5 * (medial - lateral).norm(), 0.5 * (top - lamina_bottom), 0.5 * t);
     lamina.rounding = 1.0 * mm;
     s.bone.push_back(lamina);
-    s.bone.push_back(Capsule{at(side * (half_canal + 0.8 * pw), pedicle_y, half_depth + 0.35 * vcl),
-                             at(side * 0.5 * v.transverse_process_span_m, pedicle_y - 3.0 * mm, half_depth + 0.45 * vcl),
-                             0.3 * ph});  // transverse process
+    s.bone.push_back(
+        Capsule{at(side * (half_canal + 0.8 * pw), pedicle_y, half_depth + 0.35 * vcl),
+                at(side * 0.5 * v.transverse_process_span_m, pedicle_y - 3.0 * mm, half_depth + 0.45 * vcl),
+                0.3 * ph});  // transverse process
     // The articular pillars: the superior process rising beside the canal's roof into the window above,
     // the inferior one hanging from the lamina almost to the lamina below, medial to the superior
     // process of the vertebra below; together they close the interlaminar window at its sides.
     s.bone.push_back(Capsule{at(side * (half_canal + 0.2 * pw), hh - ph, roof - 0.35 * vcl),
                              at(side * (half_canal + 0.25 * pw), hh + 0.5 * ph, roof - 0.15 * vcl), 0.45 * ph});
-    s.bone.push_back(Capsule{at(side * (half_canal - 0.05 * pw), lamina_mid, roof + 0.2 * t),
-                             at(side * half_canal, lamina_bottom - 0.8 * v.interlaminar_gap_neutral_m, roof - 0.1 * vcl),
-                             0.4 * ph});
+    s.bone.push_back(
+        Capsule{at(side * (half_canal - 0.05 * pw), lamina_mid, roof + 0.2 * t),
+                at(side * half_canal, lamina_bottom - 0.8 * v.interlaminar_gap_neutral_m, roof - 0.1 * vcl), 0.4 * ph});
   }
   // Spinous process: from the laminae's junction backwards, drooping slightly.
   const Eigen::Matrix3d droop = axes * rotation_x(kSpinousDroop);
@@ -149,7 +151,8 @@ void add_vertebra(Spine& s, int level, double lamina_bottom) {
   RoundedBox spinous;
   spinous.axes = droop;
   spinous.centre = base + droop * Vector3d(0.0, 0.0, 0.5 * v.spinous_process_length_m);
-  spinous.half = Vector3d(0.5 * v.spinous_process_thickness_m, 0.5 * v.spinous_process_height_m, 0.5 * v.spinous_process_length_m);
+  spinous.half =
+      Vector3d(0.5 * v.spinous_process_thickness_m, 0.5 * v.spinous_process_height_m, 0.5 * v.spinous_process_length_m);
   spinous.rounding = 2.5 * mm;
   s.bone.push_back(spinous);
   s.spinous_tips[size_t(level)] = base + droop * Vector3d(0.0, 0.0, v.spinous_process_length_m - 2.5 * mm);
@@ -179,7 +182,8 @@ void add_sacrum(Spine& s, double plate_bottom) {
     ala.rounding = 4.0 * mm;
     s.bone.push_back(ala);
     RoundedBox pedicle;  // the side walls of the sacral canal, joining the plate to the body
-    pedicle.centre = at(side * (half_canal + 0.5 * v.pedicle_width_m), 0.5 * (top + plate_bottom), half_depth + 0.5 * v.canal_depth_m);
+    pedicle.centre = at(side * (half_canal + 0.5 * v.pedicle_width_m), 0.5 * (top + plate_bottom),
+                        half_depth + 0.5 * v.canal_depth_m);
     pedicle.axes = axes;
     pedicle.half = Vector3d(0.5 * v.pedicle_width_m, 0.5 * (top - plate_bottom), 0.5 * v.canal_depth_m + 2.0 * mm);
     pedicle.rounding = 2.0 * mm;
@@ -191,7 +195,8 @@ void add_sacrum(Spine& s, double plate_bottom) {
   plate.half = Vector3d(half_canal + v.pedicle_width_m, 0.5 * (top - plate_bottom), 0.5 * t);
   plate.rounding = 2.0 * mm;
   s.bone.push_back(plate);
-  const Vector3d crest_top = at(0.0, top - 0.012, roof + t + 4.0 * mm), crest_bottom = at(0.0, plate_bottom + 0.01, roof + t + 2.0 * mm);
+  const Vector3d crest_top = at(0.0, top - 0.012, roof + t + 4.0 * mm),
+                 crest_bottom = at(0.0, plate_bottom + 0.01, roof + t + 2.0 * mm);
   s.bone.push_back(Capsule{crest_top, crest_bottom, 4.0 * mm});  // median sacral crest
   s.spinous_tips[5] = crest_top + f.axes() * Vector3d(0.0, 0.0, 2.0 * mm);
   s.spinous_tips[6] = crest_bottom + f.axes() * Vector3d(0.0, 0.0, 2.0 * mm);
@@ -199,7 +204,8 @@ void add_sacrum(Spine& s, double plate_bottom) {
 
 // The canal, the dural sac and the disc over one vertebra's height or one interspace: prisms in
 // `frame` about `centre`, `half_y` long each way.
-void add_canal_piece(Spine& s, const VertebraDimensions& v, const Vector3d& centre, const Eigen::Matrix3d& axes, double half_y) {
+void add_canal_piece(Spine& s, const VertebraDimensions& v, const Vector3d& centre, const Eigen::Matrix3d& axes,
+                     double half_y) {
   const double half_depth = 0.5 * v.body_depth_m;
   RoundedBox canal;  // from 1 mm inside the body's back to 2 mm into the roof: the cuts make its walls
   canal.centre = centre + axes * Vector3d(0.0, 0.0, half_depth + 0.5 * v.canal_depth_m + 0.5 * mm);
@@ -222,7 +228,8 @@ void add_canal_piece(Spine& s, const VertebraDimensions& v, const Vector3d& cent
 double Spine::deep_top(double x, double y, double* dzdx, double* dzdy) const {
   // The cord's top over each tip, cranial first.
   std::array<Eigen::Vector2d, 7> p;
-  for (size_t i = 0; i < 7; ++i) p[i] = Eigen::Vector2d(spinous_tips[i].y(), spinous_tips[i].z() + dims.supraspinous_radius_m - 1.0 * mm);
+  for (size_t i = 0; i < 7; ++i)
+    p[i] = Eigen::Vector2d(spinous_tips[i].y(), spinous_tips[i].z() + dims.supraspinous_radius_m - 1.0 * mm);
   double z = p[0].y(), slope = 0.0;
   if (y >= p[0].x()) {
     z = p[0].y();
@@ -240,7 +247,9 @@ double Spine::deep_top(double x, double y, double* dzdx, double* dzdy) const {
     const double m0 = tangent(k) * h, m1 = tangent(k + 1) * h;
     const double u2 = u * u, u3 = u2 * u;
     z = (2 * u3 - 3 * u2 + 1) * p[k].y() + (u3 - 2 * u2 + u) * m0 + (-2 * u3 + 3 * u2) * p[k + 1].y() + (u3 - u2) * m1;
-    slope = ((6 * u2 - 6 * u) * p[k].y() + (3 * u2 - 4 * u + 1) * m0 + (-6 * u2 + 6 * u) * p[k + 1].y() + (3 * u2 - 2 * u) * m1) / h;
+    slope = ((6 * u2 - 6 * u) * p[k].y() + (3 * u2 - 4 * u + 1) * m0 + (-6 * u2 + 6 * u) * p[k + 1].y() +
+             (3 * u2 - 2 * u) * m1) /
+            h;
   }
   const double w2 = 2.0 * kMuscleWidth_m * kMuscleWidth_m, rise = std::exp(-x * x / w2);
   z += kMuscleRise_m * (1.0 - rise) - x * x / (2.0 * kBackRadius_m);
@@ -268,7 +277,8 @@ Spine build_spine(const PatientDimensions& dims) {
     const VertebraFrame& fl = s.frames[size_t(k + 1)];
     const double tilt = 0.5 * (fu.tilt + fl.tilt);
     const Eigen::Matrix3d axes = rotation_x(tilt);
-    const Vector3d disc_centre = 0.5 * (fu.point(Vector3d(0, -half_height(up), 0)) + fl.point(Vector3d(0, half_height(lo), 0)));
+    const Vector3d disc_centre =
+        0.5 * (fu.point(Vector3d(0, -half_height(up), 0)) + fl.point(Vector3d(0, half_height(lo), 0)));
     add_canal_piece(s, up, disc_centre, axes, 0.5 * disc_mid(up) + 3.0 * mm);
     RoundedPrism disc;
     disc.centre = disc_centre;
@@ -291,8 +301,8 @@ Spine build_spine(const PatientDimensions& dims) {
     // (the cut by the bone leaves the window's part), out to the facet joints.
     const Vector3d along = (is.upper_edge - is.lower_edge).normalized();
     const Vector3d back = Vector3d::UnitX().cross(along).normalized();  // towards z: posterior
-    RoundedBox flavum = bar(is.lower_edge - 5.0 * mm * along, is.upper_edge + 5.0 * mm * along, 0.5 * up.canal_width_m + 1.0 * mm,
-                            0.5 * dims.flavum_thickness_m, 0.0);
+    RoundedBox flavum = bar(is.lower_edge - 5.0 * mm * along, is.upper_edge + 5.0 * mm * along,
+                            0.5 * up.canal_width_m + 1.0 * mm, 0.5 * dims.flavum_thickness_m, 0.0);
     flavum.centre += back * 0.5 * dims.flavum_thickness_m;
     s.flavum.push_back(flavum);
     // The interspinous ligament from just inside the flavum back to the line of the tips, between

@@ -25,11 +25,11 @@ struct VertebraFrame {
 
 // An interspace's landmarks on the midline.
 struct Interspace {
-  Eigen::Vector3d window_centre;   // the middle of the interlaminar window on the canal's roof (the flavum's front)
-  Eigen::Vector3d upper_edge;      // the upper lamina's lower edge there
-  Eigen::Vector3d lower_edge;      // the lower lamina's upper edge there
-  Eigen::Vector3d spinous_gap;     // between the spinous processes' tips
-  double tilt = 0.0;               // the mean of the two vertebrae's
+  Eigen::Vector3d window_centre;    // the middle of the interlaminar window on the canal's roof (the flavum's front)
+  Eigen::Vector3d upper_edge;       // the upper lamina's lower edge there
+  Eigen::Vector3d lower_edge;       // the lower lamina's upper edge there
+  Eigen::Vector3d spinous_gap;      // between the spinous processes' tips
+  double tilt = 0.0;                // the mean of the two vertebrae's
   double interlaminar_gap_m = 0.0;  // |upper_edge − lower_edge|
 };
 

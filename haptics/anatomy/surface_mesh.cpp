@@ -75,8 +75,9 @@ SurfaceMesh extract_surface(const SdfGrid& grid, double offset_m, int stride, do
           }
           // Going round the edge (u then w), the quad's normal is +axis: flip it when outward is −axis.
           const bool outward_plus = a <= 0.0;  // inside at the lower node: the surface faces +axis
-          const std::array<uint32_t, 6> tris = outward_plus ? std::array<uint32_t, 6>{q[0], q[1], q[2], q[0], q[2], q[3]}
-                                                            : std::array<uint32_t, 6>{q[0], q[3], q[2], q[0], q[2], q[1]};
+          const std::array<uint32_t, 6> tris = outward_plus
+                                                   ? std::array<uint32_t, 6>{q[0], q[1], q[2], q[0], q[2], q[3]}
+                                                   : std::array<uint32_t, 6>{q[0], q[3], q[2], q[0], q[2], q[1]};
           mesh.indices.insert(mesh.indices.end(), tris.begin(), tris.end());
         }
       }

@@ -61,7 +61,8 @@ SurfaceSample SurfacePrimitive::evaluate(const Eigen::Vector3d& x) const {
       const Eigen::Vector3d closest = a + t * axis;
       SurfaceSample s = point_distance(x, closest, radius);
       const double len = (x - closest).norm();
-      if (len > 1e-12) s.hessian = (Eigen::Matrix3d::Identity() - u * u.transpose() - s.gradient * s.gradient.transpose()) / len;
+      if (len > 1e-12)
+        s.hessian = (Eigen::Matrix3d::Identity() - u * u.transpose() - s.gradient * s.gradient.transpose()) / len;
       return s;
     }
   }
@@ -69,13 +70,15 @@ SurfaceSample SurfacePrimitive::evaluate(const Eigen::Vector3d& x) const {
 }
 
 ImplicitSurface::ImplicitSurface(std::span<const SurfacePrimitive> primitives, Combine combine) : combine_(combine) {
-  if (primitives.size() > static_cast<size_t>(kMaxPrimitives)) throw std::invalid_argument("too many surface primitives");
+  if (primitives.size() > static_cast<size_t>(kMaxPrimitives))
+    throw std::invalid_argument("too many surface primitives");
   for (const auto& p : primitives) primitives_[static_cast<size_t>(count_++)] = p;
 }
 
 SurfaceSample ImplicitSurface::evaluate(const Eigen::Vector3d& x) const {
   SurfaceSample best;
-  best.phi = combine_ == Combine::Union ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
+  best.phi =
+      combine_ == Combine::Union ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
   for (int i = 0; i < count_; ++i) {
     const SurfaceSample s = primitives_[static_cast<size_t>(i)].evaluate(x);
     if (combine_ == Combine::Union ? s.phi < best.phi : s.phi > best.phi) best = s;
@@ -83,7 +86,8 @@ SurfaceSample ImplicitSurface::evaluate(const Eigen::Vector3d& x) const {
   return best;
 }
 
-SurfaceMotion surface_motion(const SurfaceSample& s, const Eigen::Vector3d& velocity, const Eigen::Vector3d& acceleration) {
+SurfaceMotion surface_motion(const SurfaceSample& s, const Eigen::Vector3d& velocity,
+                             const Eigen::Vector3d& acceleration) {
   return {s.phi, s.gradient.dot(velocity), s.gradient.dot(acceleration) + velocity.dot(s.hessian * velocity)};
 }
 

@@ -13,9 +13,9 @@
 namespace needle::haptics {
 
 struct SurfaceSample {
-  double phi = 0.0;                                        // > 0 outside (free), < 0 penetrated
-  Eigen::Vector3d gradient = Eigen::Vector3d::UnitX();     // unit outward normal
-  Eigen::Matrix3d hessian = Eigen::Matrix3d::Zero();       // ∇²φ, for φ̈
+  double phi = 0.0;                                     // > 0 outside (free), < 0 penetrated
+  Eigen::Vector3d gradient = Eigen::Vector3d::UnitX();  // unit outward normal
+  Eigen::Matrix3d hessian = Eigen::Matrix3d::Zero();    // ∇²φ, for φ̈
 };
 
 struct SurfacePrimitive {
@@ -58,7 +58,8 @@ class ImplicitSurface {
 struct SurfaceMotion {
   double phi, phi_dot, phi_ddot;
 };
-SurfaceMotion surface_motion(const SurfaceSample& s, const Eigen::Vector3d& velocity, const Eigen::Vector3d& acceleration);
+SurfaceMotion surface_motion(const SurfaceSample& s, const Eigen::Vector3d& velocity,
+                             const Eigen::Vector3d& acceleration);
 
 // Thesis section 3.1: φ > 0 free, φ = 0 on the surface, φ < 0 constraint violated.
 enum class SurfaceContact { Free, OnSurface, Penetrating };

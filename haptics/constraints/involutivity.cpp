@@ -9,7 +9,9 @@ double involutivity_defect(const PfaffianField& A, const Eigen::VectorXd& q, dou
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeFullV);
   const Eigen::Index rank = svd.rank();
   const Eigen::MatrixXd kernel = svd.matrixV().rightCols(q.size() - rank);
-  auto directional = [&](const Eigen::VectorXd& v) { return Eigen::MatrixXd((A(q + eps * v) - A(q - eps * v)) / (2 * eps)); };
+  auto directional = [&](const Eigen::VectorXd& v) {
+    return Eigen::MatrixXd((A(q + eps * v) - A(q - eps * v)) / (2 * eps));
+  };
   double worst = 0.0;
   for (Eigen::Index i = 0; i < kernel.cols(); ++i)
     for (Eigen::Index j = i + 1; j < kernel.cols(); ++j) {

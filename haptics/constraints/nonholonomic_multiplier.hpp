@@ -24,8 +24,8 @@ class NonholonomicMultiplier {
 
   // λ (3.22) at the state of `data` (H and bias up to date), for the applied torque τ; writes q̈
   // of the constrained dynamics. Allocation-free.
-  void solve(const RobotModel& model, RobotData& data, const MatKN& A, const MatKN& A_dot, const VecN& tau, VecK& lambda,
-             VecN& ddq);
+  void solve(const RobotModel& model, RobotData& data, const MatKN& A, const MatKN& A_dot, const VecN& tau,
+             VecK& lambda, VecN& ddq);
   // After solve, with the same data: how an extra joint torque f changes the solution: q̈ += m,
   // λ += l, with m = M f, M = H⁻¹ − H⁻¹Aᵀ(AH⁻¹Aᵀ)⁻¹AH⁻¹ (what the constraint lets f move) and
   // l = −(AH⁻¹Aᵀ)⁻¹AH⁻¹ f (the multipliers that keep (3.23) with f applied).
@@ -36,8 +36,8 @@ class NonholonomicMultiplier {
  private:
   NonholonomicGains gains_;
   VecK psi_integral_;
-  MatKN hinv_at_;  // H⁻¹Aᵀ, stored as (H⁻¹Aᵀ)ᵀ rows
-  MatKK schur_;  // A H⁻¹ Aᵀ
+  MatKN hinv_at_;                                // H⁻¹Aᵀ, stored as (H⁻¹Aᵀ)ᵀ rows
+  MatKK schur_;                                  // A H⁻¹ Aᵀ
   SmallCholesky<kMaxConstraints> schur_factor_;  // of A H⁻¹ Aᵀ
 };
 

@@ -11,11 +11,11 @@
 namespace needle::haptics {
 
 struct GpmParams {
-  double alpha = 0.02;  // kg (thesis 4.3)
-  double xi = 100.0;    // damping ratio (thesis 4.3)
-  double omega = 200.0; // rad/s (thesis 4.3)
-  double stiffness() const { return alpha * omega * omega; }  // N/m, since φ is in metres
-  double damping() const { return 2.0 * alpha * xi * omega; } // N·s/m
+  double alpha = 0.02;                                         // kg (thesis 4.3)
+  double xi = 100.0;                                           // damping ratio (thesis 4.3)
+  double omega = 200.0;                                        // rad/s (thesis 4.3)
+  double stiffness() const { return alpha * omega * omega; }   // N/m, since φ is in metres
+  double damping() const { return 2.0 * alpha * xi * omega; }  // N·s/m
 };
 
 // (α, ξ, ω; φ, φ̇, φ̈; h) => (λ)   (3.15), damping and stiffness at the end of a step of length h:

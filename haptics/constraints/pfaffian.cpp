@@ -13,7 +13,8 @@ void needle_pfaffian(const Eigen::Matrix3d& tip_rotation, const Eigen::Vector3d&
 }
 
 // [[gnu::flatten]]: per-tick code, Eigen calls inlined (see kinematics.cpp).
-[[gnu::flatten]] void project_pfaffian(const TaskPfaffian& task, const Mat6N& J, const Mat6N& J_dot, MatKN& A, MatKN& A_dot) {
+[[gnu::flatten]] void project_pfaffian(const TaskPfaffian& task, const Mat6N& J, const Mat6N& J_dot, MatKN& A,
+                                       MatKN& A_dot) {
   A.noalias() = task.A_x * J;
   A_dot.noalias() = task.A_x_dot * J;
   A_dot.noalias() += task.A_x * J_dot;

@@ -1,10 +1,9 @@
 #include "haptics/control/device_limit.hpp"
 
+#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <Eigen/QR>
 
 #include "haptics/model/kinematics.hpp"
 

@@ -4,8 +4,8 @@ namespace needle::haptics {
 namespace {
 
 RobotGains uniform(int n, double ka, double kp, double kf, double lambda, double kbeta, double kgamma) {
-  return {VecN::Constant(n, ka), VecN::Constant(n, kp), VecN::Constant(n, lambda), VecN::Constant(n, kbeta),
-          VecN::Constant(n, kgamma), kf};
+  return {VecN::Constant(n, ka),    VecN::Constant(n, kp),     VecN::Constant(n, lambda),
+          VecN::Constant(n, kbeta), VecN::Constant(n, kgamma), kf};
 }
 
 RobotGains thesis_virtual(int n, double kf) {

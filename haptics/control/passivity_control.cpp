@@ -41,8 +41,8 @@ void passivity_control(const PassivityGains& gains, const DeviceLimit& limit, co
   h.head(m).noalias() = H_m.topLeftCorner(m, m) * dq_m.head(m);
   const double twice_kinetic = dq_m.head(m).dot(h.head(m));  // q̇_aᵀH_aa q̇_a
   if (!(twice_kinetic > 0.0)) return;                        // at rest: nothing to damp
-  const double beta = std::min({gains.max_damping_per_tick / T, -left / (T * twice_kinetic),
-                                room_within_limit(limit, tau_m, h)});
+  const double beta =
+      std::min({gains.max_damping_per_tick / T, -left / (T * twice_kinetic), room_within_limit(limit, tau_m, h)});
   obs.damping_per_s = beta;
   tau_m.noalias() -= beta * h;
 }

@@ -61,14 +61,14 @@ struct PassivityGains {
 // The observer's state, kept by the controller between ticks.
 struct PassivityObserver {
   bool started = false;
-  VecN q_prev;               // the device's joints at the last tick
-  VecN tau_prev;             // the torque it was given for the tick since
-  double absorbed_J = 0.0;   // A
-  double stored0_J = 0.0;    // U(0)
-  double stored_J = 0.0;     // U(k)
-  double dissipated_J = 0.0; // D(k)
-  double predicted_J = 0.0;  // D⁺ of the last tick, before the controller acted
-  double damping_per_s = 0.0;  // β of the last tick, 0 when the damper was off
+  VecN q_prev;                         // the device's joints at the last tick
+  VecN tau_prev;                       // the torque it was given for the tick since
+  double absorbed_J = 0.0;             // A
+  double stored0_J = 0.0;              // U(0)
+  double stored_J = 0.0;               // U(k)
+  double dissipated_J = 0.0;           // D(k)
+  double predicted_J = 0.0;            // D⁺ of the last tick, before the controller acted
+  double damping_per_s = 0.0;          // β of the last tick, 0 when the damper was off
   double virtual_damping_per_s = 0.0;  // β_v of the virtual robot's damper, 0 when off
   double share_withheld = 0.0;         // γ: the share of the command's active part withheld
 };

@@ -14,8 +14,8 @@ void task_space_coupling(const TaskCoupling& coupling, const RobotData& data, co
   tau = data.J.transpose() * wrench + data.g;
 }
 
-Eigen::Vector3d wrist_direction(const Eigen::Matrix3d& device_to_scene, const Eigen::Vector3d& start_direction, double swing_rad,
-                                double tilt_rad) noexcept {
+Eigen::Vector3d wrist_direction(const Eigen::Matrix3d& device_to_scene, const Eigen::Vector3d& start_direction,
+                                double swing_rad, double tilt_rad) noexcept {
   const Eigen::Vector3d right = device_to_scene.col(0).normalized();
   const Eigen::Vector3d away = device_to_scene.col(1).cross(device_to_scene.col(0)).normalized();  // up × right
   const Eigen::Vector3d across = away.cross(start_direction);

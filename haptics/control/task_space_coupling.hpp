@@ -21,11 +21,11 @@ struct TaskCoupling {
   // Device axes to scene axes (the Falcon's z points at the user, the scene's may not). For the
   // trainee's devices the columns are the view's right, up and depth axes.
   Eigen::Matrix3d device_to_scene = Eigen::Matrix3d::Identity();
-  double workspace_scale = 1.0;          // scene metres per device metre
-  double stiffness_n_per_m = 300.0;      // coupling spring, scene side
+  double workspace_scale = 1.0;      // scene metres per device metre
+  double stiffness_n_per_m = 300.0;  // coupling spring, scene side
   double orientation_stiffness_nm_per_rad = 0.5;
   double joint_damping_nms_per_rad = 0.05;  // implicit, on every virtual joint
-  double force_scale = 1.0;              // device newtons per scene newton
+  double force_scale = 1.0;                 // device newtons per scene newton
   // The reading's joints 0 and 1 are a virtual wrist's swing and tilt (the desk devices,
   // haptics/devices/desk_device.hpp): they turn the direction spring's target (wrist_direction).
   // Otherwise the target is the start direction.
@@ -44,7 +44,7 @@ void task_space_coupling(const TaskCoupling& coupling, const RobotData& data, co
 // viewer, the needle's hub away), then a swing by `swing_rad` about f (positive is clockwise as
 // seen: a needle pointing down swings its hub to the right). A needle pointing along f or
 // against it tilts about the view's right axis instead.
-Eigen::Vector3d wrist_direction(const Eigen::Matrix3d& device_to_scene, const Eigen::Vector3d& start_direction, double swing_rad,
-                                double tilt_rad) noexcept;
+Eigen::Vector3d wrist_direction(const Eigen::Matrix3d& device_to_scene, const Eigen::Vector3d& start_direction,
+                                double swing_rad, double tilt_rad) noexcept;
 
 }  // namespace needle::haptics

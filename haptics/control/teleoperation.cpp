@@ -99,8 +99,10 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
   // Y θ of (3.20), (3.27), blended in by w (its gravity part always, under the tool law); the tool's
   // weight; the hand's wrench in the scene's newtons.
   master_dynamics_cancellation(master_, master_data_, out_.blend, tool, out_.tau_m);
-  if (tool) tool_weight(gains_.tool.mass_kg, master_.gravity, master_data_.J, wrench_filtered_, out_.tau_m, wrench_scene_);
-  else wrench_scene_ = wrench_filtered_;
+  if (tool)
+    tool_weight(gains_.tool.mass_kg, master_.gravity, master_data_.J, wrench_filtered_, out_.tau_m, wrench_scene_);
+  else
+    wrench_scene_ = wrench_filtered_;
   wrench_scene_ /= scale;
 
   // The contact terms, each blended in by its w: rigid (3.17)-(3.21); tissue (3.24)-(3.28); along the needle.
@@ -109,7 +111,8 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
   out_.push_axial_N = 0.0;
   out_.axial_stiffness_N_per_m = 0.0;
   if (blend_.rigid > 0.0) {
-    rigid_force_errors(contact.normal, wrench_scene_, contact.force_rigid, blend_.rigid, T, out_.force_h_normal, integrals_);
+    rigid_force_errors(contact.normal, wrench_scene_, contact.force_rigid, blend_.rigid, T, out_.force_h_normal,
+                       integrals_);
     rigid_force_torques(world_.data().J, master_data_.J, out_.force_h_normal, contact.force_rigid, integrals_, gv.Kf,
                         gm.Kf, scale, blend_.rigid, out_.tau_v, out_.tau_m);
   }
@@ -133,7 +136,8 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
     }
   }
   if (blend_.axial > 0.0) {
-    axial_damping_torque(contact.axis, master_data_.J, in.dq_m, gains_.axial_damping_Ns_per_m, blend_.axial, out_.tau_m);
+    axial_damping_torque(contact.axis, master_data_.J, in.dq_m, gains_.axial_damping_Ns_per_m, blend_.axial,
+                         out_.tau_m);
     if (gains_.axial_stiffness_N_per_m > 0.0) {
       out_.push_axial_N = contact.axis.dot(wrench_scene_.head<3>());
       const RobotData& v = world_.data();
@@ -149,7 +153,8 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
 
   // (2.21) with the contact's constraint, then report the whole virtual torque; the virtual robot damped
   // while the world has made energy.
-  if (passivity) passivity_virtual_damping(gains_.passivity, world_.data().H, world_.dq(), T, passivity_, velocity_gain_v_);
+  if (passivity)
+    passivity_virtual_damping(gains_.passivity, world_.data().H, world_.dq(), T, passivity_, velocity_gain_v_);
   world_.advance(out_.tau_v, velocity_gain_v_, T, substeps_);
   out_.tau_v -= velocity_gain_v_.cwiseProduct(world_.dq());
 
@@ -164,7 +169,8 @@ void Teleoperation::reset(const VecN& q_m, const VecN& dq_m) {
       // The conservative part (U's −V_m and −m gᵀx_m): the weight compensation and the tool's weight, as the
       // limit left them (update_gravity ran in master_dynamics_cancellation).
       passivity_conservative_ = master_data_.g;
-      passivity_conservative_.noalias() += master_data_.J.topRows<3>().transpose() * (gains_.tool.mass_kg * master_.gravity);
+      passivity_conservative_.noalias() +=
+          master_data_.J.topRows<3>().transpose() * (gains_.tool.mass_kg * master_.gravity);
       passivity_conservative_.tail(master_.dof() - limit_.actuated_joints).setZero();
       passivity_conservative_ *= kappa;
       update_tick_dynamics(master_, master_data_);

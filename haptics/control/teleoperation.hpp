@@ -19,24 +19,24 @@
 namespace needle::haptics {
 
 struct TickInput {
-  VecN q_m, dq_m;  // measured master joints
+  VecN q_m, dq_m;                    // measured master joints
   Wrench wrench_h = Wrench::Zero();  // [force; torque] of the hand on the master's tip, base frame
 };
 
 struct TickOutput {
-  VecN tau_m, tau_v;             // master command (all joints; the device applies what it can)
+  VecN tau_m, tau_v;  // master command (all joints; the device applies what it can)
   ContactMode mode = ContactMode::Free;
-  double blend = 0.0;            // 0 free ... 1 contact terms fully on (the largest of `weights`)
-  ContactBlend weights;          // per contact
+  double blend = 0.0;    // 0 free ... 1 contact terms fully on (the largest of `weights`)
+  ContactBlend weights;  // per contact
   Eigen::Vector3d force_h_normal = Eigen::Vector3d::Zero();  // F_h along the rigid normal, scene newtons
-  VecK lambda_m;                 // (3.24), hand's push along the needle constraints, scene newtons
-  double push_axial_N = 0.0;     // F_h,a: the hand's push along the needle, scene newtons (tool law, in tissue)
+  VecK lambda_m;                         // (3.24), hand's push along the needle constraints, scene newtons
+  double push_axial_N = 0.0;             // F_h,a: the hand's push along the needle, scene newtons (tool law, in tissue)
   double axial_stiffness_N_per_m = 0.0;  // the spring along the needle as applied (gains', held under the tick's limit)
   double passivity_dissipated_J = 0.0;   // the passivity observer's D at the tick's start (tool law)
   double passivity_damping_per_s = 0.0;  // β of its damper, 0 while off
-  double passivity_share_withheld = 0.0; // γ: the share of the command's active part it withheld, 0 while off
+  double passivity_share_withheld = 0.0;  // γ: the share of the command's active part it withheld, 0 while off
   bool passivity_acted() const { return passivity_damping_per_s > 0.0 || passivity_share_withheld > 0.0; }
-  bool saturated = false;                // tau_m was scaled down to the device's force limit
+  bool saturated = false;  // tau_m was scaled down to the device's force limit
 };
 
 class Teleoperation {
@@ -79,7 +79,7 @@ class Teleoperation {
   const VirtualWorld& world() const { return world_; }
   const RobotData& master_data() const { return master_data_; }
   const ContactBlend& blend() const { return blend_; }  // the weights of the last step
-  const TickOutput& output() const { return out_; }      // of the last step
+  const TickOutput& output() const { return out_; }     // of the last step
   const TeleoperationGains& gains() const { return gains_; }
   double period() const { return period_; }
 

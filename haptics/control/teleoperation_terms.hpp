@@ -106,8 +106,8 @@ inline void rigid_force_errors(const Eigen::Vector3d& normal, const Wrench& wren
   integrals.momentum_h += T * w * (force_h_normal - force_v);
 }
 
-// (J_v, J_m, F_h,n, F_v, Δp, K_fv, K_fm, s, w; τ) => (τ_v += w J_vᵀ(F_h,n − K_fv Δp_v), τ_m −= w s J_mᵀ(F_v − K_fm Δp_h))
-// the force terms of (3.21) and (3.20), forces in the scene's newtons, s the force scale (hand per scene).
+// (J_v, J_m, F_h,n, F_v, Δp, K_fv, K_fm, s, w; τ) => (τ_v += w J_vᵀ(F_h,n − K_fv Δp_v), τ_m −= w s J_mᵀ(F_v − K_fm
+// Δp_h)) the force terms of (3.21) and (3.20), forces in the scene's newtons, s the force scale (hand per scene).
 inline void rigid_force_torques(const Mat6N& J_v, const Mat6N& J_m, const Eigen::Vector3d& force_h_normal,
                                 const Eigen::Vector3d& force_v, const ForceErrorIntegrals& integrals, double Kf_v,
                                 double Kf_m, double scale, double w, VecN& tau_v, VecN& tau_m) {

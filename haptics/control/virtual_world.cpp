@@ -15,9 +15,12 @@ RobotModel with_gravity(RobotModel model, bool weightless) {
 
 const char* contact_mode_name(ContactMode mode) {
   switch (mode) {
-    case ContactMode::Free: return "free";
-    case ContactMode::Holonomic: return "holonomic";
-    case ContactMode::Nonholonomic: return "nonholonomic";
+    case ContactMode::Free:
+      return "free";
+    case ContactMode::Holonomic:
+      return "holonomic";
+    case ContactMode::Nonholonomic:
+      return "nonholonomic";
   }
   return "?";
 }
@@ -67,8 +70,8 @@ void VirtualWorld::sense(double step) {
       step_tissue(scene_.tissue, tissue_, tip, report_.axis, 1.0);
     }
     report_.phi = scene_.tissue.distance(tip);
-    report_.tissue = options_.entry == TissueEntry::Surface ? report_.phi <= 0.0
-                                                            : tissue_.on_track && tissue_.stretch_count > 0;
+    report_.tissue =
+        options_.entry == TissueEntry::Surface ? report_.phi <= 0.0 : tissue_.on_track && tissue_.stretch_count > 0;
     if (report_.tissue) report_.mode = ContactMode::Nonholonomic;
   }
   if (!scene_.rigid.empty()) {

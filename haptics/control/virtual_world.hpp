@@ -43,15 +43,15 @@ struct ContactReport {
   int bone_layer = -1;  // the tissue's rigid layer holding the tip (`rigid` through bone), −1 when none
   bool axial = false;   // the tissue's axial force acts: the tip on its track, pressing a surface or in
                         // a layer, with axial mechanics (the thesis's sphere has none), not on bone
-  double phi = 0.0;                                      // of the surface that decides the mode
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();     // rigid surface normal at the tip
-  double lambda_rigid = 0.0;                             // (3.15), ≤ 0 while pressing
-  Eigen::Vector3d force_rigid = Eigen::Vector3d::Zero(); // F_v (3.16): tool on surface
-  VecK lambda_tissue;                                    // (3.22)
-  VecK psi;                                              // A q̇ (zero rows outside tissue)
-  MatKN A;                                               // needle Pfaffian in joints (2.30)
-  Eigen::Vector3d axis = Eigen::Vector3d::UnitX();       // the needle's x₅
-  double axial_force_N = 0.0;                            // the tissue's: needle on tissue along x₅
+  double phi = 0.0;     // of the surface that decides the mode
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();      // rigid surface normal at the tip
+  double lambda_rigid = 0.0;                              // (3.15), ≤ 0 while pressing
+  Eigen::Vector3d force_rigid = Eigen::Vector3d::Zero();  // F_v (3.16): tool on surface
+  VecK lambda_tissue;                                     // (3.22)
+  VecK psi;                                               // A q̇ (zero rows outside tissue)
+  MatKN A;                                                // needle Pfaffian in joints (2.30)
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitX();        // the needle's x₅
+  double axial_force_N = 0.0;                             // the tissue's: needle on tissue along x₅
 };
 
 class VirtualWorld {

@@ -21,7 +21,8 @@ DeskPose DeskWorkspace::centre() const noexcept {
 DeskPose DeskWorkspace::clamp(const DeskPose& pose) const noexcept {
   const DeskPose middle = centre();
   DeskPose out;
-  for (int i = 0; i < 3; ++i) out.position_m[i] = clamp_finite(pose.position_m[i], min_m[i], max_m[i], middle.position_m[i]);
+  for (int i = 0; i < 3; ++i)
+    out.position_m[i] = clamp_finite(pose.position_m[i], min_m[i], max_m[i], middle.position_m[i]);
   out.wrist_rad[0] = clamp_finite(pose.wrist_rad[0], -swing_limit_rad, swing_limit_rad, 0.0);
   out.wrist_rad[1] = clamp_finite(pose.wrist_rad[1], -tilt_limit_rad, tilt_limit_rad, 0.0);
   return out;

@@ -61,16 +61,36 @@ void KeyboardMapping::press(DeskKey key, bool fine) noexcept {
   double* p = pose_.position_m;
   double* w = pose_.wrist_rad;
   switch (key) {
-    case DeskKey::kLeft: p[0] -= m; break;
-    case DeskKey::kRight: p[0] += m; break;
-    case DeskKey::kDown: p[1] -= m; break;
-    case DeskKey::kUp: p[1] += m; break;
-    case DeskKey::kOut: along(pose_, direction_, -m); break;
-    case DeskKey::kIn: along(pose_, direction_, m); break;
-    case DeskKey::kSwingLeft: w[0] -= rad; break;
-    case DeskKey::kSwingRight: w[0] += rad; break;
-    case DeskKey::kTiltToward: w[1] -= rad; break;
-    case DeskKey::kTiltAway: w[1] += rad; break;
+    case DeskKey::kLeft:
+      p[0] -= m;
+      break;
+    case DeskKey::kRight:
+      p[0] += m;
+      break;
+    case DeskKey::kDown:
+      p[1] -= m;
+      break;
+    case DeskKey::kUp:
+      p[1] += m;
+      break;
+    case DeskKey::kOut:
+      along(pose_, direction_, -m);
+      break;
+    case DeskKey::kIn:
+      along(pose_, direction_, m);
+      break;
+    case DeskKey::kSwingLeft:
+      w[0] -= rad;
+      break;
+    case DeskKey::kSwingRight:
+      w[0] += rad;
+      break;
+    case DeskKey::kTiltToward:
+      w[1] -= rad;
+      break;
+    case DeskKey::kTiltAway:
+      w[1] += rad;
+      break;
   }
   pose_ = workspace_.clamp(pose_);
 }
@@ -103,8 +123,9 @@ void GamepadMapping::update(const GamepadState& s, double dt_s) noexcept {
   stick_past_dead_zone(lx, ly, kStickDeadZone);
   stick_past_dead_zone(rx, ry, kStickDeadZone);
   const double in = trigger_past_dead_zone(s.axes[GamepadState::kRightTrigger], kTriggerDeadZone);
-  const double depth = plunger_on_left_trigger_ ? (s.buttons[GamepadState::kLeftBumper] ? -in : in)
-                                                : in - trigger_past_dead_zone(s.axes[GamepadState::kLeftTrigger], kTriggerDeadZone);
+  const double depth = plunger_on_left_trigger_
+                           ? (s.buttons[GamepadState::kLeftBumper] ? -in : in)
+                           : in - trigger_past_dead_zone(s.axes[GamepadState::kLeftTrigger], kTriggerDeadZone);
   const double move = kSpeed_m_per_s * dt, turn = kTurnRate_rad_per_s * dt;
   pose_.position_m[0] += move * lx;
   pose_.position_m[1] -= move * ly;  // the stick's y points down

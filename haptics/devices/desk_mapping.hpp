@@ -56,7 +56,9 @@ class MouseMapping {
   // Where the cursor puts the handle at (x, y) in the view's plane (device metres), at its depth
   // now, in pointer()'s terms: after the wheel, the cursor goes here.
   void cursor_for(double x_m, double y_m, double& x, double& y) const noexcept;
-  void cursor_at_handle(double& x, double& y) const noexcept { cursor_for(pose_.position_m[0], pose_.position_m[1], x, y); }
+  void cursor_at_handle(double& x, double& y) const noexcept {
+    cursor_for(pose_.position_m[0], pose_.position_m[1], x, y);
+  }
 
  private:
   DeskWorkspace workspace_;
@@ -71,10 +73,16 @@ class MouseMapping {
 
 // The keyboard, one step a press (the system's key repeat gives steps while a key is held).
 enum class DeskKey {
-  kLeft, kRight, kDown, kUp,      // the handle in the view's plane (arrow keys)
-  kOut, kIn,                      // depth: out of the view, into it (S, W)
-  kSwingLeft, kSwingRight,        // the hub left or right about the tip (A, D)
-  kTiltToward, kTiltAway,         // the hub towards the viewer or away (Q, E)
+  kLeft,
+  kRight,
+  kDown,
+  kUp,  // the handle in the view's plane (arrow keys)
+  kOut,
+  kIn,  // depth: out of the view, into it (S, W)
+  kSwingLeft,
+  kSwingRight,  // the hub left or right about the tip (A, D)
+  kTiltToward,
+  kTiltAway,  // the hub towards the viewer or away (Q, E)
 };
 
 class KeyboardMapping {
@@ -98,8 +106,24 @@ class KeyboardMapping {
 // A gamepad in GLFW's standard layout (GLFWgamepadstate) as plain values.
 struct GamepadState {
   enum Axis { kLeftX, kLeftY, kRightX, kRightY, kLeftTrigger, kRightTrigger, kAxes };
-  enum Button { kA, kB, kX, kY, kLeftBumper, kRightBumper, kBack, kStart, kGuide, kLeftThumb, kRightThumb,
-                kDpadUp, kDpadRight, kDpadDown, kDpadLeft, kButtons };
+  enum Button {
+    kA,
+    kB,
+    kX,
+    kY,
+    kLeftBumper,
+    kRightBumper,
+    kBack,
+    kStart,
+    kGuide,
+    kLeftThumb,
+    kRightThumb,
+    kDpadUp,
+    kDpadRight,
+    kDpadDown,
+    kDpadLeft,
+    kButtons
+  };
   // Sticks in [-1, 1] with y down; triggers from -1 (released) to 1 (pulled).
   float axes[kAxes] = {0.0f, 0.0f, 0.0f, 0.0f, -1.0f, -1.0f};
   uint8_t buttons[kButtons] = {};
@@ -112,11 +136,11 @@ struct GamepadState {
 // plunger (PlungerMapping) and the right trigger draws the needle back while the left bumper is held.
 class GamepadMapping {
  public:
-  static constexpr double kSpeed_m_per_s = 0.02;       // stick or trigger fully deflected
+  static constexpr double kSpeed_m_per_s = 0.02;                     // stick or trigger fully deflected
   static constexpr double kTurnRate_rad_per_s = 0.5235987755982988;  // 30°/s
-  static constexpr double kStickDeadZone = 0.15;       // of the stick's radius
-  static constexpr double kTriggerDeadZone = 0.05;     // of the trigger's travel
-  static constexpr double kMaxStep_s = 0.1;            // a longer frame moves as much as this one
+  static constexpr double kStickDeadZone = 0.15;                     // of the stick's radius
+  static constexpr double kTriggerDeadZone = 0.05;                   // of the trigger's travel
+  static constexpr double kMaxStep_s = 0.1;                          // a longer frame moves as much as this one
   static constexpr GamepadState::Button kResetFault = GamepadState::kStart;
 
   explicit GamepadMapping(const DeskWorkspace& workspace = {}, bool plunger_on_left_trigger = false);

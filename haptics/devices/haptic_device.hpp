@@ -16,15 +16,15 @@ struct DeviceError : std::runtime_error {
 };
 
 struct DeviceCapabilities {
-  std::string name;                          // "falcon", "mouse", "replay:FILE", ...
+  std::string name;  // "falcon", "mouse", "replay:FILE", ...
   CommandSpace command_space = CommandSpace::kNone;
   uint32_t actuated_axes = 0;
-  uint32_t joint_count = 0;                  // joints reported in DeviceReading::joint_rad
+  uint32_t joint_count = 0;                     // joints reported in DeviceReading::joint_rad
   double workspace_min_m[3] = {0.0, 0.0, 0.0};  // axis-aligned box around the reachable space, device frame
   double workspace_max_m[3] = {0.0, 0.0, 0.0};
-  double max_force_n = 0.0;                  // continuous, at the handle
+  double max_force_n = 0.0;  // continuous, at the handle
   double max_torque_nm[kMaxDeviceJoints] = {};
-  double max_stiffness_n_per_m = 0.0;        // stable virtual-wall stiffness at 1 kHz
+  double max_stiffness_n_per_m = 0.0;  // stable virtual-wall stiffness at 1 kHz
   bool senses_force = false;
 };
 

@@ -26,7 +26,9 @@ void ReplayDevice::open() {
   end_ = reader.end();
 }
 
-bool ReplayDevice::held_back() const noexcept { return next_ > 0 && next_ <= held_back_.size() && held_back_[next_ - 1]; }
+bool ReplayDevice::held_back() const noexcept {
+  return next_ > 0 && next_ <= held_back_.size() && held_back_[next_ - 1];
+}
 
 void ReplayDevice::read(DeviceReading& out) noexcept {
   if (finished()) {

@@ -69,7 +69,8 @@ void SimDevice::write(const DeviceCommand& command) noexcept {
   const double t = static_cast<double>(ticks_) * period_s_;
   if (thumb_) {
     thumb_->feel(t, command.plunger_travel_m, period_s_);
-    if (thumb_->reaction_due(t)) thumb_->begin_reaction(t, plant_.data().tip.translation(), plant_.data().tip.linear().col(0));
+    if (thumb_->reaction_due(t))
+      thumb_->begin_reaction(t, plant_.data().tip.translation(), plant_.data().tip.linear().col(0));
   }
   plant_.advance(tau_, thumb_ ? thumb_->trajectory(scenario_.trajectory) : scenario_.trajectory, t, period_s_);
   ++ticks_;

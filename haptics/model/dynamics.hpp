@@ -22,7 +22,7 @@ void update_tick_dynamics(const RobotModel& model, RobotData& data);
 // Needs update_dynamics or update_tick_dynamics.
 void forward_dynamics(const RobotModel& model, RobotData& data, const VecN& tau, VecN& ddq);
 
-double kinetic_energy(const RobotData& data);  // ½ q̇ᵀ H q̇, needs update_dynamics
+double kinetic_energy(const RobotData& data);                             // ½ q̇ᵀ H q̇, needs update_dynamics
 double potential_energy(const RobotModel& model, const RobotData& data);  // −Σ mᵢ gᵀ cᵢ
 
 }  // namespace needle::haptics

@@ -4,8 +4,8 @@
 
 namespace needle::haptics {
 
-[[gnu::flatten]] void point_jacobian(const RobotData& data, int body, const Eigen::Vector3d& p, const Eigen::Vector3d& p_velocity,
-                    Mat6N& J, Mat6N& Jdot) {
+[[gnu::flatten]] void point_jacobian(const RobotData& data, int body, const Eigen::Vector3d& p,
+                                     const Eigen::Vector3d& p_velocity, Mat6N& J, Mat6N& Jdot) {
   J.setZero(6, data.n);
   Jdot.setZero(6, data.n);
   for (int j = 0; j <= body; ++j) {
@@ -50,8 +50,9 @@ template <bool with_com_jacobians>
     data.origin[i] = position;
     data.axis[i].noalias() = rotation * joint.axis;
     // p_i is fixed in body i-1 (it lies on the axis of joint i).
-    data.origin_velocity[i] = i == 0 ? Eigen::Vector3d::Zero().eval()
-                                     : (data.origin_velocity[i - 1] + omega_prev.cross(data.origin[i] - data.origin[i - 1])).eval();
+    data.origin_velocity[i] =
+        i == 0 ? Eigen::Vector3d::Zero().eval()
+               : (data.origin_velocity[i - 1] + omega_prev.cross(data.origin[i] - data.origin[i - 1])).eval();
     rotation = (rotation * axis_rotation(joint.axis, q[i])).eval();
     data.frame[i].linear() = rotation;
     data.frame[i].translation() = position;

@@ -40,9 +40,12 @@ nlohmann::json model_report(const RobotModel& model, const VecN& q, const VecN& 
   inverse_dynamics(model, data, parameter_vector(model), ddq, tau);
   const VecN cdq = data.C * dq;
   // A state so large that a result overflows double precision is an error, not a JSON null.
-  const std::pair<const char*, bool> finite[] = {{"pose", data.tip.matrix().allFinite()}, {"J", data.J.allFinite()},
-                                                 {"H", data.H.allFinite()},           {"Cdq", cdq.allFinite()},
-                                                 {"g", data.g.allFinite()},           {"tau_id", tau.allFinite()}};
+  const std::pair<const char*, bool> finite[] = {{"pose", data.tip.matrix().allFinite()},
+                                                 {"J", data.J.allFinite()},
+                                                 {"H", data.H.allFinite()},
+                                                 {"Cdq", cdq.allFinite()},
+                                                 {"g", data.g.allFinite()},
+                                                 {"tau_id", tau.allFinite()}};
   for (const auto& [name, ok] : finite)
     if (!ok)
       throw std::range_error("robot '" + model.name + "': " + name +

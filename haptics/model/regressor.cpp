@@ -9,7 +9,8 @@ ParamVec parameter_vector(const RobotModel& model) {
     const JointModel& j = model.joints[static_cast<size_t>(i)];
     const BodyInertia& b = j.body;
     // Inertia about the joint-frame origin (parallel-axis theorem).
-    const Eigen::Matrix3d io = b.inertia_com + b.mass * (b.com.squaredNorm() * Eigen::Matrix3d::Identity() - b.com * b.com.transpose());
+    const Eigen::Matrix3d io =
+        b.inertia_com + b.mass * (b.com.squaredNorm() * Eigen::Matrix3d::Identity() - b.com * b.com.transpose());
     theta.segment<kParamsPerBody>(kParamsPerBody * i) << b.mass, b.mass * b.com, io(0, 0), io(0, 1), io(0, 2), io(1, 1),
         io(1, 2), io(2, 2);
     theta[kParamsPerBody * n + i] = j.damping;

@@ -13,7 +13,7 @@ namespace needle::haptics {
 // Mass properties of the rigid body moved by one joint, in that joint's frame.
 struct BodyInertia {
   double mass = 0.0;
-  Eigen::Vector3d com = Eigen::Vector3d::Zero();         // centre of mass
+  Eigen::Vector3d com = Eigen::Vector3d::Zero();          // centre of mass
   Eigen::Matrix3d inertia_com = Eigen::Matrix3d::Zero();  // about the centre of mass
 };
 
@@ -30,7 +30,7 @@ struct RobotModel {
   std::string name;
   std::string base_link;
   std::string tip_link;
-  std::vector<JointModel> joints;  // chain order, base to tip
+  std::vector<JointModel> joints;                          // chain order, base to tip
   Eigen::Isometry3d tool = Eigen::Isometry3d::Identity();  // last joint frame to tip frame
   Eigen::Vector3d gravity{0.0, 0.0, -9.81};                // in the base frame, m/s²
 

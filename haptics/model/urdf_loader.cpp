@@ -45,7 +45,8 @@ bool finite(std::initializer_list<double> values) {
 
 Eigen::Isometry3d to_isometry(const urdf::Pose& p) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.linear() = Eigen::Quaterniond(p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z).normalized().toRotationMatrix();
+  t.linear() =
+      Eigen::Quaterniond(p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z).normalized().toRotationMatrix();
   t.translation() = Eigen::Vector3d(p.position.x, p.position.y, p.position.z);
   return t;
 }
@@ -71,10 +72,13 @@ BodyInertia link_inertia(const urdf::Link& link, const Eigen::Isometry3d& frame_
   i << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(i);
   const Eigen::Vector3d e = eig.eigenvalues();
-  if (!(e.minCoeff() > 0.0)) fail(source, where + "inertia tensor must be positive definite (smallest eigenvalue " + std::to_string(e.minCoeff()) + ")");
+  if (!(e.minCoeff() > 0.0))
+    fail(source,
+         where + "inertia tensor must be positive definite (smallest eigenvalue " + std::to_string(e.minCoeff()) + ")");
   // A rigid body's principal moments obey the triangle inequality (each ≤ sum of the other two).
   const double slack = 1e-12 * e.maxCoeff();
-  if (e[0] + e[1] < e[2] - slack) fail(source, where + "principal moments violate the triangle inequality (no rigid body has them)");
+  if (e[0] + e[1] < e[2] - slack)
+    fail(source, where + "principal moments violate the triangle inequality (no rigid body has them)");
   const Eigen::Isometry3d t = frame_of_link * to_isometry(in.origin);
   b.mass = in.mass;
   b.com = t.translation();
@@ -91,7 +95,8 @@ BodyInertia combine(const BodyInertia& a, const BodyInertia& b) {
   c.com = (a.mass * a.com + b.mass * b.com) / c.mass;
   auto shift = [&](const BodyInertia& x) {
     const Eigen::Vector3d d = x.com - c.com;
-    return Eigen::Matrix3d(x.inertia_com + x.mass * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose()));
+    return Eigen::Matrix3d(x.inertia_com +
+                           x.mass * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose()));
   };
   c.inertia_com = shift(a) + shift(b);
   return c;
@@ -103,8 +108,11 @@ BodyInertia combine(const BodyInertia& a, const BodyInertia& b) {
 long first_non_utf8_byte(const std::string& text) {
   for (size_t i = 0; i < text.size();) {
     const auto lead = static_cast<unsigned char>(text[i]);
-    const size_t length = lead < 0x80 ? 1 : lead >= 0xC2 && lead <= 0xDF ? 2 : lead >= 0xE0 && lead <= 0xEF ? 3
-                          : lead >= 0xF0 && lead <= 0xF4 ? 4 : 0;
+    const size_t length = lead < 0x80                    ? 1
+                          : lead >= 0xC2 && lead <= 0xDF ? 2
+                          : lead >= 0xE0 && lead <= 0xEF ? 3
+                          : lead >= 0xF0 && lead <= 0xF4 ? 4
+                                                         : 0;
     if (length == 0 || i + length > text.size()) return long(i);
     for (size_t k = 1; k < length; ++k)
       if ((static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80) return long(i);
@@ -132,10 +140,14 @@ long too_deep_line(const std::string& text) {
       ++i;
       continue;
     }
-    if (text.compare(i, 4, "<!--") == 0) skip_to(i, "-->");
-    else if (text.compare(i, 9, "<![CDATA[") == 0) skip_to(i, "]]>");
-    else if (text.compare(i, 2, "<?") == 0) skip_to(i, "?>");
-    else if (text.compare(i, 2, "<!") == 0) skip_to(i, ">");
+    if (text.compare(i, 4, "<!--") == 0)
+      skip_to(i, "-->");
+    else if (text.compare(i, 9, "<![CDATA[") == 0)
+      skip_to(i, "]]>");
+    else if (text.compare(i, 2, "<?") == 0)
+      skip_to(i, "?>");
+    else if (text.compare(i, 2, "<!") == 0)
+      skip_to(i, ">");
     else {
       const bool closing = text.compare(i, 2, "</") == 0;
       char quote = 0;
@@ -145,8 +157,10 @@ long too_deep_line(const std::string& text) {
         if (quote ? text[j] == quote : text[j] == '"' || text[j] == '\'') quote = quote ? 0 : text[j];
       }
       const bool empty = j < text.size() && text[j - 1] == '/';
-      if (closing) --depth;
-      else if (!empty && ++depth > io::kMaxNestingDepth) return line;
+      if (closing)
+        --depth;
+      else if (!empty && ++depth > io::kMaxNestingDepth)
+        return line;
       i = j + 1;
     }
   }
@@ -178,7 +192,9 @@ RobotModel parse_robot_urdf(const std::string& xml, const std::string& source, s
   model.base_link = link->name;
   Eigen::Isometry3d pending = Eigen::Isometry3d::Identity();  // current joint frame (or base) to `link`
   while (!link->child_joints.empty()) {
-    if (link->child_joints.size() > 1) fail(source, "link '" + link->name + "' has " + std::to_string(link->child_joints.size()) + " child joints; only a serial chain is supported");
+    if (link->child_joints.size() > 1)
+      fail(source, "link '" + link->name + "' has " + std::to_string(link->child_joints.size()) +
+                       " child joints; only a serial chain is supported");
     const urdf::Joint& joint = *link->child_joints.front();
     link = urdf->getLink(joint.child_link_name);
     check_pose(joint.parent_to_joint_origin_transform, source, "joint '" + joint.name + "' <origin>");
@@ -186,7 +202,8 @@ RobotModel parse_robot_urdf(const std::string& xml, const std::string& source, s
     switch (joint.type) {
       case urdf::Joint::FIXED:
         pending = to_joint;
-        if (!model.joints.empty()) model.joints.back().body = combine(model.joints.back().body, link_inertia(*link, pending, source));
+        if (!model.joints.empty())
+          model.joints.back().body = combine(model.joints.back().body, link_inertia(*link, pending, source));
         break;
       case urdf::Joint::REVOLUTE:
       case urdf::Joint::CONTINUOUS: {
@@ -215,7 +232,8 @@ RobotModel parse_robot_urdf(const std::string& xml, const std::string& source, s
   model.tool = pending;
 
   if (model.joints.empty()) fail(source, "no revolute or continuous joint");
-  if (model.dof() > kMaxDof) fail(source, std::to_string(model.dof()) + " movable joints, at most " + std::to_string(kMaxDof) + " supported");
+  if (model.dof() > kMaxDof)
+    fail(source, std::to_string(model.dof()) + " movable joints, at most " + std::to_string(kMaxDof) + " supported");
   if (expected_dof && model.dof() != *expected_dof)
     fail(source, std::to_string(model.dof()) + " movable joints, expected " + std::to_string(*expected_dof));
   for (const JointModel& j : model.joints)

@@ -82,17 +82,27 @@ bool HapticLoop::apply_pending() noexcept {
         servo_enabled_ = true;
         servo_budget_ = c.ticks;
         break;
-      case LoopCommandType::kStop: servo_enabled_ = false; break;
+      case LoopCommandType::kStop:
+        servo_enabled_ = false;
+        break;
       case LoopCommandType::kSetRate:
         timer_.set_period(period_of(c.rate_hz));
         dt_s_ = 1.0 / c.rate_hz;
         stats_.set_nominal_rate(c.rate_hz);
         stats_.clear();  // old-rate periods would read as errors
         break;
-      case LoopCommandType::kSetStep: tick_.set_step(c.step); break;
-      case LoopCommandType::kResetFault: safety_.reset(); break;
-      case LoopCommandType::kResetStats: stats_.clear(); break;
-      case LoopCommandType::kShutdown: keep_running = false; break;
+      case LoopCommandType::kSetStep:
+        tick_.set_step(c.step);
+        break;
+      case LoopCommandType::kResetFault:
+        safety_.reset();
+        break;
+      case LoopCommandType::kResetStats:
+        stats_.clear();
+        break;
+      case LoopCommandType::kShutdown:
+        keep_running = false;
+        break;
     }
     applied_id_.store(c.id, std::memory_order_release);
   }

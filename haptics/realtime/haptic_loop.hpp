@@ -14,11 +14,11 @@
 #include "haptics/realtime/loop_stats.hpp"
 #include "haptics/realtime/periodic_timer.hpp"
 #include "haptics/realtime/realtime_setup.hpp"
-#include "haptics/sync/seqlock.hpp"
 #include "haptics/realtime/servo_tick.hpp"
-#include "haptics/sync/spsc_ring.hpp"
 #include "haptics/realtime/tick_sample.hpp"
 #include "haptics/safety/safety_monitor.hpp"
+#include "haptics/sync/seqlock.hpp"
+#include "haptics/sync/spsc_ring.hpp"
 
 namespace needle::haptics {
 
@@ -87,17 +87,17 @@ class HapticLoop {
   SpscRing<LoopCommand> commands_{64};
   ServoTick tick_;
   LoopStats stats_;
-  PeriodicTimer timer_;              // loop thread only (the caller's in run_unpaced)
+  PeriodicTimer timer_;  // loop thread only (the caller's in run_unpaced)
   double dt_s_;
-  uint64_t next_tick_ = 0;           // loop thread only
-  bool servo_enabled_ = false;       // loop thread only
-  uint64_t servo_budget_ = 0;        // loop thread only: servo ticks left, 0 when unbounded
-  DeviceReading idle_reading_;       // loop thread only, while stopped
+  uint64_t next_tick_ = 0;      // loop thread only
+  bool servo_enabled_ = false;  // loop thread only
+  uint64_t servo_budget_ = 0;   // loop thread only: servo ticks left, 0 when unbounded
+  DeviceReading idle_reading_;  // loop thread only, while stopped
   DeviceCommand idle_command_;
-  uint64_t next_id_ = 0;             // control thread only
+  uint64_t next_id_ = 0;  // control thread only
   std::atomic<uint64_t> applied_id_{0};
   std::atomic<bool> ready_{false};
-  std::string realtime_line_;        // written before ready_ is set
+  std::string realtime_line_;  // written before ready_ is set
   std::thread thread_;
 };
 

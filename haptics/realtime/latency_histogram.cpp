@@ -75,7 +75,8 @@ LatencySummary LatencyHistogram::summary() const noexcept {
   s.p99_ns = percentile(0.99);
   s.p999_ns = percentile(0.999);
   s.max_ns = static_cast<double>(max_ns_.load(std::memory_order_relaxed));
-  s.mean_ns = s.count ? static_cast<double>(sum_ns_.load(std::memory_order_relaxed)) / static_cast<double>(s.count) : 0.0;
+  s.mean_ns =
+      s.count ? static_cast<double>(sum_ns_.load(std::memory_order_relaxed)) / static_cast<double>(s.count) : 0.0;
   return s;
 }
 

@@ -15,7 +15,7 @@ enum class LoopCommandType : uint32_t {
   kSetStep,     // step (nullptr: none); the old step is no longer used once applied
   kResetFault,  // clear the latched safety fault
   kResetStats,
-  kShutdown,    // leave the thread
+  kShutdown,  // leave the thread
 };
 
 // Built by name (LoopCommand::start(ticks), LoopCommand::set_step(step), ...), never positionally.
@@ -24,7 +24,7 @@ struct LoopCommand {
   double rate_hz = 0.0;
   ServoStep* step = nullptr;
   uint64_t ticks = 0;  // kStart: servo ticks to run before stopping as kStop would; 0: until kStop
-  uint64_t id = 0;  // assigned by HapticLoop::submit
+  uint64_t id = 0;     // assigned by HapticLoop::submit
 
   // Run the step; with ticks > 0, exactly that many servo ticks, then stop.
   static LoopCommand start(uint64_t ticks = 0) { return {LoopCommandType::kStart, 0.0, nullptr, ticks}; }

@@ -12,12 +12,12 @@ namespace needle::haptics {
 struct LoopStatsSummary {
   uint64_t ticks = 0;
   uint64_t overruns = 0;
-  double rate_hz = 0.0;           // measured over the recent periods
+  double rate_hz = 0.0;  // measured over the recent periods
   double nominal_rate_hz = 0.0;
-  LatencySummary period_error;    // |period - nominal period|
-  LatencySummary compute;         // read + step + safety + write
-  uint64_t samples_dropped = 0;   // sample ring overflow
-  uint32_t fault = 0;             // FaultCause
+  LatencySummary period_error;   // |period - nominal period|
+  LatencySummary compute;        // read + step + safety + write
+  uint64_t samples_dropped = 0;  // sample ring overflow
+  uint32_t fault = 0;            // FaultCause
 };
 
 class LoopStats {

@@ -12,7 +12,9 @@
 namespace needle::haptics {
 namespace {
 
-std::string outcome(bool ok, int err) { return ok ? "granted" : std::string("not granted (") + std::strerror(err) + ")"; }
+std::string outcome(bool ok, int err) {
+  return ok ? "granted" : std::string("not granted (") + std::strerror(err) + ")";
+}
 
 }  // namespace
 

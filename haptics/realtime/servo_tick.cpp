@@ -33,7 +33,8 @@ uint64_t ServoTick::run(const TickTiming& timing, double dt_s) noexcept {
 
   s.state.fault = static_cast<uint32_t>(safety_.fault());
   s.state.limits |= safety_.limited();
-  if (s.command.space == CommandSpace::kTaskForce) std::copy(s.command.force_n, s.command.force_n + 3, s.state.device_force_n);
+  if (s.command.space == CommandSpace::kTaskForce)
+    std::copy(s.command.force_n, s.command.force_n + 3, s.state.device_force_n);
   snapshots_.store(s.state);
   samples_.push(s);
   return s.compute_ns;

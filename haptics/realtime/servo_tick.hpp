@@ -7,12 +7,12 @@
 #include <cstdint>
 
 #include "haptics/devices/haptic_device.hpp"
-#include "haptics/sync/seqlock.hpp"
 #include "haptics/realtime/servo_step.hpp"
-#include "haptics/sync/spsc_ring.hpp"
 #include "haptics/realtime/tick_sample.hpp"
 #include "haptics/realtime/tool_snapshot.hpp"
 #include "haptics/safety/safety_monitor.hpp"
+#include "haptics/sync/seqlock.hpp"
+#include "haptics/sync/spsc_ring.hpp"
 
 namespace needle::haptics {
 

@@ -35,8 +35,8 @@ void TaskSpaceStep::step(const DeviceReading& reading, double dt_s, DeviceComman
   }
   target_ = tip_start_ + coupling_.workspace_scale * (coupling_.device_to_scene * (handle - device_start_));
   if (coupling_.wrist && reading.joint_count >= 2)
-    target_direction_ = wrist_direction(coupling_.device_to_scene, direction_start_, reading.joint_rad[0] - wrist_start_[0],
-                                        reading.joint_rad[1] - wrist_start_[1]);
+    target_direction_ = wrist_direction(coupling_.device_to_scene, direction_start_,
+                                        reading.joint_rad[0] - wrist_start_[0], reading.joint_rad[1] - wrist_start_[1]);
 
   // Kinematics and gravity evaluated here rather than read from the world, whose data may
   // hold only what its own integration needed.

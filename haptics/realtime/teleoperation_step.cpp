@@ -46,7 +46,8 @@ void TeleoperationStep::step(const DeviceReading& reading, double dt_s, DeviceCo
 
 void TeleoperationStep::applied(const DeviceCommand& command) noexcept {
   for (int j = 0; j < applied_.size(); ++j)
-    applied_[j] = command.space == CommandSpace::kJointTorque && uint32_t(j) < command.joint_count ? command.torque_nm[j] : 0.0;
+    applied_[j] =
+        command.space == CommandSpace::kJointTorque && uint32_t(j) < command.joint_count ? command.torque_nm[j] : 0.0;
   tele_.applied(applied_);
 }
 

@@ -10,11 +10,11 @@ namespace needle::haptics {
 
 struct TickSample {
   uint64_t tick = 0;
-  int64_t time_ns = 0;     // wake time, CLOCK_MONOTONIC
-  uint64_t period_ns = 0;  // since the previous wake
-  uint64_t compute_ns = 0; // read, step, safety, write
+  int64_t time_ns = 0;      // wake time, CLOCK_MONOTONIC
+  uint64_t period_ns = 0;   // since the previous wake
+  uint64_t compute_ns = 0;  // read, step, safety, write
   DeviceReading reading;
-  DeviceCommand command;   // after the safety monitor: what the device received
+  DeviceCommand command;  // after the safety monitor: what the device received
   ToolSnapshot state;
 };
 

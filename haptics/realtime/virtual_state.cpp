@@ -8,9 +8,12 @@ namespace {
 
 ContactState contact_of(ContactMode mode) {
   switch (mode) {
-    case ContactMode::Holonomic: return ContactState::kRigidSurface;
-    case ContactMode::Nonholonomic: return ContactState::kTissue;
-    case ContactMode::Free: break;
+    case ContactMode::Holonomic:
+      return ContactState::kRigidSurface;
+    case ContactMode::Nonholonomic:
+      return ContactState::kTissue;
+    case ContactMode::Free:
+      break;
   }
   return ContactState::kFree;
 }

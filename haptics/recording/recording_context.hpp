@@ -19,11 +19,11 @@ inline constexpr int kRecordingContextVersion = 2;
 
 // (the recording's path, its header) => its context: an object of version
 // kRecordingContextVersion with "task" and "task_text" (text), "scenario" and "safety_limits",
-// "coupling" (null: joint to joint), "practice" (true or false). Migrated: scenario "gains" without "law" were recorded with
-// the thesis law, without "lateral_stiffness_N_per_m", "axial_stiffness_N_per_m" or
-// "passivity_max_damping_per_tick" without those springs or that controller (0); a "coupling" without "wrist" had none (false). Throws RecordingError
-// "FILE: header: ..." for a header of format 1 or 2, or a context that is missing, not JSON, of
-// another version or without those keys.
+// "coupling" (null: joint to joint), "practice" (true or false). Migrated: scenario "gains" without "law" were recorded
+// with the thesis law, without "lateral_stiffness_N_per_m", "axial_stiffness_N_per_m" or
+// "passivity_max_damping_per_tick" without those springs or that controller (0); a "coupling" without "wrist" had none
+// (false). Throws RecordingError "FILE: header: ..." for a header of format 1 or 2, or a context that is missing, not
+// JSON, of another version or without those keys.
 nlohmann::json read_recording_context(const std::string& path, const SessionHeader& header);
 
 }  // namespace needle::haptics

@@ -48,14 +48,17 @@ void visit_record(Visitor& v, TickSample& s, uint32_t version) {
     v(r.plunger_input), v(r.plunger_force_n), v(r.plunger_position_m);
     v(c.plunger_force_n), v(c.plunger_travel_m);
     SyringeSnapshot& y = t.syringe;
-    v(y.fluid), v(y.layer), v(y.thumb_force_N), v(y.pressure_Pa), v(y.travel_m), v(y.flow_m3_per_s), v(y.injected_m3), v(y.work_J);
+    v(y.fluid), v(y.layer), v(y.thumb_force_N), v(y.pressure_Pa), v(y.travel_m), v(y.flow_m3_per_s), v(y.injected_m3),
+        v(y.work_J);
   }
 }
 
 struct Sizer {
   std::size_t bytes = 0;
   template <typename T>
-  void operator()(const T&) { bytes += sizeof(T); }
+  void operator()(const T&) {
+    bytes += sizeof(T);
+  }
 };
 
 struct Writer {
@@ -134,12 +137,10 @@ std::string not_finite(const char* name, const double* values, int count) {
 
 // "state syringe pressure_Pa = nan, not finite" for the first of the syringe's numbers that is not.
 std::string syringe_state_problem(const SyringeSnapshot& y) {
-  const std::pair<const char*, double> numbers[] = {{"state syringe thumb_force_N", y.thumb_force_N},
-                                                    {"state syringe pressure_Pa", y.pressure_Pa},
-                                                    {"state syringe travel_m", y.travel_m},
-                                                    {"state syringe flow_m3_per_s", y.flow_m3_per_s},
-                                                    {"state syringe injected_m3", y.injected_m3},
-                                                    {"state syringe work_J", y.work_J}};
+  const std::pair<const char*, double> numbers[] = {
+      {"state syringe thumb_force_N", y.thumb_force_N}, {"state syringe pressure_Pa", y.pressure_Pa},
+      {"state syringe travel_m", y.travel_m},           {"state syringe flow_m3_per_s", y.flow_m3_per_s},
+      {"state syringe injected_m3", y.injected_m3},     {"state syringe work_J", y.work_J}};
   for (const auto& [name, value] : numbers)
     if (std::string problem = not_finite(name, &value, 1); !problem.empty()) return problem;
   return {};
@@ -155,12 +156,15 @@ std::string record_problem(const TickSample& s) {
   const DeviceCommand& c = s.command;
   const ToolSnapshot& t = s.state;
   auto count = [](const char* name, uint32_t n, int most) {
-    return n > uint32_t(most) ? std::string(name) + " = " + std::to_string(n) + ", more than " + std::to_string(most) : std::string();
+    return n > uint32_t(most) ? std::string(name) + " = " + std::to_string(n) + ", more than " + std::to_string(most)
+                              : std::string();
   };
   for (const std::string& problem :
-       {count("reading joint_count", r.joint_count, kMaxDeviceJoints), count("command joint_count", c.joint_count, kMaxDeviceJoints),
+       {count("reading joint_count", r.joint_count, kMaxDeviceJoints),
+        count("command joint_count", c.joint_count, kMaxDeviceJoints),
         count("command space", uint32_t(c.space), int(CommandSpace::kJointTorque)),
-        count("state joint_count", t.joint_count, kMaxSnapshotJoints), count("state multiplier_count", t.multiplier_count, kMaxMultipliers),
+        count("state joint_count", t.joint_count, kMaxSnapshotJoints),
+        count("state multiplier_count", t.multiplier_count, kMaxMultipliers),
         count("state contact", uint32_t(t.contact), int(ContactState::kTissue)),
         count("reading plunger_input", r.plunger_input, int(PlungerInput::kHandlePosition)),
         count("state syringe fluid", t.syringe.fluid, 2)})
@@ -175,18 +179,26 @@ std::string record_problem(const TickSample& s) {
         out_of_bound("reading joint_velocity_rad_s", r.joint_velocity_rad_s, kMaxDeviceJoints, kMaxReading),
         out_of_bound("reading sensed_force_n", r.sensed_force_n, 3, kMaxReading),
         out_of_bound("reading sensed_torque_nm", r.sensed_torque_nm, 3, kMaxReading),
-        out_of_bound("command force_n", c.force_n, 3, kMaxReading), out_of_bound("command torque_nm", c.torque_nm, kMaxDeviceJoints, kMaxReading),
-        not_finite("state time_s", &t.time_s, 1), not_finite("state axial_force_N", &l.axial_force_N, 1),
-        not_finite("state deflection_m", &l.deflection_m, 1), out_of_bound("state needle_tip_m", t.needle_tip_m, 3, io::kWorldExtent_m),
-        not_finite("state needle_orientation", t.needle_orientation, 4), not_finite("state virtual_q", t.virtual_q, kMaxSnapshotJoints),
-        not_finite("state virtual_dq", t.virtual_dq, kMaxSnapshotJoints), not_finite("state multipliers", t.multipliers, kMaxMultipliers),
-        not_finite("state operator_force_n", t.operator_force_n, 3), not_finite("state environment_force_n", t.environment_force_n, 3),
-        not_finite("state device_force_n", t.device_force_n, 3), not_finite("state bone_force_n", l.bone_force_n, 3),
+        out_of_bound("command force_n", c.force_n, 3, kMaxReading),
+        out_of_bound("command torque_nm", c.torque_nm, kMaxDeviceJoints, kMaxReading),
+        not_finite("state time_s", &t.time_s, 1),
+        not_finite("state axial_force_N", &l.axial_force_N, 1),
+        not_finite("state deflection_m", &l.deflection_m, 1),
+        out_of_bound("state needle_tip_m", t.needle_tip_m, 3, io::kWorldExtent_m),
+        not_finite("state needle_orientation", t.needle_orientation, 4),
+        not_finite("state virtual_q", t.virtual_q, kMaxSnapshotJoints),
+        not_finite("state virtual_dq", t.virtual_dq, kMaxSnapshotJoints),
+        not_finite("state multipliers", t.multipliers, kMaxMultipliers),
+        not_finite("state operator_force_n", t.operator_force_n, 3),
+        not_finite("state environment_force_n", t.environment_force_n, 3),
+        not_finite("state device_force_n", t.device_force_n, 3),
+        not_finite("state bone_force_n", l.bone_force_n, 3),
         out_of_bound("state surface_point_m", l.surface_point_m, 3, io::kWorldExtent_m),
         out_of_bound("reading plunger_force_n", &r.plunger_force_n, 1, kMaxReading),
         out_of_bound("reading plunger_position_m", &r.plunger_position_m, 1, io::kWorldExtent_m),
         out_of_bound("command plunger_force_n", &c.plunger_force_n, 1, kMaxReading),
-        out_of_bound("command plunger_travel_m", &c.plunger_travel_m, 1, io::kWorldExtent_m), syringe_state_problem(t.syringe)})
+        out_of_bound("command plunger_travel_m", &c.plunger_travel_m, 1, io::kWorldExtent_m),
+        syringe_state_problem(t.syringe)})
     if (!problem.empty()) return problem;
   return {};
 }
@@ -279,7 +291,7 @@ RecordingReader::RecordingReader(std::string path) : path_(std::move(path)) {
     record_bytes_ = get<uint32_t>(buffer_.data() + 20);
     fixed = 24;
   } else {
-    std::vector<uint8_t> head = buffer_;  // the magic and the version, as read
+    std::vector<uint8_t> head = buffer_;                 // the magic and the version, as read
     if (!read_exactly(20)) fail("header", "truncated");  // record_bytes, rate, time
     head.insert(head.end(), buffer_.begin(), buffer_.end());
     buffer_ = std::move(head);
@@ -310,10 +322,13 @@ RecordingReader::RecordingReader(std::string path) : path_(std::move(path)) {
     const uint8_t* p = header_.version < 3 ? buffer_.data() : buffer_.data() + at;
     const uint32_t length = get<uint32_t>(p);
     at += 4;
-    if (length > max) fail("header", std::string(what) + " of " + std::to_string(length) + " bytes (at most " + std::to_string(max) + ")");
+    if (length > max)
+      fail("header",
+           std::string(what) + " of " + std::to_string(length) + " bytes (at most " + std::to_string(max) + ")");
     if (header_.version < 3) {
       std::vector<uint8_t> bytes(length);
-      if (length > size_ || std::fread(bytes.data(), 1, length, file_.get()) != length) fail("header", std::string("truncated ") + what);
+      if (length > size_ || std::fread(bytes.data(), 1, length, file_.get()) != length)
+        fail("header", std::string("truncated ") + what);
       out.assign(bytes.begin(), bytes.end());
     } else {
       if (at + length > header_bytes - 4) fail("header", std::string("truncated ") + what);
@@ -361,7 +376,8 @@ bool RecordingReader::next_bare(std::vector<TickSample>& records) {
     return false;
   }
   buffer_.resize(count * record_bytes_);
-  if (std::fread(buffer_.data(), 1, buffer_.size(), file_.get()) != buffer_.size()) fail(at_byte(offset_), "cannot be read");
+  if (std::fread(buffer_.data(), 1, buffer_.size(), file_.get()) != buffer_.size())
+    fail(at_byte(offset_), "cannot be read");
   decode_records(records, count, offset_);
   offset_ += buffer_.size();
   end_.whole_bytes = offset_;
@@ -383,7 +399,8 @@ bool RecordingReader::next_block(std::vector<TickSample>& records) {
     const std::string end_where = "end " + at_byte(offset_);
     if (left < kEndBytes) return cut();
     buffer_.resize(kEndBytes);
-    if (std::fread(buffer_.data() + 4, 1, kEndBytes - 4, file_.get()) != kEndBytes - 4) fail(end_where, "cannot be read");
+    if (std::fread(buffer_.data() + 4, 1, kEndBytes - 4, file_.get()) != kEndBytes - 4)
+      fail(end_where, "cannot be read");
     if (crc32(buffer_.data(), 16) != get<uint32_t>(buffer_.data() + 16)) fail(end_where, "checksum mismatch (damaged)");
     const uint64_t total = get<uint64_t>(buffer_.data() + 4);
     if (total != records_read_)
@@ -398,8 +415,10 @@ bool RecordingReader::next_block(std::vector<TickSample>& records) {
   if (std::memcmp(buffer_.data(), kBlockMagic, 4) != 0) fail(where, "not a block of records (damaged)");
   if (left < kBlockHeaderBytes) return cut();
   buffer_.resize(kBlockHeaderBytes);
-  if (std::fread(buffer_.data() + 4, 1, kBlockHeaderBytes - 4, file_.get()) != kBlockHeaderBytes - 4) fail(where, "cannot be read");
-  if (crc32(buffer_.data(), 20) != get<uint32_t>(buffer_.data() + 20)) fail(where, "header checksum mismatch (damaged)");
+  if (std::fread(buffer_.data() + 4, 1, kBlockHeaderBytes - 4, file_.get()) != kBlockHeaderBytes - 4)
+    fail(where, "cannot be read");
+  if (crc32(buffer_.data(), 20) != get<uint32_t>(buffer_.data() + 20))
+    fail(where, "header checksum mismatch (damaged)");
   const uint64_t first = get<uint64_t>(buffer_.data() + 4);
   const uint32_t count = get<uint32_t>(buffer_.data() + 12);
   const uint32_t records_crc = get<uint32_t>(buffer_.data() + 16);
@@ -447,10 +466,11 @@ std::vector<std::string> recording_notes(const std::string& path, const Recordin
   if (!end.checksummed)
     notes.push_back(path + ": an older format without checksums: damage to its records cannot be detected");
   if (end.checksummed && !end.closed)
-    notes.push_back(path + ": cut at byte " + std::to_string(end.whole_bytes) + " after " + std::to_string(records) +
-                    " ticks (its run stopped without closing it" +
-                    (end.trailing_bytes ? ", " + std::to_string(end.trailing_bytes) + " bytes of a last block lost" : "") +
-                    "): read up to there");
+    notes.push_back(
+        path + ": cut at byte " + std::to_string(end.whole_bytes) + " after " + std::to_string(records) +
+        " ticks (its run stopped without closing it" +
+        (end.trailing_bytes ? ", " + std::to_string(end.trailing_bytes) + " bytes of a last block lost" : "") +
+        "): read up to there");
   if (!end.checksummed && end.trailing_bytes)
     notes.push_back(path + ": " + std::to_string(end.trailing_bytes) + " bytes of a last record cut short, dropped");
   return notes;

@@ -70,15 +70,16 @@ void encode_record(const TickSample& sample, std::vector<uint8_t>& out, uint32_t
 inline constexpr std::size_t kBlockHeaderBytes = 24;
 inline constexpr std::size_t kEndBytes = 20;
 // Fills the kBlockHeaderBytes at `at` for the `count` records that follow them.
-void encode_block_header(uint8_t* at, uint64_t first_record, uint32_t count, uint32_t payload_version = kPayloadVersion);
+void encode_block_header(uint8_t* at, uint64_t first_record, uint32_t count,
+                         uint32_t payload_version = kPayloadVersion);
 std::vector<uint8_t> encode_end(uint64_t record_total, bool ran_to_end);
 
 // What a reader found besides the records.
 struct RecordingEnd {
-  bool checksummed = false;  // version 3: the header and every block were checked
-  bool closed = false;       // the end mark is there: the recorder closed the file
-  bool ran_to_end = false;   // ...and its session ran to its end (not a window closed early)
-  uint64_t whole_bytes = 0;  // the header and the whole blocks: where a cut file stops being whole
+  bool checksummed = false;        // version 3: the header and every block were checked
+  bool closed = false;             // the end mark is there: the recorder closed the file
+  bool ran_to_end = false;         // ...and its session ran to its end (not a window closed early)
+  uint64_t whole_bytes = 0;        // the header and the whole blocks: where a cut file stops being whole
   std::size_t trailing_bytes = 0;  // after them, a block cut short (or, before version 3, a record)
 };
 

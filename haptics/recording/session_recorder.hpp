@@ -16,9 +16,9 @@
 #include <thread>
 #include <vector>
 
-#include "haptics/sync/spsc_ring.hpp"
 #include "haptics/realtime/tick_sample.hpp"
 #include "haptics/recording/session_format.hpp"
+#include "haptics/sync/spsc_ring.hpp"
 
 namespace needle::haptics {
 

@@ -123,14 +123,16 @@ uint32_t SafetyMonitor::shape(double dt_s, DeviceCommand& command) const noexcep
     if (f > limits_.max_force_n) scale = f > 0.0 ? limits_.max_force_n / f : 0.0;
   } else {
     for (int i = 0; i < n; ++i)
-      if (std::abs(cmd[i]) > limits_.max_torque_nm[i]) scale = std::min(scale, limits_.max_torque_nm[i] / std::abs(cmd[i]));
+      if (std::abs(cmd[i]) > limits_.max_torque_nm[i])
+        scale = std::min(scale, limits_.max_torque_nm[i] / std::abs(cmd[i]));
   }
   for (int i = 0; i < n; ++i) cmd[i] *= scale;
   if (scale < 1.0) limited |= kLimitForce;
 
   // Rate limit against the last output (zero when the space changed).
-  const double max_step = (command.space == CommandSpace::kTaskForce ? limits_.max_force_rate_n_per_s
-                                                                      : limits_.max_torque_rate_nm_per_s) * dt_s;
+  const double max_step =
+      (command.space == CommandSpace::kTaskForce ? limits_.max_force_rate_n_per_s : limits_.max_torque_rate_nm_per_s) *
+      dt_s;
   double last[kMaxDeviceJoints] = {};
   if (last_output_.space == command.space) {
     int last_n = 0;
@@ -147,8 +149,8 @@ uint32_t SafetyMonitor::shape(double dt_s, DeviceCommand& command) const noexcep
   return limited;
 }
 
-void SafetyMonitor::apply(uint64_t tick, const DeviceReading& reading, const ToolSnapshot& state,
-                          bool deadline_missed, double dt_s, DeviceCommand& command) noexcept {
+void SafetyMonitor::apply(uint64_t tick, const DeviceReading& reading, const ToolSnapshot& state, bool deadline_missed,
+                          double dt_s, DeviceCommand& command) noexcept {
   observe_energy(reading);
   if (fault_ == FaultCause::kNone) {
     const FaultCause cause = detect(reading, state, deadline_missed, command);

@@ -14,12 +14,12 @@
 namespace needle::haptics {
 
 struct SafetyLimits {
-  double max_force_n = 0.0;                          // norm of the task-space force
-  double max_torque_nm[kMaxDeviceJoints] = {};       // per joint
-  double max_force_rate_n_per_s = 1000.0;            // 1 N per tick at 1 kHz
+  double max_force_n = 0.0;                     // norm of the task-space force
+  double max_torque_nm[kMaxDeviceJoints] = {};  // per joint
+  double max_force_rate_n_per_s = 1000.0;       // 1 N per tick at 1 kHz
   double max_torque_rate_nm_per_s = 100.0;
-  uint32_t ramp_ticks = 20;                          // output is zero this many ticks after the fault
-  uint32_t stale_ticks = 20;                         // consecutive ticks without a fresh reading
+  uint32_t ramp_ticks = 20;   // output is zero this many ticks after the fault
+  uint32_t stale_ticks = 20;  // consecutive ticks without a fresh reading
   // Consecutive bit-identical readings while pushing at least frozen_min_force_n: a hand
   // holding a handle against a force trembles (0.05 to 0.5 mm at 8 to 12 Hz) by more than an
   // encoder count (0.04 mm on the Falcon), so 5 s (at 1 kHz) without a change means the
@@ -27,7 +27,7 @@ struct SafetyLimits {
   uint32_t frozen_ticks = 5000;
   double frozen_min_force_n = 1.0;
   uint32_t missed_deadline_streak = 10;
-  double max_generated_energy_j = 1.0;               // passivity observer bound
+  double max_generated_energy_j = 1.0;  // passivity observer bound
 };
 
 // The device's own limits with the default fault thresholds.
@@ -40,8 +40,8 @@ class SafetyMonitor {
   // One tick: checks the tick's inputs, latches a fault if one is found, and replaces
   // `command` by what may be sent (saturated and rate-limited, or the fault ramp).
   // `deadline_missed` tells whether the previous tick overran.
-  void apply(uint64_t tick, const DeviceReading& reading, const ToolSnapshot& state,
-             bool deadline_missed, double dt_s, DeviceCommand& command) noexcept;
+  void apply(uint64_t tick, const DeviceReading& reading, const ToolSnapshot& state, bool deadline_missed, double dt_s,
+             DeviceCommand& command) noexcept;
 
   void reset() noexcept;
 

@@ -1,8 +1,8 @@
 #include "haptics/sim/closed_loop.hpp"
 
-#include "haptics/sim/hand_port.hpp"
-
 #include <cmath>
+
+#include "haptics/sim/hand_port.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -25,16 +25,26 @@ bool finite(const VecN& v) { return v.allFinite(); }
 
 nlohmann::json SimSummary::to_json() const {
   nlohmann::json pops = nlohmann::json::array();
-  for (const SimPuncture& p : punctures) pops.push_back({{"layer", p.layer}, {"depth_m", p.depth_m}, {"peak_force_N", p.peak_force_N}});
-  return {{"position_rms_free_m", position_rms_free_m},   {"position_max_free_m", position_max_free_m},
-          {"position_rms_contact_m", position_rms_contact_m}, {"position_max_contact_m", position_max_contact_m},
-          {"force_rms_N", force_rms_N},                   {"force_max_N", force_max_N},
-          {"max_penetration_m", max_penetration_m},       {"max_lateral_speed_mps", max_lateral_speed_mps},
-          {"max_axis_deviation_m", max_axis_deviation_m}, {"energy_error_J", energy_error_J},
-          {"punctures", pops},                            {"tissue_work_J", tissue_work_J},
-          {"hand_work_J", hand_work_J},                   {"hand_work_min_J", hand_work_min_J},
-          {"world_dissipated_min_J", world_dissipated_min_J}, {"saturated_s", saturated_s},
-          {"passivity_damped_s", passivity_damped_s},     {"faults", faults}};
+  for (const SimPuncture& p : punctures)
+    pops.push_back({{"layer", p.layer}, {"depth_m", p.depth_m}, {"peak_force_N", p.peak_force_N}});
+  return {{"position_rms_free_m", position_rms_free_m},
+          {"position_max_free_m", position_max_free_m},
+          {"position_rms_contact_m", position_rms_contact_m},
+          {"position_max_contact_m", position_max_contact_m},
+          {"force_rms_N", force_rms_N},
+          {"force_max_N", force_max_N},
+          {"max_penetration_m", max_penetration_m},
+          {"max_lateral_speed_mps", max_lateral_speed_mps},
+          {"max_axis_deviation_m", max_axis_deviation_m},
+          {"energy_error_J", energy_error_J},
+          {"punctures", pops},
+          {"tissue_work_J", tissue_work_J},
+          {"hand_work_J", hand_work_J},
+          {"hand_work_min_J", hand_work_min_J},
+          {"world_dissipated_min_J", world_dissipated_min_J},
+          {"saturated_s", saturated_s},
+          {"passivity_damped_s", passivity_damped_s},
+          {"faults", faults}};
 }
 
 SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::function<void(const TickRecord&)>& on_tick) {
@@ -96,8 +106,9 @@ SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::functi
 
     // A state that is not finite is a latched fault, found before the tick enters the summary or
     // the ticks: summary.json never holds a NaN.
-    if (!finite(plant.q()) || !finite(plant.dq()) || !finite(world.q()) || !finite(world.dq()) || !std::isfinite(rec.energy) ||
-        !finite(rec.tau_m) || !std::isfinite(rec.hand_work_J) || !std::isfinite(rec.world_stored_J) || !rec.force_h.allFinite()) {
+    if (!finite(plant.q()) || !finite(plant.dq()) || !finite(world.q()) || !finite(world.dq()) ||
+        !std::isfinite(rec.energy) || !finite(rec.tau_m) || !std::isfinite(rec.hand_work_J) ||
+        !std::isfinite(rec.world_stored_J) || !rec.force_h.allFinite()) {
       result.summary.faults.push_back("non_finite_state at t=" + std::to_string(rec.t) + " s");
       break;
     }
@@ -107,8 +118,9 @@ SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::functi
       free_pos.add(rec.position_error);
     } else {
       contact_pos.add(rec.position_error);
-      rec.force_error = c.mode == ContactMode::Holonomic ? (out.force_h_normal - c.force_rigid).norm()
-                                                        : std::hypot(out.lambda_m[0] + c.lambda_tissue[0], out.lambda_m[1] + c.lambda_tissue[1]);
+      rec.force_error = c.mode == ContactMode::Holonomic
+                            ? (out.force_h_normal - c.force_rigid).norm()
+                            : std::hypot(out.lambda_m[0] + c.lambda_tissue[0], out.lambda_m[1] + c.lambda_tissue[1]);
       force.add(rec.force_error);
     }
     SimSummary& s = result.summary;
@@ -123,24 +135,27 @@ SimResult run_closed_loop(const Scenario& sc, bool keep_ticks, const std::functi
     }
     const TissueOutput& tissue = world.tissue().out;
     if (tissue.punctured_layer >= 0)
-      s.punctures.push_back({sc.scene.tissue.layer(tissue.punctured_layer).name, world.tissue().s, tissue.axial_force_N, rec.t});
+      s.punctures.push_back(
+          {sc.scene.tissue.layer(tissue.punctured_layer).name, world.tissue().s, tissue.axial_force_N, rec.t});
     s.tissue_work_J = world.tissue().tissue_work_J;
     s.hand_work_J = rec.hand_work_J;
     s.hand_work_min_J = std::min(s.hand_work_min_J, rec.hand_work_J);
     s.world_dissipated_min_J = std::min(s.world_dissipated_min_J, rec.hand_work_J - rec.world_stored_J);
     s.saturated_s += rec.saturated ? T : 0.0;
     s.passivity_damped_s += rec.passivity_acted ? T : 0.0;
-    s.energy_error_J = std::max(s.energy_error_J, std::abs(rec.energy - e0 - plant.external_work() - world.external_work()));
+    s.energy_error_J =
+        std::max(s.energy_error_J, std::abs(rec.energy - e0 - plant.external_work() - world.external_work()));
     if (keep_ticks) result.ticks.push_back(rec);
     if (on_tick) on_tick(rec);
     result.simulated_s = rec.t;
 
     // Latched faults end the run, naming the cause.
     if (std::abs(rec.energy) > sc.energy_bound_J) {
-      s.faults.push_back("energy_bound_exceeded at t=" + std::to_string(rec.t) + " s: |E| = " + std::to_string(std::abs(rec.energy)) +
-                         " J > " + std::to_string(sc.energy_bound_J) + " J");
+      s.faults.push_back("energy_bound_exceeded at t=" + std::to_string(rec.t) + " s: |E| = " +
+                         std::to_string(std::abs(rec.energy)) + " J > " + std::to_string(sc.energy_bound_J) + " J");
     } else if (rec.position_error > sc.divergence_bound_m) {
-      s.faults.push_back("tracking_diverged at t=" + std::to_string(rec.t) + " s: |x_m - x_v| = " + std::to_string(rec.position_error) + " m");
+      s.faults.push_back("tracking_diverged at t=" + std::to_string(rec.t) +
+                         " s: |x_m - x_v| = " + std::to_string(rec.position_error) + " m");
     }
     if (!s.faults.empty()) break;
   }

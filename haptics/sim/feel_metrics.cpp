@@ -38,9 +38,12 @@ double rms(const std::vector<double>& sum_sq, const std::vector<bool>& counted) 
 
 FeelPhase phase_of(ContactMode mode) {
   switch (mode) {
-    case ContactMode::Holonomic: return FeelPhase::Rigid;
-    case ContactMode::Nonholonomic: return FeelPhase::Tissue;
-    case ContactMode::Free: break;
+    case ContactMode::Holonomic:
+      return FeelPhase::Rigid;
+    case ContactMode::Nonholonomic:
+      return FeelPhase::Tissue;
+    case ContactMode::Free:
+      break;
   }
   return FeelPhase::Free;
 }
@@ -49,14 +52,18 @@ FeelPhase phase_of(ContactMode mode) {
 
 const char* feel_phase_name(FeelPhase phase) {
   switch (phase) {
-    case FeelPhase::Free: return "free";
-    case FeelPhase::Rigid: return "rigid contact";
-    case FeelPhase::Tissue: return "tissue";
+    case FeelPhase::Free:
+      return "free";
+    case FeelPhase::Rigid:
+      return "rigid contact";
+    case FeelPhase::Tissue:
+      return "tissue";
   }
   return "?";
 }
 
-std::vector<double> zero_phase_filter(const std::vector<double>& x, double sample_Hz, double corner_Hz, bool high_pass) {
+std::vector<double> zero_phase_filter(const std::vector<double>& x, double sample_Hz, double corner_Hz,
+                                      bool high_pass) {
   if (x.empty()) return {};
   const size_t pad = size_t(std::lround(sample_Hz));
   std::vector<double> y(pad, x.front());
@@ -78,7 +85,8 @@ std::vector<PhaseFeel> feel_by_phase(const std::vector<TickRecord>& ticks, doubl
   for (int axis = 0; axis < 3; ++axis) {
     std::vector<double> f(n);
     for (size_t i = 0; i < n; ++i) f[i] = ticks[i].force_h[axis];
-    const std::vector<double> band = zero_phase_filter(zero_phase_filter(f, fs, w.band_low_Hz, true), fs, w.band_high_Hz, false);
+    const std::vector<double> band =
+        zero_phase_filter(zero_phase_filter(f, fs, w.band_low_Hz, true), fs, w.band_high_Hz, false);
     const std::vector<double> hf = zero_phase_filter(f, fs, w.band_high_Hz, true);
     for (size_t i = 0; i < n; ++i) band_sq[i] += band[i] * band[i], hf_sq[i] += hf[i] * hf[i];
   }
@@ -103,7 +111,8 @@ std::vector<PhaseFeel> feel_by_phase(const std::vector<TickRecord>& ticks, doubl
       if (phase == FeelPhase::Tissue) {
         if (r.t - entered >= w.lateral_settle_s) {
           const double lateral = std::hypot(r.psi[0], r.psi[1]);
-          p.max_lateral_speed_mps = std::isnan(p.max_lateral_speed_mps) ? lateral : std::max(p.max_lateral_speed_mps, lateral);
+          p.max_lateral_speed_mps =
+              std::isnan(p.max_lateral_speed_mps) ? lateral : std::max(p.max_lateral_speed_mps, lateral);
         }
         if (r.t - entered < w.tissue_settle_s) continue;
       }

@@ -16,9 +16,9 @@ const char* feel_phase_name(FeelPhase phase);
 
 struct FeelWindows {
   double band_low_Hz = 3.0, band_high_Hz = 50.0;  // the band; "high frequency" is above band_high_Hz
-  double tissue_settle_s = 0.3;   // tissue ticks count from this long after each entry
-  double lateral_settle_s = 1.0;  // the lateral speed from this long after each entry
-  double settle_out_s = 1.0;      // an entry is one after this long out of the tissue (not a flicker's re-entry)
+  double tissue_settle_s = 0.3;                   // tissue ticks count from this long after each entry
+  double lateral_settle_s = 1.0;                  // the lateral speed from this long after each entry
+  double settle_out_s = 1.0;  // an entry is one after this long out of the tissue (not a flicker's re-entry)
 };
 
 struct PhaseFeel {
@@ -27,14 +27,15 @@ struct PhaseFeel {
   double force_band_rms_N = 0.0;  // RMS of |F_h| band-passed (zero-phase), over the phase's ticks
   double force_hf_rms_N = 0.0;    // RMS of |F_h| high-passed at band_high_Hz
   double max_lateral_speed_mps = std::numeric_limits<double>::quiet_NaN();  // tissue only: max |ψ|
-  double tracking_rms_m = 0.0;    // RMS of |x_m − x_v|
+  double tracking_rms_m = 0.0;                                              // RMS of |x_m − x_v|
 };
 
 // (ticks of one run, its period, windows) => one PhaseFeel per phase that has ticks, in the order
 // free, rigid, tissue. The filters run over the whole run (so a phase's edges see its neighbours),
 // forward and backward: second-order Butterworth sections, 3 Hz high-pass and 50 Hz low-pass for
 // the band, 50 Hz high-pass above it (each applied twice: fourth order, no phase shift).
-std::vector<PhaseFeel> feel_by_phase(const std::vector<TickRecord>& ticks, double period_s, const FeelWindows& windows = {});
+std::vector<PhaseFeel> feel_by_phase(const std::vector<TickRecord>& ticks, double period_s,
+                                     const FeelWindows& windows = {});
 
 // (signal, sample rate, corner, high or low) => the signal through a zero-phase second-order
 // Butterworth filter run forward and backward, its ends padded with their own value for one second.

@@ -7,7 +7,12 @@ namespace needle::haptics {
 
 MasterPlant::MasterPlant(const RobotModel& model, DeviceParams device, HandImpedance hand, Integrator integrator,
                          int substeps)
-    : model_(model), limit_(device_limit(model, device)), hand_(hand), integrator_(integrator), substeps_(substeps), data_(model),
+    : model_(model),
+      limit_(device_limit(model, device)),
+      hand_(hand),
+      integrator_(integrator),
+      substeps_(substeps),
+      data_(model),
       damping_(model.damping()) {
   reset(VecN::Zero(model.dof()), VecN::Zero(model.dof()));
 }
@@ -34,7 +39,9 @@ double MasterPlant::hand_kinetic_energy() const {
   return 0.5 * hand_.mass_kg * v.squaredNorm() + 0.5 * hand_.rotational_inertia() * w.squaredNorm();
 }
 
-double MasterPlant::energy() const { return kinetic_energy(data_) + potential_energy(model_, data_) + hand_kinetic_energy(); }
+double MasterPlant::energy() const {
+  return kinetic_energy(data_) + potential_energy(model_, data_) + hand_kinetic_energy();
+}
 
 void MasterPlant::acceleration(const VecN& q, const VecN& dq, double t, VecN& ddq) {
   update_kinematics(model_, data_, q, dq);
@@ -63,7 +70,8 @@ void MasterPlant::advance(const VecN& tau_command, const HandTrajectory& traject
     // The hand target is held over the sub-step; the work uses the same force law (trapezoidal).
     acceleration(q_, dq_, ts, ddq_);
     const double p_start = power(), hand_start = impedance_.dot(data_.tip_twist);
-    integrate_step(integrator_, q_, dq_, h, [&](const VecN& qs, const VecN& vs, VecN& a) { acceleration(qs, vs, ts, a); });
+    integrate_step(integrator_, q_, dq_, h,
+                   [&](const VecN& qs, const VecN& vs, VecN& a) { acceleration(qs, vs, ts, a); });
     acceleration(q_, dq_, ts, ddq_);
     work_ += 0.5 * h * (p_start + power());
     impedance_work_ += 0.5 * h * (hand_start + impedance_.dot(data_.tip_twist));

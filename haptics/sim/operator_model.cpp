@@ -9,7 +9,8 @@ namespace needle::haptics {
 HandTrajectory::HandTrajectory(std::vector<HandWaypoint> waypoints) : waypoints_(std::move(waypoints)) {
   if (waypoints_.empty()) throw std::invalid_argument("hand trajectory needs at least one waypoint");
   for (size_t i = 0; i < waypoints_.size(); ++i) {
-    if (!(waypoints_[i].direction.norm() > 1e-9)) throw std::invalid_argument("waypoint " + std::to_string(i) + ": direction must be nonzero");
+    if (!(waypoints_[i].direction.norm() > 1e-9))
+      throw std::invalid_argument("waypoint " + std::to_string(i) + ": direction must be nonzero");
     waypoints_[i].direction.normalize();
     if (i > 0 && !(waypoints_[i].t > waypoints_[i - 1].t))
       throw std::invalid_argument("waypoint " + std::to_string(i) + ": times must strictly increase");
@@ -27,7 +28,7 @@ HandTarget HandTrajectory::at(double t) const {
   if (i + 1 == waypoints_.size() || t <= a.t) return out;
   const HandWaypoint& b = waypoints_[i + 1];
   const double span = b.t - a.t, u = (t - a.t) / span;
-  const double s = u * u * u * (10 - 15 * u + 6 * u * u);      // minimum jerk
+  const double s = u * u * u * (10 - 15 * u + 6 * u * u);  // minimum jerk
   const double s_dot = 30 * u * u * (1 - u) * (1 - u) / span;
   out.position = a.position + s * (b.position - a.position);
   out.velocity = s_dot * (b.position - a.position);
@@ -41,7 +42,8 @@ HandTarget HandTrajectory::at(double t) const {
   return out;
 }
 
-void HandTrajectory::restart(double t0, const Eigen::Vector3d& position, const Eigen::Vector3d& direction, int anchored) noexcept {
+void HandTrajectory::restart(double t0, const Eigen::Vector3d& position, const Eigen::Vector3d& direction,
+                             int anchored) noexcept {
   if (waypoints_.empty()) return;
   const double shift = t0 - waypoints_.front().t;
   for (HandWaypoint& w : waypoints_) w.t += shift;

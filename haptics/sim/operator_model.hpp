@@ -25,8 +25,8 @@ struct HandImpedance {
 
 struct HandWaypoint {
   double t = 0.0;
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();      // tip, robot base frame
-  Eigen::Vector3d direction = Eigen::Vector3d::UnitX();    // stylus axis x₅, unit
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();    // tip, robot base frame
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  // stylus axis x₅, unit
 };
 
 struct HandTarget {

@@ -47,13 +47,15 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
   LayerMechanics mechanics(const json& j, const std::string& at, const json* references) {
     LayerMechanics m;
     for (const auto& f : kMechanicsFields)
-      if (j.contains(f.key)) m.*f.member = non_negative(value(j[f.key], at + "/" + f.key, references), pointer_to(at, f.key, j[f.key]));
+      if (j.contains(f.key))
+        m.*f.member = non_negative(value(j[f.key], at + "/" + f.key, references), pointer_to(at, f.key, j[f.key]));
     if (j.contains("rigid")) {
       const json& rigid = value(j["rigid"], at + "/rigid", references);
       if (!rigid.is_boolean()) fail(pointer_to(at, "rigid", j["rigid"]), "expected true or false");
       m.rigid = rigid.get<bool>();
     }
-    if (const auto problem = mechanics_problem(m)) fail(pointer_to(at, problem->key, j.value(problem->key, json())), problem->what);
+    if (const auto problem = mechanics_problem(m))
+      fail(pointer_to(at, problem->key, j.value(problem->key, json())), problem->what);
     return m;
   }
 
@@ -74,15 +76,18 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
     const json& references = member(j, "", "references");
     if (!references.is_object()) fail("/references", "expected an object of citations");
     const bool rigid = j.contains("rigid");
-    const std::vector<const char*> required = rigid ? std::vector<const char*>{"rigid"}
-                                                    : std::vector<const char*>{"stiffness_N_per_m", "puncture_force_N", "cutting_force_N",
-                                                                               "friction_N_per_m", "static_friction_N_per_m"};
+    const std::vector<const char*> required =
+        rigid ? std::vector<const char*>{"rigid"}
+              : std::vector<const char*>{"stiffness_N_per_m", "puncture_force_N", "cutting_force_N", "friction_N_per_m",
+                                         "static_friction_N_per_m"};
     for (const char* key : required) member(j, "", key);
-    const LayerParameters p{mechanics(j, "", &references), acoustics(j, "", &references), injection(j, "", &references)};
+    const LayerParameters p{mechanics(j, "", &references), acoustics(j, "", &references),
+                            injection(j, "", &references)};
     for (const auto& item : references.items()) {
       const std::string& key = item.key();  // not a structured binding: clang before 16 cannot capture one
       string(item.value(), "/references/" + key);
-      if (std::none_of(sources_.begin(), sources_.end(), [&](const std::string& s) { return s.find(key) != std::string::npos; }))
+      if (std::none_of(sources_.begin(), sources_.end(),
+                       [&](const std::string& s) { return s.find(key) != std::string::npos; }))
         fail("/references/" + key, "not cited by any parameter's source");
     }
     return p;
@@ -93,7 +98,8 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
   // whole checked by `problem`.
   template <class Set, size_t N>
   std::optional<Set> field_block(const json& j, const std::string& at, const json* references, const char* name,
-                                 const ParameterField<Set> (&fields)[N], std::optional<MechanicsProblem> (*problem)(const Set&)) {
+                                 const ParameterField<Set> (&fields)[N],
+                                 std::optional<MechanicsProblem> (*problem)(const Set&)) {
     if (!j.contains(name)) return std::nullopt;
     const json& block = j[name];
     const std::string where = at + "/" + name;
@@ -102,7 +108,8 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
     object(block, where, keys);
     Set set;
     for (const auto& f : fields)
-      set.*f.member = number(value(member(block, where, f.key), where + "/" + f.key, references), pointer_to(where, f.key, block[f.key]));
+      set.*f.member = number(value(member(block, where, f.key), where + "/" + f.key, references),
+                             pointer_to(where, f.key, block[f.key]));
     if (const auto p = problem(set)) fail(pointer_to(where, p->key, block[p->key]), p->what);
     return set;
   }
@@ -115,7 +122,8 @@ class MechanicsReader : io::StrictJsonReader<ScenarioError> {
   // A parameter's value: a bare value (inline only) or {value, source}.
   const json& value(const json& given, const std::string& at, const json* references) {
     if (!given.is_object()) {
-      if (references) fail(at, "expected {\"value\": ..., \"source\": \"...\"}: every number in a parameter set carries its source");
+      if (references)
+        fail(at, "expected {\"value\": ..., \"source\": \"...\"}: every number in a parameter set carries its source");
       return given;
     }
     object(given, at, {"value", "source"});
@@ -140,15 +148,17 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
       : StrictJsonReader(std::move(file)), folder_(std::move(folder)), generate_patient_(generate_patient) {}
 
   Scenario scenario(const json& j) {
-    object(j, "", {"name", "description", "master_urdf", "virtual_urdf", "robot_base_in_world_m", "period_s",
-                   "duration_s", "master_substeps", "virtual_substeps", "q0_rad", "gains", "tool", "rigid", "tissue", "hand",
-                   "sensor", "device", "energy_bound_J", "syringe"});
+    object(j, "",
+           {"name", "description", "master_urdf", "virtual_urdf", "robot_base_in_world_m", "period_s", "duration_s",
+            "master_substeps", "virtual_substeps", "q0_rad", "gains", "tool", "rigid", "tissue", "hand", "sensor",
+            "device", "energy_bound_J", "syringe"});
     Scenario s;
     s.source = file_;
     s.name = string(member(j, "", "name"), "/name");
     if (j.contains("description")) string(j["description"], "/description");
     s.master = load_robot_urdf(existing_file(member(j, "", "master_urdf"), "/master_urdf", folder_).string());
-    s.virt = load_robot_urdf(existing_file(member(j, "", "virtual_urdf"), "/virtual_urdf", folder_).string(), s.master.dof());
+    s.virt = load_robot_urdf(existing_file(member(j, "", "virtual_urdf"), "/virtual_urdf", folder_).string(),
+                             s.master.dof());
     const int n = s.master.dof();
     s.base_in_world = point(member(j, "", "robot_base_in_world_m"), "/robot_base_in_world_m");
     s.period_s = in_range(member(j, "", "period_s"), "/period_s", limits::kPeriod);
@@ -169,9 +179,11 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     if (j.contains("device")) {
       object(j["device"], "/device", {"force_limit_N"});
       if (j["device"].contains("force_limit_N"))
-        s.device.force_limit_N = in_range(j["device"]["force_limit_N"], "/device/force_limit_N", limits::kDeviceForceLimit);
+        s.device.force_limit_N =
+            in_range(j["device"]["force_limit_N"], "/device/force_limit_N", limits::kDeviceForceLimit);
     }
-    if (j.contains("energy_bound_J")) s.energy_bound_J = in_range(j["energy_bound_J"], "/energy_bound_J", limits::kEnergyBound);
+    if (j.contains("energy_bound_J"))
+      s.energy_bound_J = in_range(j["energy_bound_J"], "/energy_bound_J", limits::kEnergyBound);
     return s;
   }
 
@@ -197,13 +209,17 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
   }
 
   void gains(const json& g, const std::string& at, int n, TeleoperationGains& out) const {
-    object(g, at, {"preset", "law", "gpm", "nonholonomic", "switch_time_s", "force_scale",
-                   "lateral_damping_Ns_per_m", "lateral_stiffness_N_per_m", "axial_damping_Ns_per_m",
-                   "axial_stiffness_N_per_m", "passivity_max_damping_per_tick"});
+    object(g, at,
+           {"preset", "law", "gpm", "nonholonomic", "switch_time_s", "force_scale", "lateral_damping_Ns_per_m",
+            "lateral_stiffness_N_per_m", "axial_damping_Ns_per_m", "axial_stiffness_N_per_m",
+            "passivity_max_damping_per_tick"});
     const std::string preset = string(member(g, at, "preset"), at + "/preset");
-    if (preset == "thesis_holonomic") out = thesis_holonomic_gains(n);
-    else if (preset == "thesis_nonholonomic") out = thesis_nonholonomic_gains(n);
-    else fail(at + "/preset", "expected \"thesis_holonomic\" or \"thesis_nonholonomic\", got \"" + preset + "\"");
+    if (preset == "thesis_holonomic")
+      out = thesis_holonomic_gains(n);
+    else if (preset == "thesis_nonholonomic")
+      out = thesis_nonholonomic_gains(n);
+    else
+      fail(at + "/preset", "expected \"thesis_holonomic\" or \"thesis_nonholonomic\", got \"" + preset + "\"");
     if (g.contains("gpm")) {
       const json& p = g["gpm"];
       const std::string where = at + "/gpm";
@@ -219,14 +235,16 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
       out.nonholonomic = {in_range(member(p, where, "alpha"), where + "/alpha", limits::kNonholonomicAlpha),
                           in_range(member(p, where, "beta"), where + "/beta", limits::kNonholonomicBeta)};
     }
-    if (g.contains("switch_time_s")) out.switch_time_s = in_range(g["switch_time_s"], at + "/switch_time_s", limits::kSwitchTime);
+    if (g.contains("switch_time_s"))
+      out.switch_time_s = in_range(g["switch_time_s"], at + "/switch_time_s", limits::kSwitchTime);
     if (g.contains("law")) {
       const std::string law = string(g["law"], at + "/law");
       const auto named = control_law_named(law);
       if (!named) fail(at + "/law", "expected \"tool\" or \"thesis\", got \"" + law + "\"");
       out.law = *named;
     }
-    if (g.contains("force_scale")) out.force_scale = in_range(g["force_scale"], at + "/force_scale", limits::kForceScale);
+    if (g.contains("force_scale"))
+      out.force_scale = in_range(g["force_scale"], at + "/force_scale", limits::kForceScale);
     const std::tuple<const char*, double*, const io::Range&> springs[] = {
         {"axial_damping_Ns_per_m", &out.axial_damping_Ns_per_m, limits::kToolDamping},
         {"lateral_damping_Ns_per_m", &out.lateral_damping_Ns_per_m, limits::kToolDamping},
@@ -236,7 +254,8 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
       if (g.contains(key)) *field = in_range(g[key], at + "/" + key, range);
     if (g.contains("passivity_max_damping_per_tick"))
       out.passivity.max_damping_per_tick =
-          in_range(g["passivity_max_damping_per_tick"], at + "/passivity_max_damping_per_tick", limits::kPassivityDampingPerTick);
+          in_range(g["passivity_max_damping_per_tick"], at + "/passivity_max_damping_per_tick",
+                   limits::kPassivityDampingPerTick);
   }
 
   void tool(const json& t, const std::string& at, Tool& out) const {
@@ -253,12 +272,15 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
   Primitives surface(const json& j, const std::string& at, const Eigen::Vector3d& base) const {
     object(j, at, {"combine", "primitives"});
     const std::string combine = j.contains("combine") ? string(j["combine"], at + "/combine") : "union";
-    if (combine != "union" && combine != "intersection") fail(at + "/combine", "expected \"union\" or \"intersection\"");
+    if (combine != "union" && combine != "intersection")
+      fail(at + "/combine", "expected \"union\" or \"intersection\"");
     const json& list = member(j, at, "primitives");
     if (!list.is_array() || list.empty() || list.size() > static_cast<size_t>(ImplicitSurface::kMaxPrimitives))
-      fail(at + "/primitives", "expected an array of 1 to " + std::to_string(ImplicitSurface::kMaxPrimitives) + " primitives");
+      fail(at + "/primitives",
+           "expected an array of 1 to " + std::to_string(ImplicitSurface::kMaxPrimitives) + " primitives");
     Primitives out{{}, combine == "union" ? ImplicitSurface::Combine::Union : ImplicitSurface::Combine::Intersection};
-    for (size_t i = 0; i < list.size(); ++i) out.list.push_back(primitive(list[i], at + "/primitives/" + std::to_string(i), base));
+    for (size_t i = 0; i < list.size(); ++i)
+      out.list.push_back(primitive(list[i], at + "/primitives/" + std::to_string(i), base));
     return out;
   }
 
@@ -278,7 +300,8 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     if (!list.is_array() || list.empty() || list.size() > size_t(TissueModel::kMaxLayers))
       fail(where, "expected an array of 1 to " + std::to_string(TissueModel::kMaxLayers) + " layers");
     std::vector<TissueLayer> layers;
-    for (size_t i = 0; i < list.size(); ++i) layers.push_back(layer(list[i], where + "/" + std::to_string(i), s.base_in_world));
+    for (size_t i = 0; i < list.size(); ++i)
+      layers.push_back(layer(list[i], where + "/" + std::to_string(i), s.base_in_world));
     try {
       s.scene.tissue = TissueModel(std::move(layers), stick);
     } catch (const TissueLayerError& e) {
@@ -293,7 +316,8 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
       const std::string where = at + "/stick";
       object(p, where, {"stiffness_N_per_m", "band_mps"});
       if (p.contains("stiffness_N_per_m"))
-        stick.stiffness_N_per_m = in_range(p["stiffness_N_per_m"], where + "/stiffness_N_per_m", limits::kStickStiffness);
+        stick.stiffness_N_per_m =
+            in_range(p["stiffness_N_per_m"], where + "/stiffness_N_per_m", limits::kStickStiffness);
       if (p.contains("band_mps")) stick.band_mps = in_range(p["band_mps"], where + "/band_mps", limits::kStickBand);
     }
     return stick;
@@ -321,7 +345,8 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     for (const anatomy::PatientLayerSpec& l : anatomy::kPatientLayers) {
       if (!sets.count(l.parameters)) {
         const std::string set = (tissues / (std::string(l.parameters) + ".json")).string();
-        if (!std::filesystem::is_regular_file(set)) fail(at + "/tissues", "no parameter set " + set + " for the layer \"" + l.name + "\"");
+        if (!std::filesystem::is_regular_file(set))
+          fail(at + "/tissues", "no parameter set " + set + " for the layer \"" + l.name + "\"");
         sets.emplace(l.parameters, MechanicsReader(set).parameter_set(io::read_json_file<ScenarioError>(set)));
       }
       s.patient_layers.push_back({l.name, sets.at(l.parameters).mechanics, sets.at(l.parameters).injection});
@@ -336,13 +361,15 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
     try {
       s.scene.tissue = TissueModel(std::move(layers), stick);
     } catch (const TissueLayerError& e) {
-      fail(at + "/patient", std::string("the generated layer ") + std::to_string(e.layer) + " (" + e.key + "): " + e.what());
+      fail(at + "/patient",
+           std::string("the generated layer ") + std::to_string(e.layer) + " (" + e.key + "): " + e.what());
     }
   }
 
   TissueLayer layer(const json& l, const std::string& at, const Eigen::Vector3d& base) const {
     object(l, at, with_mechanics_keys({"name", "shape", "parameters"}));
-    TissueLayer layer{string(member(l, at, "name"), at + "/name"), layer_shape(member(l, at, "shape"), at + "/shape", base), {}};
+    TissueLayer layer{
+        string(member(l, at, "name"), at + "/name"), layer_shape(member(l, at, "shape"), at + "/shape", base), {}};
     if (!l.contains("parameters")) {
       MechanicsReader inline_reader(file_);
       layer.mechanics = inline_reader.mechanics(l, at, nullptr);
@@ -351,7 +378,9 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
       return layer;
     }
     for (const char* key : with_mechanics_keys({}))
-      if (l.contains(key)) fail(at + "/" + key, "given beside \"parameters\": a layer's parameters come from the file or inline, not both");
+      if (l.contains(key))
+        fail(at + "/" + key,
+             "given beside \"parameters\": a layer's parameters come from the file or inline, not both");
     const std::string set = existing_file(l["parameters"], at + "/parameters", folder_).string();
     const LayerParameters p = MechanicsReader(set).parameter_set(io::read_json_file<ScenarioError>(set));
     layer.mechanics = p.mechanics;
@@ -363,19 +392,22 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
   // A layer's region: one of the surface primitives, a slab, a box, or a combined surface.
   LayerShape layer_shape(const json& j, const std::string& at, const Eigen::Vector3d& base) const {
     object(j, at, {"sphere", "plane", "capsule", "slab", "box", "surface"});
-    if (j.size() != 1) fail(at, "expected exactly one of \"sphere\", \"plane\", \"capsule\", \"slab\", \"box\", \"surface\"");
+    if (j.size() != 1)
+      fail(at, "expected exactly one of \"sphere\", \"plane\", \"capsule\", \"slab\", \"box\", \"surface\"");
     if (j.contains("slab")) {
       const json& p = j["slab"];
       const std::string where = at + "/slab";
       object(p, where, {"point", "normal", "thickness_m"});
-      return LayerShape::slab(point(member(p, where, "point"), where + "/point") - base, way(member(p, where, "normal"), where + "/normal"),
+      return LayerShape::slab(point(member(p, where, "point"), where + "/point") - base,
+                              way(member(p, where, "normal"), where + "/normal"),
                               in_range(member(p, where, "thickness_m"), where + "/thickness_m", limits::kShapeSize));
     }
     if (j.contains("box")) {
       const json& p = j["box"];
       const std::string where = at + "/box";
       object(p, where, {"min", "max"});
-      const Eigen::Vector3d lo = point(member(p, where, "min"), where + "/min"), hi = point(member(p, where, "max"), where + "/max");
+      const Eigen::Vector3d lo = point(member(p, where, "min"), where + "/min"),
+                            hi = point(member(p, where, "max"), where + "/max");
       if (!(lo.array() < hi.array()).all()) fail(where + "/max", "must exceed min on every axis");
       return LayerShape::box(lo - base, hi - base);
     }
@@ -401,7 +433,8 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
       const json& p = e["plane"];
       const std::string where = at + "/plane";
       object(p, where, {"point", "normal"});
-      return SurfacePrimitive::plane(point(member(p, where, "point"), where + "/point") - base, way(member(p, where, "normal"), where + "/normal"));
+      return SurfacePrimitive::plane(point(member(p, where, "point"), where + "/point") - base,
+                                     way(member(p, where, "normal"), where + "/normal"));
     }
     const json& p = e["capsule"];
     const std::string where = at + "/capsule";
@@ -421,8 +454,10 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
 
   void sensor(const json& j, const std::string& at, ForceSensorParams& out) const {
     object(j, at, {"bias_N", "force_noise_N", "bandwidth_Hz", "seed"});
-    if (j.contains("force_noise_N")) out.force_noise_N = in_range(j["force_noise_N"], at + "/force_noise_N", limits::kSensorNoise);
-    if (j.contains("bandwidth_Hz")) out.bandwidth_Hz = in_range(j["bandwidth_Hz"], at + "/bandwidth_Hz", limits::kSensorBandwidth);
+    if (j.contains("force_noise_N"))
+      out.force_noise_N = in_range(j["force_noise_N"], at + "/force_noise_N", limits::kSensorNoise);
+    if (j.contains("bandwidth_Hz"))
+      out.bandwidth_Hz = in_range(j["bandwidth_Hz"], at + "/bandwidth_Hz", limits::kSensorBandwidth);
     if (j.contains("seed")) out.seed = static_cast<unsigned>(whole(j["seed"], at + "/seed", 0, 4294967295LL));
     if (j.contains("bias_N")) {
       const auto bias = numbers_in<3>(j["bias_N"], at + "/bias_N", limits::kSensorBias);
@@ -436,7 +471,8 @@ class ScenarioReader : io::StrictJsonReader<ScenarioError> {
 
 }  // namespace
 
-OperatorHand read_hand(const json& h, const std::string& file, const std::string& at, const Eigen::Vector3d& base_in_world) {
+OperatorHand read_hand(const json& h, const std::string& file, const std::string& at,
+                       const Eigen::Vector3d& base_in_world) {
   const io::StrictJsonReader<ScenarioError> r(file);
   r.object(h, at, {"mass_kg", "damping_Ns_per_m", "stiffness_N_per_m", "grip_length_m", "waypoints", "thumb"});
   OperatorHand out;
@@ -449,7 +485,8 @@ OperatorHand read_hand(const json& h, const std::string& file, const std::string
   for (const auto& [key, field, range] : impedance)
     if (h.contains(key)) *field = r.in_range(h[key], at + "/" + key, range);
   try {
-    out.trajectory = HandTrajectory(read_waypoints(r.member(h, at, "waypoints"), file, at + "/waypoints", base_in_world));
+    out.trajectory =
+        HandTrajectory(read_waypoints(r.member(h, at, "waypoints"), file, at + "/waypoints", base_in_world));
   } catch (const std::invalid_argument& e) {
     r.fail(at + "/waypoints", std::string("expected valid waypoints: ") + e.what());
   }

@@ -53,13 +53,13 @@ struct Scenario {
   std::vector<NamedMechanics> patient_layers;
   VecN q0;
   HandImpedance hand;
-  HandTrajectory trajectory;  // base frame
+  HandTrajectory trajectory;             // base frame
   std::optional<ThumbScript> thumb;      // the operator's thumb on the syringe (hand.thumb)
   std::optional<SyringeParams> syringe;  // the loss-of-resistance syringe on the needle's hub
   ForceSensorParams sensor;
   DeviceParams device;
-  double energy_bound_J = 5.0;         // a run whose total energy leaves ±bound is a fault
-  double divergence_bound_m = 0.1;     // master/virtual tip distance beyond this is a fault
+  double energy_bound_J = 5.0;      // a run whose total energy leaves ±bound is a fault
+  double divergence_bound_m = 0.1;  // master/virtual tip distance beyond this is a fault
 };
 
 // A scenario file. With generate_patient false, a generated patient's tissue is read and checked
@@ -82,7 +82,7 @@ OperatorHand read_hand(const nlohmann::json& hand, const std::string& file, cons
                        const Eigen::Vector3d& base_in_world);
 // A list of hand waypoints {t, p, dir} at `at`, read as read_hand reads them: times in the session's
 // range and increasing, positions shifted by −base_in_world.
-std::vector<HandWaypoint> read_waypoints(const nlohmann::json& waypoints, const std::string& file, const std::string& at,
-                                         const Eigen::Vector3d& base_in_world);
+std::vector<HandWaypoint> read_waypoints(const nlohmann::json& waypoints, const std::string& file,
+                                         const std::string& at, const Eigen::Vector3d& base_in_world);
 
 }  // namespace needle::haptics

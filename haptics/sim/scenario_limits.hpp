@@ -55,9 +55,9 @@ inline constexpr Range kShapeSize{1e-6, 1.0, false, "m"};
 
 // The hand [van Beek et al. 2015: 0.554 kg, 6.45 N·s/m, 135 N/m; grip 5 cm, design value]: a
 // mass up to 10 kg (a whole arm, upper arm, forearm and hand, is 5% of body mass, 3.5 kg at
-// 70 kg: Winter, Biomechanics and Motor Control of Human Movement, anthropometric data); damping up to 200 N·s/m and stiffness up to
-// 5000 N/m (30 times the identified values; the epidural's stiff grip is 600 N/m); a grip up to
-// 20 cm (a hand's span).
+// 70 kg: Winter, Biomechanics and Motor Control of Human Movement, anthropometric data); damping up to 200 N·s/m and
+// stiffness up to 5000 N/m (30 times the identified values; the epidural's stiff grip is 600 N/m); a grip up to 20 cm
+// (a hand's span).
 inline constexpr Range kHandMass{0.0, 10.0, true, "kg"};
 inline constexpr Range kHandDamping{0.0, 200.0, false, "N*s/m"};
 inline constexpr Range kHandStiffness{0.0, 5000.0, false, "N/m"};

@@ -1,7 +1,7 @@
 #include "haptics/sim/sim_output.hpp"
 
-#include <cstdarg>
 #include <algorithm>
+#include <cstdarg>
 #include <cstdio>
 
 #include "io/file_write.hpp"
@@ -29,13 +29,16 @@ std::string csv_field(const std::string& text) {
 
 }  // namespace
 
-void write_ticks_csv(const std::string& path, const std::vector<TickRecord>& ticks, int dof, const TissueModel& tissue) {
+void write_ticks_csv(const std::string& path, const std::vector<TickRecord>& ticks, int dof,
+                     const TissueModel& tissue) {
   std::string csv = "t";
   for (const char* robot : {"q_m", "q_v"})
     for (int i = 1; i <= dof; ++i) csv += "," + std::string(robot) + std::to_string(i);
   for (const char* v : {"x_m", "x_v", "F_h", "F_v"})
     for (const char* axis : {"_x", "_y", "_z"}) csv += "," + std::string(v) + axis;
-  csv += ",lambda_v1,lambda_v2,lambda_m1,lambda_m2,phi,psi1,psi2,energy,mode,axial_force_N,layer,hand_work_J,world_stored_J\n";
+  csv +=
+      ",lambda_v1,lambda_v2,lambda_m1,lambda_m2,phi,psi1,psi2,energy,mode,axial_force_N,layer,hand_work_J,world_stored_"
+      "J\n";
   for (const TickRecord& r : ticks) {
     append(csv, "%.6f", r.t);
     for (const VecN* q : {&r.q_m, &r.q_v})

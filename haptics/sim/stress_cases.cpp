@@ -80,7 +80,8 @@ Scenario with_layer_mechanics(Scenario s, void (*change)(LayerMechanics&, double
 }
 
 Scenario pushing_onto_bone(Scenario s, double force_N) {
-  if (s.trajectory.waypoints().size() < 3) throw std::invalid_argument(s.name + ": the push needs the script's first three waypoints");
+  if (s.trajectory.waypoints().size() < 3)
+    throw std::invalid_argument(s.name + ": the push needs the script's first three waypoints");
   std::vector<HandWaypoint> waypoints(s.trajectory.waypoints().begin(), s.trajectory.waypoints().begin() + 3);
   const HandWaypoint on_surface = waypoints.back();
   // March along the needle to the first rigid layer (0.1 mm steps, at most 0.3 m).
@@ -90,7 +91,8 @@ Scenario pushing_onto_bone(Scenario s, double force_N) {
     if (layer >= 0 && s.scene.tissue.layer(layer).mechanics.rigid) break;
   }
   if (depth >= 0.3) throw std::invalid_argument(s.name + ": no rigid layer on the needle's line");
-  const Eigen::Vector3d deep = on_surface.position + (depth + force_N / s.hand.stiffness_N_per_m) * on_surface.direction;
+  const Eigen::Vector3d deep =
+      on_surface.position + (depth + force_N / s.hand.stiffness_N_per_m) * on_surface.direction;
   waypoints.push_back({on_surface.t + 15.0, deep, on_surface.direction});
   waypoints.push_back({on_surface.t + 20.0, deep, on_surface.direction});
   waypoints.push_back({on_surface.t + 30.0, on_surface.position, on_surface.direction});
@@ -103,15 +105,25 @@ std::vector<StressCase> layered_stress_cases(const Scenario& s) {
   std::vector<StressCase> cases;
   const std::string of = " (" + s.name + ")";
   for (double k : {0.1, 0.3, 1.0, 3.0, 10.0}) {
-    cases.push_back({"puncture force x" + of, number(k), with_layer_mechanics(s, [](LayerMechanics& m, double k) { m.puncture_force_N *= k; }, k)});
-    cases.push_back({"friction x" + of, number(k), with_layer_mechanics(s, [](LayerMechanics& m, double k) {
-                       m.friction_N_per_m *= k;
-                       m.static_friction_N_per_m *= k;
-                     }, k)});
-    cases.push_back({"stiffness x" + of, number(k), with_layer_mechanics(s, [](LayerMechanics& m, double k) {
-                       m.stiffness_N_per_m *= k;
-                       m.stiffness2_N_per_m2 *= k;
-                     }, k)});
+    cases.push_back({"puncture force x" + of, number(k),
+                     with_layer_mechanics(
+                         s, [](LayerMechanics& m, double k) { m.puncture_force_N *= k; }, k)});
+    cases.push_back({"friction x" + of, number(k),
+                     with_layer_mechanics(
+                         s,
+                         [](LayerMechanics& m, double k) {
+                           m.friction_N_per_m *= k;
+                           m.static_friction_N_per_m *= k;
+                         },
+                         k)});
+    cases.push_back({"stiffness x" + of, number(k),
+                     with_layer_mechanics(
+                         s,
+                         [](LayerMechanics& m, double k) {
+                           m.stiffness_N_per_m *= k;
+                           m.stiffness2_N_per_m2 *= k;
+                         },
+                         k)});
   }
   for (double k : {1.0, 2.0, 4.0, 8.0}) cases.push_back({"period x" + of, number(k), with_period_scale(s, k)});
   bool bone = false;
@@ -131,7 +143,8 @@ std::vector<StressCase> stress_cases(const Scenario& h, const Scenario& nh, doub
     for (double k : {1.0, 2.0, 4.0, 8.0})
       cases.push_back({"period x (" + base->name + ")", number(k), with_period_scale(*base, k)});
   }
-  cases.push_back({"singular pose", "arm stretched", holding_pose(nh, (VecN(5) << 0.0, 0.0, 0.0, 0.0, 0.5).finished(), false)});
+  cases.push_back(
+      {"singular pose", "arm stretched", holding_pose(nh, (VecN(5) << 0.0, 0.0, 0.0, 0.0, 0.5).finished(), false)});
   cases.push_back({"singular pose", "wrist roll along needle, in tissue",
                    holding_pose(nh, (VecN(5) << 0.0, 1.0, -1.6, 0.0, 0.0).finished(), true)});
   const double limit = h.device.force_limit_N;

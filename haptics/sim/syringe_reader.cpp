@@ -5,7 +5,8 @@
 
 namespace needle::haptics {
 
-SyringeParams read_syringe(const nlohmann::json& j, const std::string& file, const std::string& at, const TissueModel& tissue) {
+SyringeParams read_syringe(const nlohmann::json& j, const std::string& file, const std::string& at,
+                           const TissueModel& tissue) {
   const io::StrictJsonReader<ScenarioError> r(file);
   std::vector<const char*> keys{"fluid"};
   for (const auto& f : kSyringeFields) keys.push_back(f.key);
@@ -24,7 +25,8 @@ SyringeParams read_syringe(const nlohmann::json& j, const std::string& file, con
     const TissueLayer& layer = tissue.layer(i);
     if (!layer.mechanics.rigid && !layer.injection)
       r.fail("/tissue/layers/" + std::to_string(i),
-             "\"" + layer.name + "\" has no injection parameters (\"injection\", in its parameter set or inline), which the syringe (" +
+             "\"" + layer.name +
+                 "\" has no injection parameters (\"injection\", in its parameter set or inline), which the syringe (" +
                  at + ") needs");
   }
   return p;

@@ -14,6 +14,7 @@ namespace needle::haptics {
 // SyringeParams' value). The fluid goes into `tissue`, which must be layered and give every
 // non-rigid layer its injection parameters: a layer without them is "FILE: /tissue/layers/N: ...".
 // Throws ScenarioError.
-SyringeParams read_syringe(const nlohmann::json& j, const std::string& file, const std::string& at, const TissueModel& tissue);
+SyringeParams read_syringe(const nlohmann::json& j, const std::string& file, const std::string& at,
+                           const TissueModel& tissue);
 
 }  // namespace needle::haptics

@@ -29,7 +29,8 @@ double scheduled_thumb_force(const ThumbScript& s, double t) {
   return s.force_N * std::min(1.0, since / s.rise_s);
 }
 
-ThumbScript read_thumb(const nlohmann::json& j, const std::string& file, const std::string& at, const Eigen::Vector3d& base_in_world) {
+ThumbScript read_thumb(const nlohmann::json& j, const std::string& file, const std::string& at,
+                       const Eigen::Vector3d& base_in_world) {
   const io::StrictJsonReader<ScenarioError> r(file);
   r.object(j, at, {"force_N", "from_s", "until_s", "rise_s", "press_s", "release_s", "on_loss"});
   ThumbScript s;
@@ -64,7 +65,9 @@ ThumbScript read_thumb(const nlohmann::json& j, const std::string& file, const s
 ScriptedThumb::ScriptedThumb(const ThumbScript& script) : script_(script) {
   if (!script_.on_loss) return;
   std::vector<HandWaypoint> waypoints{HandWaypoint{}};  // where the hand is when it reacts, set then
-  if (script_.on_loss->hold_s > 0.0) waypoints.push_back({script_.on_loss->hold_s, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()});  // and still there
+  if (script_.on_loss->hold_s > 0.0)
+    waypoints.push_back(
+        {script_.on_loss->hold_s, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()});  // and still there
   waypoints.insert(waypoints.end(), script_.on_loss->waypoints.begin(), script_.on_loss->waypoints.end());
   reaction_ = HandTrajectory(std::move(waypoints));
 }

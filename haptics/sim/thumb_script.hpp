@@ -24,12 +24,12 @@ struct LossReaction {
 };
 
 struct ThumbScript {
-  double force_N = 0.0;    // the press
-  double from_s = 0.0;     // the thumb starts pressing
-  double until_s = 1e9;    // ... and lets go for good (default: never)
-  double rise_s = 0.5;     // each press rises linearly to force_N over this time
-  double press_s = 0.0;    // > 0: intermittent, pressed press_s then released release_s, again and again
-  double release_s = 0.0;  // 0 with press_s 0: continuous
+  double force_N = 0.0;                 // the press
+  double from_s = 0.0;                  // the thumb starts pressing
+  double until_s = 1e9;                 // ... and lets go for good (default: never)
+  double rise_s = 0.5;                  // each press rises linearly to force_N over this time
+  double press_s = 0.0;                 // > 0: intermittent, pressed press_s then released release_s, again and again
+  double release_s = 0.0;               // 0 with press_s 0: continuous
   std::optional<LossReaction> on_loss;  // none: the operator does not react and plays the script on
 };
 

@@ -48,7 +48,9 @@ Run integrate(const PrecisionProblem& p, Integrator integrator, double dt) {
 
 }  // namespace
 
-VecN reference_solution(const PrecisionProblem& problem, double dt) { return integrate(problem, Integrator::Rk4, dt).q; }
+VecN reference_solution(const PrecisionProblem& problem, double dt) {
+  return integrate(problem, Integrator::Rk4, dt).q;
+}
 
 PrecisionRow run_precision(const PrecisionProblem& problem, Integrator integrator, double dt, const VecN* q_reference) {
   const Run run = integrate(problem, integrator, dt);

@@ -24,8 +24,8 @@ struct PrecisionRow {
   double dt_s = 0;
   long steps = 0;
   double time_per_step_us = 0;
-  double error = 0;       // |q(T) − q_ref(T)|, rad
-  double drift = 0;       // |A q̇| at the end: lateral tip speed left, m/s
+  double error = 0;  // |q(T) − q_ref(T)|, rad
+  double drift = 0;  // |A q̇| at the end: lateral tip speed left, m/s
 };
 
 // One run, timed; error against q_reference when given.

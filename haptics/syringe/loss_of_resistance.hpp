@@ -15,9 +15,10 @@ inline constexpr double kLossFlow_m3_per_s = 5e-8;
 inline constexpr double kLossSettle_s = 0.05;
 
 struct LossOfResistance {
-  double t_s = 0.0;                // the first tick of the flow
-  int layer = -1;                  // the layer holding the tip then, −1 in none
-  double pressure_before_Pa = 0.0; // the largest barrel pressure while the plunger was held (since the flow last stopped)
+  double t_s = 0.0;  // the first tick of the flow
+  int layer = -1;    // the layer holding the tip then, −1 in none
+  double pressure_before_Pa =
+      0.0;  // the largest barrel pressure while the plunger was held (since the flow last stopped)
   double pressure_after_Pa = 0.0;  // kLossSettle_s later (or at the run's end, if sooner)
   bool settled = false;            // pressure_after_Pa has been read
 };

@@ -8,7 +8,8 @@
 
 namespace needle::haptics {
 
-SyringeInsertionRun run_syringe_insertion(const TissueModel& model, const InsertionPlan& plan, const SyringeDrive& drive) {
+SyringeInsertionRun run_syringe_insertion(const TissueModel& model, const InsertionPlan& plan,
+                                          const SyringeDrive& drive) {
   for (const TissueLayer& layer : model.layers())
     if (!layer.mechanics.rigid && !layer.injection)
       throw std::invalid_argument("layer \"" + layer.name + "\" has no injection parameters, which the syringe needs");
@@ -22,11 +23,14 @@ SyringeInsertionRun run_syringe_insertion(const TissueModel& model, const Insert
     const LayerInjection* tip = out.opening_layer >= 0 ? &*model.layer(out.opening_layer).injection : nullptr;
     const bool advancing = depth > deepest;  // the thumb presses while the needle goes in, not while held or withdrawn
     deepest = std::max(deepest, depth);
-    pressing = advancing && (pressing || (tip && tip->opening_pressure_Pa * p.plunger_area_m2 >= drive.plunger_force_N));
+    pressing =
+        advancing && (pressing || (tip && tip->opening_pressure_Pa * p.plunger_area_m2 >= drive.plunger_force_N));
     step_syringe(p, state, pressing ? drive.plunger_force_N : 0.0, flow_path(p, tip), plan.period_s);
     run.samples.push_back({state.pressure_Pa, state.travel_m});
-    if (losses.add(double(tick) * plan.period_s, state.flow_m3_per_s, state.pressure_Pa, out.opening_layer, state.thumb_force_N))
-      run.losses.push_back({depth, out.opening_layer, losses.current().pressure_before_Pa, losses.current().pressure_after_Pa});
+    if (losses.add(double(tick) * plan.period_s, state.flow_m3_per_s, state.pressure_Pa, out.opening_layer,
+                   state.thumb_force_N))
+      run.losses.push_back(
+          {depth, out.opening_layer, losses.current().pressure_before_Pa, losses.current().pressure_after_Pa});
     if (losses.settled_now()) {
       run.losses.back().pressure_after_Pa = losses.current().pressure_after_Pa;
       pressing = false;  // the loss felt: the thumb lets go until the plunger is held again

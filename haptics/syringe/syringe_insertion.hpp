@@ -41,6 +41,7 @@ struct SyringeInsertionRun {
 // next layer that holds the plunger (a false loss in fat, then the ligaments; the epidural space,
 // then the dura). Every non-rigid layer needs its injection parameters (std::invalid_argument
 // naming the first without).
-SyringeInsertionRun run_syringe_insertion(const TissueModel& model, const InsertionPlan& plan, const SyringeDrive& drive);
+SyringeInsertionRun run_syringe_insertion(const TissueModel& model, const InsertionPlan& plan,
+                                          const SyringeDrive& drive);
 
 }  // namespace needle::haptics

@@ -19,7 +19,9 @@ void step_saline(const SyringeParams& p, SyringeState& s, double force, const Fl
   double v = drive > 0.0 ? drive / (p.thumb_damping_Ns_per_m + area * area * path.resistance_Pa_s_per_m3) : 0.0;
   v = std::min(v, (stroke - s.travel_m) / dt);
   const bool empty = s.travel_m >= stroke;
-  s.pressure_Pa = empty ? 0.0 : v > 0.0 ? path.opening_pressure_Pa + path.resistance_Pa_s_per_m3 * area * v : force / area;
+  s.pressure_Pa = empty     ? 0.0
+                  : v > 0.0 ? path.opening_pressure_Pa + path.resistance_Pa_s_per_m3 * area * v
+                            : force / area;
   s.flow_m3_per_s = area * v;
   s.plunger_force_N = area * s.pressure_Pa;
   s.work_J += s.plunger_force_N * v * dt;
@@ -67,7 +69,8 @@ SyringeState syringe_at_rest(const SyringeParams& params) {
   return s;
 }
 
-void step_syringe(const SyringeParams& params, SyringeState& state, double thumb_force_N, const FlowPath& path, double dt) {
+void step_syringe(const SyringeParams& params, SyringeState& state, double thumb_force_N, const FlowPath& path,
+                  double dt) {
   const double force = thumb_force_N > 0.0 ? thumb_force_N : 0.0;  // NaN too
   state.thumb_force_N = force;
   if (params.fluid == SyringeFluid::kAir)

@@ -40,7 +40,8 @@ SyringeState syringe_at_rest(const SyringeParams& params);
 //   stroke) and at its full position. Air: the compression is solved implicitly with the force
 //   balance (a quadratic in v), then the leak implicitly in the pressure (a quadratic in p₀ + p),
 //   so the tick is unconditionally stable and never gives back more energy than the gas stored.
-void step_syringe(const SyringeParams& params, SyringeState& state, double thumb_force_N, const FlowPath& path, double dt);
+void step_syringe(const SyringeParams& params, SyringeState& state, double thumb_force_N, const FlowPath& path,
+                  double dt);
 
 // (params, state) => the energy the compressed air holds and can give back, relative to the
 // atmosphere: E = m ln(m / (p₀ V_g)) − m + p₀ V_g ≥ 0 (0 for saline). work_J − E is what the syringe

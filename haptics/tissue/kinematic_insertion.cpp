@@ -52,7 +52,8 @@ std::vector<LayerBoundary> layer_boundaries(const TissueModel& model, const Eige
   return boundaries;
 }
 
-InsertionRun run_kinematic_insertion(const TissueModel& model, const InsertionPlan& plan, const InsertionTickObserver& observer) {
+InsertionRun run_kinematic_insertion(const TissueModel& model, const InsertionPlan& plan,
+                                     const InsertionTickObserver& observer) {
   if (!(plan.depth_m > 0.0) || !(plan.speed_mps > 0.0) || !(plan.period_s > 0.0) || !(plan.hold_s >= 0.0) ||
       !(plan.dir.norm() > 1e-12))
     throw std::invalid_argument("insertion plan: depth, speed and period must be > 0, hold >= 0, dir nonzero");

@@ -51,8 +51,7 @@ SdfGrid SdfGrid::sample(const std::function<double(const Eigen::Vector3d&)>& phi
   size_t at = 0;
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
-      for (int i = 0; i < n[0]; ++i)
-        values[at++] = quantise(phi(lo + spacing_m * Eigen::Vector3d(i, j, k)), quantum_m);
+      for (int i = 0; i < n[0]; ++i) values[at++] = quantise(phi(lo + spacing_m * Eigen::Vector3d(i, j, k)), quantum_m);
   return SdfGrid(lo, spacing_m, n, quantum_m, std::move(values));
 }
 

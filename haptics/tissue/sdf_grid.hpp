@@ -52,7 +52,9 @@ class SdfGrid {
   double spacing() const { return spacing_; }
   const std::array<int, 3>& nodes() const { return nodes_; }
   double quantum() const { return quantum_; }
-  Eigen::Vector3d upper() const { return origin_ + spacing_ * Eigen::Vector3d(nodes_[0] - 1, nodes_[1] - 1, nodes_[2] - 1); }
+  Eigen::Vector3d upper() const {
+    return origin_ + spacing_ * Eigen::Vector3d(nodes_[0] - 1, nodes_[1] - 1, nodes_[2] - 1);
+  }
   const std::vector<int16_t>& values() const { return values_; }
   int16_t value(int i, int j, int k) const { return values_[index(i, j, k)]; }
   size_t bytes() const { return values_.size() * sizeof(int16_t); }
@@ -65,7 +67,9 @@ class SdfGrid {
   double phi(const Eigen::Vector3d& x, double offset_m = 0.0) const;
 
  private:
-  size_t index(int i, int j, int k) const { return (size_t(k) * size_t(nodes_[1]) + size_t(j)) * size_t(nodes_[0]) + size_t(i); }
+  size_t index(int i, int j, int k) const {
+    return (size_t(k) * size_t(nodes_[1]) + size_t(j)) * size_t(nodes_[0]) + size_t(i);
+  }
   // The cell holding p (clamped into the box) and p's fractions in it.
   void locate(const Eigen::Vector3d& p, std::array<int, 3>& cell, Eigen::Vector3d& f) const;
   // The values at the corners of the cell holding `p` (in the box), in quanta, ordered v000, v100,

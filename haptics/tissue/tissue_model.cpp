@@ -45,7 +45,8 @@ double tent_depth_m(const LayerMechanics& m) {
 
 std::optional<MechanicsProblem> acoustics_problem(const LayerAcoustics& a) {
   for (const auto& f : kAcousticsFields)
-    if (!std::isfinite(a.*f.member) || a.*f.member > f.max) return MechanicsProblem{f.key, out_of_range(f, 0.0, a.*f.member)};
+    if (!std::isfinite(a.*f.member) || a.*f.member > f.max)
+      return MechanicsProblem{f.key, out_of_range(f, 0.0, a.*f.member)};
   if (!(a.impedance_MRayl > 0.0)) return MechanicsProblem{"impedance_MRayl", "must be > 0"};
   if (!(a.attenuation_dB_per_cm_MHz >= 0.0)) return MechanicsProblem{"attenuation_dB_per_cm_MHz", "must be >= 0"};
   if (!(a.echogenicity >= 0.0 && a.echogenicity <= 1.0)) return MechanicsProblem{"echogenicity", "must be in [0, 1]"};
@@ -56,7 +57,8 @@ std::optional<MechanicsProblem> acoustics_problem(const LayerAcoustics& a) {
 
 std::optional<MechanicsProblem> injection_problem(const LayerInjection& i) {
   for (const auto& f : kInjectionFields)
-    if (!(i.*f.member >= 0.0 && i.*f.member <= f.max)) return MechanicsProblem{f.key, out_of_range(f, 0.0, i.*f.member)};
+    if (!(i.*f.member >= 0.0 && i.*f.member <= f.max))
+      return MechanicsProblem{f.key, out_of_range(f, 0.0, i.*f.member)};
   return std::nullopt;
 }
 
@@ -74,11 +76,13 @@ TissueModel::TissueModel(std::vector<TissueLayer> layers, StickParams stick)
         throw TissueLayerError(i, "name", "\"" + l.name + "\" names an earlier layer too");
     if (const auto p = mechanics_problem(l.mechanics)) throw TissueLayerError(i, p->key, p->what);
     if (l.acoustics)
-      if (const auto p = acoustics_problem(*l.acoustics)) throw TissueLayerError(i, std::string("ultrasound/") + p->key, p->what);
+      if (const auto p = acoustics_problem(*l.acoustics))
+        throw TissueLayerError(i, std::string("ultrasound/") + p->key, p->what);
     if (l.injection && l.mechanics.rigid)
       throw TissueLayerError(i, "injection", "a rigid layer takes no injection (the tip never enters it)");
     if (l.injection)
-      if (const auto p = injection_problem(*l.injection)) throw TissueLayerError(i, std::string("injection/") + p->key, p->what);
+      if (const auto p = injection_problem(*l.injection))
+        throw TissueLayerError(i, std::string("injection/") + p->key, p->what);
     shapes.push_back(l.shape);
   }
   if (const auto c = find_layer_conflict(shapes))

@@ -38,7 +38,8 @@ std::vector<float> run(app::AutoRenderScale& control, const ModelFrame& m, int b
 
 TEST(AutoRenderScale, SettlesOnTheLargestStepThatFitsAndHoldsIt) {
   const double budget = app::AutoRenderScaleSettings{}.budget_ms;
-  for (const ModelFrame m : {ModelFrame{4.0, 20.0}, ModelFrame{2.0, 40.0}, ModelFrame{8.0, 10.0}, ModelFrame{3.0, 12.0}}) {
+  for (const ModelFrame m :
+       {ModelFrame{4.0, 20.0}, ModelFrame{2.0, 40.0}, ModelFrame{8.0, 10.0}, ModelFrame{3.0, 12.0}}) {
     app::AutoRenderScale control;
     const std::vector<float> scales = run(control, m, 12);
     const float expected = largest_fitting(m, budget);

@@ -47,7 +47,8 @@ std::string steps_of(const training::SessionResult& r) {
 // its mapping.
 // `task_name`: a task of assets/tasks/.
 template <typename Input>
-DeskRun run_desk(const std::string& device, uint64_t input_ticks, Input input, const std::string& task_name = "penetrable_sphere") {
+DeskRun run_desk(const std::string& device, uint64_t input_ticks, Input input,
+                 const std::string& task_name = "penetrable_sphere") {
   const fs::path dir = process_folder(output_dir() / "desk_sessions" / (device + "_" + task_name));
   const training::Task task = training::load_task(source_dir() / "assets/tasks" / (task_name + ".json"));
   app::RigOptions options;
@@ -74,7 +75,8 @@ DeskRun run_desk(const std::string& device, uint64_t input_ticks, Input input, c
       axis = haptics::needle_axis(sample.state);
       const size_t step = scorer.progress().current_step();
       if (step >= task.steps.size() || task.steps[step].id != "pivot") continue;
-      const Eigen::Vector3d tip(sample.state.needle_tip_m[0], sample.state.needle_tip_m[1], sample.state.needle_tip_m[2]);
+      const Eigen::Vector3d tip(sample.state.needle_tip_m[0], sample.state.needle_tip_m[1],
+                                sample.state.needle_tip_m[2]);
       if (!pivot_tip) pivot_tip = tip;
       run.pivot_drift_m = std::max(run.pivot_drift_m, (tip - *pivot_tip).norm());
     }
@@ -108,7 +110,8 @@ TEST(DeskSessions, PenetrableSphereWithTheKeyboard) {
   const DeskRun run = run_desk("keyboard", 25, [&](double t, haptics::DeskDevice& desk, const auto& axis) {
     const DeskWaypoint want = plan_at(plan, centre, t);
     const haptics::DeskPose& pose = keys.pose();
-    keys.set_needle_direction(axis ? app::needle_direction(start, *axis) : app::needle_direction(start, pose));  // as in the app
+    keys.set_needle_direction(axis ? app::needle_direction(start, *axis)
+                                   : app::needle_direction(start, pose));  // as in the app
     const double error[5] = {(want.device_m[0] - pose.position_m[0]) / haptics::KeyboardMapping::kStep_m,
                              (want.device_m[1] - pose.position_m[1]) / haptics::KeyboardMapping::kStep_m,
                              (want.device_m[2] - pose.position_m[2]) / haptics::KeyboardMapping::kStep_m,
@@ -140,19 +143,25 @@ DeskRun run_with_the_mouse(const std::string& task_name, MakePlan make_plan, std
   const Eigen::Vector2d cursor = mouse_cursor_start(task, start, {1280, 720});
   const haptics::MouseView view = app::mouse_view(engine::load_scene(task.scene).camera, start);
   mouse.emplace(make_plan(task, start, mouse_device_start(view, cursor)), start, view, cursor);
-  return run_desk("mouse", 20, [&](double t, haptics::DeskDevice& desk, const auto& axis) {
-    mouse->step(t, axis);
-    desk.set_pose(mouse->pose());
-  }, task_name);
+  return run_desk(
+      "mouse", 20,
+      [&](double t, haptics::DeskDevice& desk, const auto& axis) {
+        mouse->step(t, axis);
+        desk.set_pose(mouse->pose());
+      },
+      task_name);
 }
 
 // The layered target with the mouse: above the entry, turned onto the vertical axis,
 // the wheel pushing the needle in through skin, fat and muscle to the target, held, withdrawn.
 TEST(DeskSessions, LayeredTargetWithTheMouse) {
   std::optional<MousePlayer> mouse;
-  const DeskRun run = run_with_the_mouse("layered_target", [](const auto& task, const auto& start, const auto& device_start) {
-    return layered_target_plan(task, start, device_start);
-  }, mouse);
+  const DeskRun run = run_with_the_mouse(
+      "layered_target",
+      [](const auto& task, const auto& start, const auto& device_start) {
+        return layered_target_plan(task, start, device_start);
+      },
+      mouse);
   expect_every_step_completed(run);
   EXPECT_EQ(run.result.overall.bone_contacts, 0u) << steps_of(run.result);
   ASSERT_FALSE(run.result.punctures.empty()) << steps_of(run.result);
@@ -186,15 +195,24 @@ TEST(DeskSessions, PenetrableSphereWithAGamepad) {
   const DeskRun run = run_desk("gamepad", 20, [&](double t, haptics::DeskDevice& desk, const auto& axis) {
     const DeskWaypoint want = plan_at(plan, centre, t);
     const haptics::DeskPose& pose = pad.pose();
-    pad.set_needle_direction(axis ? app::needle_direction(start, *axis) : app::needle_direction(start, pose));  // as in the app
+    pad.set_needle_direction(axis ? app::needle_direction(start, *axis)
+                                  : app::needle_direction(start, pose));  // as in the app
     State s;
     const double v = haptics::GamepadMapping::kSpeed_m_per_s, w = haptics::GamepadMapping::kTurnRate_rad_per_s;
     const double dz = haptics::GamepadMapping::kStickDeadZone;
     // One stick axis at a time keeps the radial dead zone out of the other's way.
-    const double lx = deflect(want.device_m[0] - pose.position_m[0], v, dz), ly = deflect(want.device_m[1] - pose.position_m[1], v, dz);
-    if (std::abs(lx) >= std::abs(ly)) s.axes[State::kLeftX] = float(lx); else s.axes[State::kLeftY] = float(-ly);
-    const double rx = deflect(want.swing_rad - pose.wrist_rad[0], w, dz), ry = deflect(want.tilt_rad - pose.wrist_rad[1], w, dz);
-    if (std::abs(rx) >= std::abs(ry)) s.axes[State::kRightX] = float(rx); else s.axes[State::kRightY] = float(-ry);
+    const double lx = deflect(want.device_m[0] - pose.position_m[0], v, dz),
+                 ly = deflect(want.device_m[1] - pose.position_m[1], v, dz);
+    if (std::abs(lx) >= std::abs(ly))
+      s.axes[State::kLeftX] = float(lx);
+    else
+      s.axes[State::kLeftY] = float(-ly);
+    const double rx = deflect(want.swing_rad - pose.wrist_rad[0], w, dz),
+                 ry = deflect(want.tilt_rad - pose.wrist_rad[1], w, dz);
+    if (std::abs(rx) >= std::abs(ry))
+      s.axes[State::kRightX] = float(rx);
+    else
+      s.axes[State::kRightY] = float(-ry);
     const double depth = deflect(want.device_m[2] - pose.position_m[2], v, haptics::GamepadMapping::kTriggerDeadZone);
     s.axes[depth > 0 ? State::kRightTrigger : State::kLeftTrigger] = float(2.0 * std::abs(depth) - 1.0);
     pad.update(s, 0.02);

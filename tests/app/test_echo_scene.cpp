@@ -25,7 +25,7 @@ TEST(EchoScene, TheLayeredBlocksLayersAreWhereItsScenarioPutsThemWithTheirAcoust
   EXPECT_EQ(scene.layers[0].name, "skin");
   EXPECT_DOUBLE_EQ(scene.layers[0].material.impedance_MRayl, 1.99);  // assets/tissues/skin.json
   EXPECT_DOUBLE_EQ(scene.layers[3].material.impedance_MRayl, 6.50);  // bone.json
-  EXPECT_FALSE(scene.deformation.has_value());                        // no deformable tissue in an empty scene
+  EXPECT_FALSE(scene.deformation.has_value());                       // no deformable tissue in an empty scene
   // A beam straight down the block's centre meets skin at z = 0.07 m (the file's world frame,
   // though the tissue model holds it in the robots' base frame), fat 2 mm down, muscle 12, bone 40.
   engine::UltrasoundProbe probe;
@@ -80,10 +80,14 @@ TEST(EchoScene, GoldenImagesOfTheBlockAndTheEpiduralNeedleInAndOutOfPlane) {
     engine::NeedleLoad needle;
   };
   const Case cases[] = {
-      {"ultrasound_block_in_plane", "tissue_block_layers.json", block_probe, needle({0.305, 0.0, 0.07}, 30.0, 0.0, 0.04)},
-      {"ultrasound_block_out_of_plane", "tissue_block_layers.json", block_probe, needle({0.335, -0.02, 0.07}, 45.0, 90.0, 0.032)},
-      {"ultrasound_epidural_in_plane", "lumbar_epidural.json", epidural_probe, needle({0.30, 0.0, 0.07}, 40.0, 0.0, 0.06)},
-      {"ultrasound_epidural_out_of_plane", "lumbar_epidural.json", epidural_probe, needle({0.335, -0.03, 0.07}, 45.0, 90.0, 0.05)},
+      {"ultrasound_block_in_plane", "tissue_block_layers.json", block_probe,
+       needle({0.305, 0.0, 0.07}, 30.0, 0.0, 0.04)},
+      {"ultrasound_block_out_of_plane", "tissue_block_layers.json", block_probe,
+       needle({0.335, -0.02, 0.07}, 45.0, 90.0, 0.032)},
+      {"ultrasound_epidural_in_plane", "lumbar_epidural.json", epidural_probe,
+       needle({0.30, 0.0, 0.07}, 40.0, 0.0, 0.06)},
+      {"ultrasound_epidural_out_of_plane", "lumbar_epidural.json", epidural_probe,
+       needle({0.335, -0.03, 0.07}, 45.0, 90.0, 0.05)},
   };
   for (const Case& c : cases) {
     engine::UltrasoundView view(device, scenario_echo(c.scenario));
@@ -91,7 +95,8 @@ TEST(EchoScene, GoldenImagesOfTheBlockAndTheEpiduralNeedleInAndOutOfPlane) {
     EXPECT_TRUE(matches_golden(view.image(), c.golden));
     // The needle is in the image where the reference puts it: at its wall's depth each line it
     // crosses is brighter than 95 % of that line's samples (speckle, interfaces and all).
-    const std::vector<engine::ScanLine> lines = engine::trace_scan_lines(view.scene(), c.probe, &c.needle, view.settings());
+    const std::vector<engine::ScanLine> lines =
+        engine::trace_scan_lines(view.scene(), c.probe, &c.needle, view.settings());
     const engine::RgbaImage image = view.image();
     size_t hit = 0, bright = 0;
     for (size_t i = 0; i < lines.size(); ++i) {
@@ -101,7 +106,8 @@ TEST(EchoScene, GoldenImagesOfTheBlockAndTheEpiduralNeedleInAndOutOfPlane) {
       for (size_t j = 0; j < image.height; ++j) column.push_back(image.pixels[(j * image.width + i) * 4]);
       const long row = std::lround(lines[i].needle_depth_m / c.probe.depth_m * image.height - 0.5);
       int wall = 0;
-      for (long j = std::max(0L, row - 1); j <= std::min(long(image.height) - 1, row + 1); ++j) wall = std::max(wall, column[size_t(j)]);
+      for (long j = std::max(0L, row - 1); j <= std::min(long(image.height) - 1, row + 1); ++j)
+        wall = std::max(wall, column[size_t(j)]);
       std::nth_element(column.begin(), column.begin() + long(0.95 * column.size()), column.end());
       if (wall > column[size_t(0.95 * column.size())]) ++bright;
     }

@@ -75,7 +75,8 @@ TEST(LayeredDimple, APopBetweenSnapshotsStillEntersWhereTheSkinWasPressed) {
 
 TEST(LayeredDimple, TheReplayMapsTheSameWayAtTheScrubbedTime) {
   std::vector<haptics::ToolSnapshot> states = {down(0.075, -1, 0.0, 0), down(kSkinTop_m - 0.003, 0, 0.003, 0),
-                                               down(kSkinTop_m - 0.006, 0, 0.006, 1), down(kSkinTop_m - 0.009, -1, 0.0, 3)};
+                                               down(kSkinTop_m - 0.006, 0, 0.006, 1),
+                                               down(kSkinTop_m - 0.009, -1, 0.0, 3)};
   for (size_t k = 0; k < states.size(); ++k) states[k].time_s = 0.1 * double(k);
   app::ReplayCursor cursor(app::TissueKind::Layered);
   EXPECT_EQ(cursor.at(states, 0.35).surface_point, glm::dvec3(0.33, 0.0, kSkinTop_m));
@@ -130,8 +131,10 @@ TEST(LayeredDimple, TheScriptedHandsDimpleIsThePhysicsDeflection) {
     }
   }
   ASSERT_TRUE(popped_at.has_value());
-  std::printf("skin pressed for %d ticks, deepest dimple %.3f mm, popped at %.3f s; |along - deflection| <= %.2e m, "
-              "|moved - tip| <= %.2e m\n", pressed_ticks, 1e3 * deepest, *popped_at, worst_along, worst_onto_tip);
+  std::printf(
+      "skin pressed for %d ticks, deepest dimple %.3f mm, popped at %.3f s; |along - deflection| <= %.2e m, "
+      "|moved - tip| <= %.2e m\n",
+      pressed_ticks, 1e3 * deepest, *popped_at, worst_along, worst_onto_tip);
   // The skin gives way at k1 d + k2 d^2 = F_p (assets/tissues/skin.json: 100 N/m, 475000 N/m², 1.22 N):
   // d = 1.50 mm.
   const double closed_form = (-100.0 + std::sqrt(100.0 * 100.0 + 4.0 * 475000.0 * 1.22)) / (2.0 * 475000.0);

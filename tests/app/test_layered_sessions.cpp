@@ -12,9 +12,9 @@
 #include "haptics/recording/session_format.hpp"
 #include "haptics/sim/closed_loop.hpp"
 #include "recorded_session.hpp"
-#include "ui/trainee_panel.hpp"
 #include "training/sessions/session_review.hpp"
 #include "training/tasks/scripted_operator.hpp"
+#include "ui/trainee_panel.hpp"
 
 namespace needle::test {
 namespace {
@@ -22,11 +22,12 @@ namespace {
 std::string report(const training::SessionResult& r) {
   std::string out = "score " + std::to_string(r.score.total) + ";";
   for (const training::StepResult& s : r.steps)
-    out += " " + s.id + "=" + training::step_outcome_name(s.record.outcome) + (s.failure.empty() ? "" : "(" + s.failure + ")");
+    out += " " + s.id + "=" + training::step_outcome_name(s.record.outcome) +
+           (s.failure.empty() ? "" : "(" + s.failure + ")");
   const training::Metrics& m = r.overall;
-  out += "; punctures " + std::to_string(m.punctures) + ", overshoot " + std::to_string(m.overshoot_m * 1e3) + " mm, bone " +
-         std::to_string(m.bone_contacts) + ", redirections " + std::to_string(m.redirections) + ", forbidden " +
-         std::to_string(m.forbidden_punctures);
+  out += "; punctures " + std::to_string(m.punctures) + ", overshoot " + std::to_string(m.overshoot_m * 1e3) +
+         " mm, bone " + std::to_string(m.bone_contacts) + ", redirections " + std::to_string(m.redirections) +
+         ", forbidden " + std::to_string(m.forbidden_punctures);
   for (const training::PunctureResult& p : r.punctures)
     out += "; " + p.layer + " at " + std::to_string(p.depth_m * 1e3) + " mm, " + std::to_string(p.peak_force_N) + " N";
   for (const std::string& why : r.score.reasons_failed) out += "; " + why;
@@ -42,9 +43,11 @@ TEST(LayeredSessions, LayeredTargetGoodCompletesEveryStepSloppyTouchesTheBoneAnd
   const std::filesystem::path dir = process_folder(output_dir() / "layered_sessions" / "layered_target");
   const RecordedSession good = record_session(dir / "sessions.db", {"layered_target", "good", "ana", true});
   const RecordedSession sloppy = record_session(dir / "sessions.db", {"layered_target", "sloppy", "bo", true});
-  std::cout << "layered_target good: " << report(good.result) << "\nlayered_target sloppy: " << report(sloppy.result) << "\n";
+  std::cout << "layered_target good: " << report(good.result) << "\nlayered_target sloppy: " << report(sloppy.result)
+            << "\n";
   // Every step completed, no bone touched.
-  for (const training::StepResult& s : good.result.steps) EXPECT_EQ(s.record.outcome, training::StepOutcome::kCompleted) << s.id;
+  for (const training::StepResult& s : good.result.steps)
+    EXPECT_EQ(s.record.outcome, training::StepOutcome::kCompleted) << s.id;
   ASSERT_GE(good.result.punctures.size(), 2u);
   EXPECT_EQ(good.result.punctures[0].layer, "skin");
   EXPECT_EQ(good.result.overall.bone_contacts, 0u);
@@ -64,15 +67,15 @@ TEST(LayeredSessions, EpiduralGoodStopsInTheEpiduralSpaceSloppyMeetsTheLamina) {
   const auto& p = good.result.punctures;
   const auto flavum = std::find_if(p.begin(), p.end(), [](const auto& x) { return x.layer == "ligamentum flavum"; });
   ASSERT_NE(flavum, p.end()) << report(good.result);
-  for (const training::PunctureResult& other : p)
-    EXPECT_LE(other.peak_force_N, flavum->peak_force_N) << other.layer;
+  for (const training::PunctureResult& other : p) EXPECT_LE(other.peak_force_N, flavum->peak_force_N) << other.layer;
   EXPECT_FALSE(sloppy.result.score.passed) << report(sloppy.result);
   EXPECT_GE(sloppy.result.overall.bone_contacts, 1u) << report(sloppy.result);  // the upper lamina
   EXPECT_GT(good.result.score.total, sloppy.result.score.total) << report(good.result) << "\n" << report(sloppy.result);
   // The good run stops in the epidural space: every step completed, the dura whole (the spring along
   // the needle holds the virtual needle to the hand when the flavum gives way, docs/CONTROLLER.md).
   EXPECT_TRUE(good.result.score.passed) << report(good.result);
-  for (const training::StepResult& s : good.result.steps) EXPECT_EQ(s.record.outcome, training::StepOutcome::kCompleted) << s.id;
+  for (const training::StepResult& s : good.result.steps)
+    EXPECT_EQ(s.record.outcome, training::StepOutcome::kCompleted) << s.id;
   EXPECT_EQ(good.result.overall.forbidden_punctures, 0u) << report(good.result);
   EXPECT_TRUE(std::none_of(p.begin(), p.end(), [](const auto& x) { return x.layer == "dura"; })) << report(good.result);
 }
@@ -147,7 +150,8 @@ TEST(LayeredSessions, TheReviewsPuncturesAreTheRunsAndTheTissueModels) {
     // The scorer measures from where the skin gave way (the tissue contact begins there), the
     // tissue model from where the tip met the skin: they differ by the skin's tent.
     EXPECT_NEAR(live[k].depth_m + sim.punctures[0].depth_m, sim.punctures[k].depth_m, 1e-3) << live[k].layer;
-    EXPECT_NEAR(live[k].peak_force_N, sim.punctures[k].peak_force_N, 0.05 * sim.punctures[k].peak_force_N) << live[k].layer;
+    EXPECT_NEAR(live[k].peak_force_N, sim.punctures[k].peak_force_N, 0.05 * sim.punctures[k].peak_force_N)
+        << live[k].layer;
   }
 }
 

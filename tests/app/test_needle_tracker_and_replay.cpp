@@ -69,7 +69,8 @@ TEST(NeedleTracker, LateralMultipliersActAlongTheNeedleFramesYAndZ) {
 
 TEST(NeedleTracker, RigidContactTouchesAlongTheSurfaceReaction) {
   app::NeedleTracker tracker;
-  engine::NeedleLoad load = tracker.update(snapshot(haptics::ContactState::kRigidSurface, {0.3, 0, 0}, 0, {-2.0, 0, 0}));
+  engine::NeedleLoad load =
+      tracker.update(snapshot(haptics::ContactState::kRigidSurface, {0.3, 0, 0}, 0, {-2.0, 0, 0}));
   EXPECT_EQ(load.contact, engine::NeedleContact::Touching);
   EXPECT_EQ(load.surface_normal, glm::dvec3(-1, 0, 0));
   EXPECT_DOUBLE_EQ(load.normal_force_N, 2.0);
@@ -86,9 +87,9 @@ TEST(ReplayCursor, ScrubbingBackFeedsTheTrackerFromTheStart) {
     return s;
   };
   using haptics::ContactState;
-  const std::vector<haptics::ToolSnapshot> states = {at(0.0, 0.0, ContactState::kFree), at(0.1, 0.01, ContactState::kTissue),
-                                                     at(0.2, 0.02, ContactState::kFree), at(0.3, 0.03, ContactState::kTissue),
-                                                     at(0.4, 0.04, ContactState::kTissue)};
+  const std::vector<haptics::ToolSnapshot> states = {
+      at(0.0, 0.0, ContactState::kFree), at(0.1, 0.01, ContactState::kTissue), at(0.2, 0.02, ContactState::kFree),
+      at(0.3, 0.03, ContactState::kTissue), at(0.4, 0.04, ContactState::kTissue)};
   app::ReplayCursor cursor;
   EXPECT_DOUBLE_EQ(cursor.at(states, 0.15).surface_point.x, 0.01);
   EXPECT_DOUBLE_EQ(cursor.at(states, 0.45).surface_point.x, 0.03);

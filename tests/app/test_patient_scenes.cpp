@@ -28,7 +28,8 @@ constexpr engine::Extent kSize{320, 240};
 // The scenario a session of the task runs (its patient inline), loaded.
 haptics::Scenario task_scenario(const std::string& task) {
   const training::Task t = training::load_task(source_dir() / "assets/tasks" / (task + ".json"));
-  return training::write_scenario(training::task_scenario_json(t), process_folder(output_dir() / "patient_scenes") / (task + ".json"));
+  return training::write_scenario(training::task_scenario_json(t),
+                                  process_folder(output_dir() / "patient_scenes") / (task + ".json"));
 }
 
 engine::Scene patient_scene(const haptics::Scenario& scenario) {
@@ -70,12 +71,15 @@ TEST(PatientScenes, TheSectionThroughL3L4ShowsEachStructureInItsColour) {
   ASSERT_TRUE(renderer.draw(target, params, &image));
   EXPECT_TRUE(matches_golden(image, "patient_section_l3_l4"));
   // The L3 spinous process's tip, 5 mm into the bone: bone's ivory, not the ligaments' or the skin's.
-  const Eigen::Vector3d tip = scenario.patient->to_model(scenario.patient->spine.spinous_tips[2]) + scenario.base_in_world;
-  const std::optional<glm::vec2> at = engine::project_to_screen(params.camera, kSize, glm::vec3(0.33f, float(tip.y()), float(tip.z() - 0.005)));
+  const Eigen::Vector3d tip =
+      scenario.patient->to_model(scenario.patient->spine.spinous_tips[2]) + scenario.base_in_world;
+  const std::optional<glm::vec2> at =
+      engine::project_to_screen(params.camera, kSize, glm::vec3(0.33f, float(tip.y()), float(tip.z() - 0.005)));
   ASSERT_TRUE(at);
   const size_t i = (size_t(at->y) * image.width + size_t(at->x)) * 4;
   const glm::vec3 seen(image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]);
-  EXPECT_GT(seen.b, 150.0f) << "bone is pale (ivory), the muscle and fat would be red or yellow: " << seen.r << " " << seen.g << " " << seen.b;
+  EXPECT_GT(seen.b, 150.0f) << "bone is pale (ivory), the muscle and fat would be red or yellow: " << seen.r << " "
+                            << seen.g << " " << seen.b;
   EXPECT_TRUE(device().validation_messages().empty()) << device().validation_messages().front();
 }
 
@@ -89,7 +93,8 @@ TEST(PatientScenes, TheParamedianUltrasoundShowsTheLaminaeAndTheWindows) {
   const haptics::Scenario scenario = task_scenario("epidural_patient_bmi22");
   const engine::EchoScene echo = app::echo_scene(scenario, engine::Scene{});
   ASSERT_EQ(echo.layers.size(), 12u);
-  const engine::UltrasoundProbe probe = app::paramedian_sagittal_oblique_probe(echo, {0.33, 0.0, 0.07}, 0.012, 10.0 * std::numbers::pi / 180.0);
+  const engine::UltrasoundProbe probe =
+      app::paramedian_sagittal_oblique_probe(echo, {0.33, 0.0, 0.07}, 0.012, 10.0 * std::numbers::pi / 180.0);
   engine::UltrasoundView view(device(), echo);
   view.render(probe, nullptr);
   const std::vector<engine::ScanLine> gpu = view.scan_lines();
@@ -107,7 +112,8 @@ TEST(PatientScenes, TheParamedianUltrasoundShowsTheLaminaeAndTheWindows) {
   for (size_t i = 0; i < cpu.size(); ++i) {
     ASSERT_EQ(gpu[i].interfaces.size(), cpu[i].interfaces.size()) << "line " << i;
     for (size_t k = 0; k < cpu[i].interfaces.size(); ++k) {
-      EXPECT_NEAR(gpu[i].interfaces[k].depth_m, cpu[i].interfaces[k].depth_m, tolerance_m) << "line " << i << " interface " << k;
+      EXPECT_NEAR(gpu[i].interfaces[k].depth_m, cpu[i].interfaces[k].depth_m, tolerance_m)
+          << "line " << i << " interface " << k;
       if (cpu[i].interfaces[k].to_layer == bone && bone_depth[i] < 0.0) bone_depth[i] = cpu[i].interfaces[k].depth_m;
       window |= cpu[i].interfaces[k].to_layer == flavum;
     }
@@ -117,7 +123,7 @@ TEST(PatientScenes, TheParamedianUltrasoundShowsTheLaminaeAndTheWindows) {
   int steps = 0;
   for (size_t i = 1; i < cpu.size(); ++i)
     if (bone_depth[i - 1] > 0.0 && bone_depth[i] > 0.0 ? std::abs(bone_depth[i] - bone_depth[i - 1]) > 0.005
-                                                        : (bone_depth[i - 1] > 0.0) != (bone_depth[i] > 0.0))
+                                                       : (bone_depth[i - 1] > 0.0) != (bone_depth[i] > 0.0))
       ++steps;
   EXPECT_GE(steps, 3);
   EXPECT_TRUE(window) << "a window lets the beam reach the flavum";

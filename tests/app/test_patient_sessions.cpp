@@ -1,7 +1,7 @@
 // The lumbar epidural on the generated patients (assets/tasks/epidural_patient_*.json), run as
 // `needle-sim run --headless` runs them: on each shipped patient the scripted good operator passes
-// with the loss of resistance (the syringe's plunger giving way) at the patient's own depth; the sloppy one meets bone, is told so, and
-// fails; a random patient's session replays to the same patient and the same score. PatientSessions
+// with the loss of resistance (the syringe's plunger giving way) at the patient's own depth; the sloppy one meets bone,
+// is told so, and fails; a random patient's session replays to the same patient and the same score. PatientSessions
 // generates patients: SANITIZE_SKIP (tests/README.md).
 #include <gtest/gtest.h>
 
@@ -21,9 +21,10 @@ namespace {
 std::string report(const training::SessionResult& r) {
   std::string out = "score " + std::to_string(r.score.total) + ";";
   for (const training::StepResult& s : r.steps) out += " " + s.id + "=" + training::step_outcome_name(s.record.outcome);
-  out += " bone " + std::to_string(r.overall.bone_contacts) + " lor " + std::to_string(r.overall.lor_depth_m) + " err " +
-         std::to_string(r.overall.lor_depth_error_m) + " angle " + std::to_string(r.overall.entry_angle_deg) + " past loss " +
-         std::to_string(r.overall.advance_after_loss_m) + " false losses " + std::to_string(r.overall.false_losses);
+  out += " bone " + std::to_string(r.overall.bone_contacts) + " lor " + std::to_string(r.overall.lor_depth_m) +
+         " err " + std::to_string(r.overall.lor_depth_error_m) + " angle " + std::to_string(r.overall.entry_angle_deg) +
+         " past loss " + std::to_string(r.overall.advance_after_loss_m) + " false losses " +
+         std::to_string(r.overall.false_losses);
   for (const std::string& why : r.score.reasons_failed) out += "; " + why;
   return out;
 }
@@ -38,7 +39,8 @@ TEST_P(PatientSessions, GoodPassesAtThePatientsDepthAndSloppyMeetsBoneAndIsToldS
   std::cout << task << " good: " << report(good.result) << "\n" << task << " sloppy: " << report(sloppy.result) << "\n";
   const training::Metrics& g = good.result.overall;
   EXPECT_TRUE(good.result.score.passed) << report(good.result);
-  for (const training::StepResult& s : good.result.steps) EXPECT_EQ(s.record.outcome, training::StepOutcome::kCompleted) << s.id;
+  for (const training::StepResult& s : good.result.steps)
+    EXPECT_EQ(s.record.outcome, training::StepOutcome::kCompleted) << s.id;
   EXPECT_EQ(g.interspace_entered, 3.0);  // L3-L4
   EXPECT_LT(g.entry_angle_deg, 5.0);
   EXPECT_EQ(g.bone_contacts, 0u);
@@ -61,7 +63,8 @@ TEST_P(PatientSessions, GoodPassesAtThePatientsDepthAndSloppyMeetsBoneAndIsToldS
   EXPECT_GE(s.redirections, 1u) << report(sloppy.result);
   EXPECT_GT(s.entry_angle_deg, 10.0) << report(sloppy.result);
   const std::vector<std::string> told = ui::what_to_improve(sloppy.result.score);
-  EXPECT_NE(std::find(told.begin(), told.end(), "Keep to the planned axis: do not meet the bone"), told.end()) << report(sloppy.result);
+  EXPECT_NE(std::find(told.begin(), told.end(), "Keep to the planned axis: do not meet the bone"), told.end())
+      << report(sloppy.result);
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedPatients, PatientSessions, testing::Values("bmi22", "bmi30", "bmi40"));
@@ -72,10 +75,12 @@ INSTANTIATE_TEST_SUITE_P(ShippedPatients, PatientSessions, testing::Values("bmi2
 TEST(PatientSessionsRandom, ARandomPatientsSessionReplaysToTheSamePatientAndScore) {
   const std::filesystem::path dir = process_folder(output_dir() / "patient_sessions" / "random");
   const RecordedSession run = record_session(dir / "sessions.db", {"epidural_patient_random", "good", "ana", true});
-  const nlohmann::json context = haptics::read_recording_context(run.recording.string(), haptics::read_header(run.recording.string()));
+  const nlohmann::json context =
+      haptics::read_recording_context(run.recording.string(), haptics::read_header(run.recording.string()));
   const nlohmann::json& patient = context["scenario"]["tissue"]["patient"];
   ASSERT_TRUE(patient.is_object()) << context["scenario"]["tissue"].dump();
-  for (const char* key : {"height_m", "weight_kg", "sex", "age_years", "posture", "seed"}) EXPECT_TRUE(patient.contains(key)) << key;
+  for (const char* key : {"height_m", "weight_kg", "sex", "age_years", "posture", "seed"})
+    EXPECT_TRUE(patient.contains(key)) << key;
   EXPECT_NE(patient["seed"].get<uint64_t>(), 0u);
   std::string name;
   const training::SessionResult replay = app::replay_result(run.recording, process_folder(dir / "replay"), name);

@@ -14,7 +14,8 @@ namespace {
 std::string report(const training::SessionResult& r) {
   std::string out = "score " + std::to_string(r.score.total) + ";";
   for (const training::StepResult& s : r.steps) out += " " + s.id + "=" + training::step_outcome_name(s.record.outcome);
-  for (const training::ScoreComponent& c : r.score.components) out += " " + c.name + ":" + std::to_string(c.value).substr(0, 4);
+  for (const training::ScoreComponent& c : r.score.components)
+    out += " " + c.name + ":" + std::to_string(c.value).substr(0, 4);
   for (const std::string& why : r.score.reasons_failed) out += "; " + why;
   return out;
 }
@@ -30,14 +31,16 @@ TEST_P(ScriptedSessions, GoodPassesAndOutscoresSloppyWhichFails) {
   EXPECT_TRUE(good.result.score.passed) << report(good.result);
   EXPECT_FALSE(sloppy.result.score.passed) << report(sloppy.result);
   EXPECT_LT(sloppy.result.score.total, pass_score) << report(sloppy.result);
-  EXPECT_GT(good.result.score.total, sloppy.result.score.total + 10.0) << report(good.result) << "\n" << report(sloppy.result);
+  EXPECT_GT(good.result.score.total, sloppy.result.score.total + 10.0) << report(good.result) << "\n"
+                                                                       << report(sloppy.result);
   EXPECT_NE(good.recording, sloppy.recording) << "two sessions of one task in one second keep two recordings";
   // The good run stays within the device's force with the margin docs/TASKS.md states (20 %), and the
   // device never holds its force back.
   const double limit = haptics::load_scenario(task.scenario.string()).device.force_limit_N;
   EXPECT_LE(good.result.overall.peak_hand_force_N, 0.8 * limit) << report(good.result);
   EXPECT_EQ(good.result.overall.force_limited_s, 0.0) << report(good.result);
-  std::cout << GetParam() << " good: " << report(good.result) << "\n" << GetParam() << " sloppy: " << report(sloppy.result) << "\n";
+  std::cout << GetParam() << " good: " << report(good.result) << "\n"
+            << GetParam() << " sloppy: " << report(sloppy.result) << "\n";
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedTasks, ScriptedSessions,

@@ -27,7 +27,11 @@ TEST(SessionLimits, ARecordingIsNamedFromASafeFormOfTheTaskName) {
     EXPECT_EQ(file.find(".."), std::string::npos) << file;
     EXPECT_LE(file.size(), 64u + 40u) << file;
   }
-  EXPECT_EQ(app::new_recording_path(dir / "sessions.db", "../../../escaped_rec").filename().string().rfind("_________escaped_rec_", 0), 0u);
+  EXPECT_EQ(app::new_recording_path(dir / "sessions.db", "../../../escaped_rec")
+                .filename()
+                .string()
+                .rfind("_________escaped_rec_", 0),
+            0u);
 }
 
 TEST(SessionLimits, ARunEndsWhenItsTaskMustHaveEndedHoweverLongTheScript) {
@@ -49,7 +53,8 @@ TEST(SessionLimits, ARunEndsWhenItsTaskMustHaveEndedHoweverLongTheScript) {
   std::string said;  // what the session tells its user
   options.messages.line = [&said](const std::string& line) { said += line + "\n"; };
   app::TaskSession session(options);
-  EXPECT_NE(said.find("note: the operator script runs 204.0 s, past the latest end of the task (79.0 s"), std::string::npos)
+  EXPECT_NE(said.find("note: the operator script runs 204.0 s, past the latest end of the task (79.0 s"),
+            std::string::npos)
       << said;
   ASSERT_TRUE(session.duration_s());
   EXPECT_DOUBLE_EQ(*session.duration_s(), 204.0);

@@ -6,8 +6,8 @@
 #include <fstream>
 
 #include "recorded_session.hpp"
-#include "training/sessions/session_review.hpp"
 #include "tests/support/test_paths.hpp"
+#include "training/sessions/session_review.hpp"
 
 namespace needle::training {
 namespace {
@@ -49,7 +49,8 @@ TEST_F(SessionReviewTest, RecordingBecomesPlotsThatAgreeWithTheStoredMetrics) {
   EXPECT_NEAR(*std::max_element(force.v.begin(), force.v.end()), r.stored.overall.peak_hand_force_N, 1e-12);
   const Series& lateral = r.plots.lateral.lines[0];
   double integral = 0.0;
-  for (size_t k = 1; k < lateral.v.size(); ++k) integral += 0.5 * (lateral.v[k] + lateral.v[k - 1]) * (lateral.t[k] - lateral.t[k - 1]);
+  for (size_t k = 1; k < lateral.v.size(); ++k)
+    integral += 0.5 * (lateral.v[k] + lateral.v[k - 1]) * (lateral.t[k] - lateral.t[k - 1]);
   EXPECT_NEAR(integral, r.stored.overall.lateral_load_Ns, 1e-9 + 1e-9 * integral);
   EXPECT_GT(integral, 0.0);
   // The depth reaches the insert step's band while that step completes.

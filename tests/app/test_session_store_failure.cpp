@@ -26,7 +26,8 @@ TEST(SessionStoreFailure, ScoreJsonAndTheRecordingAreKeptWhenTheStoreFailsAtTheE
   {  // Another program breaks the store while the run goes on: finishing must write a table it dropped.
     sqlite3* db = nullptr;
     ASSERT_EQ(sqlite3_open(options.db.c_str(), &db), SQLITE_OK);
-    EXPECT_EQ(sqlite3_exec(db, "DROP TABLE score_components", nullptr, nullptr, nullptr), SQLITE_OK) << sqlite3_errmsg(db);
+    EXPECT_EQ(sqlite3_exec(db, "DROP TABLE score_components", nullptr, nullptr, nullptr), SQLITE_OK)
+        << sqlite3_errmsg(db);
     sqlite3_close(db);
   }
   std::string error;
@@ -36,8 +37,10 @@ TEST(SessionStoreFailure, ScoreJsonAndTheRecordingAreKeptWhenTheStoreFailsAtTheE
     error = e.what();
   }
   const fs::path score_file = options.out_dir / "score.json";
-  EXPECT_EQ(error.rfind("the session could not be stored: " + options.db.string() + ": finishing session 1", 0), 0u) << error;
-  EXPECT_NE(error.find("its score is in " + score_file.string() + " and its recording is " + session.recording_path().string()),
+  EXPECT_EQ(error.rfind("the session could not be stored: " + options.db.string() + ": finishing session 1", 0), 0u)
+      << error;
+  EXPECT_NE(error.find("its score is in " + score_file.string() + " and its recording is " +
+                       session.recording_path().string()),
             std::string::npos)
       << error;
   ASSERT_TRUE(fs::is_regular_file(score_file));

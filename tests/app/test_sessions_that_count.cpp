@@ -85,12 +85,14 @@ TEST(SessionsThatCount, APracticeRunIsUntimedStoredAsPracticeAndReplaysAsPractic
   session.run_offline([](size_t) {});
   const training::SessionResult* result = session.finish();
   ASSERT_NE(result, nullptr);
-  for (const training::StepResult& step : result->steps) EXPECT_NE(step.record.outcome, training::StepOutcome::kTimedOut) << step.id;
+  for (const training::StepResult& step : result->steps)
+    EXPECT_NE(step.record.outcome, training::StepOutcome::kTimedOut) << step.id;
   const std::vector<training::SessionInfo> sessions = training::SessionStore(o.db.string()).sessions();
   ASSERT_EQ(sessions.size(), 1u);
   EXPECT_EQ(sessions[0].device, "sim (rigid_sphere_sloppy) (practice)");
 
-  const training::Task replayed = app::session_task({}, haptics::DeviceSpec::parse("replay:" + session.recording_path().string()));
+  const training::Task replayed =
+      app::session_task({}, haptics::DeviceSpec::parse("replay:" + session.recording_path().string()));
   EXPECT_TRUE(replayed.practice);
   for (const training::Step& step : replayed.steps) EXPECT_EQ(step.time_limit_s, 0.0) << step.id;
 

@@ -107,21 +107,23 @@ TEST(Settings, ADamagedFileIsSetAsideWithAMessageNamingIt) {
     const char* text;
     const char* says;
   };
-  for (const Case& c : {Case{"{\"version\": 1, \"trainee\": \"ana\"", "not valid JSON"},
-                        Case{"{\"version\": 1, \"colour\": \"red\"}", "/colour: unknown key"},
-                        Case{"{\"version\": 1, \"device\": \"phantom\"}", "/device: unknown device \"phantom\""},
-                        Case{"{\"version\": 1, \"device\": \"gamepad:16\"}", "/device: unknown device \"gamepad:16\""},
-                        Case{"{\"version\": 1, \"device\": \"sim\"}", "/device: device \"sim\" is no trainee's device"},
-                        Case{"{\"version\": 1, \"window\": {\"width\": 10, \"height\": 720}}", "/window/width"},
-                        Case{"{\"version\": 1, \"views\": {\"xray\": true}}", "/views/xray: unknown key"},
-                        Case{"{\"version\": 1, \"views\": {\"section\": \"sliced\"}}", "/views/section: \"sliced\": expected off, cut or translucent"},
-                        Case{"{\"version\": 1, \"views\": {\"ultrasound\": 1}}", "/views/ultrasound: expected true or false"},
-                        Case{"{\"version\": 1, \"views\": {\"probe\": {\"along_m\": 2}}}", "/views/probe/along_m"},
-                        Case{"{\"version\": 1, \"views\": {\"probe\": {\"turn_deg\": \"left\"}}}", "/views/probe/turn_deg"},
-                        Case{"{\"version\": 1, \"render_scale\": \"fast\"}", "/render_scale: expected \"auto\" or a number in [0.25, 1]"},
-                        Case{"{\"version\": 1, \"render_scale\": 0.1}", "/render_scale: must be in [0.25, 1]"},
-                        Case{"{\"trainee\": \"ana\"}", "/version: missing"},
-                        Case{"[1, 2]", "expected an object"}}) {
+  for (const Case& c :
+       {Case{"{\"version\": 1, \"trainee\": \"ana\"", "not valid JSON"},
+        Case{"{\"version\": 1, \"colour\": \"red\"}", "/colour: unknown key"},
+        Case{"{\"version\": 1, \"device\": \"phantom\"}", "/device: unknown device \"phantom\""},
+        Case{"{\"version\": 1, \"device\": \"gamepad:16\"}", "/device: unknown device \"gamepad:16\""},
+        Case{"{\"version\": 1, \"device\": \"sim\"}", "/device: device \"sim\" is no trainee's device"},
+        Case{"{\"version\": 1, \"window\": {\"width\": 10, \"height\": 720}}", "/window/width"},
+        Case{"{\"version\": 1, \"views\": {\"xray\": true}}", "/views/xray: unknown key"},
+        Case{"{\"version\": 1, \"views\": {\"section\": \"sliced\"}}",
+             "/views/section: \"sliced\": expected off, cut or translucent"},
+        Case{"{\"version\": 1, \"views\": {\"ultrasound\": 1}}", "/views/ultrasound: expected true or false"},
+        Case{"{\"version\": 1, \"views\": {\"probe\": {\"along_m\": 2}}}", "/views/probe/along_m"},
+        Case{"{\"version\": 1, \"views\": {\"probe\": {\"turn_deg\": \"left\"}}}", "/views/probe/turn_deg"},
+        Case{"{\"version\": 1, \"render_scale\": \"fast\"}",
+             "/render_scale: expected \"auto\" or a number in [0.25, 1]"},
+        Case{"{\"version\": 1, \"render_scale\": 0.1}", "/render_scale: must be in [0.25, 1]"},
+        Case{"{\"trainee\": \"ana\"}", "/version: missing"}, Case{"[1, 2]", "expected an object"}}) {
     for (const fs::directory_entry& e : fs::directory_iterator(dir)) fs::remove(e.path());
     std::ofstream(file) << c.text;
     const app::LoadedSettings loaded = app::load_settings(file);

@@ -49,7 +49,8 @@ Pressed run_pressing(const std::string& device, double seconds, Press press) {
     loop.run_unpaced(1);
     while (loop.samples().pop(sample)) {
       EXPECT_EQ(sample.reading.plunger_input, uint32_t(haptics::PlungerInput::kThumbForce));
-      EXPECT_EQ(sample.state.syringe.thumb_force_N, sample.reading.plunger_force_n) << "the syringe is pressed with the reading's force";
+      EXPECT_EQ(sample.state.syringe.thumb_force_N, sample.reading.plunger_force_n)
+          << "the syringe is pressed with the reading's force";
       out = {sample.state.syringe.thumb_force_N, sample.state.syringe.travel_m};
     }
   }

@@ -60,7 +60,8 @@ TEST_P(SyringeSessions, GoodStopsWithinTwoMillimetresOfTheLossSloppyGoesOnIntoTh
   EXPECT_LE(g.advance_m, 0.002);
   EXPECT_NEAR(good.result.overall.advance_after_loss_m, g.advance_m, 1e-12);
   EXPECT_EQ(good.result.overall.false_losses, 0.0);
-  for (const training::StepResult& s : good.result.steps) EXPECT_EQ(s.record.outcome, training::StepOutcome::kCompleted) << s.id;
+  for (const training::StepResult& s : good.result.steps)
+    EXPECT_EQ(s.record.outcome, training::StepOutcome::kCompleted) << s.id;
   EXPECT_TRUE(good.result.score.passed);
   // Before the loss the thumb held the plunger in the flavum at its 11 N over the plunger's area.
   const double held = 11.0 / haptics::SyringeParams{}.plunger_area_m2;
@@ -76,7 +77,8 @@ TEST_P(SyringeSessions, GoodStopsWithinTwoMillimetresOfTheLossSloppyGoesOnIntoTh
   EXPECT_GT(good_ticks.records[g.tick + 20].state.syringe.travel_m, before.travel_m);
 
   // Sloppy: on past the loss, the step failed for it, the dura punctured.
-  const LossInRecording s = loss_in(haptics::read_session(sloppy.recording.string()), space, sloppy.result.steps.back().record.end_s);
+  const LossInRecording s =
+      loss_in(haptics::read_session(sloppy.recording.string()), space, sloppy.result.steps.back().record.end_s);
   EXPECT_GE(s.advance_m, 0.008);
   EXPECT_NEAR(sloppy.result.overall.advance_after_loss_m, s.advance_m, 1e-12);
   EXPECT_FALSE(sloppy.result.score.passed);
@@ -118,7 +120,8 @@ TEST_P(SyringeSessions, AReplayReproducesTheSyringeAndTheScoreBitForBit) {
   ASSERT_EQ(a.records.size(), b.records.size());
   int differing = 0;
   for (size_t k = 0; k < a.records.size(); ++k)
-    differing += std::memcmp(&a.records[k].state.syringe, &b.records[k].state.syringe, sizeof(haptics::SyringeSnapshot)) != 0;
+    differing +=
+        std::memcmp(&a.records[k].state.syringe, &b.records[k].state.syringe, sizeof(haptics::SyringeSnapshot)) != 0;
   EXPECT_EQ(differing, 0);
 }
 

@@ -20,8 +20,9 @@ struct GpuSphere {
   engine::GpuPrimitive gpu;
 };
 
-inline GpuSphere make_gpu_sphere(const engine::VulkanContext& context, int resolution, const glm::dmat4& extra = glm::dmat4(1.0),
-                                 double cell_size = 0.01, engine::VertexGrid* grid_out = nullptr) {
+inline GpuSphere make_gpu_sphere(const engine::VulkanContext& context, int resolution,
+                                 const glm::dmat4& extra = glm::dmat4(1.0), double cell_size = 0.01,
+                                 engine::VertexGrid* grid_out = nullptr) {
   engine::Model model = engine::convert_gltf(asset_gen::make_sphere(resolution, resolution), "sphere");
   GpuSphere s;
   s.rest = model.primitives.at(0);

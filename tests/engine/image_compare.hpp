@@ -74,8 +74,9 @@ inline ::testing::AssertionResult matches_golden(const engine::RgbaImage& actual
   }
   engine::write_png(out_dir / (name + ".actual.png"), actual);
   engine::write_png(out_dir / (name + ".diff.png"), diff);
-  return ::testing::AssertionFailure() << name << ": " << differing << " of " << pixels << " pixels differ by more than "
-                                       << kChannelTolerance << " (worst " << worst << "); actual and diff in " << out_dir;
+  return ::testing::AssertionFailure() << name << ": " << differing << " of " << pixels
+                                       << " pixels differ by more than " << kChannelTolerance << " (worst " << worst
+                                       << "); actual and diff in " << out_dir;
 }
 
 }  // namespace needle::test

@@ -96,7 +96,8 @@ inline double luma_at(const engine::RgbaImage& image, double x, double y) {
   auto at = [&](int px, int py) {
     return luma(image, std::clamp(px, 0, int(image.width) - 1), std::clamp(py, 0, int(image.height) - 1));
   };
-  return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+  return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
+         fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
 }
 
 }  // namespace needle::test

@@ -54,7 +54,8 @@ inline engine::FrameParams task_frame(engine::GpuScene& scene, const engine::Nee
 }
 
 // The section: through the needle in plane, the plane y = 0 facing the camera out of plane.
-inline engine::Section task_section(const TaskSection& c, const engine::Camera& camera, const engine::NeedleLoad& needle) {
+inline engine::Section task_section(const TaskSection& c, const engine::Camera& camera,
+                                    const engine::NeedleLoad& needle) {
   if (c.in_plane) return engine::section_through_needle(camera, &needle);
   engine::Section section;
   section.point = glm::vec3(0.33f, 0.0f, 0.07f);

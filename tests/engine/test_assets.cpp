@@ -23,7 +23,8 @@ std::string bytes_of(const fs::path& file) {
 
 TEST(Assets, CommittedFilesAreExactlyWhatTheGeneratorWrites) {
   TempDir dir("assets");
-  for (const asset_gen::GeneratedAsset& asset : asset_gen::committed_assets()) asset_gen::write_asset(asset, dir.path());
+  for (const asset_gen::GeneratedAsset& asset : asset_gen::committed_assets())
+    asset_gen::write_asset(asset, dir.path());
   size_t files = 0;
   for (const fs::directory_entry& entry : fs::directory_iterator(dir.path())) {
     const fs::path committed = kAssets / entry.path().filename();

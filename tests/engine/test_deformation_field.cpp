@@ -31,10 +31,11 @@ TEST(DeformationField, FreeNeedleLeavesTissueAtRest) {
 TEST(DeformationField, DimpleSurfaceFollowsTheTipExactly) {
   NeedleLoad load;
   load.contact = NeedleContact::Touching;
-  load.surface_point = {0.3, 0.0, 0.0};   // on a sphere of radius 0.1 at (0.4, 0, 0)
+  load.surface_point = {0.3, 0.0, 0.0};  // on a sphere of radius 0.1 at (0.4, 0, 0)
   load.surface_normal = {-1.0, 0.0, 0.0};
-  load.tip = {0.304, 0.001, -0.0005};      // 4 mm in, a little oblique
-  engine::DeformedVertex v = engine::deform(engine::build_field(load, tissue()), load.surface_point, load.surface_normal);
+  load.tip = {0.304, 0.001, -0.0005};  // 4 mm in, a little oblique
+  engine::DeformedVertex v =
+      engine::deform(engine::build_field(load, tissue()), load.surface_point, load.surface_normal);
   EXPECT_NEAR(glm::length(v.position - load.tip), 0.0, 1e-12);
   // The dimple's floor faces the needle: the normal has turned but still points out of the tissue.
   EXPECT_LT(glm::dot(v.normal, glm::dvec3(1, 0, 0)), 0.0);

@@ -7,8 +7,8 @@
 #include "engine/gpu_scene.hpp"
 #include "engine/render_target.hpp"
 #include "image_compare.hpp"
-#include "vulkan_fixture.hpp"
 #include "tests/support/test_paths.hpp"
+#include "vulkan_fixture.hpp"
 
 namespace needle::test {
 namespace {
@@ -34,7 +34,8 @@ TEST_F(DeformationGolden, DimpleInsertPivotWithdraw) {
       {"dimple", sphere_load(engine::NeedleContact::Touching, kEntryDirection, 0.008)},
       {"inserted", sphere_load(engine::NeedleContact::Inserted, kEntryDirection, 0.03)},
       // Pivoted upwards, in the picture's plane, pushing the tissue up.
-      {"pivoted", sphere_load(engine::NeedleContact::Inserted, kEntryDirection, 0.03, glm::radians(45.0), 1.0, {0, 0, 1})},
+      {"pivoted",
+       sphere_load(engine::NeedleContact::Inserted, kEntryDirection, 0.03, glm::radians(45.0), 1.0, {0, 0, 1})},
       {"withdrawn", away},
   };
   std::map<std::string, engine::RgbaImage> images;

@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 #include <glm/gtc/matrix_transform.hpp>
+#include <random>
 
 #include "deformation_fixture.hpp"
 #include "vulkan_fixture.hpp"
@@ -22,12 +22,13 @@ constexpr double kPositionTolerance_m = 1e-6;
 constexpr double kNormalTolerance_rad = 2e-4;
 
 struct Comparison {
-  size_t written = 0;      // vertices that are not NaN
-  size_t mismatched = 0;   // written vertices off the reference
+  size_t written = 0;     // vertices that are not NaN
+  size_t mismatched = 0;  // written vertices off the reference
   double worst_position = 0.0, worst_angle = 0.0;
 };
 
-Comparison compare(const GpuSphere& s, const std::vector<engine::MeshVertex>& gpu, const engine::DeformationField& field) {
+Comparison compare(const GpuSphere& s, const std::vector<engine::MeshVertex>& gpu,
+                   const engine::DeformationField& field) {
   Comparison c;
   const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(s.model_to_world)));
   for (size_t i = 0; i < gpu.size(); ++i) {
@@ -65,13 +66,14 @@ class DeformationPassTest : public VulkanTest {};
 
 TEST_F(DeformationPassTest, EveryVertexMatchesTheCpuReference) {
   std::mt19937 rng(11);
-  const glm::dmat4 moved =
-      glm::translate(glm::dmat4(1.0), glm::dvec3(0.01, -0.02, 0.03)) * glm::rotate(glm::dmat4(1.0), 0.3, glm::dvec3(1, 2, 3));
+  const glm::dmat4 moved = glm::translate(glm::dmat4(1.0), glm::dvec3(0.01, -0.02, 0.03)) *
+                           glm::rotate(glm::dmat4(1.0), 0.3, glm::dvec3(1, 2, 3));
   for (int resolution : {12, 60, 150}) {
     for (const glm::dmat4& extra : {glm::dmat4(1.0), moved}) {
       GpuSphere sphere = make_gpu_sphere(context(), resolution, extra);
       engine::DeformationPass pass(context());
-      pass.add_target(sphere.gpu, sphere.rest, engine::VertexGrid::sort_vertices(sphere.rest, 0.01), sphere.model_to_world);
+      pass.add_target(sphere.gpu, sphere.rest, engine::VertexGrid::sort_vertices(sphere.rest, 0.01),
+                      sphere.model_to_world);
       for (int trial = 0; trial < 3; ++trial) {
         engine::NeedleLoad load = random_load(rng);
         // The load was made for the sphere at its asset position; move it with the sphere.
@@ -105,7 +107,8 @@ TEST_F(DeformationPassTest, CulledPassWritesWhatItReportsAndAllTheFieldReaches) 
   EXPECT_EQ(c.mismatched, 0u) << "worst position " << c.worst_position << " m";
   EXPECT_EQ(c.written, pass.last_frame().processed);
   EXPECT_EQ(pass.last_frame().processed + pass.last_frame().skipped, sphere.rest.vertices.size());
-  EXPECT_LT(pass.last_frame().processed, sphere.rest.vertices.size() / 5) << "the support is a small part of the sphere";
+  EXPECT_LT(pass.last_frame().processed, sphere.rest.vertices.size() / 5)
+      << "the support is a small part of the sphere";
   // Every vertex inside some load's support was written (the skipped ones are all outside).
   for (size_t i = 0; i < gpu.size(); ++i) {
     glm::dvec3 p = glm::dvec3(sphere.model_to_world * glm::dvec4(glm::dvec3(sphere.rest.vertices[i].position), 1.0));

@@ -108,7 +108,8 @@ void expect_asset_error(Load load, const std::string& file, std::initializer_lis
   } catch (const AssetError& e) {
     const std::string what = e.what();
     EXPECT_EQ(what.rfind(file + ": ", 0), 0u) << what;
-    for (const std::string& fragment : fragments) EXPECT_NE(what.find(fragment), std::string::npos) << "'" << fragment << "' not in: " << what;
+    for (const std::string& fragment : fragments)
+      EXPECT_NE(what.find(fragment), std::string::npos) << "'" << fragment << "' not in: " << what;
   }
 }
 

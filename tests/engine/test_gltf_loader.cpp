@@ -1,8 +1,7 @@
 // glTF loader on valid input: containers, node transforms, index types, topology,
 // attribute formats and generated normals, each against a hand-derived expectation.
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
 #include <iterator>
 
 #include "asset-gen/assets.hpp"
@@ -23,9 +22,11 @@ tinygltf::Model quad_with_indices(const std::vector<uint32_t>& indices, int comp
   tinygltf::Model model = single_primitive_model(kQuad);
   int accessor = -1;
   if (component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE)
-    accessor = add_accessor(model, std::vector<uint8_t>(indices.begin(), indices.end()), TINYGLTF_TYPE_SCALAR, component_type);
+    accessor =
+        add_accessor(model, std::vector<uint8_t>(indices.begin(), indices.end()), TINYGLTF_TYPE_SCALAR, component_type);
   else if (component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)
-    accessor = add_accessor(model, std::vector<uint16_t>(indices.begin(), indices.end()), TINYGLTF_TYPE_SCALAR, component_type);
+    accessor = add_accessor(model, std::vector<uint16_t>(indices.begin(), indices.end()), TINYGLTF_TYPE_SCALAR,
+                            component_type);
   else
     accessor = add_accessor(model, indices, TINYGLTF_TYPE_SCALAR, component_type);
   model.meshes[0].primitives[0].indices = accessor;
@@ -58,12 +59,14 @@ TEST(GltfLoader, StripsAndFansBecomeTriangleListsWithTheSpecsWinding) {
 }
 
 TEST(GltfLoader, NonIndexedPrimitivesGetSequentialIndices) {
-  const Model model = convert_gltf(single_primitive_model({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0, 1, 2, 0}), "soup");
+  const Model model =
+      convert_gltf(single_primitive_model({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0, 1, 2, 0}), "soup");
   EXPECT_EQ(model.primitives[0].indices, (std::vector<uint32_t>{0, 1, 2, 3, 4, 5}));
 }
 
 TEST(GltfLoader, MissingNormalsOfAFlatQuadAreThePlaneNormal) {
-  const Model model = convert_gltf(quad_with_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE), "quad");
+  const Model model =
+      convert_gltf(quad_with_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE), "quad");
   const glm::vec3 expected = glm::vec3(-2, 0, 2) / std::sqrt(8.0f);
   for (const MeshVertex& v : model.primitives[0].vertices) {
     EXPECT_NEAR(v.normal.x, expected.x, 1e-6);
@@ -76,8 +79,8 @@ TEST(GltfLoader, GeneratedNormalsAreAreaWeighted) {
   // Vertex 0 is shared by a triangle in z = 0 (area 2) and one in x = 0 (area 0.5): the
   // area-weighted normal is (2 (0,0,1) + 0.5 (1,0,0)) normalized; an unweighted mean would be (1,0,1)/sqrt 2.
   tinygltf::Model gltf = single_primitive_model({0, 0, 0, 2, 0, 0, 0, 2, 0, 0, 1, 0, 0, 0, 1});
-  gltf.meshes[0].primitives[0].indices =
-      add_accessor(gltf, std::vector<uint16_t>{0, 1, 2, 0, 3, 4}, TINYGLTF_TYPE_SCALAR, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+  gltf.meshes[0].primitives[0].indices = add_accessor(gltf, std::vector<uint16_t>{0, 1, 2, 0, 3, 4},
+                                                      TINYGLTF_TYPE_SCALAR, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
   const glm::vec3 n = convert_gltf(gltf, "two_planes").primitives[0].vertices[0].normal;
   const glm::vec3 expected = glm::normalize(glm::vec3(0.5f, 0.0f, 2.0f));
   EXPECT_NEAR(n.x, expected.x, 1e-6);
@@ -94,10 +97,10 @@ TEST(GltfLoader, NormalizedIntegerTexcoordsAndColoursAreScaledToUnitRange) {
                                        TINYGLTF_TYPE_VEC3, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, true);
   const std::vector<MeshVertex> v = convert_gltf(gltf, "attributes").primitives[0].vertices;
   EXPECT_EQ(v[0].uv, glm::vec2(0.0f, 1.0f));
-  EXPECT_NEAR(v[1].uv.x, 0.2f, 1e-6);  // 51 / 255
-  EXPECT_NEAR(v[1].uv.y, 0.4f, 1e-6);  // 102 / 255
+  EXPECT_NEAR(v[1].uv.x, 0.2f, 1e-6);            // 51 / 255
+  EXPECT_NEAR(v[1].uv.y, 0.4f, 1e-6);            // 102 / 255
   EXPECT_EQ(v[0].color, glm::vec4(1, 0, 0, 1));  // VEC3 colours keep alpha 1
-  EXPECT_NEAR(v[2].color.x, 0.2f, 1e-6);  // 13107 / 65535
+  EXPECT_NEAR(v[2].color.x, 0.2f, 1e-6);         // 13107 / 65535
   EXPECT_EQ(v[2].color.z, 1.0f);
 }
 
@@ -162,7 +165,8 @@ TEST(GltfLoader, GlbAndDataUriContainersLoadTheSameModelAsExternalFiles) {
   tinygltf::Model gltf = quad_with_indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
   TempDir dir("containers");
   const Model external = load_gltf(write_model(gltf, dir.path(), "external.gltf"));
-  for (auto [container, name] : {std::pair{Container::Glb, "binary.glb"}, std::pair{Container::DataUri, "embedded.gltf"}}) {
+  for (auto [container, name] :
+       {std::pair{Container::Glb, "binary.glb"}, std::pair{Container::DataUri, "embedded.gltf"}}) {
     const Model other = load_gltf(write_model(gltf, dir.path(), name, container));
     ASSERT_EQ(other.primitives.size(), 1u) << name;
     EXPECT_EQ(other.primitives[0].indices, external.primitives[0].indices) << name;

@@ -98,13 +98,14 @@ TEST_F(GltfMalformed, CoarserIndicesOutOfRangeOrNotAList) {
   tinygltf::Model model = triangle();
   const int coarse =
       add_accessor(model, std::vector<uint16_t>{0, 1, 7}, TINYGLTF_TYPE_SCALAR, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
-  model.meshes[0].primitives[0].extras = tinygltf::Value(
-      tinygltf::Value::Object{{"needle_coarser_indices", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(coarse)})}});
+  model.meshes[0].primitives[0].extras = tinygltf::Value(tinygltf::Value::Object{
+      {"needle_coarser_indices", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(coarse)})}});
   file = write_model(model, dir.path(), "coarse.gltf");
   expect_error({"meshes[0].primitives[0].extras.needle_coarser_indices[0]", "index 2 is 7", "3 vertices"});
   edit_json(file, [](nlohmann::json& j) { j["meshes"][0]["primitives"][0]["extras"]["needle_coarser_indices"] = 3; });
   expect_error({"meshes[0].primitives[0].extras.needle_coarser_indices", "expected an array of accessor indices"});
-  edit_json(file, [](nlohmann::json& j) { j["meshes"][0]["primitives"][0]["extras"]["needle_coarser_indices"] = {"a"}; });
+  edit_json(file,
+            [](nlohmann::json& j) { j["meshes"][0]["primitives"][0]["extras"]["needle_coarser_indices"] = {"a"}; });
   expect_error({"needle_coarser_indices[0]", "expected an accessor index"});
 }
 
@@ -153,9 +154,8 @@ TEST_F(GltfMalformed, WrongJsonTypes) {
 
 TEST_F(GltfMalformed, SparseAccessor) {
   edit_json(file, [](nlohmann::json& j) {
-    j["accessors"][0]["sparse"] = {{"count", 1},
-                                   {"indices", {{"bufferView", 1}, {"componentType", 5123}}},
-                                   {"values", {{"bufferView", 0}}}};
+    j["accessors"][0]["sparse"] = {
+        {"count", 1}, {"indices", {{"bufferView", 1}, {"componentType", 5123}}}, {"values", {{"bufferView", 0}}}};
   });
   expect_error({"accessors[0]", "sparse"});
 }

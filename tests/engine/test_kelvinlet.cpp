@@ -33,9 +33,11 @@ TEST(Kelvinlet, JacobianMatchesCentralDifferences) {
     for (int j = 0; j < 3; ++j) {
       glm::dvec3 dx(0.0);
       dx[j] = h;
-      glm::dvec3 fd = (engine::evaluate(k, m, x + dx).displacement - engine::evaluate(k, m, x - dx).displacement) / (2 * h);
+      glm::dvec3 fd =
+          (engine::evaluate(k, m, x + dx).displacement - engine::evaluate(k, m, x - dx).displacement) / (2 * h);
       for (int i = 0; i < 3; ++i) {
-        EXPECT_NEAR(analytic[j][i], fd[i], 1e-6 * (1.0 + std::abs(fd[i]))) << "trial " << trial << " d u" << i << "/dx" << j;
+        EXPECT_NEAR(analytic[j][i], fd[i], 1e-6 * (1.0 + std::abs(fd[i])))
+            << "trial " << trial << " d u" << i << "/dx" << j;
       }
     }
   }

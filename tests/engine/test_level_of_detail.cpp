@@ -7,9 +7,9 @@
 
 #include "asset-gen/assets.hpp"
 #include "asset-gen/shapes.hpp"
+#include "engine/deformation/vertex_grid.hpp"
 #include "engine/gltf_loader.hpp"
 #include "engine/passes/level_of_detail.hpp"
-#include "engine/deformation/vertex_grid.hpp"
 
 namespace needle::engine {
 namespace {

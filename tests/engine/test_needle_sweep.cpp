@@ -118,19 +118,20 @@ TEST_F(NeedleSweep, NoIsolatedPixelAlongTheShaftInThirtyTwoPoses) {
     // scale's lowest step, drawn at half the size and spread over the target.
     const bool close_up = i % 2 == 0;
     renderer.set_render_scale(target, close_up ? 1.0f : 0.5f);
-    if (close_up) params.camera.position = params.camera.target + 0.6f * (params.camera.position - params.camera.target);
+    if (close_up)
+      params.camera.position = params.camera.target + 0.6f * (params.camera.position - params.camera.target);
     if (inserted) params.section = engine::section_through_needle(params.camera, &needle);
     engine::RgbaImage image;
     ASSERT_TRUE(renderer.draw(target, params, &image));
     // The shaft from 5 mm behind the tip (past its cone) to 5 mm before the hub.
     size_t inside = 0;
-    const int isolated = isolated_pixels(image, params.camera, needle.tip - 0.005 * needle.axis,
-                                         needle.tip - 0.075 * needle.axis, needle.tip - kHubStart_m * needle.axis,
-                                         needle.tip - kHubEnd_m * needle.axis, &inside);
+    const int isolated =
+        isolated_pixels(image, params.camera, needle.tip - 0.005 * needle.axis, needle.tip - 0.075 * needle.axis,
+                        needle.tip - kHubStart_m * needle.axis, needle.tip - kHubEnd_m * needle.axis, &inside);
     ASSERT_GE(isolated, 0) << "pose " << i << ": the shaft is behind the camera";
-    EXPECT_EQ(isolated, 0) << "pose " << i << (inserted ? " (in the cut" : " (free") << (close_up ? ", close up): " : ", scale 0.5): ")
-                           << isolated << " of "
-                           << inside << " pixels of the shaft stand out from those alike";
+    EXPECT_EQ(isolated, 0) << "pose " << i << (inserted ? " (in the cut" : " (free")
+                           << (close_up ? ", close up): " : ", scale 0.5): ") << isolated << " of " << inside
+                           << " pixels of the shaft stand out from those alike";
     total += isolated;
     judged += inside;
   }

@@ -9,8 +9,8 @@
 #include "engine/offscreen.hpp"
 #include "engine/render_target.hpp"
 #include "image_compare.hpp"
-#include "vulkan_fixture.hpp"
 #include "tests/support/test_paths.hpp"
+#include "vulkan_fixture.hpp"
 
 namespace needle::test {
 namespace {
@@ -88,8 +88,10 @@ TEST_F(RenderCulling, TissueLevelOfDetailIsWithinTheGoldenToleranceAt1280x720) {
       EXPECT_LE(double(differing), kMaxDifferingFraction * size.width * size.height)
           << "load " << i << ", MSAA " << int(msaa) << ": " << differing << " pixels differ";
       // The needle's dimple shows (500 to 3 300 pixels change here), so the comparison covers it.
-      if (i == 0) rest = a;
-      else EXPECT_GT(differing_pixels(a, rest), 400u) << "load " << i;
+      if (i == 0)
+        rest = a;
+      else
+        EXPECT_GT(differing_pixels(a, rest), 400u) << "load " << i;
     }
   }
 }

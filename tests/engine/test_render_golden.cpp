@@ -8,8 +8,8 @@
 #include "engine/gltf_loader.hpp"
 #include "engine/offscreen.hpp"
 #include "image_compare.hpp"
-#include "vulkan_fixture.hpp"
 #include "tests/support/test_paths.hpp"
+#include "vulkan_fixture.hpp"
 
 namespace needle::test {
 namespace {
@@ -31,7 +31,8 @@ std::vector<fs::path> files_in(const fs::path& dir, std::initializer_list<const 
 
 std::string test_name(const ::testing::TestParamInfo<fs::path>& info) {
   std::string s = info.param.stem().string();
-  std::replace_if(s.begin(), s.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+  std::replace_if(
+      s.begin(), s.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
   return s;
 }
 
@@ -40,7 +41,8 @@ class SceneGolden : public VulkanTest, public ::testing::WithParamInterface<fs::
 
 TEST_P(AssetGolden, MatchesGolden) {
   engine::Model model = engine::load_gltf(GetParam());
-  engine::RgbaImage image = engine::render_model_offscreen(device(), model, kGoldenSize, engine::framing_view(model, kGoldenSize));
+  engine::RgbaImage image =
+      engine::render_model_offscreen(device(), model, kGoldenSize, engine::framing_view(model, kGoldenSize));
   EXPECT_TRUE(matches_golden(image, "asset_" + GetParam().stem().string()));
 }
 
@@ -50,7 +52,8 @@ TEST_P(SceneGolden, MatchesGolden) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Committed, AssetGolden, ::testing::ValuesIn(files_in(kAssets, {".gltf", ".glb"})), test_name);
-INSTANTIATE_TEST_SUITE_P(Committed, SceneGolden, ::testing::ValuesIn(files_in(kAssets / "scenes", {".json"})), test_name);
+INSTANTIATE_TEST_SUITE_P(Committed, SceneGolden, ::testing::ValuesIn(files_in(kAssets / "scenes", {".json"})),
+                         test_name);
 
 // The suites above take their cases from the folders; an empty folder (assets moved, a path
 // changed) would make them run nothing and pass.

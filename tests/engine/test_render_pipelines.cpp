@@ -11,8 +11,8 @@
 #include "engine/gpu_scene.hpp"
 #include "engine/render_target.hpp"
 #include "image_compare.hpp"
-#include "vulkan_fixture.hpp"
 #include "tests/support/test_paths.hpp"
+#include "vulkan_fixture.hpp"
 
 namespace needle::test {
 namespace {

@@ -84,18 +84,21 @@ class RenderScale : public VulkanTest {
 
 TEST_F(RenderScale, TheUpscaleIsTheSmallSceneBilinearlySpreadOverTheTarget) {
   const engine::Scene scene_file = engine::load_scene(kScene);
-  for (const auto& [small, scale] : {std::pair{engine::Extent{160, 120}, 0.5f}, std::pair{engine::Extent{224, 168}, 0.7f}}) {
+  for (const auto& [small, scale] :
+       {std::pair{engine::Extent{160, 120}, 0.5f}, std::pair{engine::Extent{224, 168}, 0.7f}}) {
     engine::HeadlessTarget small_target(device(), small);
     engine::SceneRenderer small_renderer(device(), small_target, {1});
     engine::GpuScene small_scene(small_renderer, scene_file);
-    const engine::RgbaImage reference = bilinear_upscale(draw(small_renderer, small_target, small_scene, nullptr, 1.0f), 320, 240);
+    const engine::RgbaImage reference =
+        bilinear_upscale(draw(small_renderer, small_target, small_scene, nullptr, 1.0f), 320, 240);
 
     engine::HeadlessTarget target(device(), {320, 240});
     engine::SceneRenderer renderer(device(), target, {1});
     engine::GpuScene scene(renderer, scene_file);
     const engine::RgbaImage scaled = draw(renderer, target, scene, nullptr, scale);
     int worst = 0;
-    for (size_t i = 0; i < scaled.pixels.size(); i += 4) worst = std::max(worst, channel_difference(scaled, reference, i));
+    for (size_t i = 0; i < scaled.pixels.size(); i += 4)
+      worst = std::max(worst, channel_difference(scaled, reference, i));
     // The device filters in fixed point: llvmpipe's linear path weighs with 8 bits and rounds
     // each of its two lerps (across, then down) to 8 bits, up to a count or so from each: 3 at
     // most here (2 pixels of 76 800 at 0.7; 2 at 0.5). A missing, shifted or nearest-filtered

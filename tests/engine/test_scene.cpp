@@ -18,7 +18,8 @@ namespace fs = std::filesystem;
 const fs::path kScenes = test::source_dir() / "assets" / "scenes";
 
 glm::mat4 view_projection(const Camera& c, float aspect) {
-  return glm::perspective(glm::radians(c.fov_y_deg), aspect, c.near_m, c.far_m) * glm::lookAt(c.position, c.target, c.up);
+  return glm::perspective(glm::radians(c.fov_y_deg), aspect, c.near_m, c.far_m) *
+         glm::lookAt(c.position, c.target, c.up);
 }
 
 // Largest |x|, |y| in normalized device coordinates over `points`; fails if any is outside the depth range.
@@ -54,7 +55,8 @@ TEST(Scene, CommittedScenesLoadAndTheirCamerasSeeEveryAsset) {
       EXPECT_TRUE(asset.gltf.is_absolute());
       const Model model = load_gltf(asset.gltf);
       std::vector<glm::vec3> corners;
-      for (const glm::vec3& c : box_corners(model.world_bounds)) corners.emplace_back(asset.transform() * glm::vec4(c, 1));
+      for (const glm::vec3& c : box_corners(model.world_bounds))
+        corners.emplace_back(asset.transform() * glm::vec4(c, 1));
       EXPECT_LT(max_ndc_extent(scene.camera, 16.0f / 9.0f, corners), 1.0f) << name << ": " << asset.name;
     }
   }
@@ -101,7 +103,8 @@ TEST(Scene, FramingCameraFitsTheBoundingSphereTightlyInBothDirections) {
       const float t = glm::radians(float(k));
       const glm::vec3 radial = std::cos(t) * right + std::sin(t) * up;
       // Tangent point from the eye: offset towards the eye by r^2/d, ring radius r sqrt(1 - r^2/d^2).
-      silhouette.push_back(center - view * (radius * radius / d) + radial * radius * std::sqrt(1 - radius * radius / (d * d)));
+      silhouette.push_back(center - view * (radius * radius / d) +
+                           radial * radius * std::sqrt(1 - radius * radius / (d * d)));
     }
     const float extent = max_ndc_extent(camera, aspect, silhouette);
     EXPECT_LE(extent, 1.0f + 1e-4f) << "aspect " << aspect;

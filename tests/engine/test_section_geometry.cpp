@@ -7,15 +7,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <glm/gtc/matrix_transform.hpp>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "engine/gltf_loader.hpp"
-#include "engine/passes/translucent_pass.hpp"
 #include "engine/gpu_scene.hpp"
+#include "engine/passes/translucent_pass.hpp"
 #include "engine/render_target.hpp"
 #include "picture_geometry.hpp"
 #include "task_sections.hpp"
@@ -74,7 +74,8 @@ std::vector<Solid> solids_of(const engine::Scene& scene, bool balls) {
         glm::dvec3 mean(0.0);
         for (uint32_t y : {t.height / 2 - 1, t.height / 2})
           for (uint32_t x : {t.width / 2 - 1, t.width / 2})
-            for (int c = 0; c < 3; ++c) mean[c] += srgb_decode(t.rgba8[(size_t(y) * t.width + x) * 4 + size_t(c)]) / 4.0;
+            for (int c = 0; c < 3; ++c)
+              mean[c] += srgb_decode(t.rgba8[(size_t(y) * t.width + x) * 4 + size_t(c)]) / 4.0;
         s.base *= mean;
       }
       solids.push_back(s);
@@ -93,7 +94,8 @@ struct FaceCheck {
 // Every pixel whose ray meets the plane inside a solid, more than 1.5 pixels' footprint from its
 // faces, against the closed form of that solid's cut face (the last solid holding the point, as
 // the caps draw them).
-FaceCheck check_cut_faces(const engine::RgbaImage& image, const engine::FrameParams& params, const std::vector<Solid>& solids) {
+FaceCheck check_cut_faces(const engine::RgbaImage& image, const engine::FrameParams& params,
+                          const std::vector<Solid>& solids) {
   const engine::Section& section = *params.section;
   const glm::dvec3 n = glm::normalize(glm::dvec3(section.normal)), point(section.point);
   FaceCheck check;
@@ -127,7 +129,9 @@ struct CutScene {
   bool balls;
   bool through_needle;  // the plane through a needle standing in the scene's middle, else y = const
 };
-void PrintTo(const CutScene& c, std::ostream* os) { *os << c.scene << (c.through_needle ? " through the needle" : " fixed"); }
+void PrintTo(const CutScene& c, std::ostream* os) {
+  *os << c.scene << (c.through_needle ? " through the needle" : " fixed");
+}
 
 class CutFaces : public VulkanTest, public ::testing::WithParamInterface<CutScene> {};
 
@@ -147,7 +151,8 @@ TEST_P(CutFaces, EveryPixelOfACutFaceIsItsStructuresColour) {
   needle.axis = {0.0, 0.0, -1.0};
   needle.tip = glm::dvec3(params.camera.target);
   engine::Section section = engine::section_through_needle(params.camera, &needle);
-  if (!c.through_needle) section.normal = {0.0f, params.camera.position.y > params.camera.target.y ? 1.0f : -1.0f, 0.0f};
+  if (!c.through_needle)
+    section.normal = {0.0f, params.camera.position.y > params.camera.target.y ? 1.0f : -1.0f, 0.0f};
   params.section = section;
   engine::RgbaImage image;
   ASSERT_TRUE(renderer.draw(target, params, &image));
@@ -157,15 +162,15 @@ TEST_P(CutFaces, EveryPixelOfACutFaceIsItsStructuresColour) {
                              << check.worst << "), first " << check.first_wrong;
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, CutFaces,
-                         ::testing::Values(CutScene{"lumbar_section.json", false, true}, CutScene{"lumbar_section.json", false, false},
-                                           CutScene{"tissue_block_task.json", false, true},
-                                           CutScene{"tissue_block_task.json", false, false},
-                                           CutScene{"penetrable_sphere.json", true, true}),
-                         [](const ::testing::TestParamInfo<CutScene>& info) {
-                           std::string name = std::string(info.param.scene).substr(0, std::string(info.param.scene).find('.'));
-                           return name + (info.param.through_needle ? "_through_needle" : "_fixed_plane");
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, CutFaces,
+    ::testing::Values(CutScene{"lumbar_section.json", false, true}, CutScene{"lumbar_section.json", false, false},
+                      CutScene{"tissue_block_task.json", false, true}, CutScene{"tissue_block_task.json", false, false},
+                      CutScene{"penetrable_sphere.json", true, true}),
+    [](const ::testing::TestParamInfo<CutScene>& info) {
+      std::string name = std::string(info.param.scene).substr(0, std::string(info.param.scene).find('.'));
+      return name + (info.param.through_needle ? "_through_needle" : "_fixed_plane");
+    });
 
 // The layered block deformed by a needle pushed sideways, cut through it, at the window's size
 // without MSAA: where the deformation moves the layers, no pixel of a cut face shows anything
@@ -190,7 +195,8 @@ TEST_F(CutSpeckles, TheDeformedLayersShowNoSpeckleOfAnother) {
   // The block, less 4 mm on every side: the deformation moves its outer surfaces by less, so the
   // plane there holds cut faces only, never the skin's top behind a dimple.
   glm::dvec3 block_min(1e9), block_max(-1e9);
-  for (const Solid& solid : solids) block_min = glm::min(block_min, solid.min), block_max = glm::max(block_max, solid.max);
+  for (const Solid& solid : solids)
+    block_min = glm::min(block_min, solid.min), block_max = glm::max(block_max, solid.max);
   block_min += 0.004, block_max -= 0.004;
   int speckles = 0;
   size_t judged = 0;
@@ -222,7 +228,8 @@ TEST_F(CutSpeckles, TheDeformedLayersShowNoSpeckleOfAnother) {
       }
     }
     const glm::vec2 tip = *engine::project_to_screen(params.camera, kWindow, glm::vec3(needle.tip));
-    const glm::vec2 hub = *engine::project_to_screen(params.camera, kWindow, glm::vec3(needle.tip - 0.095 * needle.axis));
+    const glm::vec2 hub =
+        *engine::project_to_screen(params.camera, kWindow, glm::vec3(needle.tip - 0.095 * needle.axis));
     auto near_needle = [&](int px, int py) {
       const glm::vec2 p(px + 0.5f, py + 0.5f), d = hub - tip;
       const float t = std::clamp(glm::dot(p - tip, d) / glm::dot(d, d), 0.0f, 1.0f);
@@ -271,8 +278,10 @@ TEST_P(NeedleInTheCut, TheShaftIsOneContinuousPiece) {
   // (out of plane) to 2 cm above the skin.
   const double crossing = c.depth - (-c.entry_y / needle.axis.y);
   const double near = c.in_plane ? kTipCone_m : crossing + 0.001, far = c.depth + 0.02;
-  const std::optional<glm::vec2> a = engine::project_to_screen(params.camera, kLarge, glm::vec3(needle.tip - near * needle.axis));
-  const std::optional<glm::vec2> b = engine::project_to_screen(params.camera, kLarge, glm::vec3(needle.tip - far * needle.axis));
+  const std::optional<glm::vec2> a =
+      engine::project_to_screen(params.camera, kLarge, glm::vec3(needle.tip - near * needle.axis));
+  const std::optional<glm::vec2> b =
+      engine::project_to_screen(params.camera, kLarge, glm::vec3(needle.tip - far * needle.axis));
   ASSERT_TRUE(a && b);
   const int steps = int(std::ceil(2.0 * glm::length(*b - *a)));
   ASSERT_GT(steps, 40) << "the shaft is too short on the screen to judge";
@@ -328,7 +337,8 @@ TEST_F(TranslucentTissue, OneLayerLetsThreeQuartersOfWhatIsBehindThrough) {
   auto over = [&](const glm::ivec3& layer, const glm::ivec3& behind) {
     return glm::ivec3(glm::round(kAlpha * glm::dvec3(layer) + (1.0 - kAlpha) * glm::dvec3(behind)));
   };
-  const glm::ivec3 background(srgb_count(params.background.r), srgb_count(params.background.g), srgb_count(params.background.b));
+  const glm::ivec3 background(srgb_count(params.background.r), srgb_count(params.background.g),
+                              srgb_count(params.background.b));
   // Over the background: every pixel of the sphere's inner 90 % the needle alone leaves background.
   size_t checked = 0, wrong = 0;
   int worst = 0;
@@ -341,11 +351,13 @@ TEST_F(TranslucentTissue, OneLayerLetsThreeQuartersOfWhatIsBehindThrough) {
     }
   }
   EXPECT_GT(checked, 10000u);
-  EXPECT_EQ(wrong, 0u) << wrong << " of " << checked << " pixels of the sphere over the background (worst " << worst << ")";
+  EXPECT_EQ(wrong, 0u) << wrong << " of " << checked << " pixels of the sphere over the background (worst " << worst
+                       << ")";
   // Over the needle: along its axis, from 5 mm above the tip to 2 cm deep.
   checked = wrong = 0, worst = 0;
   for (double back = 0.005; back <= 0.05; back += 0.0005) {
-    const std::optional<glm::vec2> at = engine::project_to_screen(params.camera, kSize, glm::vec3(needle.tip - back * needle.axis));
+    const std::optional<glm::vec2> at =
+        engine::project_to_screen(params.camera, kSize, glm::vec3(needle.tip - back * needle.axis));
     ASSERT_TRUE(at);
     const int x = int(at->x), y = int(at->y);
     const std::optional<glm::ivec3> layer = front(x, y);
@@ -354,7 +366,8 @@ TEST_F(TranslucentTissue, OneLayerLetsThreeQuartersOfWhatIsBehindThrough) {
     ++checked, wrong += d > kFaceTolerance, worst = std::max(worst, d);
   }
   EXPECT_GT(checked, 40u);
-  EXPECT_EQ(wrong, 0u) << wrong << " of " << checked << " points of the needle under the sphere (worst " << worst << ")";
+  EXPECT_EQ(wrong, 0u) << wrong << " of " << checked << " points of the needle under the sphere (worst " << worst
+                       << ")";
 }
 
 // Order independence: the lumbar section's eleven structures and the layered block overlapping
@@ -369,7 +382,8 @@ TEST_F(TranslucentTissue, TheOrderOfTheDrawsDoesNotMatter) {
   std::erase_if(params.items, [](const engine::DrawItem& item) { return !item.sectioned; });
   for (const engine::DrawItem& item : other.items)
     if (item.sectioned) params.items.push_back(item);
-  params.items.back().transform = glm::translate(glm::mat4(1.0f), glm::vec3(0.01f, 0.005f, -0.01f)) * params.items.back().transform;
+  params.items.back().transform =
+      glm::translate(glm::mat4(1.0f), glm::vec3(0.01f, 0.005f, -0.01f)) * params.items.back().transform;
   params.section = engine::Section{engine::Section::Mode::Translucent};
   engine::RgbaImage forward, backward;
   ASSERT_TRUE(renderer.draw(target, params, &forward));
@@ -377,7 +391,8 @@ TEST_F(TranslucentTissue, TheOrderOfTheDrawsDoesNotMatter) {
   ASSERT_TRUE(renderer.draw(target, params, &backward));
   int worst = 0;
   size_t covered = 0;
-  const glm::ivec3 background(srgb_count(params.background.r), srgb_count(params.background.g), srgb_count(params.background.b));
+  const glm::ivec3 background(srgb_count(params.background.r), srgb_count(params.background.g),
+                              srgb_count(params.background.b));
   for (int y = 0; y < int(kSize.height); ++y)
     for (int x = 0; x < int(kSize.width); ++x) {
       worst = std::max(worst, max_channel_difference(rgb(forward, x, y), rgb(backward, x, y)));

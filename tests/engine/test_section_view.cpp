@@ -12,8 +12,8 @@
 #include "engine/screen_projection.hpp"
 #include "image_compare.hpp"
 #include "task_sections.hpp"
-#include "vulkan_fixture.hpp"
 #include "tests/support/test_paths.hpp"
+#include "vulkan_fixture.hpp"
 
 namespace needle::test {
 namespace {
@@ -129,7 +129,6 @@ TEST_F(SectionView, AFixedPlaneCutsTheBlockWithTheNeedleCrossingIt) {
   EXPECT_GT(pixel(cut, *beside).x, 150);  // muscle's red in the cut face, no needle there
 }
 
-
 // The section view of the two layered tasks' scenes (task_sections.hpp): goldens cut and, in
 // plane, translucent; the needle dark in the cut where the plain view shows tissue, a layer 15 mm
 // beside it.
@@ -153,12 +152,13 @@ TEST_P(TaskSectionView, TheNeedleShowsInTheCutOfTheTasksLayers) {
     translucent.section->mode = engine::Section::Mode::Translucent;
     engine::RgbaImage image;
     ASSERT_TRUE(renderer.draw(target, translucent, &image));
-    EXPECT_TRUE(matches_golden(image, std::string(c.golden).replace(std::string(c.golden).find("in_plane"), 8, "translucent")));
+    EXPECT_TRUE(
+        matches_golden(image, std::string(c.golden).replace(std::string(c.golden).find("in_plane"), 8, "translucent")));
   }
   // In plane, 10 mm above the tip; out of plane, where the shaft crosses the plane: inside the
   // tissue, so hidden in the plain view and dark (the needle) in the cut.
-  const glm::dvec3 shown = c.in_plane ? needle.tip - 0.01 * needle.axis
-                                      : needle.surface_point + (-c.entry_y / needle.axis.y) * needle.axis;
+  const glm::dvec3 shown =
+      c.in_plane ? needle.tip - 0.01 * needle.axis : needle.surface_point + (-c.entry_y / needle.axis.y) * needle.axis;
   const std::optional<glm::vec2> at = engine::project_to_screen(params.camera, kSize, glm::vec3(shown));
   ASSERT_TRUE(at);
   EXPECT_GT(darkest_red(plain, *at), 120);

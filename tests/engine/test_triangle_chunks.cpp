@@ -24,7 +24,8 @@ std::vector<bool> drawn(const Primitive& p, const std::vector<IndexRange>& range
 // n · (eye − a) of triangle t: its facing, in the transform's world.
 double facing(const Primitive& p, size_t t, const glm::dvec3& eye, const glm::dmat4& model_to_world = glm::dmat4(1.0)) {
   glm::dvec3 v[3];
-  for (int k = 0; k < 3; ++k) v[k] = glm::dvec3(model_to_world * glm::dvec4(glm::dvec3(p.vertices[p.indices[3 * t + k]].position), 1.0));
+  for (int k = 0; k < 3; ++k)
+    v[k] = glm::dvec3(model_to_world * glm::dvec4(glm::dvec3(p.vertices[p.indices[3 * t + k]].position), 1.0));
   return glm::dot(glm::cross(v[1] - v[0], v[2] - v[0]), eye - v[0]);
 }
 
@@ -50,7 +51,8 @@ TEST(TriangleChunks, LeavesOutOnlyTrianglesFacingAwayAndMostOfThem) {
     size_t away = 0, away_dropped = 0;
     for (size_t t = 0; t < kept.size(); ++t) {
       const double f = facing(p, t, eye);
-      if (!kept[t]) EXPECT_LT(f, 0.0) << "triangle " << t << " faces the eye at " << eye.x << "," << eye.y << "," << eye.z;
+      if (!kept[t])
+        EXPECT_LT(f, 0.0) << "triangle " << t << " faces the eye at " << eye.x << "," << eye.y << "," << eye.z;
       if (f < 0) ++away, away_dropped += !kept[t];
     }
     // Cones of at most ~15° (plus the chunk's size seen from the eye, and the margin) cull what

@@ -34,7 +34,9 @@ TEST_F(UiPassTest, PanelIsDrawnOverTheSceneHeadless) {
     params.overlay = ui.end_frame();
     ASSERT_TRUE(renderer.draw(target, params, frame == 3 ? &image : nullptr));
   }
-  auto brightness = [&](uint32_t x, uint32_t y) { return int(image.at(x, y)[0]) + image.at(x, y)[1] + image.at(x, y)[2]; };
+  auto brightness = [&](uint32_t x, uint32_t y) {
+    return int(image.at(x, y)[0]) + image.at(x, y)[1] + image.at(x, y)[2];
+  };
   // Outside the panel: the black background, untouched.
   EXPECT_EQ(brightness(5, 5), 0);
   EXPECT_EQ(brightness(150, 100), 0);

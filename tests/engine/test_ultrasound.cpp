@@ -61,7 +61,8 @@ TEST_F(UltrasoundTest, TheGpuScanLinesAreTheReferencesInTheLayeredBlock) {
   expect_lines_match(view, block_probe(), &in_plane);
   expect_lines_match(view, block_probe(), &out_of_plane);
   // Every line crosses gel→skin→fat→muscle→bone; the needle in plane meets a run of lines.
-  const std::vector<engine::ScanLine> lines = engine::trace_scan_lines(view.scene(), block_probe(), &in_plane, view.settings());
+  const std::vector<engine::ScanLine> lines =
+      engine::trace_scan_lines(view.scene(), block_probe(), &in_plane, view.settings());
   ASSERT_EQ(lines[128].interfaces.size(), 4u);
   EXPECT_NEAR(lines[128].interfaces[0].depth_m, 0.0, 1e-9);
   EXPECT_NEAR(lines[128].interfaces[1].depth_m, 0.002, 1e-9);
@@ -83,7 +84,8 @@ TEST_F(UltrasoundTest, TheGpuScanLinesAreTheReferencesInTheLayeredBlock) {
 TEST_F(UltrasoundTest, TheNeedlesLineIsStraightWhereItCrossesTheImagePlane) {
   engine::UltrasoundView view(device(), block_scene());
   const engine::UltrasoundProbe probe = block_probe();
-  const engine::NeedleLoad needle = needle_along({0.305, -0.0004, 0.07}, {std::cos(0.5236), 0.02, -std::sin(0.5236)}, 0.04);
+  const engine::NeedleLoad needle =
+      needle_along({0.305, -0.0004, 0.07}, {std::cos(0.5236), 0.02, -std::sin(0.5236)}, 0.04);
   view.render(probe, &needle);
   const std::vector<engine::ScanLine> gpu = view.scan_lines();
   const std::vector<engine::ScanLine> cpu = engine::trace_scan_lines(view.scene(), probe, &needle, view.settings());
@@ -311,11 +313,13 @@ TEST_F(UltrasoundTest, ASweepMakesTheImageASliceOfLinesAFrame) {
   const engine::RgbaImage new_image = whole.image();
 
   // Whether columns [from, to) of `image` are those of `reference`.
-  const auto columns_match = [](const engine::RgbaImage& image, const engine::RgbaImage& reference, uint32_t from, uint32_t to) {
+  const auto columns_match = [](const engine::RgbaImage& image, const engine::RgbaImage& reference, uint32_t from,
+                                uint32_t to) {
     for (uint32_t y = 0; y < image.height; ++y)
       for (uint32_t x = from; x < to; ++x)
         for (int c = 0; c < 4; ++c)
-          if (image.pixels[(size_t(y) * image.width + x) * 4 + c] != reference.pixels[(size_t(y) * image.width + x) * 4 + c])
+          if (image.pixels[(size_t(y) * image.width + x) * 4 + c] !=
+              reference.pixels[(size_t(y) * image.width + x) * 4 + c])
             return false;
     return true;
   };

@@ -11,7 +11,8 @@
 namespace needle::test {
 
 // A box as the tissue model has it: the intersection of six half-spaces.
-inline engine::EchoLayer echo_box(const char* name, glm::dvec3 lo, glm::dvec3 hi, const engine::EchoMaterial& material) {
+inline engine::EchoLayer echo_box(const char* name, glm::dvec3 lo, glm::dvec3 hi,
+                                  const engine::EchoMaterial& material) {
   engine::EchoLayer layer{name, {}, true, material};
   for (int k = 0; k < 3; ++k) {
     glm::dvec3 e(0.0);
@@ -23,8 +24,8 @@ inline engine::EchoLayer echo_box(const char* name, glm::dvec3 lo, glm::dvec3 hi
 }
 
 // The materials of assets/tissues/{skin,subcutaneous_fat,muscle,bone}.json's ultrasound blocks.
-inline const engine::EchoMaterial kSkin{1.99, 0.35, 0.8, 1.0}, kFat{1.39, 0.63, 0.25, 0.5}, kMuscle{1.68, 0.96, 0.45, 1.0},
-    kBone{6.50, 15.0, 0.9, 1.0};
+inline const engine::EchoMaterial kSkin{1.99, 0.35, 0.8, 1.0}, kFat{1.39, 0.63, 0.25, 0.5},
+    kMuscle{1.68, 0.96, 0.45, 1.0}, kBone{6.50, 15.0, 0.9, 1.0};
 
 // The block, world frame: 0.1 m square, skin from z = 0.07 down 2 mm, fat 10 mm, muscle 28 mm,
 // bone 10 mm, centred on (0.33, 0).

@@ -11,7 +11,9 @@ namespace needle::test {
 
 class VulkanTest : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() { device_ = std::make_unique<engine::GpuDevice>(engine::DeviceOptions{.validation = true, .announce_device = false}); }
+  static void SetUpTestSuite() {
+    device_ = std::make_unique<engine::GpuDevice>(engine::DeviceOptions{.validation = true, .announce_device = false});
+  }
   static void TearDownTestSuite() { device_.reset(); }
   void TearDown() override {
     auto messages = device_->validation_messages();

@@ -36,7 +36,10 @@ inline const std::filesystem::path& workdir() {
         fs::create_symlink(entry.path(), d / name);
       }
     }
-    std::atexit([] { std::error_code ignored; fs::remove_all(workdir(), ignored); });
+    std::atexit([] {
+      std::error_code ignored;
+      fs::remove_all(workdir(), ignored);
+    });
     return d;
   }();
   return dir;

@@ -2,8 +2,8 @@
 // told): any input is a session or a haptics::RecordingError, nothing else, and nothing is
 // allocated that the header has not been checked for.
 #include "fuzz_input.hpp"
-#include "structure.hpp"
 #include "haptics/recording/session_format.hpp"
+#include "structure.hpp"
 
 NEEDLE_FUZZ_MUTATIONS(needle::fuzz::extreme_record_value)
 

@@ -1,9 +1,9 @@
 // Scenario files (haptics::load_scenario, which loads the robots' URDF and the tissue parameter
 // sets they name): any input is a scenario or one of the readers' errors, nothing else.
 #include "fuzz_input.hpp"
-#include "structure.hpp"
 #include "haptics/model/urdf_loader.hpp"
 #include "haptics/sim/scenario.hpp"
+#include "structure.hpp"
 
 NEEDLE_FUZZ_MUTATIONS(needle::fuzz::extreme_number, needle::fuzz::deep_json)
 

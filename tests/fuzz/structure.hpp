@@ -32,14 +32,16 @@ namespace needle::fuzz {
 
 // Numbers that have broken readers: past every physical range, below every tolerance, overflowing
 // a double (1e999 parses to infinity), a float (1e39), a 32-bit count (4294967296), or zero.
-inline constexpr std::array<const char*, 11> kExtremeNumbers = {"1e300", "-1e300", "1e-300", "1e999", "1e308", "1e39",
-                                                                "4294967296", "-1", "0", "1e6", "5e-324"};
+inline constexpr std::array<const char*, 11> kExtremeNumbers = {
+    "1e300", "-1e300", "1e-300", "1e999", "1e308", "1e39", "4294967296", "-1", "0", "1e6", "5e-324"};
 
 // Where the numbers of a text are: [begin, end) of each run of characters a number is written in.
 inline std::vector<std::pair<size_t, size_t>> number_spans(const std::string& text) {
   std::vector<std::pair<size_t, size_t>> spans;
   auto starts = [](char c) { return (c >= '0' && c <= '9') || c == '-'; };
-  auto continues = [](char c) { return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E'; };
+  auto continues = [](char c) {
+    return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E';
+  };
   for (size_t i = 0; i < text.size();) {
     if (!starts(text[i]) || (i > 0 && (std::isalnum(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '_'))) {
       ++i;
@@ -54,7 +56,8 @@ inline std::vector<std::pair<size_t, size_t>> number_spans(const std::string& te
 }
 
 // Replaces [begin, end) of the input by `text`; 0 when it would not fit in max_size.
-inline size_t replace_span(uint8_t* data, size_t size, size_t max_size, size_t begin, size_t end, const std::string& text) {
+inline size_t replace_span(uint8_t* data, size_t size, size_t max_size, size_t begin, size_t end,
+                           const std::string& text) {
   const size_t new_size = size - (end - begin) + text.size();
   if (new_size > max_size) return 0;
   std::memmove(data + begin + text.size(), data + end, size - end);
@@ -62,7 +65,9 @@ inline size_t replace_span(uint8_t* data, size_t size, size_t max_size, size_t b
   return new_size;
 }
 
-inline std::string as_text(const uint8_t* data, size_t size) { return std::string(reinterpret_cast<const char*>(data), size); }
+inline std::string as_text(const uint8_t* data, size_t size) {
+  return std::string(reinterpret_cast<const char*>(data), size);
+}
 
 // A number of a JSON or XML text (a key's value, an attribute's) replaced by one of kExtremeNumbers.
 inline size_t extreme_number(uint8_t* data, size_t size, size_t max_size, std::mt19937& random) {
@@ -133,7 +138,8 @@ inline size_t extreme_record_value(uint8_t* data, size_t size, size_t, std::mt19
     const uint32_t count_value = 1u << 31;
     std::memcpy(records + at, &count_value, 4);
   } else if (at + 8 <= size_t(count) * record_bytes) {
-    const double values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(), 1e300, -1e300};
+    const double values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(), 1e300,
+                             -1e300};
     std::memcpy(records + at, &values[random() % std::size(values)], 8);
   }
   const uint32_t records_crc = haptics::crc32(records, size_t(count) * record_bytes);
@@ -154,7 +160,8 @@ using Mutation = size_t (*)(uint8_t* data, size_t size, size_t max_size, std::mt
 
 // A target's custom mutation: one of its structured `mutations` half the time, libFuzzer's own
 // the other half, or when the one chosen does not apply.
-inline size_t mutate(uint8_t* data, size_t size, size_t max_size, unsigned seed, std::initializer_list<Mutation> mutations) {
+inline size_t mutate(uint8_t* data, size_t size, size_t max_size, unsigned seed,
+                     std::initializer_list<Mutation> mutations) {
   std::mt19937 random(seed);
   if (random() % 2 == 0)
     if (const size_t n = (*(mutations.begin() + random() % mutations.size()))(data, size, max_size, random)) return n;
@@ -166,7 +173,7 @@ inline size_t mutate(uint8_t* data, size_t size, size_t max_size, unsigned seed,
 // Defines the target's LLVMFuzzerCustomMutator with these mutations.
 #define NEEDLE_FUZZ_MUTATIONS(...)                                                                        \
   extern "C" size_t LLVMFuzzerCustomMutator(uint8_t* data, size_t size, size_t max_size, unsigned seed) { \
-    return needle::fuzz::mutate(data, size, max_size, seed, {__VA_ARGS__});                                 \
+    return needle::fuzz::mutate(data, size, max_size, seed, {__VA_ARGS__});                               \
   }
 #else
 // Without libFuzzer (replay_main.cpp runs each input once) there is nothing to mutate.

@@ -14,14 +14,17 @@ TEST(BenchStability, PrintedVirtualLawEndsInANamedFaultInClosedLoop) {
   ASSERT_EQ(r.summary.faults.size(), 1u);
   EXPECT_LT(r.simulated_s, 2.0);  // caught at once, not after a long silent drift
   const std::string& f = r.summary.faults.front();
-  EXPECT_TRUE(f.rfind("non_finite_state", 0) == 0 || f.rfind("energy_bound_exceeded", 0) == 0 || f.rfind("tracking_diverged", 0) == 0) << f;
+  EXPECT_TRUE(f.rfind("non_finite_state", 0) == 0 || f.rfind("energy_bound_exceeded", 0) == 0 ||
+              f.rfind("tracking_diverged", 0) == 0)
+      << f;
 }
 
 TEST(BenchStability, PushAtTwiceTheForceLimitStaysBoundedAndSaturates) {
   const Scenario& h = test::scenario("holonomic_sphere");
   const Scenario s = pressing(h, 2 * h.device.force_limit_N, 10.0);
   double deepest = 0;
-  const SimResult r = run_closed_loop(s, false, [&](const TickRecord& t) { deepest = std::max(deepest, -t.lambda_v[0]); });
+  const SimResult r =
+      run_closed_loop(s, false, [&](const TickRecord& t) { deepest = std::max(deepest, -t.lambda_v[0]); });
   EXPECT_TRUE(r.summary.faults.empty());
   // The device cannot resist more than its limit, so the hand pushes the tool harder than that.
   EXPECT_GT(deepest, h.device.force_limit_N);
@@ -78,7 +81,8 @@ TEST(BenchStability, LayeredCasesCoverTheIssueSweeps) {
     EXPECT_DOUBLE_EQ(m.puncture_force_N, m0.puncture_force_N);
   }
   // The liver has no bone: no push row.
-  for (const StressCase& c : layered_stress_cases(test::scenario("liver_biopsy"))) EXPECT_NE(c.name.rfind("push onto bone", 0), 0u);
+  for (const StressCase& c : layered_stress_cases(test::scenario("liver_biopsy")))
+    EXPECT_NE(c.name.rfind("push onto bone", 0), 0u);
 }
 
 // The push onto the block's bone plate at twice the device's limit: the needle stops on the bone,
@@ -87,10 +91,13 @@ TEST(BenchStability, PushOntoBoneAtTwiceTheLimitEndsBoundedOrNamed) {
   const Scenario& block = test::scenario("tissue_block_layers");
   const Scenario s = pushing_onto_bone(block, 2 * block.device.force_limit_N);
   double deepest_z = 1.0;
-  const SimResult r = run_closed_loop(s, false, [&](const TickRecord& t) { deepest_z = std::min(deepest_z, t.x_v.z()); });
+  const SimResult r =
+      run_closed_loop(s, false, [&](const TickRecord& t) { deepest_z = std::min(deepest_z, t.x_v.z()); });
   if (!r.summary.faults.empty()) {
     const std::string& f = r.summary.faults.front();
-    EXPECT_TRUE(f.rfind("non_finite_state", 0) == 0 || f.rfind("energy_bound_exceeded", 0) == 0 || f.rfind("tracking_diverged", 0) == 0) << f;
+    EXPECT_TRUE(f.rfind("non_finite_state", 0) == 0 || f.rfind("energy_bound_exceeded", 0) == 0 ||
+                f.rfind("tracking_diverged", 0) == 0)
+        << f;
   } else {
     EXPECT_DOUBLE_EQ(r.simulated_s, s.duration_s);
   }

@@ -6,9 +6,9 @@
 #include <functional>
 #include <vector>
 
-#include "tests/support/allocation_counter.hpp"
 #include "haptics/sim/tick_workload.hpp"
 #include "sim_fixtures.hpp"
+#include "tests/support/allocation_counter.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -52,7 +52,8 @@ long allocations_in_tissue(const char* name, double settle_s, int substeps) {
 
 // The ticks `needle-sim bench tick` times, in each of its rows (1, 2 and 4 virtual sub-steps).
 TEST(BenchTickAllocations, NonholonomicContactTickAllocatesNothing) {
-  for (int substeps : {1, 2, 4}) EXPECT_EQ(allocations_in_tissue("nonholonomic_needle", 8.0, substeps), 0) << substeps << " sub-steps";
+  for (int substeps : {1, 2, 4})
+    EXPECT_EQ(allocations_in_tissue("nonholonomic_needle", 8.0, substeps), 0) << substeps << " sub-steps";
 }
 
 TEST(BenchTickAllocations, LayeredTissueTickAllocatesNothing) {

@@ -72,7 +72,8 @@ TEST_F(NeedleConstraint, MultiplierEnforcesTheStabilizedResidualDynamics) {
   const VecK psi_dot = A * ddq + A_dot * dq;
   const NonholonomicGains g;
   EXPECT_LT((psi_dot + 2 * g.alpha * psi + g.beta * mult.psi_integral()).norm(), 1e-9 * (1.0 + psi.norm()));
-  const VecN residual = data.H * ddq + data.C * dq + model.damping().cwiseProduct(dq) + data.g - tau - A.transpose() * lambda;
+  const VecN residual =
+      data.H * ddq + data.C * dq + model.damping().cwiseProduct(dq) + data.g - tau - A.transpose() * lambda;
   EXPECT_LT(residual.norm(), 1e-10);
 }
 
@@ -126,7 +127,8 @@ TEST(Involutivity, GradientOfAFunctionIsInvolutive) {
   // A holonomic constraint's Pfaffian A = ∂φ/∂q is integrable: the check must report ~0.
   auto A = [](const Eigen::VectorXd& q) {
     Eigen::MatrixXd a(1, 4);
-    a << 2 * q[0] + q[1], q[0] + std::cos(q[1]), 3 * q[2] * q[2], std::exp(q[3]);  // ∇(q₀² + q₀q₁ + sin q₁ + q₂³ + e^{q₃})
+    a << 2 * q[0] + q[1], q[0] + std::cos(q[1]), 3 * q[2] * q[2],
+        std::exp(q[3]);  // ∇(q₀² + q₀q₁ + sin q₁ + q₂³ + e^{q₃})
     return a;
   };
   EXPECT_LT(involutivity_defect(A, Eigen::Vector4d(0.3, -0.2, 0.8, 0.1)), 1e-6);

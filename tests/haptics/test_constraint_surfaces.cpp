@@ -29,7 +29,8 @@ TEST(ConstraintSurfaces, ThesisSphereHasSignedDistanceAndUnitGradient) {
   EXPECT_NEAR(sphere.evaluate({0.25, 0, 0}).phi, 0.05, 1e-15);
   EXPECT_NEAR(sphere.evaluate({0.4, 0.08, 0}).phi, -0.02, 1e-15);
   EXPECT_TRUE(sphere.evaluate({0.25, 0, 0}).gradient.isApprox(Vector3d(-1, 0, 0)));
-  for (const Vector3d& x : {Vector3d(0.3, 0.05, -0.02), Vector3d(0.45, -0.1, 0.2)}) expect_consistent_derivatives(sphere, x);
+  for (const Vector3d& x : {Vector3d(0.3, 0.05, -0.02), Vector3d(0.45, -0.1, 0.2)})
+    expect_consistent_derivatives(sphere, x);
 }
 
 TEST(ConstraintSurfaces, PlaneAndCapsuleDerivativesMatchFiniteDifferences) {
@@ -126,14 +127,16 @@ TEST_F(PenaltyOnRobot, SolvedMultiplierSatisfiesTheGpmEquationWithItsOwnAccelera
     ASSERT_TRUE(r.active);
     // The dynamics with the contact torque −J_φᵀλ hold.
     const Eigen::Matrix<double, 1, 5> j_phi = s.gradient.transpose() * data.J.topRows<3>();
-    const VecN residual = data.H * ddq + data.C * dq + model.damping().cwiseProduct(dq) + data.g - tau + j_phi.transpose() * r.lambda;
+    const VecN residual =
+        data.H * ddq + data.C * dq + model.damping().cwiseProduct(dq) + data.g - tau + j_phi.transpose() * r.lambda;
     EXPECT_LT(residual.norm(), 1e-10);
     // And λ is (3.15) evaluated with φ̈ from that acceleration (implicit-Euler variant for step > 0).
     const Vector3d acc = data.J.topRows<3>() * ddq + data.Jdot.topRows<3>() * dq;
     const SurfaceMotion m = surface_motion(s, data.tip_twist.head<3>(), acc);
     const GpmParams p;
     const double c = p.damping() / p.alpha, k = p.omega * p.omega, h = step;
-    const double expected = p.alpha * (m.phi_ddot + c * (m.phi_dot + h * m.phi_ddot) + k * (m.phi + h * m.phi_dot + h * h * m.phi_ddot));
+    const double expected =
+        p.alpha * (m.phi_ddot + c * (m.phi_dot + h * m.phi_ddot) + k * (m.phi + h * m.phi_dot + h * h * m.phi_ddot));
     EXPECT_NEAR(r.lambda, expected, 1e-9 * std::abs(expected));
   }
 }

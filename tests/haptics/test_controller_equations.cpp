@@ -39,7 +39,7 @@ TEST(ControllerEquations, ContactBlendRampsInAtEachNewContactAndOutAfterIt) {
   advance_contact_blend(true, false, false, rate, b, e);  // new rigid contact: its integrals restart
   EXPECT_EQ(b.rigid, 0.25);
   EXPECT_EQ(e.momentum_h.norm() + e.momentum_v.norm(), 0.0);
-  EXPECT_EQ(e.lambda[0], 1.0);  // the tissue's are not touched
+  EXPECT_EQ(e.lambda[0], 1.0);                     // the tissue's are not touched
   for (double expected : {0.5, 0.75, 1.0, 1.0}) {  // clamped at 1
     dirty();
     advance_contact_blend(true, false, false, rate, b, e);
@@ -343,8 +343,8 @@ TEST(ControllerEquations, AxialSpringTorquesAreTheGradientsOfItsEnergyAlongTheNe
   update_kinematics(model, master, q_m, VecN::Zero(2));
   update_kinematics(model, virt, q_v, VecN::Zero(2));
   VecN tau_m = vec({0, 0}), tau_v = vec({0, 0});
-  const double force = axial_spring_torques(axis, master.tip.translation(), virt.tip.translation(), virt.J, master.J, K, s,
-                                            w, tau_v, tau_m);
+  const double force = axial_spring_torques(axis, master.tip.translation(), virt.tip.translation(), virt.J, master.J, K,
+                                            s, w, tau_v, tau_m);
   EXPECT_NEAR(force, w * K * axis.dot(master.tip.translation() - virt.tip.translation()), 1e-12);
   EXPECT_GT(std::abs(force), 1.0);  // the configuration stretches the spring
   const double h = 1e-6;
@@ -361,8 +361,8 @@ TEST(ControllerEquations, AxialSpringTorquesAreTheGradientsOfItsEnergyAlongTheNe
   // Across the needle it is slack: tips apart only across x₅ pull nothing.
   VecN none_m = vec({0, 0}), none_v = vec({0, 0});
   const Eigen::Vector3d across(0.8, -0.6, 0.0);
-  EXPECT_NEAR(axial_spring_torques(axis, virt.tip.translation() + 0.02 * across, virt.tip.translation(), virt.J, master.J, K,
-                                   s, w, none_v, none_m),
+  EXPECT_NEAR(axial_spring_torques(axis, virt.tip.translation() + 0.02 * across, virt.tip.translation(), virt.J,
+                                   master.J, K, s, w, none_v, none_m),
               0.0, 1e-12);
 }
 
@@ -379,10 +379,13 @@ TEST(ControllerEquations, AxialSpringStiffnessIsHeldUnderTheTicksLimit) {
   AxialSpringScratch scratch;
   // Along x the tip's mass is (0.2 + 0.001 * 0.4) / 2² = 0.0501 kg.
   const double m = (0.2 + h * 0.4) / 4.0;
-  EXPECT_NEAR(axial_spring_stiffness(1e6, H, B, h, J, Eigen::Vector3d::UnitX(), 0.016, scratch), 2.0 * m / (0.016 * 0.016), 1e-9);
-  EXPECT_EQ(axial_spring_stiffness(3000.0, H, B, h, J, Eigen::Vector3d::UnitX(), 0.002, scratch), 3000.0);  // limit 25050
+  EXPECT_NEAR(axial_spring_stiffness(1e6, H, B, h, J, Eigen::Vector3d::UnitX(), 0.016, scratch),
+              2.0 * m / (0.016 * 0.016), 1e-9);
+  EXPECT_EQ(axial_spring_stiffness(3000.0, H, B, h, J, Eigen::Vector3d::UnitX(), 0.002, scratch),
+            3000.0);  // limit 25050
   // Along y: 0.5 kg; along (x + y)/√2 the inverse masses add: (1/m_x + 1/m_y) / 2.
-  EXPECT_NEAR(axial_spring_stiffness(1e6, H, B, h, J, Eigen::Vector3d::UnitY(), 0.016, scratch), 2.0 * 0.5 / (0.016 * 0.016), 1e-9);
+  EXPECT_NEAR(axial_spring_stiffness(1e6, H, B, h, J, Eigen::Vector3d::UnitY(), 0.016, scratch),
+              2.0 * 0.5 / (0.016 * 0.016), 1e-9);
   const double inverse_mass = (1.0 / m + 1.0 / 0.5) / 2.0;
   EXPECT_NEAR(axial_spring_stiffness(1e6, H, B, h, J, Eigen::Vector3d(1, 1, 0).normalized(), 0.016, scratch),
               2.0 / (0.016 * 0.016 * inverse_mass), 1e-6);

@@ -27,7 +27,8 @@ class ControllerLoop : public ::testing::Test {
     const TickInput in{home, VecN::Zero(5), Wrench::Zero()};
     for (int k = 0; k < static_cast<int>(seconds / 0.002); ++k) {
       tele.step(in);
-      if (!tele.world().q().allFinite() || !tele.world().dq().allFinite()) return std::numeric_limits<double>::infinity();
+      if (!tele.world().q().allFinite() || !tele.world().dq().allFinite())
+        return std::numeric_limits<double>::infinity();
     }
     return (tele.world().q() - home).norm();
   }
@@ -49,7 +50,8 @@ TEST_F(ControllerLoop, BlendingRemovesTheTorqueJumpAtContact) {
     RobotData d(master);
     update_kinematics(master, d, home, VecN::Zero(5));
     Scene scene;
-    scene.rigid = ImplicitSurface{SurfacePrimitive::plane(d.tip.translation() - Eigen::Vector3d(0, 0, 0.002), {0, 0, 1})};
+    scene.rigid =
+        ImplicitSurface{SurfacePrimitive::plane(d.tip.translation() - Eigen::Vector3d(0, 0, 0.002), {0, 0, 1})};
     TeleoperationGains gains = thesis_holonomic_gains(5);
     gains.switch_time_s = switch_time;
     Teleoperation tele(master, virt, scene, gains, 0.002, 4);

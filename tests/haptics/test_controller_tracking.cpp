@@ -7,8 +7,8 @@ namespace needle::haptics {
 namespace {
 
 TEST(ControllerTracking, SlidingVariablesAndSigmaFollowTheCorrectedEquations) {
-  RobotGains g{VecN::Constant(2, 0.1), VecN::Constant(2, 0.2), VecN::Constant(2, 2.0), VecN::Constant(2, 0.5),
-               VecN::Constant(2, 3.0), 0.0};
+  RobotGains g{VecN::Constant(2, 0.1), VecN::Constant(2, 0.2), VecN::Constant(2, 2.0),
+               VecN::Constant(2, 0.5), VecN::Constant(2, 3.0), 0.0};
   TrackingState state;
   state.reset(2);
   VecN qi(2), dqi(2), qj(2), dqj(2);

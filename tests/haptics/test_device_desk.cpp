@@ -67,11 +67,12 @@ TEST(DeviceDesk, AnInputThatIsGoneReadsAsDisconnected) {
 
 TEST(DeviceDesk, OnlyADeskSpecMakesADeskDevice) {
   EXPECT_EQ(DeskDevice(DeviceSpec::parse("gamepad:3")).spec(), (DeviceSpec{DeviceSpec::Kind::kGamepad, 3}));
-  for (const char* spec : {"sim", "falcon", "replay:a.nrec"}) EXPECT_THROW(DeskDevice{DeviceSpec::parse(spec)}, DeviceError) << spec;
+  for (const char* spec : {"sim", "falcon", "replay:a.nrec"})
+    EXPECT_THROW(DeskDevice{DeviceSpec::parse(spec)}, DeviceError) << spec;
 }
 
 TEST(DeviceDeskMouse, CursorAndWheelMapOntoTheWorkspaceAlikeAcrossAndUp) {
-  MouseMapping mouse;  // 0.1 m for half the window's height, either way; 2 mm a notch
+  MouseMapping mouse;               // 0.1 m for half the window's height, either way; 2 mm a notch
   mouse.pointer(1.5, -1.0, false);  // at the right edge of a 3:2 window, at its bottom
   mouse.scroll(3);
   EXPECT_NEAR(mouse.pose().position_m[0], 0.15, 1e-15);
@@ -158,7 +159,8 @@ TEST(DeviceDeskKeyboard, EachPressIsOneStepAndShiftAFifth) {
   EXPECT_NEAR(keys.pose().position_m[2], 0.101, 1e-15);
   EXPECT_NEAR(keys.pose().wrist_rad[0], 1.0 * kDeg, 1e-15);
   EXPECT_NEAR(keys.pose().wrist_rad[1], -0.2 * kDeg, 1e-15);
-  for (DeskKey key : {DeskKey::kLeft, DeskKey::kLeft, DeskKey::kDown, DeskKey::kOut, DeskKey::kSwingLeft, DeskKey::kTiltAway})
+  for (DeskKey key :
+       {DeskKey::kLeft, DeskKey::kLeft, DeskKey::kDown, DeskKey::kOut, DeskKey::kSwingLeft, DeskKey::kTiltAway})
     keys.press(key, false);
   EXPECT_NEAR(keys.pose().position_m[0], 0.0, 1e-15);
   EXPECT_NEAR(keys.pose().wrist_rad[1], 0.8 * kDeg, 1e-15);
@@ -203,8 +205,8 @@ TEST(DeviceDeskGamepad, DeadZonesAreCutAndTheRestRescaled) {
 TEST(DeviceDeskGamepad, DeflectionIsARate) {
   GamepadMapping pad;
   GamepadState s;
-  s.axes[GamepadState::kLeftX] = 1.0f;      // full right
-  s.axes[GamepadState::kLeftY] = -1.0f;     // full up (y points down)
+  s.axes[GamepadState::kLeftX] = 1.0f;         // full right
+  s.axes[GamepadState::kLeftY] = -1.0f;        // full up (y points down)
   s.axes[GamepadState::kRightTrigger] = 1.0f;  // pushing in
   s.axes[GamepadState::kRightX] = 1.0f;
   for (int frame = 0; frame < 50; ++frame) pad.update(s, 0.02);  // one second

@@ -24,7 +24,8 @@ TEST(DeviceFalcon, MissingFirmwareFileIsNamed) {
 TEST(DeviceFalcon, AFirmwarePathThatIsNotARegularFileIsRefusedBeforeItIsOpened) {
   const std::string fifo = ::testing::TempDir() + "/falcon_fifo_" + std::to_string(::getpid()) + ".bin";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  for (const std::string& path : {fifo, std::string("/dev/zero")}) {  // a pipe nobody writes would block; zeros never end
+  for (const std::string& path :
+       {fifo, std::string("/dev/zero")}) {  // a pipe nobody writes would block; zeros never end
     FalconOptions options;
     options.firmware_path = path;
     FalconDevice falcon(options);
@@ -32,7 +33,8 @@ TEST(DeviceFalcon, AFirmwarePathThatIsNotARegularFileIsRefusedBeforeItIsOpened) 
       falcon.open();
       ADD_FAILURE() << path;
     } catch (const DeviceError& e) {
-      EXPECT_EQ(std::string(e.what()), "falcon: firmware file " + path + ": not a regular file (a device, a pipe or a folder)");
+      EXPECT_EQ(std::string(e.what()),
+                "falcon: firmware file " + path + ": not a regular file (a device, a pipe or a folder)");
     }
   }
   ::unlink(fifo.c_str());

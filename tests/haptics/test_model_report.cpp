@@ -35,8 +35,8 @@ TEST(ModelReport, HasTheIssueKeysAndConsistentValues) {
   EXPECT_EQ(r["J"][0].size(), 5u);
   EXPECT_EQ(vector(r["gravity"]), Eigen::Vector3d(0, 0, -9.81));
   // tau_id (Newton-Euler) equals H q̈ + C q̇ + D q̇ + g assembled from the printed parts.
-  const Eigen::VectorXd expected =
-      matrix(r["H"]) * Eigen::VectorXd(ddq) + vector(r["Cdq"]) + Eigen::VectorXd(model.damping().cwiseProduct(dq)) + vector(r["g"]);
+  const Eigen::VectorXd expected = matrix(r["H"]) * Eigen::VectorXd(ddq) + vector(r["Cdq"]) +
+                                   Eigen::VectorXd(model.damping().cwiseProduct(dq)) + vector(r["g"]);
   EXPECT_LT((vector(r["tau_id"]) - expected).norm(), 1e-12);
   EXPECT_NEAR(matrix(r["pose"]["R"]).determinant(), 1.0, 1e-12);
   EXPECT_THROW(model_report(model, VecN::Zero(4), dq, ddq), std::invalid_argument);

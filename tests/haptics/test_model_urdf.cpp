@@ -10,9 +10,11 @@ namespace {
 
 std::string one_joint(const std::string& joint_type, const std::string& inertial, const std::string& extra = "") {
   return R"(<?xml version="1.0"?><robot name="r"><link name="base"/>
-    <joint name="j1" type=")" + joint_type + R"("><parent link="base"/><child link="arm"/><axis xyz="0 0 1"/>
+    <joint name="j1" type=")" +
+         joint_type + R"("><parent link="base"/><child link="arm"/><axis xyz="0 0 1"/>
     <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
-    <link name="arm">)" + inertial + "</link>" + extra + "</robot>";
+    <link name="arm">)" +
+         inertial + "</link>" + extra + "</robot>";
 }
 
 std::string inertial(const std::string& mass, const std::string& ixx, const std::string& iyy, const std::string& izz) {
@@ -38,10 +40,13 @@ TEST(ModelUrdf, AcceptsAWellFormedRevoluteJoint) {
   EXPECT_EQ(m.tip_link, "arm");
 }
 
-TEST(ModelUrdf, RejectsNegativeMass) { expect_error(one_joint("revolute", inertial("-1", "1", "1", "1")), "link 'arm' <inertial>: mass must be positive"); }
+TEST(ModelUrdf, RejectsNegativeMass) {
+  expect_error(one_joint("revolute", inertial("-1", "1", "1", "1")), "link 'arm' <inertial>: mass must be positive");
+}
 
 TEST(ModelUrdf, RejectsInertiaNotPositiveDefinite) {
-  expect_error(one_joint("revolute", inertial("1", "1", "-1", "1")), "link 'arm' <inertial>: inertia tensor must be positive definite");
+  expect_error(one_joint("revolute", inertial("1", "1", "-1", "1")),
+               "link 'arm' <inertial>: inertia tensor must be positive definite");
 }
 
 TEST(ModelUrdf, RejectsInertiaViolatingTriangleInequality) {
@@ -52,12 +57,15 @@ TEST(ModelUrdf, RejectsUnsupportedJointType) {
   expect_error(one_joint("prismatic", inertial("1", "1", "1", "1")), "joint 'j1': unsupported type");
 }
 
-TEST(ModelUrdf, RejectsWrongDofCount) { expect_error(one_joint("revolute", inertial("1", "1", "1", "1")), "1 movable joints, expected 5", 5); }
+TEST(ModelUrdf, RejectsWrongDofCount) {
+  expect_error(one_joint("revolute", inertial("1", "1", "1", "1")), "1 movable joints, expected 5", 5);
+}
 
 TEST(ModelUrdf, RejectsMasslessMovingBody) { expect_error(one_joint("revolute", ""), "joint 'j1' moves no mass"); }
 
 TEST(ModelUrdf, RejectsBranchingTree) {
-  const std::string branch = R"(<joint name="j2" type="fixed"><parent link="base"/><child link="other"/></joint><link name="other"/>)";
+  const std::string branch =
+      R"(<joint name="j2" type="fixed"><parent link="base"/><child link="other"/></joint><link name="other"/>)";
   expect_error(one_joint("revolute", inertial("1", "1", "1", "1"), branch), "link 'base' has 2 child joints");
 }
 
@@ -91,7 +99,8 @@ TEST(ModelUrdf, RejectsNumbersThatAreNotFinite) {
 TEST(ModelUrdf, RefusesTextThatIsNotUtf8) {
   std::string xml = one_joint("revolute", inertial("1", "1", "1", "1"));
   const size_t at = xml.find("<robot");
-  expect_error(std::string(xml).insert(at, "<!-- \xe6? -->"), "not a valid URDF document: byte " + std::to_string(at + 5) + " is not UTF-8");
+  expect_error(std::string(xml).insert(at, "<!-- \xe6? -->"),
+               "not a valid URDF document: byte " + std::to_string(at + 5) + " is not UTF-8");
   expect_error(xml + "\xc3", "not a valid URDF document: byte " + std::to_string(xml.size()) + " is not UTF-8");
   EXPECT_NO_THROW(parse_robot_urdf(std::string(xml).insert(at, "<!-- \u00e9\u2014 -->"), "robot.urdf"));
 }
@@ -120,7 +129,10 @@ TEST(ModelUrdf, ADocumentNestedPastSixtyFourLevelsIsRefusedBeforeTheXmlParserRec
   expect_error(nested(64), "elements nested deeper than 64 levels");
   // Comments, CDATA and a '>' inside quotes nest nothing.
   const std::string quiet = "<!-- <a><b><c> -->" + std::string("<![CDATA[<d><e>]]>");
-  EXPECT_EQ(parse_robot_urdf(one_joint("revolute", inertial("1", "1", "1", "1") + quiet, "<!-- <x> -->"), "robot.urdf", 1).dof(), 1);
+  EXPECT_EQ(
+      parse_robot_urdf(one_joint("revolute", inertial("1", "1", "1", "1") + quiet, "<!-- <x> -->"), "robot.urdf", 1)
+          .dof(),
+      1);
 }
 
 TEST(ModelUrdf, WhatIsNotARegularFileIsRefusedBeforeItIsOpened) {

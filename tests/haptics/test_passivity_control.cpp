@@ -177,7 +177,8 @@ TEST(PassivityControl, TheVirtualRobotsDamperAddsToItsImplicitDampingWhileTheWor
 std::pair<double, double> dissipated_with_and_without(const Scenario& row) {
   Scenario off = row;
   off.gains.passivity.max_damping_per_tick = 0.0;
-  return {run_closed_loop(row, false).summary.world_dissipated_min_J, run_closed_loop(off, false).summary.world_dissipated_min_J};
+  return {run_closed_loop(row, false).summary.world_dissipated_min_J,
+          run_closed_loop(off, false).summary.world_dissipated_min_J};
 }
 
 const StressCase& row(const std::vector<StressCase>& cases, const std::string& name, const std::string& value) {
@@ -249,22 +250,24 @@ TEST(PassivityClosedLoop, TheWorstStressRowsDissipateWithTheControllerAndNotWith
   const auto thesis = stress_cases(test::scenario("holonomic_sphere"), test::scenario("nonholonomic_needle"), 10.0);
   const auto block = layered_stress_cases(test::scenario("tissue_block_layers"));
   const auto lumbar = layered_stress_cases(test::scenario("lumbar_epidural"));
-  for (const StressCase* c : {&row(thesis, "period x (nonholonomic_needle)", "8"),
-                              &row(block, "puncture force x (tissue_block_layers)", "10"),
-                              &row(lumbar, "period x (lumbar_epidural)", "8")}) {
+  for (const StressCase* c :
+       {&row(thesis, "period x (nonholonomic_needle)", "8"),
+        &row(block, "puncture force x (tissue_block_layers)", "10"), &row(lumbar, "period x (lumbar_epidural)", "8")}) {
     const auto [with, without] = dissipated_with_and_without(c->scenario);
     EXPECT_LT(without, -1e-3) << c->name << " " << c->value << ": the row should be one the controller is needed for";
     EXPECT_GE(with, -1e-3) << c->name << " " << c->value;
   }
-  for (const StressCase* c : {&row(thesis, "period x (holonomic_sphere)", "8"), &row(thesis, "gains x (holonomic_sphere)", "0.3"),
-                              &row(thesis, "gains x (holonomic_sphere)", "0.1")})
+  for (const StressCase* c :
+       {&row(thesis, "period x (holonomic_sphere)", "8"), &row(thesis, "gains x (holonomic_sphere)", "0.3"),
+        &row(thesis, "gains x (holonomic_sphere)", "0.1")})
     EXPECT_GE(run_closed_loop(c->scenario, false).summary.world_dissipated_min_J, -1e-3) << c->name << " " << c->value;
 }
 
 // A scripted session is passive by design: the controller never acts, not even on the first tick,
 // where the held weight compensation meets a device at rest and leaves a remainder of 10⁻¹³ J.
 TEST(PassivityClosedLoop, TheScriptedScenariosNeverSwitchTheControllerOn) {
-  for (const char* name : {"holonomic_sphere", "nonholonomic_needle", "tissue_block_layers", "lumbar_epidural", "liver_biopsy"}) {
+  for (const char* name :
+       {"holonomic_sphere", "nonholonomic_needle", "tissue_block_layers", "lumbar_epidural", "liver_biopsy"}) {
     const SimSummary& s = test::scenario_run(name, ControlLaw::Tool).summary;
     EXPECT_EQ(s.passivity_damped_s, 0.0) << name;
     EXPECT_GE(s.world_dissipated_min_J, 0.0) << name;

@@ -21,14 +21,17 @@ namespace {
 using Eigen::Vector3d;
 constexpr int kL3L4 = 2;
 
-PatientParams shipped(const std::string& name) { return load_patient(test::asset("assets/patients/" + name + ".json")); }
+PatientParams shipped(const std::string& name) {
+  return load_patient(test::asset("assets/patients/" + name + ".json"));
+}
 
 // Where a line from `start` along `dir` enters each layer (the geometry alone), with its name.
 struct Crossing {
   std::string layer;
   double depth_m;
 };
-std::vector<Crossing> crossings(const Patient& p, const TissueModel& m, const Vector3d& start, const Vector3d& dir, double length) {
+std::vector<Crossing> crossings(const Patient& p, const TissueModel& m, const Vector3d& start, const Vector3d& dir,
+                                double length) {
   std::vector<Crossing> out;
   for (const LayerBoundary& b : layer_boundaries(m, start, dir, length))
     out.push_back({b.layer >= 0 ? p.layers[size_t(b.layer)].name : "", b.depth_m});
@@ -65,7 +68,8 @@ TEST(PatientAnatomy, DimensionsAreTheSourcesClosedForms) {
     const double inches = p.height_m / 0.0254, pounds = p.weight_kg / 0.45359237;
     EXPECT_NEAR(d.skin_to_epidural_l3_l4_m, (6.63 - 0.07 * inches + 0.02 * pounds) / 100.0, 1e-12);
     for (int level = 0; level < kLumbarLevels; ++level)
-      EXPECT_EQ(d.vertebrae[size_t(level)].spinous_process_length_m, vertebra_closed_form(p, level).spinous_process_length_m);
+      EXPECT_EQ(d.vertebrae[size_t(level)].spinous_process_length_m,
+                vertebra_closed_form(p, level).spinous_process_length_m);
   }
 }
 
@@ -151,7 +155,8 @@ TEST(PatientGeneration, TheSameParametersGiveTheSameFieldsAndSeedsVary) {
   const PatientParams p = shipped("bmi30");
   const Patient a = generate_patient(p), b = generate_patient(p);
   ASSERT_EQ(a.layers.size(), b.layers.size());
-  for (size_t i = 0; i < a.layers.size(); ++i) EXPECT_EQ(a.layers[i].shape.grid()->values(), b.layers[i].shape.grid()->values());
+  for (size_t i = 0; i < a.layers.size(); ++i)
+    EXPECT_EQ(a.layers[i].shape.grid()->values(), b.layers[i].shape.grid()->values());
   PatientParams other = p;
   other.seed = 17;
   const PatientDimensions d0 = patient_dimensions(p), d17 = patient_dimensions(other);
@@ -188,12 +193,14 @@ TEST(PatientAnatomy, BadPatientFilesAreOneLineErrorsNamingTheKeyAndTheRange) {
   };
   EXPECT_EQ(with("height_m", 3.0), "/height_m: must be in [1.45, 2.05] m, got 3");
   EXPECT_EQ(with("weight_kg", 1e300), "/weight_kg: must be in [40, 200] kg, got 1e+300");
-  EXPECT_EQ(with("weight_kg", 190.0), "/weight_kg: gives a BMI of 69.7888 with height_m 1.65: the BMI must be in [16, 60] kg/m^2");
+  EXPECT_EQ(with("weight_kg", 190.0),
+            "/weight_kg: gives a BMI of 69.7888 with height_m 1.65: the BMI must be in [16, 60] kg/m^2");
   EXPECT_EQ(with("sex", "other"), "/sex: expected \"female\" or \"male\", got \"other\"");
   EXPECT_EQ(with("posture", "prone"), "/posture: expected \"sitting_flexed\" or \"lateral\", got \"prone\"");
   EXPECT_EQ(with("age_years", 5), "/age_years: must be in [18, 90] years, got 5");
   EXPECT_EQ(with("seed", -1), "/seed: expected a whole number from 0 to 4294967295");
-  EXPECT_EQ(with("colour", 1), "/colour: unknown key (allowed: name, description, height_m, weight_kg, sex, age_years, posture, seed)");
+  EXPECT_EQ(with("colour", 1),
+            "/colour: unknown key (allowed: name, description, height_m, weight_kg, sex, age_years, posture, seed)");
   nlohmann::json missing = good;
   missing.erase("sex");
   EXPECT_EQ(patient_error(missing), "/sex: missing");
@@ -221,11 +228,15 @@ TEST(PatientAnatomy, AScenariosPatientIsReadStrictly) {
   const std::string tissues = test::asset("assets/tissues");
   EXPECT_EQ(error({{"patient", inline_patient}, {"entry", {0.33, 0, 0.07}}, {"tissues", tissues}}),
             "/tissue/patient/height_m: must be in [1.45, 2.05] m, got 3");
-  EXPECT_EQ(error({{"patient", "nowhere.json"}, {"entry", {0.33, 0, 0.07}}, {"tissues", tissues}}).rfind("/tissue/patient: file not found", 0), 0u);
-  EXPECT_EQ(error({{"patient", inline_patient}, {"tissues", tissues}}), "/tissue/patient/height_m: must be in [1.45, 2.05] m, got 3");
+  EXPECT_EQ(error({{"patient", "nowhere.json"}, {"entry", {0.33, 0, 0.07}}, {"tissues", tissues}})
+                .rfind("/tissue/patient: file not found", 0),
+            0u);
+  EXPECT_EQ(error({{"patient", inline_patient}, {"tissues", tissues}}),
+            "/tissue/patient/height_m: must be in [1.45, 2.05] m, got 3");
   inline_patient["height_m"] = 1.65;
   EXPECT_EQ(error({{"patient", inline_patient}, {"tissues", tissues}}), "/tissue/entry: missing");
-  EXPECT_EQ(error({{"patient", inline_patient}, {"entry", {0.33, 0, 1e9}}, {"tissues", tissues}}), "/tissue/entry/2: must be in [-10, 10] m, got 1e+09");
+  EXPECT_EQ(error({{"patient", inline_patient}, {"entry", {0.33, 0, 1e9}}, {"tissues", tissues}}),
+            "/tissue/entry/2: must be in [-10, 10] m, got 1e+09");
   EXPECT_EQ(error({{"patient", inline_patient}, {"entry", {0.33, 0, 0.07}}, {"tissues", "/nonexistent"}}),
             "/tissue/tissues: folder not found: /nonexistent");
   EXPECT_EQ(error({{"patient", inline_patient}, {"entry", {0.33, 0, 0.07}}, {"organs", 1}}),

@@ -3,8 +3,8 @@
 #include <atomic>
 #include <thread>
 
-#include "haptics/sync/seqlock.hpp"
 #include "haptics/realtime/tool_snapshot.hpp"
+#include "haptics/sync/seqlock.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -24,10 +24,14 @@ ToolSnapshot stamped(uint64_t k) {
 
 bool consistent(const ToolSnapshot& s) {
   const double v = static_cast<double>(s.tick);
-  for (double x : s.needle_tip_m) if (x != v) return false;
-  for (double x : s.virtual_q) if (x != v) return false;
-  for (double x : s.multipliers) if (x != v) return false;
-  for (double x : s.device_force_n) if (x != v) return false;
+  for (double x : s.needle_tip_m)
+    if (x != v) return false;
+  for (double x : s.virtual_q)
+    if (x != v) return false;
+  for (double x : s.multipliers)
+    if (x != v) return false;
+  for (double x : s.device_force_n)
+    if (x != v) return false;
   return true;
 }
 

@@ -61,7 +61,9 @@ struct Coupled {
     const ToolSnapshot& s = rig.tick.last_sample().state;
     return {s.needle_tip_m[0], s.needle_tip_m[1], s.needle_tip_m[2]};
   }
-  Eigen::Vector3d device_force() const { return {handle.last.force_n[0], handle.last.force_n[1], handle.last.force_n[2]}; }
+  Eigen::Vector3d device_force() const {
+    return {handle.last.force_n[0], handle.last.force_n[1], handle.last.force_n[2]};
+  }
 
   static constexpr double kDt = 0.001;
   Scenario scenario;
@@ -142,10 +144,12 @@ TEST(RealtimeTaskSpace, AWristSwingsTheDirectionClockwiseAsSeenAndTiltsItTowards
   EXPECT_LT((wrist_direction(side_view(), down_right, M_PI / 4, 0.0) - Eigen::Vector3d(0, 0, -1)).norm(), 1e-12);
   EXPECT_LT((wrist_direction(side_view(), down_right, -M_PI / 4, 0.0) - Eigen::Vector3d(1, 0, 0)).norm(), 1e-12);
   const Eigen::Vector3d down(0, 0, -1);
-  EXPECT_LT((wrist_direction(side_view(), down, 0.0, M_PI / 6) - Eigen::Vector3d(0, -0.5, -std::sqrt(0.75))).norm(), 1e-12)
+  EXPECT_LT((wrist_direction(side_view(), down, 0.0, M_PI / 6) - Eigen::Vector3d(0, -0.5, -std::sqrt(0.75))).norm(),
+            1e-12)
       << "a positive tilt brings the tip towards the viewer (-y)";
   // Along the view there is no plane to tilt in: it tilts about the view's right axis.
-  EXPECT_LT((wrist_direction(side_view(), Eigen::Vector3d::UnitY(), 0.0, M_PI / 2) - Eigen::Vector3d::UnitZ()).norm(), 1e-12);
+  EXPECT_LT((wrist_direction(side_view(), Eigen::Vector3d::UnitY(), 0.0, M_PI / 2) - Eigen::Vector3d::UnitZ()).norm(),
+            1e-12);
 }
 
 // A handle with a virtual wrist (as a desk device has) put where the test wants.

@@ -55,7 +55,8 @@ TEST(RecordingContext, AnOlderContextGetsWhatItsMissingKeysMeantThen) {
   EXPECT_EQ(gains["force_scale"], 1.0) << "the rest untouched";
   EXPECT_EQ(read["coupling"]["wrist"], false);
   old.erase("practice");
-  EXPECT_EQ(read_recording_context("r.nrec", header_with(old.dump()))["practice"], false) << "recorded before practice runs";
+  EXPECT_EQ(read_recording_context("r.nrec", header_with(old.dump()))["practice"], false)
+      << "recorded before practice runs";
 
   old.erase("coupling");  // joint to joint, as the first recordings of sim sessions
   EXPECT_TRUE(read_recording_context("r.nrec", header_with(old.dump()))["coupling"].is_null());

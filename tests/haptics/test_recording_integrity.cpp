@@ -2,9 +2,8 @@
 // naming the file and the byte offset, never other data; a cut file reads up to its last whole
 // block and says where; what is not a recording is refused before anything is read; older
 // versions still read and say what they lack. Offsets are computed from the format's own layout.
-#include <gtest/gtest.h>
-
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -37,7 +36,8 @@ std::vector<uint8_t> file_bytes(const std::string& path) {
 }
 
 void write_bytes(const std::string& path, const std::vector<uint8_t>& bytes) {
-  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
 }
 
 const SessionHeader kHeader{kSessionFormatVersion, 1000.0, 1700000000, "sim", R"({"task": "t.json"})"};
@@ -109,7 +109,8 @@ TEST(RecordingIntegrity, DamageToABlockIsAnErrorNamingTheFileAndTheByteOffset) {
   const std::vector<uint8_t> good = recorded(path, 1000);
   const uint64_t block = block_offset(1);
   const uint64_t record_300 = block + kBlockHeaderBytes + 44 * session_record_bytes();  // tick 300 is block 1's 45th
-  const std::string expected = path + ": block at byte " + std::to_string(block) + ": records checksum mismatch (damaged)";
+  const std::string expected =
+      path + ": block at byte " + std::to_string(block) + ": records checksum mismatch (damaged)";
 
   std::vector<uint8_t> bad = good;  // a run of 0xFF bytes over the block's records
   std::fill(bad.begin() + long(record_300), bad.begin() + long(record_300 + 4096), 0xFF);
@@ -127,8 +128,10 @@ TEST(RecordingIntegrity, DamageToABlockIsAnErrorNamingTheFileAndTheByteOffset) {
   TickSample s = sample(300);
   std::vector<uint8_t> one;
   encode_record(s, one);
-  const uint64_t position_at = std::search(one.begin(), one.end(), reinterpret_cast<const uint8_t*>(&s.reading.position_m[0]),
-                                           reinterpret_cast<const uint8_t*>(&s.reading.position_m[0]) + 8) - one.begin();
+  const uint64_t position_at =
+      std::search(one.begin(), one.end(), reinterpret_cast<const uint8_t*>(&s.reading.position_m[0]),
+                  reinterpret_cast<const uint8_t*>(&s.reading.position_m[0]) + 8) -
+      one.begin();
   ASSERT_LT(position_at, one.size());
   std::memcpy(&bad[record_300 + position_at], &nan, 8);
   write_bytes(path, bad);
@@ -147,7 +150,8 @@ TEST(RecordingIntegrity, DamageToABlockIsAnErrorNamingTheFileAndTheByteOffset) {
   bad = good;  // the end mark's count
   bad[bad.size() - kEndBytes + 4] ^= 1;
   write_bytes(path, bad);
-  EXPECT_EQ(error_of(path), path + ": end at byte " + std::to_string(good.size() - kEndBytes) + ": checksum mismatch (damaged)");
+  EXPECT_EQ(error_of(path),
+            path + ": end at byte " + std::to_string(good.size() - kEndBytes) + ": checksum mismatch (damaged)");
 
   // The replay device refuses it before its first tick.
   bad = good;
@@ -172,7 +176,8 @@ TEST(RecordingIntegrity, ABlockMissingOrRepeatedIsAnError) {
   EXPECT_EQ(error_of(path), path + ": block at byte " + std::to_string(block_offset(1)) +
                                 ": starts at tick 512, expected 256 (a block is missing or repeated)");
   bad = good;
-  bad.insert(bad.begin() + long(block_offset(2)), good.begin() + long(block_offset(1)), good.begin() + long(block_offset(2)));
+  bad.insert(bad.begin() + long(block_offset(2)), good.begin() + long(block_offset(1)),
+             good.begin() + long(block_offset(2)));
   write_bytes(path, bad);
   EXPECT_EQ(error_of(path), path + ": block at byte " + std::to_string(block_offset(2)) +
                                 ": starts at tick 256, expected 512 (a block is missing or repeated)");
@@ -206,7 +211,8 @@ TEST(RecordingIntegrity, ACutFileReadsUpToItsLastWholeBlockAndSaysWhere) {
   EXPECT_EQ(s.end.whole_bytes, block_offset(2));
   EXPECT_EQ(s.end.trailing_bytes, kBlockHeaderBytes + 100);
   EXPECT_EQ(recording_notes(path, s.end, s.records.size()),
-            std::vector<std::string>{path + ": cut at byte " + std::to_string(block_offset(2)) + " after 512 ticks (its run " +
+            std::vector<std::string>{path + ": cut at byte " + std::to_string(block_offset(2)) +
+                                     " after 512 ticks (its run " +
                                      "stopped without closing it, 124 bytes of a last block lost): read up to there"});
 
   for (uint64_t cut : {uint64_t(good.size() - kEndBytes), uint64_t(good.size() - 5), block_offset(1) + 2}) {
@@ -315,8 +321,9 @@ TEST(RecordingIntegrity, OlderVersionsStillReadAndSayTheyHaveNoChecksums) {
   ASSERT_EQ(s.records.size(), 1u);
   EXPECT_EQ(s.records[0].tick, 9u);
   EXPECT_FALSE(s.end.checksummed);
-  EXPECT_EQ(recording_notes(path, s.end, 1),
-            std::vector<std::string>{path + ": an older format without checksums: damage to its records cannot be detected"});
+  EXPECT_EQ(
+      recording_notes(path, s.end, 1),
+      std::vector<std::string>{path + ": an older format without checksums: damage to its records cannot be detected"});
 
   const std::string context = R"({"task": "t.json", "bytes": "\u00e9\n"})";
   std::vector<uint8_t> v2 = old_header(2, "sim", &context);
@@ -453,7 +460,8 @@ TEST(RecordingIntegrity, TheSyringeIsRecordedBitForBit) {
   ASSERT_EQ(s.records.size(), 300u);
   for (uint64_t k = 0; k < 300; ++k) {
     const TickSample expected = syringe_sample(k);
-    EXPECT_EQ(std::memcmp(&s.records[k].state.syringe, &expected.state.syringe, sizeof(SyringeSnapshot)), 0) << "tick " << k;
+    EXPECT_EQ(std::memcmp(&s.records[k].state.syringe, &expected.state.syringe, sizeof(SyringeSnapshot)), 0)
+        << "tick " << k;
     EXPECT_EQ(s.records[k].reading.plunger_input, expected.reading.plunger_input);
     EXPECT_EQ(s.records[k].reading.plunger_force_n, expected.reading.plunger_force_n);
     EXPECT_EQ(s.records[k].reading.plunger_position_m, expected.reading.plunger_position_m);
@@ -551,7 +559,8 @@ constexpr uint64_t kReadingJoints = kReadingPosition + 3 * 8;
 TEST(RecordingIntegrity, ReadingsNoRunRecordsAreDamageNamingTheTickAndTheByteThoughTheChecksumsHold) {
   const std::string path = temp_path("content.nrec");
   const std::vector<uint8_t> good = recorded(path, 1000);
-  const uint64_t record_300 = block_offset(1) + kBlockHeaderBytes + 44 * session_record_bytes();  // tick 300 is block 1's 45th
+  const uint64_t record_300 =
+      block_offset(1) + kBlockHeaderBytes + 44 * session_record_bytes();  // tick 300 is block 1's 45th
   const std::string where = path + ": tick 300 at byte " + std::to_string(record_300) + ": ";
   const std::string damaged = ": not what a run records (damaged)";
   struct Case {
@@ -598,8 +607,9 @@ TEST(RecordingIntegrity, AStateThatIsNotFiniteIsRecordedOnlyWithTheFaultTheLoopL
   record_with(1);  // the loop latched kNonFinite: the record holds what it met
   EXPECT_TRUE(std::isnan(read_session(path).records[0].state.virtual_q[1]));
   record_with(0);  // no fault: no run records it
-  EXPECT_EQ(error_of(path), path + ": tick 0 at byte " + std::to_string(block_offset(0) + kBlockHeaderBytes) +
-                                ": reading joint_rad[0] = inf, outside [-1e+06, 1e+06]: not what a run records (damaged)");
+  EXPECT_EQ(error_of(path),
+            path + ": tick 0 at byte " + std::to_string(block_offset(0) + kBlockHeaderBytes) +
+                ": reading joint_rad[0] = inf, outside [-1e+06, 1e+06]: not what a run records (damaged)");
   fs::remove(path);
 }
 

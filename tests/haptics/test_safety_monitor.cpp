@@ -217,7 +217,10 @@ TEST(SafetyFault, PassiveSpringOnlyShowsTheZeroOrderHoldLeak) {
   double x_first = 0.0, x_prev = 0.0, sum_dx2 = 0.0;
   for (int i = 0; i < 10250; ++i) {
     const double x = amplitude * std::sin(2.0 * M_PI * i / 1000.0 + 0.3);
-    if (i == 0) x_first = x; else sum_dx2 += (x - x_prev) * (x - x_prev);
+    if (i == 0)
+      x_first = x;
+    else
+      sum_dx2 += (x - x_prev) * (x - x_prev);
     x_prev = x;
     h.reading.position_m[0] = x;
     h.command.force_n[0] = -k * x;

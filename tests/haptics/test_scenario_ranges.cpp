@@ -23,11 +23,13 @@ namespace fs = std::filesystem;
 // A shipped scenario with its files' paths made absolute, so that a copy loads from anywhere.
 json shipped(const std::string& name) {
   json s = test::read_json(test::asset("assets/scenarios/" + name + ".json"));
-  for (const char* key : {"master_urdf", "virtual_urdf"}) s[key] = test::asset("assets/robots/" + fs::path(s[key].get<std::string>()).filename().string());
+  for (const char* key : {"master_urdf", "virtual_urdf"})
+    s[key] = test::asset("assets/robots/" + fs::path(s[key].get<std::string>()).filename().string());
   if (s.contains("tissue") && s["tissue"].contains("layers"))
     for (json& layer : s["tissue"]["layers"])
       if (layer.contains("parameters"))
-        layer["parameters"] = test::asset("assets/tissues/" + fs::path(layer["parameters"].get<std::string>()).filename().string());
+        layer["parameters"] =
+            test::asset("assets/tissues/" + fs::path(layer["parameters"].get<std::string>()).filename().string());
   return s;
 }
 
@@ -111,7 +113,8 @@ TEST(ScenarioRanges, SubstepsThatWouldHangTheRunAreRefused) {
 }
 
 TEST(ScenarioRanges, TheShippedScenariosAreInsideEveryRange) {
-  for (const char* name : {"holonomic_sphere", "nonholonomic_needle", "tissue_block_layers", "liver_biopsy", "lumbar_epidural", "epidural"}) {
+  for (const char* name : {"holonomic_sphere", "nonholonomic_needle", "tissue_block_layers", "liver_biopsy",
+                           "lumbar_epidural", "epidural"}) {
     EXPECT_EQ(error_of(shipped(name)), "no error") << name;
   }
 }
@@ -128,25 +131,28 @@ TEST(ScenarioRanges, ALayersMechanicsPastTheirRangeNameTheParameterSetOrTheScena
   EXPECT_EQ(error_of(s), set_file + ": /stiffness_N_per_m/value: must be in [0, 10000] N/m, got 1e+300");
 
   // Inline, each key: the scenario and the layer's pointer.
-  const std::pair<const char*, const char*> keys[] = {{"stiffness_N_per_m", "[0, 10000] N/m"},
-                                                       {"stiffness2_N_per_m2", "[0, 1.2e+07] N/m^2"},
-                                                       {"puncture_force_N", "[0, 100] N"},
-                                                       {"cutting_force_N", "[0, 30] N"},
-                                                       {"friction_N_per_m", "[0, 5000] N/m"},
-                                                       {"static_friction_N_per_m", "[0, 5000] N/m"},
-                                                       {"damping_Ns_per_m", "[0, 1000] N*s/m"}};
+  const std::pair<const char*, const char*> keys[] = {
+      {"stiffness_N_per_m", "[0, 10000] N/m"}, {"stiffness2_N_per_m2", "[0, 1.2e+07] N/m^2"},
+      {"puncture_force_N", "[0, 100] N"},      {"cutting_force_N", "[0, 30] N"},
+      {"friction_N_per_m", "[0, 5000] N/m"},   {"static_friction_N_per_m", "[0, 5000] N/m"},
+      {"damping_Ns_per_m", "[0, 1000] N*s/m"}};
   for (const auto& [key, range] : keys) {
     json inline_layer = shipped("epidural");
     json& layer = inline_layer["tissue"]["layers"][0];
     layer.erase("parameters");
     layer[key] = 1e300;
-    EXPECT_EQ(error_of(inline_layer), file + ": /tissue/layers/0/" + key + ": must be in " + range + ", got 1e+300") << key;
+    EXPECT_EQ(error_of(inline_layer), file + ": /tissue/layers/0/" + key + ": must be in " + range + ", got 1e+300")
+        << key;
   }
   json acoustic = shipped("epidural");
   json& layer = acoustic["tissue"]["layers"][0];
   layer.erase("parameters");
-  layer["ultrasound"] = {{"impedance_MRayl", 1e300}, {"attenuation_dB_per_cm_MHz", 1.0}, {"echogenicity", 0.5}, {"scatterer_density", 0.5}};
-  EXPECT_EQ(error_of(acoustic), file + ": /tissue/layers/0/ultrasound/impedance_MRayl: must be in [0, 100] MRayl, got 1e+300");
+  layer["ultrasound"] = {{"impedance_MRayl", 1e300},
+                         {"attenuation_dB_per_cm_MHz", 1.0},
+                         {"echogenicity", 0.5},
+                         {"scatterer_density", 0.5}};
+  EXPECT_EQ(error_of(acoustic),
+            file + ": /tissue/layers/0/ultrasound/impedance_MRayl: must be in [0, 100] MRayl, got 1e+300");
 }
 
 TEST(ScenarioRanges, NotANumberIsNotJson) {

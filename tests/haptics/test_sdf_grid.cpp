@@ -9,12 +9,11 @@
 #include <random>
 
 #include "haptics/anatomy/sdf_file.hpp"
-#include "scenario_files.hpp"
-
 #include "haptics/tissue/kinematic_insertion.hpp"
 #include "haptics/tissue/layer_shape.hpp"
 #include "haptics/tissue/sdf_grid.hpp"
 #include "haptics/tissue/tissue_model.hpp"
+#include "scenario_files.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -62,7 +61,8 @@ SamplingError sampling_error(const SdfGrid& grid, Phi phi, bool smooth) {
 // A sphere of radius 20 mm on a 1 mm grid: the trilinear interpolant's error is h²/8 times the sum
 // of φ's second derivatives along the axes (2/r across a sphere): 0.0125 h, plus half a quantum.
 TEST(SdfGrid, ASphereAsAGridIsWithinTwoHundredthsOfTheSpacing) {
-  const SdfGrid grid = SdfGrid::sample(sphere_phi, Vector3d::Constant(-0.03), Vector3d::Constant(0.03), kSpacing, kQuantum);
+  const SdfGrid grid =
+      SdfGrid::sample(sphere_phi, Vector3d::Constant(-0.03), Vector3d::Constant(0.03), kSpacing, kQuantum);
   const SamplingError e = sampling_error(grid, sphere_phi, true);
   EXPECT_LT(e.max_m, 0.02 * kSpacing);
   EXPECT_GT(e.max_m, 0.001 * kSpacing);  // the bound is not vacuous: the grid does differ
@@ -73,14 +73,16 @@ TEST(SdfGrid, ASphereAsAGridIsWithinTwoHundredthsOfTheSpacing) {
 // the quantum); it has kinks at the edges (outside) and on the diagonal planes (inside) that a cell
 // cannot follow: there the error is a large fraction of the spacing, under 0.4 of it.
 TEST(SdfGrid, ABoxAsAGridIsExactOnItsFacesAndWithinFourTenthsOfTheSpacingAtItsEdges) {
-  const SdfGrid grid = SdfGrid::sample(box_phi, Vector3d::Constant(-0.03), Vector3d::Constant(0.03), kSpacing, kQuantum);
+  const SdfGrid grid =
+      SdfGrid::sample(box_phi, Vector3d::Constant(-0.03), Vector3d::Constant(0.03), kSpacing, kQuantum);
   const SamplingError e = sampling_error(grid, box_phi, false);
   EXPECT_LT(e.max_m, 0.4 * kSpacing);
   EXPECT_GT(e.max_m, 0.1 * kSpacing);
   double face = 0.0;  // within 1 mm of the top face, 3 mm from its edges
   for (double x = -0.012; x <= 0.012; x += 0.00037)
     for (double y = -0.007; y <= 0.007; y += 0.00041)
-      for (double z = 0.0072; z <= 0.0088; z += 0.00013) face = std::max(face, std::abs(grid.phi(Vector3d(x, y, z)) - box_phi(Vector3d(x, y, z))));
+      for (double z = 0.0072; z <= 0.0088; z += 0.00013)
+        face = std::max(face, std::abs(grid.phi(Vector3d(x, y, z)) - box_phi(Vector3d(x, y, z))));
   EXPECT_LE(face, 0.5 * kQuantum + 1e-12);
   // On a face's middle the normal is the face's.
   EXPECT_NEAR(grid.evaluate(Vector3d(0.0153, 0.0004, -0.0002)).gradient.x(), 1.0, 1e-9);
@@ -88,7 +90,8 @@ TEST(SdfGrid, ABoxAsAGridIsExactOnItsFacesAndWithinFourTenthsOfTheSpacingAtItsEd
 }
 
 TEST(SdfGrid, OutsideItsBoxPhiGrowsWithTheDistanceToTheBox) {
-  const SdfGrid grid = SdfGrid::sample(sphere_phi, Vector3d::Constant(-0.03), Vector3d::Constant(0.03), kSpacing, kQuantum);
+  const SdfGrid grid =
+      SdfGrid::sample(sphere_phi, Vector3d::Constant(-0.03), Vector3d::Constant(0.03), kSpacing, kQuantum);
   const Vector3d far(0.05, 0.0, 0.0);  // 20 mm beyond the box, 30 mm from the sphere
   EXPECT_NEAR(grid.phi(far), 0.03, 2e-6);
   EXPECT_NEAR(grid.evaluate(far).gradient.x(), 1.0, 1e-12);
@@ -100,7 +103,8 @@ TEST(SdfGrid, OutsideItsBoxPhiGrowsWithTheDistanceToTheBox) {
 }
 
 TEST(SdfGrid, AnOffsetMovesTheSurfaceInwards) {
-  const SdfGrid grid = SdfGrid::sample(sphere_phi, Vector3d::Constant(-0.03), Vector3d::Constant(0.03), kSpacing, kQuantum);
+  const SdfGrid grid =
+      SdfGrid::sample(sphere_phi, Vector3d::Constant(-0.03), Vector3d::Constant(0.03), kSpacing, kQuantum);
   const Vector3d x(0.0, 0.0, 0.017);
   EXPECT_NEAR(grid.phi(x, 0.003), 0.0, 0.0002);
   const LayerShape inner = LayerShape::grid(std::make_shared<SdfGrid>(grid), 0.003);
@@ -120,7 +124,8 @@ TEST(SdfGrid, BadDescriptionsAreRefusedNamingWhatIsWrong) {
   };
   EXPECT_EQ(error(Vector3d::Zero(), 1e-3, {2, 2, 2}, 1e-6, 8, 5), "no error");
   EXPECT_EQ(error(Vector3d::Zero(), 0.5, {2, 2, 2}, 1e-6, 8, 5), "spacing: must be in [0.0001, 0.01] m, got 0.5");
-  EXPECT_EQ(error(Vector3d::Zero(), std::nan(""), {2, 2, 2}, 1e-6, 8, 5), "spacing: must be in [0.0001, 0.01] m, got nan");
+  EXPECT_EQ(error(Vector3d::Zero(), std::nan(""), {2, 2, 2}, 1e-6, 8, 5),
+            "spacing: must be in [0.0001, 0.01] m, got nan");
   EXPECT_EQ(error(Vector3d(std::numeric_limits<double>::infinity(), 0, 0), 1e-3, {2, 2, 2}, 1e-6, 8, 5),
             "origin: each coordinate must be finite and within 10 m, got inf");
   EXPECT_EQ(error(Vector3d::Zero(), 1e-3, {2, 2, 2}, 0.0, 8, 5), "quantum: must be in [1e-07, 0.001] m, got 0");
@@ -150,10 +155,12 @@ TEST(SdfGrid, GridLayersFollowTheLayerRules) {
   EXPECT_THROW(TissueModel({{"bone", LayerShape::grid(inner), bone}, {"skin", LayerShape::grid(outer), skin}}),
                TissueLayerError);
   // Straight down from 2 mm above: the skin's surface at 8 mm, the bone's at 4 mm.
-  const std::optional<InsertionStop> stop = first_rigid_surface(model, Vector3d(0.001, 0.0005, 0.010), -Vector3d::UnitZ(), 0.02);
+  const std::optional<InsertionStop> stop =
+      first_rigid_surface(model, Vector3d(0.001, 0.0005, 0.010), -Vector3d::UnitZ(), 0.02);
   ASSERT_TRUE(stop.has_value());
   EXPECT_NEAR(stop->depth_m, 0.006, 0.05 * kSpacing);
-  const std::vector<LayerBoundary> b = layer_boundaries(model, Vector3d(0.001, 0.0005, 0.010), -Vector3d::UnitZ(), 0.02);
+  const std::vector<LayerBoundary> b =
+      layer_boundaries(model, Vector3d(0.001, 0.0005, 0.010), -Vector3d::UnitZ(), 0.02);
   ASSERT_GE(b.size(), 2u);
   EXPECT_NEAR(b[0].depth_m, 0.002, 0.05 * kSpacing);
   EXPECT_EQ(b[0].layer, 0);
@@ -163,7 +170,8 @@ TEST(SdfGrid, GridLayersFollowTheLayerRules) {
 
 // A grid written and read back is the same grid; a damaged file is one line saying what is wrong.
 TEST(SdfFile, AGridRoundTripsAndADamagedFileIsRefused) {
-  const SdfGrid grid = SdfGrid::sample(sphere_phi, Vector3d(-0.03, -0.025, -0.02), Vector3d(0.03, 0.025, 0.02), kSpacing, kQuantum);
+  const SdfGrid grid =
+      SdfGrid::sample(sphere_phi, Vector3d(-0.03, -0.025, -0.02), Vector3d(0.03, 0.025, 0.02), kSpacing, kQuantum);
   const std::string path = test::own_file("sphere.nsdf");
   anatomy::write_sdf_file(path, grid);
   const SdfGrid back = anatomy::read_sdf_file(path);
@@ -184,9 +192,11 @@ TEST(SdfFile, AGridRoundTripsAndADamagedFileIsRefused) {
   };
   EXPECT_EQ(error(bytes), "no error");
   EXPECT_EQ(error("NSDX" + bytes.substr(4)), "not a signed distance grid (no NSDF header)");
-  EXPECT_EQ(error(bytes.substr(0, bytes.size() - 2)),
-            std::to_string(bytes.size() - 2) + " bytes, its node counts need " + std::to_string(bytes.size()) + " (cut short)");
-  EXPECT_EQ(error(bytes + "x"), std::to_string(bytes.size() + 1) + " bytes, its node counts need " + std::to_string(bytes.size()) + " (extra bytes)");
+  EXPECT_EQ(error(bytes.substr(0, bytes.size() - 2)), std::to_string(bytes.size() - 2) +
+                                                          " bytes, its node counts need " +
+                                                          std::to_string(bytes.size()) + " (cut short)");
+  EXPECT_EQ(error(bytes + "x"), std::to_string(bytes.size() + 1) + " bytes, its node counts need " +
+                                    std::to_string(bytes.size()) + " (extra bytes)");
   std::string spacing = bytes;
   const double huge = 0.5;
   std::memcpy(spacing.data() + 4 + 4 + 12 + 24, &huge, 8);

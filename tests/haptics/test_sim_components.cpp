@@ -22,8 +22,8 @@ using Eigen::Vector3d;
 TEST(SimComponents, HandTrajectoryBlendsWithMinimumJerkAndConsistentRates) {
   const HandTrajectory tr({{0.0, Vector3d(0, 0, 0), Vector3d(1, 0, 0)}, {2.0, Vector3d(0.1, 0, 0), Vector3d(0, 1, 0)}});
   EXPECT_TRUE(tr.at(-1.0).position.isZero());
-  EXPECT_TRUE(tr.at(1.0).position.isApprox(Vector3d(0.05, 0, 0)));                 // symmetric profile
-  EXPECT_TRUE(tr.at(1.0).direction.isApprox(Vector3d(1, 1, 0).normalized()));      // halfway on the arc
+  EXPECT_TRUE(tr.at(1.0).position.isApprox(Vector3d(0.05, 0, 0)));             // symmetric profile
+  EXPECT_TRUE(tr.at(1.0).direction.isApprox(Vector3d(1, 1, 0).normalized()));  // halfway on the arc
   EXPECT_TRUE(tr.at(5.0).position.isApprox(Vector3d(0.1, 0, 0)));
   EXPECT_TRUE(tr.at(5.0).velocity.isZero());
   const double t = 0.7, h = 1e-6;
@@ -38,9 +38,11 @@ TEST(SimComponents, HandTrajectoryBlendsWithMinimumJerkAndConsistentRates) {
 // it is their minimum-jerk blend, whichever waypoint the search starts from.
 TEST(SimComponents, HandTrajectoryFindsItsSegmentAmongManyWaypoints) {
   std::vector<HandWaypoint> waypoints;
-  for (int k = 0; k < 1001; ++k) waypoints.push_back({0.01 * k, Vector3d(0.001 * k * k, -0.002 * k, 0.0), Vector3d::UnitX()});
+  for (int k = 0; k < 1001; ++k)
+    waypoints.push_back({0.01 * k, Vector3d(0.001 * k * k, -0.002 * k, 0.0), Vector3d::UnitX()});
   const HandTrajectory tr(waypoints);
-  for (int k : {0, 1, 499, 500, 999, 1000}) EXPECT_TRUE(tr.at(waypoints[size_t(k)].t).position.isApprox(waypoints[size_t(k)].position)) << k;
+  for (int k : {0, 1, 499, 500, 999, 1000})
+    EXPECT_TRUE(tr.at(waypoints[size_t(k)].t).position.isApprox(waypoints[size_t(k)].position)) << k;
   for (int k : {0, 437, 999}) {
     const HandWaypoint &a = waypoints[size_t(k)], &b = waypoints[size_t(k) + 1];
     const double u = 0.5;  // halfway: the minimum-jerk profile's s(1/2) = 1/2
@@ -53,9 +55,10 @@ TEST(SimComponents, HandTrajectoryFindsItsSegmentAmongManyWaypoints) {
 TEST(SimComponents, HandImpedancePullsTowardTheTargetAndTurnsTheStylus) {
   const HandImpedance hand;
   HandTarget target{Vector3d(0.01, 0, 0), Vector3d::Zero(), Vector3d(0, 1, 0), Vector3d::Zero()};
-  const Wrench w = hand_impedance_wrench(hand, target, Eigen::Isometry3d::Identity(), Eigen::Matrix<double, 6, 1>::Zero());
-  EXPECT_TRUE(w.head<3>().isApprox(Vector3d(1.35, 0, 0)));                              // 135 N/m × 1 cm
-  EXPECT_TRUE(w.tail<3>().isApprox(Vector3d(0, 0, hand.rotational_stiffness())));       // x₅ → y about +z
+  const Wrench w =
+      hand_impedance_wrench(hand, target, Eigen::Isometry3d::Identity(), Eigen::Matrix<double, 6, 1>::Zero());
+  EXPECT_TRUE(w.head<3>().isApprox(Vector3d(1.35, 0, 0)));                         // 135 N/m × 1 cm
+  EXPECT_TRUE(w.tail<3>().isApprox(Vector3d(0, 0, hand.rotational_stiffness())));  // x₅ → y about +z
 }
 
 TEST(SimComponents, ForceSensorHasItsBiasNoiseAndBandwidth) {
@@ -104,7 +107,8 @@ TEST(SimComponents, DeviceEnergyBalancesTheWorkDoneOnIt) {
   MasterPlant plant(m, DeviceParams{}, HandImpedance{}, Integrator::Rk4, 8);
   const VecN q0 = (VecN(5) << 0.0, 1.0, -1.6, 0.0, 0.5).finished();
   plant.reset(q0, VecN::Zero(5));
-  const HandTrajectory moving({{0.0, Vector3d(0.2, 0.0, 0.0), Vector3d::UnitX()}, {1.0, Vector3d(0.2, 0.05, 0.0), Vector3d::UnitY()}});
+  const HandTrajectory moving(
+      {{0.0, Vector3d(0.2, 0.0, 0.0), Vector3d::UnitX()}, {1.0, Vector3d(0.2, 0.05, 0.0), Vector3d::UnitY()}});
   const double e0 = plant.energy();
   for (int k = 0; k < 500; ++k) plant.advance(VecN::Constant(5, 0.01), moving, k * 0.002, 0.002);
   EXPECT_GT(std::abs(plant.external_work()), 1e-3);  // the hand did real work

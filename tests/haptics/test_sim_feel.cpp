@@ -3,9 +3,8 @@
 // `needle-sim bench feel`).
 #include <gtest/gtest.h>
 
-#include <cstdio>
-
 #include <cmath>
+#include <cstdio>
 
 #include "haptics/sim/feel_metrics.hpp"
 #include "sim_fixtures.hpp"
@@ -35,9 +34,11 @@ TEST(SimFeel, FeelFiltersPassTheirBandAndRemoveTheRest) {
     for (size_t i = 1000; i < 4000; ++i) s += x[i] * x[i];
     return std::sqrt(s / 3000.0);
   };
-  auto band = [&](const std::vector<double>& x) { return zero_phase_filter(zero_phase_filter(x, fs, 3.0, true), fs, 50.0, false); };
-  EXPECT_NEAR(rms_middle(band(sine(12.0))), a / std::sqrt(2.0), 0.02 * a);   // 12 Hz: in the band
-  EXPECT_LT(rms_middle(band(sine(0.3))), 0.01 * a);                           // 0.3 Hz: below it
+  auto band = [&](const std::vector<double>& x) {
+    return zero_phase_filter(zero_phase_filter(x, fs, 3.0, true), fs, 50.0, false);
+  };
+  EXPECT_NEAR(rms_middle(band(sine(12.0))), a / std::sqrt(2.0), 0.02 * a);         // 12 Hz: in the band
+  EXPECT_LT(rms_middle(band(sine(0.3))), 0.01 * a);                                // 0.3 Hz: below it
   EXPECT_LT(rms_middle(zero_phase_filter(sine(12.0), fs, 50.0, true)), 0.01 * a);  // 12 Hz: not above 50 Hz
   EXPECT_NEAR(rms_middle(zero_phase_filter(sine(200.0), fs, 50.0, true)), a / std::sqrt(2.0), 0.02 * a);
 }
@@ -66,7 +67,8 @@ TEST(SimFeel, AtRestInFreeMotionTheHandCarriesTheToolsWeightOnly) {
 TEST(SimFeel, EntryIntoTissueIsOneEventNotAFlicker) {
   Scenario s = test::scenario("nonholonomic_needle");
   std::vector<HandWaypoint> waypoints;
-  for (double t : {0.0, 3.0, 4.0, 10.0, 30.0, 40.0}) waypoints.push_back({t, s.trajectory.at(t).position, s.trajectory.at(t).direction});
+  for (double t : {0.0, 3.0, 4.0, 10.0, 30.0, 40.0})
+    waypoints.push_back({t, s.trajectory.at(t).position, s.trajectory.at(t).direction});
   waypoints[2].position += Eigen::Vector3d(-0.0014, 0.0, 0.0014);  // the 4 s waypoint as it was: (0.3279, 0, 0.0721) m
   s.trajectory = HandTrajectory(waypoints);
   s.duration_s = 12.0;
@@ -116,7 +118,7 @@ TEST(SimFeel, ScriptedHandFeelsEachPunctureOfTheLayeredBlockAsADrop) {
     for (size_t i = index + 1; i < index + 30; ++i)  // the next 60 ms
       push_after = std::min(push_after, run.ticks[i].force_h.dot(run.ticks[i].needle_v));
     EXPECT_GT(push_before, 0.8 * p.peak_force_N) << p.layer;  // the hand was pushing the surface
-    EXPECT_LT(push_after, push_before - 0.3) << p.layer;     // and feels it give way
+    EXPECT_LT(push_after, push_before - 0.3) << p.layer;      // and feels it give way
   }
   EXPECT_LT(run.summary.position_max_contact_m, 0.04);
   EXPECT_LT(run.summary.position_max_free_m, 0.04);
@@ -127,7 +129,8 @@ TEST(SimFeel, ScriptedHandFeelsEachPunctureOfTheLayeredBlockAsADrop) {
 TEST(SimFeel, LayeredScenariosRunWithoutFaultAndTheTissueIsPassive) {
   for (const char* name : {"lumbar_epidural", "liver_biopsy"}) {
     const SimResult& run = test::scenario_run(name);
-    EXPECT_TRUE(run.summary.faults.empty()) << name << ": " << (run.summary.faults.empty() ? "" : run.summary.faults[0]);
+    EXPECT_TRUE(run.summary.faults.empty())
+        << name << ": " << (run.summary.faults.empty() ? "" : run.summary.faults[0]);
     EXPECT_FALSE(run.summary.punctures.empty()) << name;
     EXPECT_GE(run.summary.tissue_work_J, 0.0) << name;
     EXPECT_LT(run.summary.energy_error_J, 1e-2) << name;

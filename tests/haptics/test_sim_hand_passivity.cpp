@@ -77,8 +77,9 @@ TEST(SimHandPassivity, TheWorldNeverGivesTheHandMoreThanItTookInRandomisedLayere
       const Balance b = run(s);
       EXPECT_TRUE(b.summary.faults.empty()) << c.name << " seed " << seed;
       EXPECT_FALSE(b.summary.punctures.empty()) << c.name << " seed " << seed;
-      std::printf("%s seed %u: least hand work %.4f J, least dissipated %.4f J, energy error %.2e J, tissue work %.4f J\n",
-                  c.name, seed, b.least_hand_work, b.least_dissipated, b.summary.energy_error_J, b.summary.tissue_work_J);
+      std::printf(
+          "%s seed %u: least hand work %.4f J, least dissipated %.4f J, energy error %.2e J, tissue work %.4f J\n",
+          c.name, seed, b.least_hand_work, b.least_dissipated, b.summary.energy_error_J, b.summary.tissue_work_J);
       EXPECT_GE(b.least_dissipated, -b.summary.energy_error_J) << c.name << " seed " << seed;
     }
   }

@@ -16,7 +16,9 @@ const TickRecord& at(double t) {
   return ticks.at(index);
 }
 
-double degrees(const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) * 180 / M_PI; }
+double degrees(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) * 180 / M_PI;
+}
 
 TEST(SimNonholonomic, RunsToTheEndWithoutFault) {
   EXPECT_TRUE(run().summary.faults.empty());

@@ -163,12 +163,23 @@ TissueModel flavum_stack(double shift) {
   const auto slab = [&](double top, double thickness) {
     return LayerShape::slab(Eigen::Vector3d(0, 0, top + shift), Eigen::Vector3d::UnitZ(), thickness);
   };
-  LayerMechanics ligament{.stiffness_N_per_m = 300, .stiffness2_N_per_m2 = 40000, .puncture_force_N = 2.0,
-                          .cutting_force_N = 1.0, .friction_N_per_m = 80, .static_friction_N_per_m = 120};
-  LayerMechanics flavum{.stiffness_N_per_m = 500, .stiffness2_N_per_m2 = 600000, .puncture_force_N = 5.0,
-                        .cutting_force_N = 1.5, .friction_N_per_m = 150, .static_friction_N_per_m = 225};
+  LayerMechanics ligament{.stiffness_N_per_m = 300,
+                          .stiffness2_N_per_m2 = 40000,
+                          .puncture_force_N = 2.0,
+                          .cutting_force_N = 1.0,
+                          .friction_N_per_m = 80,
+                          .static_friction_N_per_m = 120};
+  LayerMechanics flavum{.stiffness_N_per_m = 500,
+                        .stiffness2_N_per_m2 = 600000,
+                        .puncture_force_N = 5.0,
+                        .cutting_force_N = 1.5,
+                        .friction_N_per_m = 150,
+                        .static_friction_N_per_m = 225};
   LayerMechanics space{.cutting_force_N = 0.05, .friction_N_per_m = 10, .static_friction_N_per_m = 15};
-  LayerMechanics dura{.stiffness_N_per_m = 250, .puncture_force_N = 1.0, .cutting_force_N = 0.2, .friction_N_per_m = 50,
+  LayerMechanics dura{.stiffness_N_per_m = 250,
+                      .puncture_force_N = 1.0,
+                      .cutting_force_N = 0.2,
+                      .friction_N_per_m = 50,
                       .static_friction_N_per_m = 75};
   return TissueModel({{"ligament", slab(0.0, 0.010), ligament, std::nullopt, kLigament},
                       {"flavum", slab(-0.010, 0.005), flavum, std::nullopt, kLigament},
@@ -193,7 +204,8 @@ TEST(SyringeLossOfResistance, IsFoundWithinOneTickOfTheFlavumsFarFace) {
       EXPECT_GE(loss.depth_m, face - 1e-12) << syringe_fluid_name(fluid) << " shift " << shift;
       EXPECT_LE(loss.depth_m, face + tick + 1e-12) << syringe_fluid_name(fluid) << " shift " << shift;
       // Before it the thumb held the plunger in the ligaments at F/A.
-      EXPECT_NEAR(loss.pressure_before_Pa, 11.0 / SyringeParams{}.plunger_area_m2, 1e-6 * 11.0 / SyringeParams{}.plunger_area_m2);
+      EXPECT_NEAR(loss.pressure_before_Pa, 11.0 / SyringeParams{}.plunger_area_m2,
+                  1e-6 * 11.0 / SyringeParams{}.plunger_area_m2);
       EXPECT_LT(loss.pressure_after_Pa, loss.pressure_before_Pa);
     }
   }

@@ -62,7 +62,10 @@ TEST(PlungerMapping, WithASyringeTheGamepadsRightTriggerDrawsBackWhileTheLeftBum
 // where the test puts it, its last command kept.
 class SimulatedPositionDevice : public HapticDevice {
  public:
-  explicit SimulatedPositionDevice(double max_force_n) { caps_.name = "simulated"; caps_.max_force_n = max_force_n; }
+  explicit SimulatedPositionDevice(double max_force_n) {
+    caps_.name = "simulated";
+    caps_.max_force_n = max_force_n;
+  }
   void open() override { opened = true; }
   void close() noexcept override { opened = false; }
   void home() override {}
@@ -139,7 +142,9 @@ TEST(SyringeHand, ASecondDevicesHandlePushedAwayPressesThePlungerThroughTheSprin
 // The needle's step as a stub: it puts the needle's opening in `layer`.
 class StubNeedleStep : public ServoStep {
  public:
-  void step(const DeviceReading&, double, DeviceCommand&, ToolSnapshot& state) noexcept override { state.syringe.layer = layer; }
+  void step(const DeviceReading&, double, DeviceCommand&, ToolSnapshot& state) noexcept override {
+    state.syringe.layer = layer;
+  }
   int layer = -1;
 };
 

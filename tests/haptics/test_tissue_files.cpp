@@ -99,7 +99,8 @@ TEST(TissueFiles, EveryParameterSetLoadsAndEveryNumberCarriesItsSource) {
     const json tissue = {
         {"layers", {{{"name", "x"}, {"shape", slab(0.05, 0.01)}, {"parameters", entry.path().string()}}}}};
     EXPECT_EQ(error_of(scenario_with_tissue(tissue)), "no error") << entry.path();
-    const LayerAcoustics acoustics = load_scenario(scenario_with_tissue(tissue)).scene.tissue.layer(0).acoustics.value();
+    const LayerAcoustics acoustics =
+        load_scenario(scenario_with_tissue(tissue)).scene.tissue.layer(0).acoustics.value();
     EXPECT_EQ(acoustics.impedance_MRayl, set["ultrasound"]["impedance_MRayl"]["value"].get<double>()) << entry.path();
     EXPECT_EQ(acoustics.echogenicity, set["ultrasound"]["echogenicity"]["value"].get<double>()) << entry.path();
     ++sets;
@@ -111,13 +112,16 @@ TEST(TissueFiles, EveryParameterSetLoadsAndEveryNumberCarriesItsSource) {
 // one line naming the file, the JSON pointer and what was expected.
 TEST(TissueFiles, InjectionKeysAreCheckedAndASyringeNeedsThemOnEveryLayer) {
   json tissue = two_slabs();
-  for (json& layer : tissue["layers"]) layer["injection"] = {{"opening_pressure_Pa", 1e3}, {"resistance_Pa_s_per_m3", 1e9}};
+  for (json& layer : tissue["layers"])
+    layer["injection"] = {{"opening_pressure_Pa", 1e3}, {"resistance_Pa_s_per_m3", 1e9}};
   EXPECT_EQ(error_of(scenario_with_tissue(tissue, {{"syringe", {{"fluid", "air"}}}})), "no error");
-  EXPECT_EQ(load_scenario(scenario_with_tissue(tissue, {{"syringe", {{"fluid", "air"}}}})).syringe->fluid, SyringeFluid::kAir);
+  EXPECT_EQ(load_scenario(scenario_with_tissue(tissue, {{"syringe", {{"fluid", "air"}}}})).syringe->fluid,
+            SyringeFluid::kAir);
 
   json bad = tissue;
   bad["layers"][1]["injection"]["opening_pressure_Pa"] = 2e6;
-  EXPECT_EQ(error_of(scenario_with_tissue(bad)), "/tissue/layers/1/injection/opening_pressure_Pa: must be in [0, 1e+06] Pa, got 2e+06");
+  EXPECT_EQ(error_of(scenario_with_tissue(bad)),
+            "/tissue/layers/1/injection/opening_pressure_Pa: must be in [0, 1e+06] Pa, got 2e+06");
   bad = tissue;
   bad["layers"][0]["injection"].erase("resistance_Pa_s_per_m3");
   EXPECT_EQ(error_of(scenario_with_tissue(bad)), "/tissue/layers/0/injection/resistance_Pa_s_per_m3: missing");
@@ -130,13 +134,15 @@ TEST(TissueFiles, InjectionKeysAreCheckedAndASyringeNeedsThemOnEveryLayer) {
   bad = tissue;
   bad["layers"][1].erase("injection");
   EXPECT_EQ(error_of(scenario_with_tissue(bad, {{"syringe", {{"fluid", "saline"}}}})),
-            "/tissue/layers/1: \"fat\" has no injection parameters (\"injection\", in its parameter set or inline), which the syringe "
+            "/tissue/layers/1: \"fat\" has no injection parameters (\"injection\", in its parameter set or inline), "
+            "which the syringe "
             "(/syringe) needs");
   EXPECT_EQ(error_of(scenario_with_tissue(tissue, {{"syringe", {{"fluid", "water"}}}})),
             "/syringe/fluid: expected \"saline\" or \"air\", got \"water\"");
   EXPECT_EQ(error_of(scenario_with_tissue(tissue, {{"syringe", {{"fluid", "saline"}, {"plunger_area_m2", 0}}}})),
             "/syringe/plunger_area_m2: must be in (0, 0.001] m^2, got 0");
-  EXPECT_EQ(error_of(scenario_with_tissue(tissue, {{"syringe", {{"fluid", "saline"}, {"volume", 1}}}})).rfind("/syringe/volume: unknown key", 0),
+  EXPECT_EQ(error_of(scenario_with_tissue(tissue, {{"syringe", {{"fluid", "saline"}, {"volume", 1}}}}))
+                .rfind("/syringe/volume: unknown key", 0),
             0u);
 
   // In a parameter set: the set's file and the number's pointer.
@@ -144,12 +150,14 @@ TEST(TissueFiles, InjectionKeysAreCheckedAndASyringeNeedsThemOnEveryLayer) {
   set["injection"]["opening_pressure_Pa"]["value"] = 2e6;
   const std::string set_path = test::own_file("epidural_space.json");
   std::ofstream(set_path) << set.dump(1);
-  const std::string scenario = scenario_with_tissue({{"layers", {{{"name", "x"}, {"shape", slab(0.05, 0.01)}, {"parameters", set_path}}}}});
+  const std::string scenario =
+      scenario_with_tissue({{"layers", {{{"name", "x"}, {"shape", slab(0.05, 0.01)}, {"parameters", set_path}}}}});
   try {
     load_scenario(scenario);
     ADD_FAILURE() << "loaded";
   } catch (const ScenarioError& e) {
-    EXPECT_EQ(std::string(e.what()), set_path + ": /injection/opening_pressure_Pa/value: must be in [0, 1e+06] Pa, got 2e+06");
+    EXPECT_EQ(std::string(e.what()),
+              set_path + ": /injection/opening_pressure_Pa/value: must be in [0, 1e+06] Pa, got 2e+06");
   }
 }
 
@@ -285,15 +293,18 @@ TEST(TissueFiles, BadParameterSetsAreErrorsInTheirOwnFile) {
   EXPECT_EQ(error_in_set([](json& s) { s["ultrasound"]["impedance_MRayl"] = 1.99; }),
             "/ultrasound/impedance_MRayl: expected {\"value\": ..., \"source\": \"...\"}: every number in a parameter "
             "set carries its source");
-  EXPECT_EQ(error_in_set([](json& s) { s["ultrasound"].erase("scatterer_density"); }), "/ultrasound/scatterer_density: missing");
+  EXPECT_EQ(error_in_set([](json& s) { s["ultrasound"].erase("scatterer_density"); }),
+            "/ultrasound/scatterer_density: missing");
   EXPECT_EQ(error_in_set([](json& s) { s["ultrasound"]["attenuation_dB_per_cm_MHz"]["source"] = "duck1990: p. 99"; }),
             "/ultrasound/attenuation_dB_per_cm_MHz/source: cites \"duck1990\", which is not in /references");
 }
 
 TEST(TissueFiles, UltrasoundParametersInlineOrFromTheSetNotBoth) {
   json t = two_slabs();
-  t["layers"][1]["ultrasound"] = {{"impedance_MRayl", 1.39}, {"attenuation_dB_per_cm_MHz", 0.63},
-                                  {"echogenicity", 0.25}, {"scatterer_density", 0.5}};
+  t["layers"][1]["ultrasound"] = {{"impedance_MRayl", 1.39},
+                                  {"attenuation_dB_per_cm_MHz", 0.63},
+                                  {"echogenicity", 0.25},
+                                  {"scatterer_density", 0.5}};
   const Scenario s = load_scenario(scenario_with_tissue(t));
   EXPECT_FALSE(s.scene.tissue.layer(0).acoustics.has_value());  // the image takes a generic soft tissue
   ASSERT_TRUE(s.scene.tissue.layer(1).acoustics.has_value());
@@ -305,9 +316,10 @@ TEST(TissueFiles, UltrasoundParametersInlineOrFromTheSetNotBoth) {
   t["layers"][1]["parameters"] = test::asset("assets/tissues/subcutaneous_fat.json");
   t["layers"][1].erase("friction_N_per_m");
   t["layers"][1].erase("static_friction_N_per_m");
-  EXPECT_EQ(error_of(scenario_with_tissue(t)),
-            "/tissue/layers/1/ultrasound: given beside \"parameters\": a layer's parameters come from the file or inline, "
-            "not both");
+  EXPECT_EQ(
+      error_of(scenario_with_tissue(t)),
+      "/tissue/layers/1/ultrasound: given beside \"parameters\": a layer's parameters come from the file or inline, "
+      "not both");
 }
 
 }  // namespace
@@ -344,7 +356,9 @@ TEST(TissueTent, EveryShippedLayerGivesWayBeforeItsTentReachesTheNextStructure) 
     const Scenario s = load_scenario(test::asset(std::string("assets/scenarios/") + line.scenario + ".json"));
     const TissueModel& tissue = s.scene.tissue;
     const std::vector<LayerBoundary> b = layer_boundaries(tissue, line.from, line.dir, 0.15);
-    auto structure = [&](int layer) { return layer >= 0 && (tissue.layer(layer).mechanics.rigid || tent_depth_m(tissue.layer(layer).mechanics) > 0.0); };
+    auto structure = [&](int layer) {
+      return layer >= 0 && (tissue.layer(layer).mechanics.rigid || tent_depth_m(tissue.layer(layer).mechanics) > 0.0);
+    };
     for (size_t k = 0; k < b.size(); ++k) {
       if (b[k].layer < 0) continue;
       const LayerMechanics& m = tissue.layer(b[k].layer).mechanics;
@@ -358,9 +372,11 @@ TEST(TissueTent, EveryShippedLayerGivesWayBeforeItsTentReachesTheNextStructure) 
           break;
         }
       EXPECT_LT(tent, next) << name << ": its tent reaches the next structure";
-      const double thickness = k + 1 < b.size() ? b[k + 1].depth_m - b[k].depth_m : std::numeric_limits<double>::infinity();
+      const double thickness =
+          k + 1 < b.size() ? b[k + 1].depth_m - b[k].depth_m : std::numeric_limits<double>::infinity();
       if (m.cutting_force_N > 0.0 && tissue.layer(b[k].layer).name != "dura")
-        EXPECT_LT(tent, thickness) << name << ": it gives way only past its own far side, so its cutting force never acts";
+        EXPECT_LT(tent, thickness) << name
+                                   << ": it gives way only past its own far side, so its cutting force never acts";
     }
   }
 }

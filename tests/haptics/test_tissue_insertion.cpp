@@ -6,9 +6,9 @@
 #include <cmath>
 #include <random>
 
-#include "tests/support/allocation_count.hpp"
 #include "haptics/tissue/kinematic_insertion.hpp"
 #include "haptics/tissue/tissue_step.hpp"
+#include "tests/support/allocation_count.hpp"
 
 namespace needle::haptics {
 namespace {
@@ -102,7 +102,8 @@ void expect_closed_form_punctures(const StackGeometry& g, const InsertionPlan& p
   EXPECT_LT(after.axial_force_N, 0.5 * run.punctures[1].peak_force_N);
   // Once the outer surface gave way the tip is always in some layer: a shared face is no "outside".
   for (const InsertionSample& s : run.samples)
-    if (s.depth_m > run.punctures[0].depth_m && s.depth_m < g.start + g.outer + g.middle + g.inner && s.t < p.depth_m / p.speed_mps)
+    if (s.depth_m > run.punctures[0].depth_m && s.depth_m < g.start + g.outer + g.middle + g.inner &&
+        s.t < p.depth_m / p.speed_mps)
       EXPECT_GE(s.layer, 0) << s.depth_m;
 }
 

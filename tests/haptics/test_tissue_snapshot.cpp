@@ -97,7 +97,7 @@ TEST(TissueSnapshot, TheScriptedHandThroughTheLayeredBlockDownToBone) {
       ++bone_ticks;
       EXPECT_EQ(t.bone_layer, kBone) << at();
       EXPECT_NEAR(z, kBlock[kBone].top_z, 3e-3) << at();  // the penalty (3.15) is 800 N/m: 2.4 N presses 3 mm
-      EXPECT_LE(t.bone_force_n[2], 0.0) << at();  // the tool presses the bone down (or, touching, not yet)
+      EXPECT_LE(t.bone_force_n[2], 0.0) << at();          // the tool presses the bone down (or, touching, not yet)
       bone_push = std::min(bone_push, t.bone_force_n[2]);
       for (int i = 0; i < 3; ++i) EXPECT_EQ(t.bone_force_n[i], s.environment_force_n[i]) << at();
     } else {
@@ -111,12 +111,12 @@ TEST(TissueSnapshot, TheScriptedHandThroughTheLayeredBlockDownToBone) {
     z_before = z;
   }
   std::printf("tip above its layer's top by at most %.2f mm\n", 1e3 * worst_above);
-  EXPECT_EQ(deepest, 2);  // the muscle, then the bone's surface
+  EXPECT_EQ(deepest, 2);       // the muscle, then the bone's surface
   EXPECT_GT(bone_ticks, 500);  // pressed on it for more than a second
   EXPECT_LT(bone_push, -0.5);  // the hand's spring, 18 mm below the bone's top, less the muscle's friction
   ASSERT_GT(advance_ticks, 0);
   ASSERT_GT(withdraw_ticks, 0);
-  EXPECT_GT(advance_force / advance_ticks, 0.1);    // the muscle resists the advance
+  EXPECT_GT(advance_force / advance_ticks, 0.1);     // the muscle resists the advance
   EXPECT_LT(withdraw_force / withdraw_ticks, -0.1);  // and holds the shaft on the way out
   EXPECT_EQ(s.tissue.tip_layer, -1);                 // withdrawn at the end
   EXPECT_EQ(s.tissue.punctured_layers, 0u);

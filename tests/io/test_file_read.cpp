@@ -24,7 +24,8 @@ struct TestError : std::runtime_error {
 };
 
 fs::path own_folder() {
-  const fs::path dir = test::output_dir() / "file_read" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const fs::path dir =
+      test::output_dir() / "file_read" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -1,6 +1,5 @@
 // io::write_file: the whole file or an error naming it, never a part, never a silent loss.
 #include <gtest/gtest.h>
-
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -92,8 +91,9 @@ TEST(FileWrite, AFileSizeLimitIsAnError) {
 
 TEST(FileWrite, AMissingFolderOrAFolderInPlaceOfTheFileIsAnError) {
   const fs::path dir = test::process_folder(test::output_dir() / "missing");
-  EXPECT_EQ(error_of(dir / "nowhere" / "x.json", "{}"),
-            (dir / "nowhere" / "x.json").string() + ": cannot write: folder " + (dir / "nowhere").string() + " does not exist");
+  EXPECT_EQ(error_of(dir / "nowhere" / "x.json", "{}"), (dir / "nowhere" / "x.json").string() +
+                                                            ": cannot write: folder " + (dir / "nowhere").string() +
+                                                            " does not exist");
   EXPECT_FALSE(fs::exists(dir / "nowhere"));
   EXPECT_EQ(error_of(dir, "{}"), dir.string() + ": cannot write: it is a folder");
 }

@@ -19,7 +19,8 @@ TEST(FuzzStructure, MutationsMakeExtremeNumbersAndNestingPastTheLimit) {
     std::vector<uint8_t> bytes(text.begin(), text.end());
     bytes.resize(1 << 16);
     // One of the three numbers is now one of the extremes, the rest of the text as it was.
-    const std::string mutated(bytes.begin(), bytes.begin() + long(fuzz::extreme_number(bytes.data(), text.size(), bytes.size(), random)));
+    const std::string mutated(
+        bytes.begin(), bytes.begin() + long(fuzz::extreme_number(bytes.data(), text.size(), bytes.size(), random)));
     bool one_extreme = false;
     for (const char* number : fuzz::kExtremeNumbers)
       for (const char* place : {R"({"period_s": X, "q0_rad": [2, 1.5]})", R"({"period_s": 0.002, "q0_rad": [X, 1.5]})",

@@ -91,7 +91,9 @@ fs::path fresh_db(const std::string& name) {
 
 class CohortPanelFilters : public testing::Test {
  protected:
-  void SetUp() override { cohort_ = std::make_unique<Cohort>(fresh_db(testing::UnitTest::GetInstance()->current_test_info()->name())); }
+  void SetUp() override {
+    cohort_ = std::make_unique<Cohort>(fresh_db(testing::UnitTest::GetInstance()->current_test_info()->name()));
+  }
   void TearDown() override {
     cohort_.reset();
     fs::remove_all(folder());
@@ -166,7 +168,7 @@ TEST_F(CohortPanelFilters, StationKeepsItsSessionsAndCountsAttemptsWithinThem) {
   EXPECT_EQ(p.view.most_failed[0].failed, 1);
   EXPECT_EQ(p.view.most_failed[0].attempts, 3);
   const training::Percentiles& score = percentiles(p.view, "pivot_drill", "score");  // 60 85 90
-  EXPECT_DOUBLE_EQ(score.p25, 72.5);  // rank 0.5
+  EXPECT_DOUBLE_EQ(score.p25, 72.5);                                                 // rank 0.5
   EXPECT_DOUBLE_EQ(score.p50, 85.0);
 }
 
@@ -218,7 +220,7 @@ TEST_F(CohortPanelFilters, HalfTypedDateKeepsTheLastViewAndSaysWhy) {
 TEST_F(CohortPanelFilters, ComputedAgainOnlyWhenASessionCompletes) {
   ui::CohortPanel p = panel_with({});
   EXPECT_FALSE(p.update(cohort_->store, cohort_->store.sessions()));  // nothing changed
-  cohort_->store.finish_session(8, scored(50, false, kNotReached));     // dee's session completes
+  cohort_->store.finish_session(8, scored(50, false, kNotReached));   // dee's session completes
   EXPECT_TRUE(p.update(cohort_->store, cohort_->store.sessions()));
   EXPECT_EQ(p.view.sessions, 8u);
   EXPECT_EQ(p.state.choices.stations, (std::vector<std::string>{"st-1", "st-2", "st-3"}));

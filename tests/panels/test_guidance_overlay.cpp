@@ -7,10 +7,10 @@
 
 #include "app/needle_tracker.hpp"
 #include "image_compare.hpp"
+#include "tests/support/test_paths.hpp"
 #include "ui/guidance_overlay.hpp"
 #include "ui/panel_picture.hpp"
 #include "vulkan_fixture.hpp"
-#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 namespace {
@@ -19,8 +19,8 @@ namespace fs = std::filesystem;
 
 class GuidanceOverlay : public VulkanTest {
  protected:
-  engine::RgbaImage draw(const std::string& task_name, size_t step, const training::Vec3& tip, const training::Vec3& axis,
-                         bool hide_layer_names = false) {
+  engine::RgbaImage draw(const std::string& task_name, size_t step, const training::Vec3& tip,
+                         const training::Vec3& axis, bool hide_layer_names = false) {
     training::Task task = training::load_task(test::source_dir() / "assets/tasks" / (task_name + ".json"));
     task.hide_layer_names = hide_layer_names;
     ui::PictureScene scene{engine::load_scene(task.scene), std::nullopt};
@@ -36,7 +36,12 @@ class GuidanceOverlay : public VulkanTest {
     state.needle_orientation[3] = h[1] / hn;
     scene.needle = app::NeedleTracker().update(state);
     const engine::Camera camera = scene.scene.camera;
-    return ui::panel_picture(device(), {480, 320}, [&] { ui::draw_guidance({&task, step, tip, camera}); }, &scene);
+    return ui::panel_picture(
+        device(), {480, 320},
+        [&] {
+          ui::draw_guidance({&task, step, tip, camera});
+        },
+        &scene);
   }
 };
 
@@ -64,7 +69,8 @@ TEST_F(GuidanceOverlay, LayeredTargetShowsTheAxisTheTargetAndTheDepthGaugeWithTh
 // An assessment run (the task hides the layer names): the same marks, their depths but no names.
 TEST_F(GuidanceOverlay, LayeredTargetWithHiddenNamesKeepsTheMarksUnnamed) {
   const training::Vec3 tip{0.33, 0.0, 0.07 - 0.020};
-  EXPECT_TRUE(matches_golden(draw("layered_target", 2, tip, {0.0, 0.0, -1.0}, true), "guidance_layered_target_hidden_names"));
+  EXPECT_TRUE(
+      matches_golden(draw("layered_target", 2, tip, {0.0, 0.0, -1.0}, true), "guidance_layered_target_hidden_names"));
 }
 
 // The epidural's approach: the entry ring on the midline and the axis, the tip 15 mm above the skin.

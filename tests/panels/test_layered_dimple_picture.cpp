@@ -8,9 +8,9 @@
 
 #include "app/needle_tracker.hpp"
 #include "image_compare.hpp"
+#include "tests/support/test_paths.hpp"
 #include "ui/panel_picture.hpp"
 #include "vulkan_fixture.hpp"
-#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 namespace {
@@ -35,13 +35,17 @@ TEST_F(LayeredDimplePicture, TheTentedSkinBeforeItsPuncture) {
   pressed.scene.camera.position = {0.36, -0.05, 0.105};
   pressed.scene.camera.target = {0.33, 0.0, 0.066};
   pressed.scene.camera.near_m = 0.01f;
-  const engine::RgbaImage image = ui::panel_picture(device(), {480, 320}, [] {}, &pressed, 4);
+  const engine::RgbaImage image = ui::panel_picture(
+      device(), {480, 320}, [] {}, &pressed, 4);
   EXPECT_TRUE(matches_golden(image, "dimple_layered_target"));
   // The same needle over the undeformed block (the thesis's tracker sees no contact: no dimple)
   // is a different picture.
   ui::PictureScene rest = pressed;
   rest.needle = app::NeedleTracker().update(s);
-  EXPECT_NE(ui::panel_picture(device(), {480, 320}, [] {}, &rest, 4).pixels, image.pixels);
+  EXPECT_NE(ui::panel_picture(
+                device(), {480, 320}, [] {}, &rest, 4)
+                .pixels,
+            image.pixels);
 }
 
 }  // namespace

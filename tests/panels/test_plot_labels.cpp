@@ -22,7 +22,8 @@ void expect_apart_and_inside(const std::vector<ui::PlotLabel>& labels, ImVec2 lo
     EXPECT_LE(l.at.x + l.size.x, hi.x + 0.01f) << what << ": \"" << l.text << "\" is cut on the right";
     EXPECT_GE(l.at.y, lo.y - 0.01f) << what << ": \"" << l.text << "\" leaves at the top";
     EXPECT_LE(l.at.y + l.size.y, hi.y + 0.01f) << what << ": \"" << l.text << "\" leaves at the bottom";
-    for (size_t j = 0; j < i; ++j) EXPECT_FALSE(l.overlaps(labels[j])) << what << ": \"" << l.text << "\" over \"" << labels[j].text << "\"";
+    for (size_t j = 0; j < i; ++j)
+      EXPECT_FALSE(l.overlaps(labels[j])) << what << ": \"" << l.text << "\" over \"" << labels[j].text << "\"";
   }
 }
 

@@ -26,8 +26,11 @@ TEST(PlotStyles, TwentyFourTraineesLookPairwiseDifferent) {
     colours.insert(s.colour);
   }
   EXPECT_EQ(colours.size(), 8u);  // eight hues, each in three dashes with their marks
-  for (size_t k = 0; k < 8; ++k)   // a hue's three looks differ in dash and in mark
-    EXPECT_EQ((std::set<ui::Dash>{ui::trainee_style(k).dash, ui::trainee_style(k + 8).dash, ui::trainee_style(k + 16).dash}.size()), 3u);
+  for (size_t k = 0; k < 8; ++k)  // a hue's three looks differ in dash and in mark
+    EXPECT_EQ(
+        (std::set<ui::Dash>{ui::trainee_style(k).dash, ui::trainee_style(k + 8).dash, ui::trainee_style(k + 16).dash}
+             .size()),
+        3u);
   const ui::LineStyle again = ui::trainee_style(ui::kTraineeStyles), first = ui::trainee_style(0);
   EXPECT_EQ(std::tie(again.colour, again.dash, again.mark), std::tie(first.colour, first.dash, first.mark))
       << "the 25th repeats the first, as documented";
@@ -78,10 +81,13 @@ TEST_F(LearningCurvesPicture, TwentyFourTraineesAllShownMatchesGolden) {
     plot.lines.push_back(line);
   }
   const engine::Extent size{900, 360};
-  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] {
-                                ui::draw_learning_curve_window(plot, {ImVec2(0, 0), ImVec2(float(size.width), float(size.height))});
-                              }),
-                              "panel_cohort_24"));
+  EXPECT_TRUE(matches_golden(
+      ui::panel_picture(
+          device(), size,
+          [&] {
+            ui::draw_learning_curve_window(plot, {ImVec2(0, 0), ImVec2(float(size.width), float(size.height))});
+          }),
+      "panel_cohort_24"));
 }
 
 }  // namespace

@@ -6,10 +6,10 @@
 #include "app/echo_scene.hpp"
 #include "engine/screen_projection.hpp"
 #include "image_compare.hpp"
+#include "tests/support/test_paths.hpp"
 #include "ui/panel_picture.hpp"
 #include "ui/probe_overlay.hpp"
 #include "vulkan_fixture.hpp"
-#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 namespace {
@@ -25,8 +25,10 @@ TEST_F(ProbeOverlay, TheFaceAndTheImagedPlaneAreDrawnWhereTheTasksProbeIs) {
   ui::PictureScene scene{engine::load_scene(task.scene), std::nullopt};
   const engine::Camera camera = scene.scene.camera;
   constexpr engine::Extent kSize{480, 320};
-  const engine::RgbaImage with = ui::panel_picture(device(), kSize, [&] { ui::draw_probe(probe, camera); }, &scene);
-  const engine::RgbaImage without = ui::panel_picture(device(), kSize, [] {}, &scene);
+  const engine::RgbaImage with = ui::panel_picture(
+      device(), kSize, [&] { ui::draw_probe(probe, camera); }, &scene);
+  const engine::RgbaImage without = ui::panel_picture(
+      device(), kSize, [] {}, &scene);
   EXPECT_TRUE(matches_golden(with, "probe_overlay_sphere_task"));
   const auto pixel = [](const engine::RgbaImage& image, glm::vec2 at, int dx, int dy) {
     return &image.pixels[(size_t(int(at.y) + dy) * image.width + size_t(int(at.x) + dx)) * 4];

@@ -1,19 +1,19 @@
 // The instructor's review panels drawn headless, against goldens: the session table (with its
-// sessions' checks against their recordings), a session's detail with its plots, a single plot, two sessions compared, and a replay frame of
-// the recorded session in the 3D view. The sessions are recorded closed-loop runs of the
+// sessions' checks against their recordings), a session's detail with its plots, a single plot, two sessions compared,
+// and a replay frame of the recorded session in the 3D view. The sessions are recorded closed-loop runs of the
 // penetrable task (good and sloppy operators) with their dates fixed, so the pictures are too; and
 // the layered tasks' force–depth plot of their recorded runs.
 #include <gtest/gtest.h>
 
-#include "tests/app/recorded_session.hpp"
+#include "app/replay_cursor.hpp"
 #include "engine/gpu_device.hpp"
 #include "image_compare.hpp"
+#include "tests/app/recorded_session.hpp"
+#include "tests/support/test_paths.hpp"
 #include "ui/panel_picture.hpp"
 #include "ui/review_panels.hpp"
-#include "app/replay_cursor.hpp"
 #include "ui/review_replay.hpp"
 #include "vulkan_fixture.hpp"
-#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 namespace {
@@ -37,8 +37,9 @@ class ReviewPanels : public VulkanTest {
     const training::StoredSession good = store.load(good_.id), sloppy = store.load(sloppy_.id);
     store.record_check({good_.id, training::CheckOutcome::kVerified, good.info.score, training::result_digest(good), "",
                         "2026-03-05T09:00:00Z", "dr-lee"});
-    store.record_check({sloppy_.id, training::CheckOutcome::kMismatch, sloppy.info.score, training::result_digest(sloppy),
-                        "score: stored 90, replay 38.6", "2026-03-05T09:00:00Z", "dr-lee"});
+    store.record_check({sloppy_.id, training::CheckOutcome::kMismatch, sloppy.info.score,
+                        training::result_digest(sloppy), "score: stored 90, replay 38.6", "2026-03-05T09:00:00Z",
+                        "dr-lee"});
   }
   // The session as the panels show it, with the clock's fields fixed for the picture.
   static training::SessionReview review(int64_t id) {
@@ -67,15 +68,19 @@ TEST_F(ReviewPanels, SessionTableMatchesGolden) {
   table.selected = good_.id;
   table.compared = sloppy_.id;
   const engine::Extent size{760, 200};
-  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] { ui::draw_session_table(sessions, table, whole(size)); }),
-                             "panel_review_table"));
+  EXPECT_TRUE(
+      matches_golden(ui::panel_picture(device(), size, [&] { ui::draw_session_table(sessions, table, whole(size)); }),
+                     "panel_review_table"));
 }
 
 TEST_F(ReviewPanels, SessionDetailWithPlotsMatchesGolden) {
   const training::SessionReview r = review(good_.id);
   ASSERT_TRUE(r.has_recording());
   const engine::Extent size{720, 1340};
-  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] { ui::draw_session_detail(r, {12.0, false, ""}, whole(size)); }),
+  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size,
+                                               [&] {
+                                                 ui::draw_session_detail(r, {12.0, false, ""}, whole(size));
+                                               }),
                              "panel_review_detail"));
 }
 
@@ -87,9 +92,10 @@ TEST_F(ReviewPanels, SessionDetailZoomedIntoTwoSecondsMatchesGolden) {
   ASSERT_TRUE(r.has_recording());
   ui::TimeSpan span{10.0, 12.0};
   const engine::Extent size{720, 1340};
-  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] {
-                               ui::draw_session_detail(r, {11.0, false, "", &span}, whole(size));
-                             }),
+  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size,
+                                               [&] {
+                                                 ui::draw_session_detail(r, {11.0, false, "", &span}, whole(size));
+                                               }),
                              "panel_review_detail_zoomed"));
   EXPECT_DOUBLE_EQ(span.lo, 10.0);  // no pointer over the plots: the range is as it was
   EXPECT_DOUBLE_EQ(span.hi, 12.0);
@@ -119,9 +125,13 @@ TEST_F(ReviewPanels, ReplayFrameMatchesGolden) {
   double t = 12.0;
   ui::PictureScene scene{engine::load_scene(r.task->scene), cursor.at(r.states, t), 0.3f};
   const engine::Extent size{640, 360};
-  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] {
-    ui::draw_replay_bar(r, t, false, {ImVec2(0, 300), ImVec2(640, 60)});
-  }, &scene, 4), "panel_review_replay"));
+  EXPECT_TRUE(matches_golden(ui::panel_picture(
+                                 device(), size,
+                                 [&] {
+                                   ui::draw_replay_bar(r, t, false, {ImVec2(0, 300), ImVec2(640, 60)});
+                                 },
+                                 &scene, 4),
+                             "panel_review_replay"));
 }
 
 // The layered tasks' force–depth plot, from recorded closed-loop runs: the layered
@@ -160,17 +170,18 @@ TEST_F(ReviewPanelsLayered, ForceDepthOfTheLayeredTargetMatchesGolden) {
     EXPECT_DOUBLE_EQ(r.force_depth.puncture_list[k].peak_force_N, target_.result.punctures[k].peak_force_N);
   }
   const engine::Extent size{900, 320};
-  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] { ui::draw_force_depth_window(r.force_depth, nullptr, whole(size)); }),
-                             "panel_force_depth_layered_target"));
+  EXPECT_TRUE(matches_golden(
+      ui::panel_picture(device(), size, [&] { ui::draw_force_depth_window(r.force_depth, nullptr, whole(size)); }),
+      "panel_force_depth_layered_target"));
 }
 
 TEST_F(ReviewPanelsLayered, ForceDepthOfTwoEpiduralSessionsComparedMatchesGolden) {
   const training::SessionReview a = review(epidural_good_.id), b = review(epidural_sloppy_.id);
   const engine::Extent size{900, 320};
-  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] {
-                               ui::draw_force_depth_window(a.force_depth, &b.force_depth, whole(size));
-                             }),
-                             "panel_force_depth_compare_epidural"));
+  EXPECT_TRUE(matches_golden(
+      ui::panel_picture(device(), size,
+                        [&] { ui::draw_force_depth_window(a.force_depth, &b.force_depth, whole(size)); }),
+      "panel_force_depth_compare_epidural"));
 }
 
 // The epidural's syringe beside its force–depth plot: the plunger's pressure against the same depth
@@ -191,10 +202,10 @@ TEST_F(ReviewPanelsLayered, PlungerPressureOfTwoEpiduralSessionsComparedMatchesG
   ASSERT_NE(space, a.force_depth.boundaries.end());
   EXPECT_NEAR(a.force_depth.losses.front().x, space->x, 0.1);
   const engine::Extent size{900, 320};
-  EXPECT_TRUE(matches_golden(ui::panel_picture(device(), size, [&] {
-                               ui::draw_plunger_pressure_window(a.force_depth, &b.force_depth, whole(size));
-                             }),
-                             "panel_plunger_pressure_compare_epidural"));
+  EXPECT_TRUE(matches_golden(
+      ui::panel_picture(device(), size,
+                        [&] { ui::draw_plunger_pressure_window(a.force_depth, &b.force_depth, whole(size)); }),
+      "panel_plunger_pressure_compare_epidural"));
 }
 
 }  // namespace

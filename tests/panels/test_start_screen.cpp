@@ -16,19 +16,21 @@ ui::StartState screen() {
   ui::StartState s;
   ui::set_trainee_name(s, "ana");
   s.known_trainees = {"ana", "bo", "Carla"};
-  s.tasks = {{"Penetrable sphere: insert, pivot 45 degrees about the tip, insert deeper to the target (thesis 4.4)",
-              "Needle into soft tissue: steer in along a planned line, turn the needle about its tip inside the tissue, "
-              "reach a target and pull out.",
-              "", "last 81, passed   best 85   3 done"},
-             {"Rigid sphere: touch, align with the normal, press and hold, release (thesis 4.3)",
-              "Contact with a rigid surface: touch a point, line the needle up with the surface normal, press with a steady "
-              "force in a band, let go.",
-              "", std::nullopt},
-             {"", "", "assets/tasks/x.json: /steps/2/condition/marker: no marker named \"targte\"", std::nullopt}};
-  s.devices = {{"mouse", "Mouse", "cursor: move   wheel or Up/Down: in and out   right button held: turn about the tip", true},
-               {"keyboard", "Keyboard", "arrows: move", true},
-               {"gamepad:0", "Gamepad 0 (Xbox Controller)", "left stick: move", true},
-               {"falcon", "Falcon (none connected)", "no Falcon connected", false}};
+  s.tasks = {
+      {"Penetrable sphere: insert, pivot 45 degrees about the tip, insert deeper to the target (thesis 4.4)",
+       "Needle into soft tissue: steer in along a planned line, turn the needle about its tip inside the tissue, "
+       "reach a target and pull out.",
+       "", "last 81, passed   best 85   3 done"},
+      {"Rigid sphere: touch, align with the normal, press and hold, release (thesis 4.3)",
+       "Contact with a rigid surface: touch a point, line the needle up with the surface normal, press with a steady "
+       "force in a band, let go.",
+       "", std::nullopt},
+      {"", "", "assets/tasks/x.json: /steps/2/condition/marker: no marker named \"targte\"", std::nullopt}};
+  s.devices = {
+      {"mouse", "Mouse", "cursor: move   wheel or Up/Down: in and out   right button held: turn about the tip", true},
+      {"keyboard", "Keyboard", "arrows: move", true},
+      {"gamepad:0", "Gamepad 0 (Xbox Controller)", "left stick: move", true},
+      {"falcon", "Falcon (none connected)", "no Falcon connected", false}};
   return s;
 }
 
@@ -55,7 +57,9 @@ TEST_F(StartScreen, At1280x720MatchesGolden) {
 TEST_F(StartScreen, At1920x1080TheTextIsLargerAndMatchesGolden) {
   ui::StartState s = screen();
   s.device = 2;
-  s.notice = "settings.json: /device: unknown device \"phantom\"; the file was set aside as settings.json.damaged-20260101T000000Z";
+  s.notice =
+      "settings.json: /device: unknown device \"phantom\"; the file was set aside as "
+      "settings.json.damaged-20260101T000000Z";
   expect_golden({1920, 1080}, s, 20.0f, "start_screen_1920x1080");
 }
 

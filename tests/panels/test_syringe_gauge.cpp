@@ -29,8 +29,12 @@ class SyringeGauge : public VulkanTest {
     state.syringe = syringe;
     scene.needle = app::NeedleTracker().update(state);
     const engine::Camera camera = scene.scene.camera;
-    return ui::panel_picture(device(), {480, 320}, [&] { ui::draw_syringe_gauge({syringe, 0.028, tip, {0.0, 0.0, -1.0}, camera}); },
-                             &scene);
+    return ui::panel_picture(
+        device(), {480, 320},
+        [&] {
+          ui::draw_syringe_gauge({syringe, 0.028, tip, {0.0, 0.0, -1.0}, camera});
+        },
+        &scene);
   }
 };
 

@@ -7,14 +7,14 @@
 
 #include "engine/gpu_scene.hpp"
 #include "engine/render_target.hpp"
+#include "engine/scene.hpp"
 #include "engine/ui_pass.hpp"
 #include "image_compare.hpp"
-#include "engine/scene.hpp"
+#include "tests/support/test_paths.hpp"
 #include "ui/guidance_overlay.hpp"
 #include "ui/step_banner.hpp"
 #include "ui/trainee_panel.hpp"
 #include "vulkan_fixture.hpp"
-#include "tests/support/test_paths.hpp"
 
 namespace needle::test {
 namespace {
@@ -122,11 +122,12 @@ TEST_F(TraineePanel, LayeredTargetShowsTheLayerAndThePuncturesMatchesGolden) {
   const training::Task task = training::load_task(test::source_dir() / "assets/tasks/layered_target.json");
   training::TaskProgress progress(task);
   haptics::ToolSnapshot s = at_entry(task);
-  progress.feed(s);  // the approach done
+  progress.feed(s);           // the approach done
   s.needle_tip_m[2] -= 0.02;  // 20 mm deep, in the muscle
   s.contact = haptics::ContactState::kTissue;
   s.tissue.tip_layer = task.layer_index("muscle");
-  s.tissue.punctured_layers = (1u << task.layer_index("skin")) | (1u << task.layer_index("fat")) | (1u << task.layer_index("muscle"));
+  s.tissue.punctured_layers =
+      (1u << task.layer_index("skin")) | (1u << task.layer_index("fat")) | (1u << task.layer_index("muscle"));
   s.tissue.axial_force_N = 0.8;
   for (const double t : {0.1, 0.4, 0.5}) {  // through_skin held 0.2 s, then to_target begun
     s.time_s = t;
@@ -289,7 +290,8 @@ TEST(StepBanner, SaysWhatEndedAndWhyForAFewSeconds) {
   EXPECT_FALSE(late->completed);
   EXPECT_EQ(late->title, "Step 2 of 5 timed out: insert");
   EXPECT_EQ(late->detail,
-            "The 20 s limit passed; the step needed the tip 25-35 mm deep along the planned axis, in the tissue, held 0.5 s.");
+            "The 20 s limit passed; the step needed the tip 25-35 mm deep along the planned axis, in the tissue, held "
+            "0.5 s.");
 }
 
 TEST(WhatToImprove, TheTwoCostliestComponentsFirst) {

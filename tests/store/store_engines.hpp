@@ -36,7 +36,8 @@ class StoreEngines : public testing::TestWithParam<SqlEngine> {
   // An empty database for this test: a new file, or a new database on the cluster.
   std::string fresh() {
     if (GetParam() == SqlEngine::kSqlite) return (test_folder() / "sessions.db").string();
-    if (test::postgres_dir().empty()) throw std::runtime_error("run through tests/support/with-postgres.sh (ctest does)");
+    if (test::postgres_dir().empty())
+      throw std::runtime_error("run through tests/support/with-postgres.sh (ctest does)");
     return test::fresh_postgres_database("t_" + test_name().substr(0, 50));
   }
   // A connection of its own, for what an older program or another process writes.

@@ -39,12 +39,14 @@ using Grant = std::tuple<std::string, std::string, std::string>;  // (object, ro
 // columns, "table.column"), from the catalog's access lists.
 std::set<Grant> grants(PostgresConnection& c, bool columns) {
   const std::string sql =
-      columns ? "SELECT c.relname || '.' || a.attname, r.rolname, x.privilege_type FROM pg_attribute a "
-                "JOIN pg_class c ON c.oid = a.attrelid CROSS JOIN aclexplode(a.attacl) x JOIN pg_roles r ON r.oid = x.grantee "
-                "WHERE c.relnamespace = 'public'::regnamespace AND r.rolname IN ('needle_station', 'needle_instructor')"
-              : "SELECT c.relname, r.rolname, x.privilege_type FROM pg_class c CROSS JOIN aclexplode(c.relacl) x "
-                "JOIN pg_roles r ON r.oid = x.grantee "
-                "WHERE c.relnamespace = 'public'::regnamespace AND r.rolname IN ('needle_station', 'needle_instructor')";
+      columns
+          ? "SELECT c.relname || '.' || a.attname, r.rolname, x.privilege_type FROM pg_attribute a "
+            "JOIN pg_class c ON c.oid = a.attrelid CROSS JOIN aclexplode(a.attacl) x JOIN pg_roles r ON r.oid = "
+            "x.grantee "
+            "WHERE c.relnamespace = 'public'::regnamespace AND r.rolname IN ('needle_station', 'needle_instructor')"
+          : "SELECT c.relname, r.rolname, x.privilege_type FROM pg_class c CROSS JOIN aclexplode(c.relacl) x "
+            "JOIN pg_roles r ON r.oid = x.grantee "
+            "WHERE c.relnamespace = 'public'::regnamespace AND r.rolname IN ('needle_station', 'needle_instructor')";
   std::set<Grant> out;
   for (const SqlRow& row : c.query(sql, {}, "reading grants").rows) out.insert({row.text(0), row.text(1), row.text(2)});
   return out;
@@ -55,7 +57,8 @@ std::set<Grant> expected_table_grants() {
   for (const char* t : {"needle_schema", "trainees", "tasks", "sessions", "step_results", "metrics", "score_components",
                         "recording_chunks", "session_checks"})
     for (const char* role : {"needle_station", "needle_instructor"}) g.insert({t, role, "SELECT"});
-  for (const char* t : {"trainees", "tasks", "sessions", "step_results", "metrics", "score_components", "recording_chunks"})
+  for (const char* t :
+       {"trainees", "tasks", "sessions", "step_results", "metrics", "score_components", "recording_chunks"})
     g.insert({t, "needle_station", "INSERT"});
   for (const char* s : {"trainees_id_seq", "tasks_id_seq", "sessions_id_seq"}) g.insert({s, "needle_station", "USAGE"});
   g.insert({"trainee_renames", "needle_instructor", "SELECT"});
@@ -76,17 +79,18 @@ using Policy = std::tuple<std::string, std::string, std::string, std::string>;  
 
 std::set<Policy> policies(PostgresConnection& c) {
   std::set<Policy> out;
-  for (const SqlRow& row :
-       c.query("SELECT tablename, policyname, cmd, array_to_string(roles, ',') FROM pg_policies WHERE schemaname = 'public'", {},
-               "reading policies")
-           .rows)
+  for (const SqlRow& row : c.query("SELECT tablename, policyname, cmd, array_to_string(roles, ',') FROM pg_policies "
+                                   "WHERE schemaname = 'public'",
+                                   {}, "reading policies")
+                               .rows)
     out.insert({row.text(0), row.text(1), row.text(2), row.text(3)});
   return out;
 }
 
 std::set<Policy> expected_policies() {
   std::set<Policy> p;
-  for (const char* t : {"sessions", "step_results", "metrics", "score_components", "recording_chunks", "session_checks"}) {
+  for (const char* t :
+       {"sessions", "step_results", "metrics", "score_components", "recording_chunks", "session_checks"}) {
     p.insert({t, "instructor_reads", "SELECT", "needle_instructor"});
     p.insert({t, "station_reads", "SELECT", "needle_station"});
   }
@@ -106,11 +110,12 @@ class PostgresRoleScript : public testing::Test {
     PostgresConnection owner(owner_, false);
     owner.script(roles_sql(), "applying the roles");
     owner.script(roles_sql(), "applying the roles again");  // the same result (checked below)
-    owner.script("DO $$ BEGIN CREATE ROLE \"station-01\" LOGIN IN ROLE needle_station; "
-                 "CREATE ROLE \"station-02\" LOGIN IN ROLE needle_station; "
-                 "CREATE ROLE \"dr-lee\" LOGIN IN ROLE needle_instructor; "
-                 "EXCEPTION WHEN duplicate_object THEN NULL; END $$",
-                 "making the logins");
+    owner.script(
+        "DO $$ BEGIN CREATE ROLE \"station-01\" LOGIN IN ROLE needle_station; "
+        "CREATE ROLE \"station-02\" LOGIN IN ROLE needle_station; "
+        "CREATE ROLE \"dr-lee\" LOGIN IN ROLE needle_instructor; "
+        "EXCEPTION WHEN duplicate_object THEN NULL; END $$",
+        "making the logins");
     // A session of each station: station-01's finished (alice's), station-02's open (bob's).
     SessionStore one(uri("station-01")), two(uri("station-02"));
     done_ = one.begin_session("alice", small_task(), "sim", "", "station-01");
@@ -128,12 +133,13 @@ TEST_F(PostgresRoleScript, InstallsEveryGrantAndPolicyAndNothingElse) {
   EXPECT_EQ(grants(c, false), expected_table_grants());
   EXPECT_EQ(grants(c, true), expected_column_grants());
   EXPECT_EQ(policies(c), expected_policies());
-  for (const SqlRow& row : c.query("SELECT relname, relrowsecurity FROM pg_class WHERE relnamespace = 'public'::regnamespace "
-                                   "AND relkind = 'r'",
-                                   {}, "")
-                               .rows) {
-    const bool secured = std::set<std::string>{"sessions", "step_results", "metrics", "score_components", "recording_chunks",
-                                               "session_checks"}
+  for (const SqlRow& row :
+       c.query("SELECT relname, relrowsecurity FROM pg_class WHERE relnamespace = 'public'::regnamespace "
+               "AND relkind = 'r'",
+               {}, "")
+           .rows) {
+    const bool secured = std::set<std::string>{"sessions",         "step_results",     "metrics",
+                                               "score_components", "recording_chunks", "session_checks"}
                              .count(row.text(0)) > 0;
     EXPECT_EQ(row.integer(1) != 0, secured) << row.text(0);
   }
@@ -152,21 +158,24 @@ TEST_F(PostgresRoleScript, EveryTamperingStatementOfAStationIsAPermissionError) 
   const std::string id = std::to_string(done_);
   for (const std::string& sql : std::vector<std::string>{
            "UPDATE sessions SET score = 100, passed = 1 WHERE id = " + id + " AND status = 'complete'",
-        "UPDATE sessions SET status = 'incomplete' WHERE id = " + id, "DELETE FROM sessions WHERE id = " + id,
-        "INSERT INTO step_results VALUES (" + id + ", 9, 'forged', 'completed', 0, 1)",
-        "INSERT INTO recording_chunks VALUES (" + id + ", 3, '\\x00', 0)",
-        "INSERT INTO metrics VALUES (" + id + ", -1, 'forged', 1)",
-        "INSERT INTO score_components VALUES (" + id + ", 9, 'forged', 1, 100)",
-        "UPDATE step_results SET outcome = 'completed' WHERE session_id = " + id,
-        "UPDATE metrics SET value = 0 WHERE session_id = " + id, "UPDATE recording_chunks SET crc = 0 WHERE session_id = " + id,
-        "DELETE FROM recording_chunks WHERE session_id = " + id,
-        "UPDATE trainees SET name = 'renamed-by-station-01' WHERE name = 'alice'",
-        "UPDATE trainees SET name = 'renamed-by-station-01' WHERE name = 'bob'", "DELETE FROM trainees WHERE name = 'bob'",
-        "UPDATE tasks SET title = 'hijacked title', source = '/evil'", "DELETE FROM tasks",
-        "INSERT INTO session_checks(session_id, checked_at, outcome, digest, detail) VALUES (" + id +
-            ", 'now', 'verified', 'x', '')",
-        "INSERT INTO sessions(trainee_id, task_id, started_at, status, station) VALUES (1, 1, 'x', 'complete', 'station-01')",
-        "UPDATE sessions SET station = 'station-02' WHERE id = " + id}) {
+           "UPDATE sessions SET status = 'incomplete' WHERE id = " + id, "DELETE FROM sessions WHERE id = " + id,
+           "INSERT INTO step_results VALUES (" + id + ", 9, 'forged', 'completed', 0, 1)",
+           "INSERT INTO recording_chunks VALUES (" + id + ", 3, '\\x00', 0)",
+           "INSERT INTO metrics VALUES (" + id + ", -1, 'forged', 1)",
+           "INSERT INTO score_components VALUES (" + id + ", 9, 'forged', 1, 100)",
+           "UPDATE step_results SET outcome = 'completed' WHERE session_id = " + id,
+           "UPDATE metrics SET value = 0 WHERE session_id = " + id,
+           "UPDATE recording_chunks SET crc = 0 WHERE session_id = " + id,
+           "DELETE FROM recording_chunks WHERE session_id = " + id,
+           "UPDATE trainees SET name = 'renamed-by-station-01' WHERE name = 'alice'",
+           "UPDATE trainees SET name = 'renamed-by-station-01' WHERE name = 'bob'",
+           "DELETE FROM trainees WHERE name = 'bob'", "UPDATE tasks SET title = 'hijacked title', source = '/evil'",
+           "DELETE FROM tasks",
+           "INSERT INTO session_checks(session_id, checked_at, outcome, digest, detail) VALUES (" + id +
+               ", 'now', 'verified', 'x', '')",
+           "INSERT INTO sessions(trainee_id, task_id, started_at, status, station) VALUES (1, 1, 'x', 'complete', "
+           "'station-01')",
+           "UPDATE sessions SET station = 'station-02' WHERE id = " + id}) {
     const std::string error = message_of([&] { station.script(sql, ""); });
     EXPECT_TRUE(permission_error(error)) << sql << "\n" << error;
   }
@@ -187,7 +196,8 @@ TEST_F(PostgresRoleScript, AStationWorksOnItsOwnSessionsAsARunDoes) {
   // Its name must be its login role, and the refusal says so.
   const std::string wrong = message_of([&] { station.begin_session("bob", small_task(), "sim", "", "lab-pc-7"); });
   EXPECT_NE(wrong.find("row-level security"), std::string::npos) << wrong;
-  EXPECT_NE(wrong.find("the station name \"lab-pc-7\" must be this station's login role, \"station-02\""), std::string::npos)
+  EXPECT_NE(wrong.find("the station name \"lab-pc-7\" must be this station's login role, \"station-02\""),
+            std::string::npos)
       << wrong;
   EXPECT_NE(wrong.find("--station NAME, default the host name"), std::string::npos) << wrong;
 }
@@ -201,11 +211,12 @@ TEST_F(PostgresRoleScript, AnInstructorReadsAllRenamesLoggedAndChecksInItsOwnNam
   lee.record_check({done_, CheckOutcome::kVerified, a_result().score.total, "digest", "", "", "someone-else"});
   EXPECT_EQ(lee.load(done_).check->checked_by, "dr-lee") << "the login role, whatever is said";
   PostgresConnection raw(uri("dr-lee"), false);
-  for (const std::string& sql : std::vector<std::string>
-       {"INSERT INTO session_checks(session_id, checked_at, checked_by, outcome, digest, detail) VALUES (" +
-            std::to_string(done_) + ", 'now', 'dr-other', 'verified', 'x', '')",
-        std::string("UPDATE sessions SET score = 0"), std::string("UPDATE tasks SET title = 'x'"),
-        std::string("DELETE FROM trainee_renames"), std::string("UPDATE trainees SET id = 99 WHERE name = 'robert'")}) {
+  for (const std::string& sql : std::vector<std::string>{
+           "INSERT INTO session_checks(session_id, checked_at, checked_by, outcome, digest, detail) VALUES (" +
+               std::to_string(done_) + ", 'now', 'dr-other', 'verified', 'x', '')",
+           std::string("UPDATE sessions SET score = 0"), std::string("UPDATE tasks SET title = 'x'"),
+           std::string("DELETE FROM trainee_renames"),
+           std::string("UPDATE trainees SET id = 99 WHERE name = 'robert'")}) {
     const std::string error = message_of([&] { raw.script(sql, ""); });
     EXPECT_TRUE(permission_error(error)) << sql << "\n" << error;
   }
@@ -221,13 +232,15 @@ TEST(PostgresRoleScriptPrerequisites, WithoutThemNothingIsChangedAndTheMissingOn
     EXPECT_TRUE(grants(c, false).empty());
     EXPECT_TRUE(policies(c).empty());
     if (c.query("SELECT to_regclass('sessions') IS NOT NULL", {}, "").rows[0].integer(0)) {
-      EXPECT_EQ(c.query("SELECT relrowsecurity::int FROM pg_class WHERE relname = 'sessions'", {}, "").rows[0].integer(0), 0);
+      EXPECT_EQ(
+          c.query("SELECT relrowsecurity::int FROM pg_class WHERE relname = 'sessions'", {}, "").rows[0].integer(0), 0);
     }
   };
   // The owner the docs used to describe: no CREATEROLE.
   const std::string plain = owned_database("t_roles_plain", "plain_owner", false);
   std::string error = message_of([&] { PostgresConnection(plain, false).script(roles_sql(), "applying the roles"); });
-  EXPECT_NE(error.find("nothing was changed: missing the CREATEROLE attribute (role plain_owner has neither it nor SUPERUSER"),
+  EXPECT_NE(error.find(
+                "nothing was changed: missing the CREATEROLE attribute (role plain_owner has neither it nor SUPERUSER"),
             std::string::npos)
       << error;
   applied_nothing(plain);
@@ -237,11 +250,14 @@ TEST(PostgresRoleScriptPrerequisites, WithoutThemNothingIsChangedAndTheMissingOn
   EXPECT_NE(error.find("missing the session schema"), std::string::npos) << error;
   applied_nothing(empty);
   // A role with CREATEROLE that does not own the tables.
-  test::postgres_admin("DO $$ BEGIN CREATE ROLE not_owner LOGIN CREATEROLE; EXCEPTION WHEN duplicate_object THEN NULL; END $$");
+  test::postgres_admin(
+      "DO $$ BEGIN CREATE ROLE not_owner LOGIN CREATEROLE; EXCEPTION WHEN duplicate_object THEN NULL; END $$");
   error = message_of([&] {
-    PostgresConnection(test::postgres_uri("t_roles_plain", "not_owner"), false).script(roles_sql(), "applying the roles");
+    PostgresConnection(test::postgres_uri("t_roles_plain", "not_owner"), false)
+        .script(roles_sql(), "applying the roles");
   });
-  EXPECT_NE(error.find("ownership of the session tables (they belong to plain_owner, not not_owner)"), std::string::npos)
+  EXPECT_NE(error.find("ownership of the session tables (they belong to plain_owner, not not_owner)"),
+            std::string::npos)
       << error;
   applied_nothing(plain);
 }

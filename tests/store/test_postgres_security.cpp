@@ -50,14 +50,18 @@ TEST(PostgresRoles, AStationCannotSeeOrAlterAnotherStationsSessions) {
   EXPECT_NE(message_of([&] { b.load(a_done); }).find("no such session"), std::string::npos);
   PostgresConnection b_raw(b_uri, false);
   EXPECT_EQ(b_raw.query("UPDATE sessions SET score = 100 WHERE id = ?", {a_done}, "").changes, 0);
-  EXPECT_NE(message_of([&] { b_raw.query("DELETE FROM sessions WHERE id = ?", {a_done}, ""); }).find("permission denied"),
-            std::string::npos);
-  const std::string forged = message_of([&] { b_raw.query("INSERT INTO metrics VALUES (?, -1, 'forged', 1)", {a_done}, ""); });
-  EXPECT_TRUE(forged.find("row-level security") != std::string::npos || forged.find("permission denied") != std::string::npos)
+  EXPECT_NE(
+      message_of([&] { b_raw.query("DELETE FROM sessions WHERE id = ?", {a_done}, ""); }).find("permission denied"),
+      std::string::npos);
+  const std::string forged =
+      message_of([&] { b_raw.query("INSERT INTO metrics VALUES (?, -1, 'forged', 1)", {a_done}, ""); });
+  EXPECT_TRUE(forged.find("row-level security") != std::string::npos ||
+              forged.find("permission denied") != std::string::npos)
       << forged;
   // Nor insert a session in another station's name.
-  EXPECT_NE(message_of([&] { b.begin_session("ben", small_task(), "sim", "", "station-a"); }).find("row-level security"),
-            std::string::npos);
+  EXPECT_NE(
+      message_of([&] { b.begin_session("ben", small_task(), "sim", "", "station-a"); }).find("row-level security"),
+      std::string::npos);
 
   // a's sessions are as a left them; the instructor reads everything and can write nothing.
   SessionStore instructor(test::postgres_uri("t_roles", "dr-lee"), kReadOnly);
@@ -67,7 +71,8 @@ TEST(PostgresRoles, AStationCannotSeeOrAlterAnotherStationsSessions) {
   EXPECT_EQ(instructor.recording(a_done), "abc");
   EXPECT_FALSE(instructor.load(a_open).info.complete);
   PostgresConnection lee(test::postgres_uri("t_roles", "dr-lee"), false);
-  EXPECT_NE(message_of([&] { lee.query("UPDATE sessions SET score = 0", {}, ""); }).find("permission denied"), std::string::npos);
+  EXPECT_NE(message_of([&] { lee.query("UPDATE sessions SET score = 0", {}, ""); }).find("permission denied"),
+            std::string::npos);
 }
 
 TEST(PostgresConnection, TlsSettingsArePassedToLibpqAsWritten) {
@@ -96,8 +101,9 @@ TEST(PostgresConnection, OnlyAServerThatIsNotThereIsUnreachable) {
   EXPECT_THROW(PostgresConnection("postgresql:///postgres?host=" + empty.string(), false), ServerUnreachable);
   EXPECT_THROW(PostgresConnection("postgresql://needle@127.0.0.1:1/postgres", false), ServerUnreachable);
   // A password refused over the socket, whose connection is made at once.
-  test::postgres_admin("DO $$ BEGIN CREATE ROLE needle_password LOGIN PASSWORD 'right'; "
-                       "EXCEPTION WHEN duplicate_object THEN NULL; END $$");
+  test::postgres_admin(
+      "DO $$ BEGIN CREATE ROLE needle_password LOGIN PASSWORD 'right'; "
+      "EXCEPTION WHEN duplicate_object THEN NULL; END $$");
   try {
     PostgresConnection c(test::postgres_uri("postgres", "needle_password") + "&password=wrong", false);
     ADD_FAILURE() << "connected with a wrong password";
@@ -120,11 +126,13 @@ TEST(PostgresConnection, OnlyAServerThatIsNotThereIsUnreachable) {
 // queries return, against the values written in the SQL; a type it does not read is an error.
 TEST(PostgresConnection, ColumnsAreReadByTheirTypesBinaryForm) {
   PostgresConnection c(test::postgres_uri("postgres"), true);
-  const SqlRow row = c.query("SELECT -2::int2, -70000::int4, -5000000000::int8, 4000000000::oid, true, false, 2.5::float4, "
-                             "-1.25e-300::float8, 12345678.0001::numeric, -0.0625::numeric, 0::numeric, 'text'::text, "
-                             "'name'::name, 'v'::varchar, 'c'::\"char\", '\\x00ff10'::bytea, NULL::numeric, ''::text",
-                             {}, "")
-                         .rows.at(0);
+  const SqlRow row =
+      c.query(
+           "SELECT -2::int2, -70000::int4, -5000000000::int8, 4000000000::oid, true, false, 2.5::float4, "
+           "-1.25e-300::float8, 12345678.0001::numeric, -0.0625::numeric, 0::numeric, 'text'::text, "
+           "'name'::name, 'v'::varchar, 'c'::\"char\", '\\x00ff10'::bytea, NULL::numeric, ''::text",
+           {}, "")
+          .rows.at(0);
   EXPECT_EQ(row.integer(0), -2);
   EXPECT_EQ(row.integer(1), -70000);
   EXPECT_EQ(row.integer(2), -5000000000);
@@ -144,7 +152,8 @@ TEST(PostgresConnection, ColumnsAreReadByTheirTypesBinaryForm) {
   EXPECT_TRUE(std::isnan(row.real(16)));
   EXPECT_EQ(row.text(17), "");
   const std::string error = message_of([&] { c.query("SELECT now() AS started", {}, "reading the clock"); });
-  EXPECT_NE(error.find("reading the clock: column started is of a type the store does not read (OID 1184)"), std::string::npos)
+  EXPECT_NE(error.find("reading the clock: column started is of a type the store does not read (OID 1184)"),
+            std::string::npos)
       << error;
 }
 
@@ -158,9 +167,8 @@ TEST(StoreLocation, APasswordIsNeverShown) {
   EXPECT_EQ(shown_location("postgresql://h/d"), "postgresql://h/d");
   EXPECT_EQ(shown_location("/home/ana/sessions:db@x.db"), "/home/ana/sessions:db@x.db");  // a file is a file
   // A message of a failed connection names the server without the password.
-  const std::string error = message_of([] {
-    SessionStore s("postgresql://needle:hunter2@/no_such_database?host=" + test::postgres_dir());
-  });
+  const std::string error =
+      message_of([] { SessionStore s("postgresql://needle:hunter2@/no_such_database?host=" + test::postgres_dir()); });
   EXPECT_NE(error.find("postgresql://needle:***@/no_such_database"), std::string::npos) << error;
   EXPECT_EQ(error.find("hunter2"), std::string::npos) << error;
 }

@@ -100,7 +100,8 @@ TEST_P(StoreEngines, AComponentsStatusIsReadBackAsTheScoreDecidedIt) {
   store.finish_session(id, result);
   const StoredSession s = store.load(id);
   ASSERT_EQ(s.components.size(), 4u);
-  for (size_t k = 0; k < 4; ++k) EXPECT_EQ(s.components[k].status, result.score.components[k].status) << s.components[k].name;
+  for (size_t k = 0; k < 4; ++k)
+    EXPECT_EQ(s.components[k].status, result.score.components[k].status) << s.components[k].name;
 }
 
 TEST_P(StoreEngines, ErrorsNameTheDatabaseAndWhatFailed) {
@@ -157,9 +158,12 @@ TEST_P(StoreEngines, MigratesASchemaOneDatabase) {
   // New sessions in the migrated database have what schemas 2 and 3 added. (PostgreSQL: the
   // identity column continues after the id an old program gave explicitly only when told; the
   // test gives it no clash by starting from an id of its own.)
-  if (GetParam() == SqlEngine::kPostgres) raw(db)->script("SELECT setval(pg_get_serial_sequence('sessions', 'id'), 1)", "");
-  if (GetParam() == SqlEngine::kPostgres) raw(db)->script("SELECT setval(pg_get_serial_sequence('trainees', 'id'), 1)", "");
-  if (GetParam() == SqlEngine::kPostgres) raw(db)->script("SELECT setval(pg_get_serial_sequence('tasks', 'id'), 1)", "");
+  if (GetParam() == SqlEngine::kPostgres)
+    raw(db)->script("SELECT setval(pg_get_serial_sequence('sessions', 'id'), 1)", "");
+  if (GetParam() == SqlEngine::kPostgres)
+    raw(db)->script("SELECT setval(pg_get_serial_sequence('trainees', 'id'), 1)", "");
+  if (GetParam() == SqlEngine::kPostgres)
+    raw(db)->script("SELECT setval(pg_get_serial_sequence('tasks', 'id'), 1)", "");
   const int64_t id = store.begin_session("old timer", small_task(), "mouse", "", "station-03");
   store.finish_session(id, a_result());
   EXPECT_EQ(store.load(id).info.device, "mouse");
@@ -192,11 +196,14 @@ TEST_P(StoreEngines, MigratesASchemaTwoDatabase) {
 TEST_P(StoreEngines, RefusesADatabaseFromANewerProgram) {
   const std::string db = fresh();
   { SessionStore store(db); }
-  raw(db)->script(GetParam() == SqlEngine::kSqlite ? "PRAGMA user_version = 7" : "UPDATE needle_schema SET version = 7", "");
+  raw(db)->script(GetParam() == SqlEngine::kSqlite ? "PRAGMA user_version = 7" : "UPDATE needle_schema SET version = 7",
+                  "");
   for (bool read_only : {false, true}) {
     try {
-      if (read_only) SessionStore(db, kReadOnly);
-      else SessionStore{db};
+      if (read_only)
+        SessionStore(db, kReadOnly);
+      else
+        SessionStore{db};
       ADD_FAILURE() << "opened a schema-7 database";
     } catch (const SessionStoreError& e) {
       EXPECT_NE(std::string(e.what()).find(db + ": schema version 7 is newer than this program's " +
@@ -210,7 +217,10 @@ TEST_P(StoreEngines, RefusesADatabaseFromANewerProgram) {
 
 TEST_P(StoreEngines, ReadOnlyWritesNothing) {
   const std::string db = fresh();
-  { SessionStore store(db); store.begin_session("ana", small_task(), "sim", ""); }
+  {
+    SessionStore store(db);
+    store.begin_session("ana", small_task(), "sim", "");
+  }
   SessionStore reader(db, kReadOnly);
   EXPECT_EQ(reader.sessions().size(), 1u);
   EXPECT_THROW(reader.begin_session("ben", small_task(), "sim", ""), SessionStoreError);
@@ -254,7 +264,8 @@ TEST_P(StoreEngines, ConcurrentReaderSeesWholeSessionsOnly) {
   std::string reader_error;
   std::thread writer_thread([&] {
     SessionStore writer(db);
-    for (int i = 0; i < kSessions; ++i) writer.finish_session(writer.begin_session("w", small_task(), "sim", ""), a_result());
+    for (int i = 0; i < kSessions; ++i)
+      writer.finish_session(writer.begin_session("w", small_task(), "sim", ""), a_result());
     writing = false;
   });
   std::thread reader_thread([&] {
@@ -349,7 +360,8 @@ TEST_P(StoreEngines, ConcurrentStationsLoseNothing) {
     EXPECT_EQ(*bytes, want) << info.station << " session " << n;
   }
   EXPECT_EQ(uids.size(), all.size());
-  for (int station = 0; station < kStations; ++station) EXPECT_EQ(per_station["station-" + std::to_string(station)], kSessions);
+  for (int station = 0; station < kStations; ++station)
+    EXPECT_EQ(per_station["station-" + std::to_string(station)], kSessions);
 }
 
 TEST_P(StoreEngines, ARecordingIsStoredInChunksAndCheckedWhenRead) {
@@ -360,17 +372,19 @@ TEST_P(StoreEngines, ARecordingIsStoredInChunksAndCheckedWhenRead) {
   std::string all;
   for (int k = 0; k < 3; ++k) {
     std::string bytes(size_t(1000 + k), '\0');
-    for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = char((i * 131 + size_t(k)) & 0xFF);  // every byte value, NULs too
+    for (size_t i = 0; i < bytes.size(); ++i)
+      bytes[i] = char((i * 131 + size_t(k)) & 0xFF);  // every byte value, NULs too
     EXPECT_EQ(store.recording_bytes(id), int64_t(all.size()));
     store.append_recording(id, int64_t(all.size()), bytes);
     all += bytes;
   }
   EXPECT_EQ(store.recording(id), all);
   // One byte changed in the middle chunk: its checksum says so, naming the chunk.
-  const std::string flip = GetParam() == SqlEngine::kSqlite
-                               ? "UPDATE recording_chunks SET bytes = substr(bytes, 1, 9) || x'FF' || substr(bytes, 11) "
-                                 "WHERE byte_offset = 1000"
-                               : "UPDATE recording_chunks SET bytes = set_byte(bytes, 9, 255) WHERE byte_offset = 1000";
+  const std::string flip =
+      GetParam() == SqlEngine::kSqlite
+          ? "UPDATE recording_chunks SET bytes = substr(bytes, 1, 9) || x'FF' || substr(bytes, 11) "
+            "WHERE byte_offset = 1000"
+          : "UPDATE recording_chunks SET bytes = set_byte(bytes, 9, 255) WHERE byte_offset = 1000";
   raw(db)->script(flip, "");
   try {
     store.recording(id);
@@ -429,8 +443,9 @@ TEST_P(StoreEngines, SyncSendsAKeptSessionOnceByItsUid) {
   SessionStore station(station_file.string());
   SessionStore remote(server);
   // Two sessions: one the server never saw, one it saw begin with 1200 bytes of its recording.
-  NewSession half{"ana", "pivot_drill", "Pivot drill", "/tasks/pivot_drill.json", "sim", "recordings/a.nrec",
-                  "station-07", new_session_uid(), "2026-11-20T10:00:00Z"};
+  NewSession half{
+      "ana",        "pivot_drill",     "Pivot drill",         "/tasks/pivot_drill.json", "sim", "recordings/a.nrec",
+      "station-07", new_session_uid(), "2026-11-20T10:00:00Z"};
   const int64_t remote_half = remote.begin_session(half);
   remote.append_recording(remote_half, 0, bytes.substr(0, 1200));
   NewSession unseen = half;

@@ -24,7 +24,8 @@ void without_final_triggers(SqlConnection& c) {
       c.script(std::string("ALTER TABLE ") + t + " DISABLE TRIGGER session_rows_final", "");
     return;
   }
-  for (const SqlRow& row : c.query("SELECT name FROM sqlite_master WHERE type = 'trigger' AND name LIKE '%final%'", {}, "").rows)
+  for (const SqlRow& row :
+       c.query("SELECT name FROM sqlite_master WHERE type = 'trigger' AND name LIKE '%final%'", {}, "").rows)
     c.script("DROP TRIGGER \"" + row.text(0) + "\"", "");
 }
 
@@ -39,19 +40,21 @@ TEST_P(StoreEngines, AFinishedSessionIsFinalWhoeverAsks) {
   const std::unique_ptr<SqlConnection> owner = raw(db);  // the engine's most privileged user
   for (const std::string& sql : std::vector<std::string>{
            "UPDATE sessions SET score = 100, passed = 1 WHERE id = " + id + " AND status = 'complete'",
-        "UPDATE sessions SET status = 'incomplete' WHERE id = " + id, "DELETE FROM sessions WHERE id = " + id,
-        "INSERT INTO step_results VALUES (" + id + ", 9, 'forged', 'completed', 0, 1)",
-        "UPDATE step_results SET outcome = 'completed' WHERE session_id = " + id,
-        "DELETE FROM step_results WHERE session_id = " + id,
-        "INSERT INTO metrics VALUES (" + id + ", -1, 'forged', 1)",
-        "UPDATE metrics SET value = 0 WHERE session_id = " + id, "DELETE FROM metrics WHERE session_id = " + id,
-        "INSERT INTO score_components VALUES (" + id + ", 9, 'forged', 1, 100)",
-        "UPDATE score_components SET value = 1 WHERE session_id = " + id,
-        "INSERT INTO recording_chunks VALUES (" + id + ", 3, " + (GetParam() == SqlEngine::kSqlite ? "x'00'" : "'\\x00'") + ", 0)",
-        "UPDATE recording_chunks SET crc = 0 WHERE session_id = " + id,
-        "DELETE FROM recording_chunks WHERE session_id = " + id,
-        // Nor is a session begun complete, its score set in the same breath.
-        "INSERT INTO sessions(trainee_id, task_id, started_at, status, score) VALUES (1, 1, 'x', 'complete', 100)"}) {
+           "UPDATE sessions SET status = 'incomplete' WHERE id = " + id, "DELETE FROM sessions WHERE id = " + id,
+           "INSERT INTO step_results VALUES (" + id + ", 9, 'forged', 'completed', 0, 1)",
+           "UPDATE step_results SET outcome = 'completed' WHERE session_id = " + id,
+           "DELETE FROM step_results WHERE session_id = " + id,
+           "INSERT INTO metrics VALUES (" + id + ", -1, 'forged', 1)",
+           "UPDATE metrics SET value = 0 WHERE session_id = " + id, "DELETE FROM metrics WHERE session_id = " + id,
+           "INSERT INTO score_components VALUES (" + id + ", 9, 'forged', 1, 100)",
+           "UPDATE score_components SET value = 1 WHERE session_id = " + id,
+           "INSERT INTO recording_chunks VALUES (" + id + ", 3, " +
+               (GetParam() == SqlEngine::kSqlite ? "x'00'" : "'\\x00'") + ", 0)",
+           "UPDATE recording_chunks SET crc = 0 WHERE session_id = " + id,
+           "DELETE FROM recording_chunks WHERE session_id = " + id,
+           // Nor is a session begun complete, its score set in the same breath.
+           "INSERT INTO sessions(trainee_id, task_id, started_at, status, score) VALUES (1, 1, 'x', 'complete', "
+           "100)"}) {
     const std::string error = message_of([&] { owner->script(sql, ""); });
     EXPECT_TRUE(permission_error(error)) << sql << "\n" << error;
   }
@@ -64,7 +67,8 @@ TEST_P(StoreEngines, AFinishedSessionIsFinalWhoeverAsks) {
   // An incomplete session still takes its rows, and is finished once.
   store.append_recording(open, 0, "de");
   store.finish_session(open, a_result());
-  EXPECT_NE(message_of([&] { store.finish_session(open, a_result()); }).find("no incomplete session with that id"), std::string::npos);
+  EXPECT_NE(message_of([&] { store.finish_session(open, a_result()); }).find("no incomplete session with that id"),
+            std::string::npos);
   EXPECT_EQ(store.recording(open), "de");
 }
 
@@ -106,9 +110,8 @@ TEST_P(StoreEngines, MigratesASchemaThreeDatabase) {
   EXPECT_FALSE(store.sessions().at(0).check);
   EXPECT_EQ(verification(store.sessions().at(0)), Verification::kUnverified);
   EXPECT_EQ(store.recording(old_id), "abc");
-  EXPECT_TRUE(permission_error(message_of([&] {
-    raw(db)->script("UPDATE sessions SET score = 100 WHERE id = " + std::to_string(old_id), "");
-  })));
+  EXPECT_TRUE(permission_error(message_of(
+      [&] { raw(db)->script("UPDATE sessions SET score = 100 WHERE id = " + std::to_string(old_id), ""); })));
 }
 
 TEST_P(StoreEngines, ATraineesRenameIsLogged) {
@@ -120,13 +123,14 @@ TEST_P(StoreEngines, ATraineesRenameIsLogged) {
   const TraineeRename r = store.rename_trainee("alise", "alice");
   EXPECT_EQ(r.old_name, "alise");
   EXPECT_EQ(r.new_name, "alice");
-  EXPECT_EQ(r.renamed_at.size(), 20u) << r.renamed_at;  // 2026-11-21T12:00:00Z
+  EXPECT_EQ(r.renamed_at.size(), 20u) << r.renamed_at;                          // 2026-11-21T12:00:00Z
   EXPECT_EQ(r.renamed_by, GetParam() == SqlEngine::kPostgres ? "needle" : "");  // the login role; a file has none
-  EXPECT_EQ(store.load(id).info.trainee, "alice");  // the sessions follow the trainee
+  EXPECT_EQ(store.load(id).info.trainee, "alice");                              // the sessions follow the trainee
   ASSERT_EQ(store.trainee_renames().size(), 1u);
   EXPECT_EQ(store.trainee_renames()[0].old_name, "alise");
   // Refused: no such trainee, a name taken, an empty name; nothing logged for them.
-  EXPECT_NE(message_of([&] { store.rename_trainee("nobody", "x"); }).find("no trainee named \"nobody\""), std::string::npos);
+  EXPECT_NE(message_of([&] { store.rename_trainee("nobody", "x"); }).find("no trainee named \"nobody\""),
+            std::string::npos);
   EXPECT_NE(message_of([&] { store.rename_trainee("alice", "ben"); }).find("a trainee named \"ben\" exists already"),
             std::string::npos);
   EXPECT_NE(message_of([&] { store.rename_trainee("alice", ""); }).find("a name has 1 to 64 bytes"), std::string::npos);
@@ -143,8 +147,13 @@ TEST_P(StoreEngines, ChecksAreKeptAndReadBackWithTheSession) {
   const int64_t id = store.begin_session("ana", small_task(), "sim", "");
   store.finish_session(id, a_result());
   const StoredSession before = store.load(id);
-  SessionCheck check{id, CheckOutcome::kMismatch, before.info.score, result_digest(before), "score: stored 61.5, replay 50",
-                     "2026-11-22T10:00:00Z", "dr-lee"};
+  SessionCheck check{id,
+                     CheckOutcome::kMismatch,
+                     before.info.score,
+                     result_digest(before),
+                     "score: stored 61.5, replay 50",
+                     "2026-11-22T10:00:00Z",
+                     "dr-lee"};
   store.record_check(check);
   check.outcome = CheckOutcome::kVerified;
   check.detail = "";
@@ -155,7 +164,8 @@ TEST_P(StoreEngines, ChecksAreKeptAndReadBackWithTheSession) {
   EXPECT_EQ(after.check->outcome, CheckOutcome::kVerified);  // the latest
   EXPECT_EQ(after.check->checked_at, "2026-11-23T10:00:00Z");
   EXPECT_EQ(after.check->digest, result_digest(before));
-  EXPECT_EQ(after.check->checked_by, GetParam() == SqlEngine::kPostgres ? "needle" : "dr-lee");  // the role, whatever is said
+  EXPECT_EQ(after.check->checked_by,
+            GetParam() == SqlEngine::kPostgres ? "needle" : "dr-lee");  // the role, whatever is said
   EXPECT_EQ(verification_status(after).verdict, Verification::kVerified);
   const SessionInfo listed = store.sessions().at(0);
   EXPECT_EQ(listed.check, CheckOutcome::kVerified);
@@ -169,7 +179,8 @@ TEST_P(StoreEngines, ChecksAreKeptAndReadBackWithTheSession) {
   EXPECT_EQ(verification(store.sessions().at(0)), Verification::kMismatch);
   EXPECT_EQ(verification_status(store.load(id)).verdict, Verification::kMismatch);
   // A metric changed, the score left alone: the listing cannot tell, the detail's digest can.
-  owner->script("UPDATE sessions SET score = " + std::to_string(before.info.score) + " WHERE id = " + std::to_string(id), "");
+  owner->script(
+      "UPDATE sessions SET score = " + std::to_string(before.info.score) + " WHERE id = " + std::to_string(id), "");
   owner->script("UPDATE metrics SET value = 0.5 WHERE name = 'path_length_m' AND step_index = 0", "");
   EXPECT_EQ(verification(store.sessions().at(0)), Verification::kVerified);
   const VerificationStatus status = verification_status(store.load(id));

@@ -14,8 +14,8 @@ namespace needle::test {
 // `run` of the rigid sphere against `uri`, the station's file and the output in `dir`.
 inline std::string rigid_run_arguments(const std::string& uri, const std::filesystem::path& dir) {
   return "run --headless --size 160x120 --trainee ana --station station-01 --task " +
-         quoted(source_dir() / "assets/tasks/rigid_sphere.json") + " --db '" + uri + "' --local " + quoted(dir / "station.db") +
-         " --out " + quoted(dir / "out");
+         quoted(source_dir() / "assets/tasks/rigid_sphere.json") + " --db '" + uri + "' --local " +
+         quoted(dir / "station.db") + " --out " + quoted(dir / "out");
 }
 
 // An empty folder `name` of the store's command-line tests.

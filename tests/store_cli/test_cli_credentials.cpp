@@ -42,7 +42,8 @@ class CliCredentials : public testing::Test {
   }
   // needle-sim ARGS with PGPASSFILE=`passfile`; the output checked for both passwords.
   static ProcessResult needle_sim(const fs::path& passfile, const std::string& args) {
-    ProcessResult r = run_command("NEEDLE_VALIDATION=1 PGPASSFILE=" + quoted(passfile) + " " + needle_sim_exe().string() + " " + args);
+    ProcessResult r = run_command("NEEDLE_VALIDATION=1 PGPASSFILE=" + quoted(passfile) + " " +
+                                  needle_sim_exe().string() + " " + args);
     EXPECT_EQ(r.output.find(kPassword), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find(kWrong), std::string::npos) << r.output;
     return r;
@@ -64,8 +65,8 @@ TEST_F(CliCredentials, TheServerReallyAsksForAScramPassword) {
   const std::string verifier =
       admin.query("SELECT rolpassword FROM pg_authid WHERE rolname = 'needle_password'", {}, "").rows.at(0).text(0);
   EXPECT_EQ(verifier.rfind("SCRAM-SHA-256$", 0), 0u);
-  const ProcessResult none = needle_sim(dir_ / "no_such_passfile", "report --cohort --db '" + socket_uri() + "' --out " +
-                                                                        quoted(dir_ / "none"));
+  const ProcessResult none = needle_sim(dir_ / "no_such_passfile",
+                                        "report --cohort --db '" + socket_uri() + "' --out " + quoted(dir_ / "none"));
   EXPECT_EQ(none.exit_code, 1) << none.output;
   EXPECT_NE(none.output.find("no password supplied"), std::string::npos) << none.output;
 }
@@ -77,25 +78,27 @@ TEST_F(CliCredentials, APasswordFromPgpassfileConnectsAndIsNeverPrinted) {
   const nlohmann::json score = nlohmann::json::parse(std::ifstream(dir_ / "socket" / "score.json"));
   EXPECT_TRUE(score["stored"].get<bool>());
   EXPECT_FALSE(score["kept_for_sync"].get<bool>());
-  const ProcessResult report = needle_sim(right, "report --cohort --db '" + socket_uri() + "' --out " + quoted(dir_ / "cohort"));
+  const ProcessResult report =
+      needle_sim(right, "report --cohort --db '" + socket_uri() + "' --out " + quoted(dir_ / "cohort"));
   ASSERT_EQ(report.exit_code, 0) << report.output;
   EXPECT_GE(nlohmann::json::parse(std::ifstream(dir_ / "cohort" / "cohort.json"))["sessions"].get<int>(), 1);
 }
 
 TEST_F(CliCredentials, AWrongPasswordIsAClearErrorWithoutIt) {
-  const ProcessResult wrong =
-      needle_sim(pass_file(dir_, "wrong", kWrong), "report --cohort --db '" + socket_uri() + "' --out " + quoted(dir_ / "wrong"));
+  const ProcessResult wrong = needle_sim(pass_file(dir_, "wrong", kWrong),
+                                         "report --cohort --db '" + socket_uri() + "' --out " + quoted(dir_ / "wrong"));
   EXPECT_EQ(wrong.exit_code, 1) << wrong.output;
   EXPECT_NE(wrong.output.find("password authentication failed for user \"needle_password\""), std::string::npos)
       << wrong.output;
   EXPECT_NE(wrong.output.find("postgresql:///cli_password"), std::string::npos) << "names the server\n" << wrong.output;
-  EXPECT_NE(wrong.output.find("password retrieved from file"), std::string::npos) << "and where the password came from\n"
-                                                                                 << wrong.output;
+  EXPECT_NE(wrong.output.find("password retrieved from file"), std::string::npos)
+      << "and where the password came from\n"
+      << wrong.output;
   // In the URI (user:password@), the same error, the URI shown with *** for it.
-  const std::string in_uri = "postgresql://needle_password:" + kWrong + "@/cli_password?host=" + postgres_dir() +
-                             "&port=" + postgres_port();
-  const ProcessResult uri = needle_sim(dir_ / "no_such_passfile", "report --cohort --db '" + in_uri + "' --out " +
-                                                                       quoted(dir_ / "wrong_uri"));
+  const std::string in_uri =
+      "postgresql://needle_password:" + kWrong + "@/cli_password?host=" + postgres_dir() + "&port=" + postgres_port();
+  const ProcessResult uri = needle_sim(dir_ / "no_such_passfile",
+                                       "report --cohort --db '" + in_uri + "' --out " + quoted(dir_ / "wrong_uri"));
   EXPECT_EQ(uri.exit_code, 1) << uri.output;
   EXPECT_NE(uri.output.find("password authentication failed"), std::string::npos) << uri.output;
   EXPECT_NE(uri.output.find("postgresql://needle_password:***@/cli_password"), std::string::npos) << uri.output;
@@ -112,12 +115,14 @@ TEST_F(CliCredentials, OverTlsOnly) {
   const std::string verified =
       tls_uri("verify-full") + "&sslrootcert=" + postgres_dir() + "/tls/server.crt&passfile=" + right.string();
   training::PostgresConnection c(verified, true);
-  const training::SqlResult ssl = c.query("SELECT CASE WHEN ssl THEN 1 ELSE 0 END, version FROM pg_stat_ssl WHERE pid = pg_backend_pid()", {}, "");
+  const training::SqlResult ssl =
+      c.query("SELECT CASE WHEN ssl THEN 1 ELSE 0 END, version FROM pg_stat_ssl WHERE pid = pg_backend_pid()", {}, "");
   ASSERT_EQ(ssl.rows.size(), 1u);
   EXPECT_EQ(ssl.rows[0].integer(0), 1);
   EXPECT_EQ(ssl.rows[0].text(1).rfind("TLS", 0), 0u) << ssl.rows[0].text(1);
   // Without TLS the server has no way in over TCP.
-  const ProcessResult plain = needle_sim(right, "report --cohort --db '" + tls_uri("disable") + "' --out " + quoted(dir_ / "plain"));
+  const ProcessResult plain =
+      needle_sim(right, "report --cohort --db '" + tls_uri("disable") + "' --out " + quoted(dir_ / "plain"));
   EXPECT_EQ(plain.exit_code, 1) << plain.output;
   EXPECT_NE(plain.output.find("no encryption"), std::string::npos) << plain.output;
 }

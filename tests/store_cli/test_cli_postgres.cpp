@@ -31,7 +31,8 @@ std::string run_arguments(const std::string& uri, const fs::path& dir, const std
 // The one session DIR/station.db keeps for the server (complete, in its outbox): `sync` twice sends
 // it once (then nothing), and the server holds it complete, from `station`, with the score, the
 // steps and the recording byte for byte of the run's `score` (its score.json).
-void expect_sent_once(const std::string& uri, const fs::path& dir, const std::string& station_name, const nlohmann::json& score) {
+void expect_sent_once(const std::string& uri, const fs::path& dir, const std::string& station_name,
+                      const nlohmann::json& score) {
   const std::string local = file_bytes(score["recording"].get<std::string>());
   ASSERT_GT(local.size(), 1000u);
   std::string uid;
@@ -85,8 +86,8 @@ TEST(CliPostgres, ARunStoresItsSessionAndRecordingOnTheServerAndAReportReplaysIt
   EXPECT_GT(chunks, 10) << "the recording went up in " << chunks << " chunks";
   // On another machine: no recording file, the report replays the server's.
   fs::remove(recording);
-  const ProcessResult report =
-      run_needle_sim("report --db '" + uri + "' --session " + std::to_string(sessions[0].id) + " --out " + quoted(dir / "report"));
+  const ProcessResult report = run_needle_sim("report --db '" + uri + "' --session " + std::to_string(sessions[0].id) +
+                                              " --out " + quoted(dir / "report"));
   ASSERT_EQ(report.exit_code, 0) << report.output;
   EXPECT_EQ(report.output.find("Vulkan validation"), std::string::npos) << report.output;
   for (const char* picture : {"plot_force.png", "plot_depth.png", "review_replay.png"})
@@ -180,11 +181,12 @@ TEST(CliPostgres, TheCohortReportReadsEveryStationsSessions) {
                            "cohort_penetrable_sphere_score.png", "cohort_penetrable_sphere_time_to_target.png"})
     EXPECT_TRUE(fs::is_regular_file(dir / "cohort" / file)) << file << "\n" << report.output;
   // A filter: one station's sessions only.
-  const ProcessResult one = run_needle_sim("report --cohort --station station-good --db '" + uri + "' --out " +
-                                           quoted(dir / "one"));
+  const ProcessResult one =
+      run_needle_sim("report --cohort --station station-good --db '" + uri + "' --out " + quoted(dir / "one"));
   ASSERT_EQ(one.exit_code, 0) << one.output;
   EXPECT_EQ(nlohmann::json::parse(std::ifstream(dir / "one" / "cohort.json"))["sessions"], 1);
-  const ProcessResult bad = run_needle_sim("report --cohort --since yesterday --db '" + uri + "' --out " + quoted(dir / "bad"));
+  const ProcessResult bad =
+      run_needle_sim("report --cohort --since yesterday --db '" + uri + "' --out " + quoted(dir / "bad"));
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("--since: expected a date YYYY-MM-DD, got 'yesterday'"), std::string::npos) << bad.output;
 }
@@ -193,7 +195,8 @@ TEST(CliPostgres, CredentialsAreNeverPrinted) {
   const std::string secret = "s3cret-Pw";
   // The server answers (its socket and port) and refuses: a server that does not answer at all is
   // not an error for run, which keeps the session for sync (ARunThatStartsWhileTheServerIsDown...).
-  const std::string uri = "postgresql://needle:" + secret + "@/no_such_database?host=" + postgres_dir() + "&port=" + postgres_port();
+  const std::string uri =
+      "postgresql://needle:" + secret + "@/no_such_database?host=" + postgres_dir() + "&port=" + postgres_port();
   const fs::path dir = test_output_dir("cli_postgres_secret");
   for (const std::string& command :
        {run_arguments(uri, dir, "station-03"), "report --db '" + uri + "' --session 1 --out " + quoted(dir / "r"),
@@ -204,8 +207,8 @@ TEST(CliPostgres, CredentialsAreNeverPrinted) {
   }
   // From the environment too, and in the password=... form.
   const ProcessResult env = run_command("NEEDLE_DB='postgresql:///no_such_database?host=" + postgres_dir() +
-                                        "&port=" + postgres_port() + "&password=" + secret + "' " + needle_sim_exe().string() + " report --session 1 --out " +
-                                        quoted(dir / "r"));
+                                        "&port=" + postgres_port() + "&password=" + secret + "' " +
+                                        needle_sim_exe().string() + " report --session 1 --out " + quoted(dir / "r"));
   EXPECT_EQ(env.exit_code, 1) << env.output;
   EXPECT_NE(env.output.find("password=***"), std::string::npos) << env.output;
   EXPECT_EQ(env.output.find(secret), std::string::npos) << env.output;

@@ -67,9 +67,10 @@ double seconds_of(const std::function<void()>& f) {
 // refused. A known host where nothing listens is an outage: the run goes on and says so.
 TEST(CliStoreRefusals, ARefusalStopsTheRunAndOnlyAnOutageRunsOffline) {
   const fs::path other_ca = fresh_store_dir("other_ca") / "ca.crt";
-  ASSERT_EQ(run_command("openssl req -x509 -newkey ec -pkeyopt ec_paramgen_curve:prime256v1 -nodes -days 1 -subj /CN=127.0.0.1 "
-                        "-addext subjectAltName=IP:127.0.0.1 -keyout " + quoted(other_ca.parent_path() / "ca.key") +
-                        " -out " + quoted(other_ca))
+  ASSERT_EQ(run_command(
+                "openssl req -x509 -newkey ec -pkeyopt ec_paramgen_curve:prime256v1 -nodes -days 1 -subj /CN=127.0.0.1 "
+                "-addext subjectAltName=IP:127.0.0.1 -keyout " +
+                quoted(other_ca.parent_path() / "ca.key") + " -out " + quoted(other_ca))
                 .exit_code,
             0);
   const std::string tcp = "postgresql://needle@127.0.0.1:" + postgres_port() + "/postgres?sslmode=";
@@ -81,8 +82,9 @@ TEST(CliStoreRefusals, ARefusalStopsTheRunAndOnlyAnOutageRunsOffline) {
       {"password", "postgresql://needle_password:wrong@127.0.0.1:" + postgres_port() + "/postgres?sslmode=require",
        "password authentication failed"},
   };
-  test::postgres_admin("DO $$ BEGIN CREATE ROLE needle_password LOGIN PASSWORD 'right'; "
-                       "EXCEPTION WHEN duplicate_object THEN NULL; END $$");
+  test::postgres_admin(
+      "DO $$ BEGIN CREATE ROLE needle_password LOGIN PASSWORD 'right'; "
+      "EXCEPTION WHEN duplicate_object THEN NULL; END $$");
   for (const auto& refusal : refusals) {
     const fs::path dir = fresh_store_dir(refusal.name);
     const ProcessResult r = run_needle_sim(rigid_run_arguments(refusal.uri, dir));
@@ -98,7 +100,8 @@ TEST(CliStoreRefusals, ARefusalStopsTheRunAndOnlyAnOutageRunsOffline) {
     EXPECT_FALSE(fs::exists(dir / "station.db")) << refusal.name << ": nothing kept for a server that refused";
   }
   const fs::path dir = fresh_store_dir("refused_connection");
-  const ProcessResult r = run_needle_sim(rigid_run_arguments("postgresql://needle@127.0.0.1:" + std::to_string(closed_port()) + "/x", dir));
+  const ProcessResult r =
+      run_needle_sim(rigid_run_arguments("postgresql://needle@127.0.0.1:" + std::to_string(closed_port()) + "/x", dir));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(says(r, "note: the server could not be reached")) << r.output;
   EXPECT_TRUE(says(r, "Connection refused")) << r.output;
@@ -115,7 +118,8 @@ TEST(CliStoreRefusals, AServerThatNeverAnswersHoldsNothingPastTheConnectTimeout)
   const fs::path refused_dir = fresh_store_dir("silent_baseline"), dir = fresh_store_dir("silent");
   ProcessResult baseline, run, sync, cohort;
   const double baseline_s = seconds_of([&] {
-    baseline = run_needle_sim(rigid_run_arguments("postgresql://needle@127.0.0.1:" + std::to_string(closed_port()) + "/x", refused_dir));
+    baseline = run_needle_sim(
+        rigid_run_arguments("postgresql://needle@127.0.0.1:" + std::to_string(closed_port()) + "/x", refused_dir));
   });
   const double run_s = seconds_of([&] { run = run_needle_sim(rigid_run_arguments(uri, dir)); });
   ASSERT_EQ(baseline.exit_code, 0) << baseline.output;
@@ -125,7 +129,8 @@ TEST(CliStoreRefusals, AServerThatNeverAnswersHoldsNothingPastTheConnectTimeout)
   EXPECT_LT(run_s - baseline_s, 10.0) << "the run waited " << run_s - baseline_s << " s for the server";
   const std::string closed = "postgresql://needle@127.0.0.1:" + std::to_string(closed_port()) + "/needle";
   // Seconds a command waited on the silent listener: its time less the same command's on a closed port.
-  const auto waited_s = [&](const std::function<std::string(const std::string&)>& command, ProcessResult& silent_result) {
+  const auto waited_s = [&](const std::function<std::string(const std::string&)>& command,
+                            ProcessResult& silent_result) {
     const double refused_s = seconds_of([&] { run_needle_sim(command(closed)); });
     return seconds_of([&] { silent_result = run_needle_sim(command(uri)); }) - refused_s;
   };

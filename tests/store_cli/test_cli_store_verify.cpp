@@ -32,8 +32,9 @@ TEST(CliStoreVerify, VerifyCatchesAScoreTheOwnerChangedAndARecordingChunkAltered
   // An instructor verifies, and its check is kept under its own role.
   std::ifstream roles(source_dir() / "tools" / "postgres-roles.sql");
   test::postgres_admin({std::istreambuf_iterator<char>(roles), std::istreambuf_iterator<char>()}, "cli_verify");
-  test::postgres_admin("DO $$ BEGIN CREATE ROLE \"dr-verify\" LOGIN IN ROLE needle_instructor; "
-                       "EXCEPTION WHEN duplicate_object THEN NULL; END $$");
+  test::postgres_admin(
+      "DO $$ BEGIN CREATE ROLE \"dr-verify\" LOGIN IN ROLE needle_instructor; "
+      "EXCEPTION WHEN duplicate_object THEN NULL; END $$");
   const std::string instructor = postgres_uri("cli_verify", "dr-verify");
   ProcessResult r = verify(instructor);
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -45,9 +46,10 @@ TEST(CliStoreVerify, VerifyCatchesAScoreTheOwnerChangedAndARecordingChunkAltered
     EXPECT_EQ(training::verification(store.sessions().at(0)), training::Verification::kVerified);
   }
   // The owner role past the trigger: the score raised.
-  test::postgres_admin("ALTER TABLE sessions DISABLE TRIGGER session_final; UPDATE sessions SET score = 100; "
-                       "ALTER TABLE sessions ENABLE TRIGGER session_final",
-                       "cli_verify");
+  test::postgres_admin(
+      "ALTER TABLE sessions DISABLE TRIGGER session_final; UPDATE sessions SET score = 100; "
+      "ALTER TABLE sessions ENABLE TRIGGER session_final",
+      "cli_verify");
   r = verify(instructor);
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_TRUE(says(r, "session 1: MISMATCH")) << r.output;
@@ -56,19 +58,22 @@ TEST(CliStoreVerify, VerifyCatchesAScoreTheOwnerChangedAndARecordingChunkAltered
             training::Verification::kMismatch);
   char stored[32];
   std::snprintf(stored, sizeof stored, "%.17g", score["score"].get<double>());
-  test::postgres_admin(std::string("ALTER TABLE sessions DISABLE TRIGGER session_final; UPDATE sessions SET score = ") + stored +
-                           "; ALTER TABLE sessions ENABLE TRIGGER session_final",
+  test::postgres_admin(std::string("ALTER TABLE sessions DISABLE TRIGGER session_final; UPDATE sessions SET score = ") +
+                           stored + "; ALTER TABLE sessions ENABLE TRIGGER session_final",
                        "cli_verify");
   ASSERT_EQ(verify(uri).exit_code, 0) << "the score put back verifies again";
   // A chunk in the middle altered, its CRC made to match: the recording's own block checksum
   // refuses it. Then altered without the CRC: the chunk's checksum does.
   training::PostgresConnection owner(uri, false);
-  const int64_t middle = owner.query("SELECT byte_offset FROM recording_chunks ORDER BY byte_offset OFFSET "
-                                     "(SELECT count(*) / 2 FROM recording_chunks) LIMIT 1",
-                                     {}, "")
+  const int64_t middle = owner
+                             .query(
+                                 "SELECT byte_offset FROM recording_chunks ORDER BY byte_offset OFFSET "
+                                 "(SELECT count(*) / 2 FROM recording_chunks) LIMIT 1",
+                                 {}, "")
                              .rows.at(0)
                              .integer(0);
-  std::string bytes = owner.query("SELECT bytes FROM recording_chunks WHERE byte_offset = ?", {middle}, "").rows.at(0).blob(0);
+  std::string bytes =
+      owner.query("SELECT bytes FROM recording_chunks WHERE byte_offset = ?", {middle}, "").rows.at(0).blob(0);
   bytes[bytes.size() / 2] ^= 0x10;
   owner.script("ALTER TABLE recording_chunks DISABLE TRIGGER session_rows_final", "");
   owner.query("UPDATE recording_chunks SET bytes = ?, crc = ? WHERE byte_offset = ?",
@@ -81,7 +86,8 @@ TEST(CliStoreVerify, VerifyCatchesAScoreTheOwnerChangedAndARecordingChunkAltered
   owner.query("UPDATE recording_chunks SET crc = crc + 1 WHERE byte_offset = ?", {middle}, "");
   r = verify(instructor);
   EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_TRUE(says(r, "reading the recording of session 1: chunk at byte " + std::to_string(middle) + ": checksum mismatch"))
+  EXPECT_TRUE(
+      says(r, "reading the recording of session 1: chunk at byte " + std::to_string(middle) + ": checksum mismatch"))
       << r.output;
   EXPECT_EQ(training::verification(training::SessionStore(uri, training::kReadOnly).sessions().at(0)),
             training::Verification::kUnverified);

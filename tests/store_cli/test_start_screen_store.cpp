@@ -61,8 +61,8 @@ TEST(StartScreenStore, AnSqliteFileNotMadeYetHasNoSessionsAndIsNotMade) {
 
 TEST(StartScreenStore, AnUnreachableServerIsAnErrorNamingItWithoutThePassword) {
   try {
-    app::start_screen_sessions("postgresql://needle:hunter2@/no_such_database?host=" + postgres_dir() + "&port=" +
-                               postgres_port());
+    app::start_screen_sessions("postgresql://needle:hunter2@/no_such_database?host=" + postgres_dir() +
+                               "&port=" + postgres_port());
     FAIL() << "no error";
   } catch (const std::exception& e) {
     const std::string message = e.what();
@@ -79,7 +79,8 @@ TEST(StartScreenStore, TheStartScreenRunsItsTasksAgainstNeedleDb) {
   const std::string uri = fresh_postgres_database("start_screen_run");
   {
     training::SessionStore server(uri);
-    server.finish_session(server.begin_session({"carla", "quick", "Quick", "", "sim", "", "st-old", "", ""}), scored(50, false));
+    server.finish_session(server.begin_session({"carla", "quick", "Quick", "", "sim", "", "st-old", "", ""}),
+                          scored(50, false));
   }
   const fs::path dir = test_output_dir("start_screen_store") / "run";
   fs::remove_all(dir);
@@ -88,25 +89,30 @@ TEST(StartScreenStore, TheStartScreenRunsItsTasksAgainstNeedleDb) {
   std::ofstream(dir / "config/needle-sim/settings.json")
       << R"({"version": 1, "trainee": "carla", "device": "keyboard", "window": {"width": 640, "height": 360}})";
   const fs::path assets = source_dir() / "assets";
-  std::ofstream(dir / "assets/tasks/quick.json") << nlohmann::json{
-      {"name", "quick"},
-      {"title", "Quick"},
-      {"description", "ends at once"},
-      {"scene", (assets / "scenes/penetrable_sphere.json").string()},
-      {"scenario", (assets / "scenarios/nonholonomic_needle.json").string()},
-      {"markers", {{{"name", "centre"}, {"point", {0.4, 0.0, 0.0}}}}},
-      {"steps", {{{"id", "out"}, {"instruction", "Stay out."}, {"condition", {{"type", "withdrawn"}, {"marker", "centre"}, {"within_m", 0.01}}}}}}}
-                                                         .dump(2);
+  std::ofstream(dir / "assets/tasks/quick.json")
+      << nlohmann::json{{"name", "quick"},
+                        {"title", "Quick"},
+                        {"description", "ends at once"},
+                        {"scene", (assets / "scenes/penetrable_sphere.json").string()},
+                        {"scenario", (assets / "scenarios/nonholonomic_needle.json").string()},
+                        {"markers", {{{"name", "centre"}, {"point", {0.4, 0.0, 0.0}}}}},
+                        {"steps",
+                         {{{"id", "out"},
+                           {"instruction", "Stay out."},
+                           {"condition", {{"type", "withdrawn"}, {"marker", "centre"}, {"within_m", 0.01}}}}}}}
+             .dump(2);
   const fs::path log = dir / "needle-sim.log", script = dir / "drive.sh";
-  std::ofstream(script) << "export XDG_CONFIG_HOME=" << quoted(dir / "config") << " XDG_DATA_HOME=" << quoted(dir / "data")
-                        << " NEEDLE_ASSETS=" << quoted(dir / "assets") << " NEEDLE_DB='" << uri << "'\n"
+  std::ofstream(script) << "export XDG_CONFIG_HOME=" << quoted(dir / "config")
+                        << " XDG_DATA_HOME=" << quoted(dir / "data") << " NEEDLE_ASSETS=" << quoted(dir / "assets")
+                        << " NEEDLE_DB='" << uri << "'\n"
                         << needle_sim_exe().string() << " --station st-screen > " << quoted(log) << " 2>&1 &\napp=$!\n"
                         << "id=$(xdotool search --sync --name '^needle-sim$' | head -1)\n"
                         << "xdotool mousemove --window \"$id\" 300 300; sleep 2; xdotool key Return\n"
                         << "n=0; until grep -q '^score ' " << quoted(log)
-                        << "; do n=$((n+1)); [ $n -gt 600 ] && { kill $app; echo 'driver: the task did not end'; exit 1; }; sleep 0.1; done\n"
-                        << "sleep 1; xdotool key Escape; sleep 2; xdotool key Escape\nwait $app; rc=$?; cat " << quoted(log)
-                        << "; exit $rc\n";
+                        << "; do n=$((n+1)); [ $n -gt 600 ] && { kill $app; echo 'driver: the task did not end'; exit "
+                           "1; }; sleep 0.1; done\n"
+                        << "sleep 1; xdotool key Escape; sleep 2; xdotool key Escape\nwait $app; rc=$?; cat "
+                        << quoted(log) << "; exit $rc\n";
   const ProcessResult r = run_on_virtual_display("sh " + script.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;

@@ -33,8 +33,8 @@ struct DeskWaypoint {
 
 // The wrist angles that turn `start` onto `wanted` (the inverse of haptics::wrist_direction, away
 // from its poles): the tilt changes the angle to the view's axis, the swing turns about it.
-inline void wrist_for(const Eigen::Matrix3d& device_to_scene, const Eigen::Vector3d& start, const Eigen::Vector3d& wanted,
-                      double& swing, double& tilt) {
+inline void wrist_for(const Eigen::Matrix3d& device_to_scene, const Eigen::Vector3d& start,
+                      const Eigen::Vector3d& wanted, double& swing, double& tilt) {
   const Eigen::Vector3d away = device_to_scene.col(1).cross(device_to_scene.col(0)).normalized();
   tilt = std::acos(wanted.normalized().dot(away)) - std::acos(start.normalized().dot(away));
   const Eigen::Vector3d p0 = start - start.dot(away) * away, p = wanted - wanted.dot(away) * away;
@@ -48,7 +48,8 @@ using DeskStart = app::ToolStart;
 inline DeskStart desk_start(app::SessionRig& rig) { return *rig.tool_start(); }
 
 // The start of the rig `needle-sim run --device DEVICE` builds for `task_file` (its files in `dir`).
-inline DeskStart desk_start(const std::filesystem::path& task_file, const std::string& device, const std::filesystem::path& dir) {
+inline DeskStart desk_start(const std::filesystem::path& task_file, const std::string& device,
+                            const std::filesystem::path& dir) {
   const training::Task task = training::load_task(task_file);
   app::RigOptions options;
   options.device = haptics::DeviceSpec::parse(device);
@@ -75,7 +76,8 @@ inline Eigen::Vector3d marker_direction(const training::Task& task, const char* 
 
 // The handle's position (device frame) that puts the tip at `tip` (world), the handle having
 // started at `device_start` with the tip at start.tip.
-inline Eigen::Vector3d device_for(const DeskStart& start, const Eigen::Vector3d& device_start, const Eigen::Vector3d& tip) {
+inline Eigen::Vector3d device_for(const DeskStart& start, const Eigen::Vector3d& device_start,
+                                  const Eigen::Vector3d& tip) {
   return device_start + start.device_to_scene.transpose() * (tip - start.tip);
 }
 
@@ -92,14 +94,14 @@ inline std::vector<DeskWaypoint> penetrable_plan(const training::Task& task, con
   wrist_for(start.device_to_scene, start.direction, down, swing_down, tilt_down);
   const Eigen::Vector3d inserted = entry + 0.03 * axis;
   return {
-      {device(entry - 0.015 * axis), 0.0, 0.0, 3.0},              // above the entry
-      {device(entry - 0.015 * axis), swing_in, tilt_in, 2.0},     // turned onto the axis
-      {device(inserted), swing_in, tilt_in, 6.0},                 // insert 3 cm (4.5 cm of travel)
-      {device(inserted), swing_in, tilt_in, 1.5},                 // hold the depth
-      {device(inserted), swing_down, tilt_down, 4.0},             // pivot about the tip
-      {device(inserted), swing_down, tilt_down, 1.5},             // hold it vertical
-      {device(target), swing_down, tilt_down, 3.0},               // advance to the target
-      {device(target), swing_down, tilt_down, 1.5},               // hold there
+      {device(entry - 0.015 * axis), 0.0, 0.0, 3.0},                // above the entry
+      {device(entry - 0.015 * axis), swing_in, tilt_in, 2.0},       // turned onto the axis
+      {device(inserted), swing_in, tilt_in, 6.0},                   // insert 3 cm (4.5 cm of travel)
+      {device(inserted), swing_in, tilt_in, 1.5},                   // hold the depth
+      {device(inserted), swing_down, tilt_down, 4.0},               // pivot about the tip
+      {device(inserted), swing_down, tilt_down, 1.5},               // hold it vertical
+      {device(target), swing_down, tilt_down, 3.0},                 // advance to the target
+      {device(target), swing_down, tilt_down, 1.5},                 // hold there
       {device(target - 0.085 * down), swing_down, tilt_down, 4.0},  // withdraw
       {device(target - 0.085 * down), swing_down, tilt_down, 1.0},
   };
@@ -118,11 +120,11 @@ inline std::vector<DeskWaypoint> layered_target_plan(const training::Task& task,
   double swing = 0, tilt = 0;
   wrist_for(start.device_to_scene, start.direction, axis, swing, tilt);
   return {
-      {device(entry - 0.015 * axis), 0.0, 0.0, 3.0},            // above the entry
-      {device(entry - 0.015 * axis), swing, tilt, 2.0},         // turned onto the axis
-      {device(entry + depth_m * axis), swing, tilt, 10.0},      // insert (5.2 cm of travel, 5 mm/s)
-      {device(entry + depth_m * axis), swing, tilt, 2.5},       // hold at the target
-      {device(entry - 0.04 * axis), swing, tilt, 6.0},          // withdraw
+      {device(entry - 0.015 * axis), 0.0, 0.0, 3.0},        // above the entry
+      {device(entry - 0.015 * axis), swing, tilt, 2.0},     // turned onto the axis
+      {device(entry + depth_m * axis), swing, tilt, 10.0},  // insert (5.2 cm of travel, 5 mm/s)
+      {device(entry + depth_m * axis), swing, tilt, 2.5},   // hold at the target
+      {device(entry - 0.04 * axis), swing, tilt, 6.0},      // withdraw
       {device(entry - 0.04 * axis), swing, tilt, 1.0},
   };
 }
@@ -152,7 +154,7 @@ inline double plan_seconds(const std::vector<DeskWaypoint>& plan) {
 // (on the tool's start), in half window heights from the centre, x right, y up.
 inline Eigen::Vector2d mouse_cursor_start(const training::Task& task, const DeskStart& start, engine::Extent extent) {
   const std::optional<glm::vec2> px = engine::project_to_screen(engine::load_scene(task.scene).camera, extent,
-                                                                 glm::vec3(start.tip.x(), start.tip.y(), start.tip.z()));
+                                                                glm::vec3(start.tip.x(), start.tip.y(), start.tip.z()));
   if (!px) throw std::logic_error("the tool's start is not in the view");
   const double half = 0.5 * extent.height;
   return {(px->x - 0.5 * extent.width) / half, (half - px->y) / half};
@@ -183,8 +185,8 @@ inline Eigen::Vector3d mouse_device_start(const haptics::MouseView& view, const 
 // cursor's resolution in half heights (0: exact); a turn or move under half of it is not made.
 class MousePlayer {
  public:
-  MousePlayer(std::vector<DeskWaypoint> plan, const DeskStart& start, const haptics::MouseView& view, const Eigen::Vector2d& cursor,
-              double pixel = 0.0)
+  MousePlayer(std::vector<DeskWaypoint> plan, const DeskStart& start, const haptics::MouseView& view,
+              const Eigen::Vector2d& cursor, double pixel = 0.0)
       : plan_(std::move(plan)),
         start_(start),
         device_start_(mouse_device_start(view, cursor)),
@@ -219,7 +221,8 @@ class MousePlayer {
       pressed_ = cursor_;
       mouse_.pointer(cursor_.x(), cursor_.y(), true);
     }
-    const haptics::NeedleDirection direction = axis ? app::needle_direction(start_, *axis) : app::needle_direction(start_, pose);
+    const haptics::NeedleDirection direction =
+        axis ? app::needle_direction(start_, *axis) : app::needle_direction(start_, pose);
     mouse_.set_needle_direction(direction);
     if (turning) {
       cursor_ += turn / haptics::MouseMapping::kRadPerHalfHeight;
@@ -228,7 +231,8 @@ class MousePlayer {
       // none: the cursor does it all), the cursor for the rest, where it must be before the wheel.
       const double* d = direction.device;
       if (std::abs(d[2]) > 0.2)
-        input.notches = std::round((want.device_m.z() - pose.position_m[2]) / (d[2] * haptics::MouseMapping::kDepthPerNotch_m));
+        input.notches =
+            std::round((want.device_m.z() - pose.position_m[2]) / (d[2] * haptics::MouseMapping::kDepthPerNotch_m));
       const double pushed = input.notches * haptics::MouseMapping::kDepthPerNotch_m;
       double x = 0.0, y = 0.0;
       mouse_.cursor_for(want.device_m.x() - pushed * d[0], want.device_m.y() - pushed * d[1], x, y);

@@ -42,7 +42,8 @@ class FullTmpfs {
 
   // Frees about `bytes` (whole 4 KiB pages) for the next writes, the rest still full.
   void leave_free(size_t bytes) {
-    std::filesystem::resize_file(dir_ / "filler", std::filesystem::file_size(dir_ / "filler") - (bytes + 4095) / 4096 * 4096);
+    std::filesystem::resize_file(dir_ / "filler",
+                                 std::filesystem::file_size(dir_ / "filler") - (bytes + 4095) / 4096 * 4096);
   }
 
   bool mounted() const { return mounted_; }

@@ -3,14 +3,16 @@
 // one-definition rule, and the program.)
 #pragma once
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
+
 #include "tests/support/test_paths.hpp"
 
 namespace needle::test {
@@ -45,7 +47,8 @@ struct SplitResult {
 inline SplitResult run_needle_sim_split(const std::string& arguments) {
   const std::filesystem::path err_file = test::output_dir() / ("stderr_" + std::to_string(::getpid()) + ".txt");
   std::filesystem::create_directories(err_file.parent_path());
-  const ProcessResult stdout_only = run_command("(" + test::needle_sim_exe().string() + " " + arguments + " 2>'" + err_file.string() + "')");
+  const ProcessResult stdout_only =
+      run_command("(" + test::needle_sim_exe().string() + " " + arguments + " 2>'" + err_file.string() + "')");
   SplitResult r{stdout_only.exit_code, stdout_only.output, ""};
   std::ifstream in(err_file);
   r.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());

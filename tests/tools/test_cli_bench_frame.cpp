@@ -12,8 +12,10 @@ namespace {
 
 TEST(CliBenchFrame, OffscreenRowsCarryTheContractKeysAndEveryPass) {
   const auto json_path = test_output_dir("cli_bench_frame") / "offscreen.json";
-  ProcessResult r = run_needle_sim("bench frame --contents tissue:20 --sizes 64x48 --targets offscreen --frames 16 "
-                                   "--warmup 2 --json " + quoted(json_path));
+  ProcessResult r = run_needle_sim(
+      "bench frame --contents tissue:20 --sizes 64x48 --targets offscreen --frames 16 "
+      "--warmup 2 --json " +
+      quoted(json_path));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
   const nlohmann::json rows = nlohmann::json::parse(std::ifstream(json_path));
@@ -34,8 +36,10 @@ TEST(CliBenchFrame, OffscreenRowsCarryTheContractKeysAndEveryPass) {
 
 TEST(CliBenchFrame, TheViewsRowDrawsTheSectionAndTheUltrasoundValidationClean) {
   const auto json_path = test_output_dir("cli_bench_frame") / "views.json";
-  ProcessResult r = run_needle_sim("bench frame --contents sphere_ultrasound --sizes 320x240 --targets offscreen --frames 10 "
-                                   "--warmup 2 --views section,ultrasound --variants 'sweep=1;default' --json " + quoted(json_path));
+  ProcessResult r = run_needle_sim(
+      "bench frame --contents sphere_ultrasound --sizes 320x240 --targets offscreen --frames 10 "
+      "--warmup 2 --views section,ultrasound --variants 'sweep=1;default' --json " +
+      quoted(json_path));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
   const nlohmann::json rows = nlohmann::json::parse(std::ifstream(json_path));
@@ -52,9 +56,10 @@ TEST(CliBenchFrame, TheViewsRowDrawsTheSectionAndTheUltrasoundValidationClean) {
 
 TEST(CliBenchFrame, VariantsTakeTurnsInOneRowGroupAndTheScaledOneTimesItsUpscale) {
   const auto json_path = test_output_dir("cli_bench_frame") / "variants.json";
-  ProcessResult r = run_needle_sim("bench frame --contents tissue:20 --sizes 64x48 --targets offscreen --frames 10 "
-                                   "--warmup 2 --variants 'scale=1;scale=0.5;default' --render-scale 0.7 --json " +
-                                   quoted(json_path));
+  ProcessResult r = run_needle_sim(
+      "bench frame --contents tissue:20 --sizes 64x48 --targets offscreen --frames 10 "
+      "--warmup 2 --variants 'scale=1;scale=0.5;default' --render-scale 0.7 --json " +
+      quoted(json_path));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
   const nlohmann::json rows = nlohmann::json::parse(std::ifstream(json_path));
@@ -74,7 +79,8 @@ TEST(CliBenchFrame, WindowRowsDrawTheTaskInAWindow) {
   const auto json_path = test_output_dir("cli_bench_frame") / "window.json";
   ProcessResult r = run_on_virtual_display(test::needle_sim_exe().string() +
                                            " bench frame --contents penetrable_sphere --sizes 320x240 --targets window "
-                                           "--frames 16 --warmup 2 --json " + quoted(json_path));
+                                           "--frames 16 --warmup 2 --json " +
+                                           quoted(json_path));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
   const nlohmann::json rows = nlohmann::json::parse(std::ifstream(json_path));
@@ -85,8 +91,8 @@ TEST(CliBenchFrame, WindowRowsDrawTheTaskInAWindow) {
 }
 
 TEST(CliBenchFrame, WithoutADisplayTheWindowRowsSaySo) {
-  ProcessResult r = run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + test::needle_sim_exe().string() +
-                                " bench frame --frames 10");
+  ProcessResult r =
+      run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + test::needle_sim_exe().string() + " bench frame --frames 10");
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("no display"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("--targets offscreen"), std::string::npos) << r.output;

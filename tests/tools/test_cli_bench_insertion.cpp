@@ -19,11 +19,10 @@ TEST(CliBenchInsertion, JsonCarriesTheContractKeysAndThePlotIsWritten) {
   const auto json_path = dir / "block.json", plot_path = dir / "block.png";
   // 5 mm above the tissue block's skin (top at z = 0.07 m), straight down, 6 cm: the bone plate at
   // z = 0.03 m stops the drive 45 mm in.
-  const ProcessResult r =
-      run_needle_sim("bench insertion --scenario " +
-                     quoted(source_dir() / "assets/scenarios/tissue_block_layers.json") +
-                     " --from 0.33,0,0.075 --dir 0,0,-1 --depth 0.06 --speed 0.01 --hold 0.2 --json " +
-                     quoted(json_path) + " --plot " + quoted(plot_path));
+  const ProcessResult r = run_needle_sim(
+      "bench insertion --scenario " + quoted(source_dir() / "assets/scenarios/tissue_block_layers.json") +
+      " --from 0.33,0,0.075 --dir 0,0,-1 --depth 0.06 --speed 0.01 --hold 0.2 --json " + quoted(json_path) +
+      " --plot " + quoted(plot_path));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("peak_force_N"), std::string::npos) << r.output;  // the table
   const nlohmann::json run = read_json(json_path);
@@ -63,15 +62,17 @@ TEST(CliBenchInsertion, JsonCarriesTheContractKeysAndThePlotIsWritten) {
 }
 
 // With the syringe (docs/TISSUE.md, "The syringe"): the issue's keys on each sample and the losses
-// of resistance, each where the fluid could first go into its layer (within a tick's travel), the one in the epidural space after the held pressure of the 11 N thumb,
-// F / A, and a lower one after it. Bad syringe flags are usage errors (below).
+// of resistance, each where the fluid could first go into its layer (within a tick's travel), the one in the epidural
+// space after the held pressure of the 11 N thumb, F / A, and a lower one after it. Bad syringe flags are usage errors
+// (below).
 TEST(CliBenchInsertion, WithTheSyringeEachSampleHasThePlungerAndTheLossesAreListed) {
   const auto dir = test_output_dir("cli_bench_insertion");
   for (const char* fluid : {"saline", "air"}) {
     const auto json_path = dir / (std::string("lumbar_") + fluid + ".json");
-    const ProcessResult r = run_needle_sim("bench insertion --scenario " + quoted(source_dir() / "assets/scenarios/lumbar_epidural.json") +
-                                           " --from 0.33,0,0.075 --dir 0,0,-1 --depth 0.065 --speed 0.005 --syringe " + fluid +
-                                           " --plunger-force 11 --json " + quoted(json_path));
+    const ProcessResult r =
+        run_needle_sim("bench insertion --scenario " + quoted(source_dir() / "assets/scenarios/lumbar_epidural.json") +
+                       " --from 0.33,0,0.075 --dir 0,0,-1 --depth 0.065 --speed 0.005 --syringe " + fluid +
+                       " --plunger-force 11 --json " + quoted(json_path));
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("losses of resistance"), std::string::npos) << r.output;
     const nlohmann::json run = read_json(json_path);
@@ -82,7 +83,8 @@ TEST(CliBenchInsertion, WithTheSyringeEachSampleHasThePlungerAndTheLossesAreList
     ASSERT_TRUE(run.contains("loss_of_resistance")) << fluid;
     const nlohmann::json* epidural = nullptr;
     for (const nlohmann::json& l : run["loss_of_resistance"]) {
-      for (const char* key : {"depth_m", "layer", "pressure_before_Pa", "pressure_after_Pa"}) ASSERT_TRUE(l.contains(key)) << key;
+      for (const char* key : {"depth_m", "layer", "pressure_before_Pa", "pressure_after_Pa"})
+        ASSERT_TRUE(l.contains(key)) << key;
       if (l["layer"] == "epidural space" && !epidural) epidural = &l;
       // Each loss within a tick's travel (10 um) after where the fluid could first go there: the
       // boundary of the layer it went into, or the puncture of the membrane in front of it (the
@@ -90,7 +92,8 @@ TEST(CliBenchInsertion, WithTheSyringeEachSampleHasThePlungerAndTheLossesAreList
       const double depth = l["depth_m"].get<double>();
       const auto just_after = [&](double at) { return depth >= at - 1e-9 && depth <= at + 1e-5 + 1e-9; };
       bool where = false;
-      for (const nlohmann::json& b : run["boundaries"]) where = where || (b["layer"] == l["layer"] && just_after(b["depth_m"]));
+      for (const nlohmann::json& b : run["boundaries"])
+        where = where || (b["layer"] == l["layer"] && just_after(b["depth_m"]));
       for (const nlohmann::json& p : run["punctures"]) where = where || just_after(p["depth_m"]);
       EXPECT_TRUE(where) << fluid << " " << l.dump();
     }
@@ -102,8 +105,7 @@ TEST(CliBenchInsertion, WithTheSyringeEachSampleHasThePlungerAndTheLossesAreList
 }
 
 TEST(CliBenchInsertion, BadArgumentsAndMissingOutputFoldersAreUsageErrorsBeforeTheRun) {
-  const std::string scenario =
-      quoted(source_dir() / "assets/scenarios/lumbar_epidural.json");
+  const std::string scenario = quoted(source_dir() / "assets/scenarios/lumbar_epidural.json");
   const std::string line = "bench insertion --scenario " + scenario + " --from 0.33,0,0.075 --dir 0,0,-1 ";
   const ProcessResult missing = run_needle_sim(line + "--depth 0.05 --speed 0.005 --json /nonexistent/folder/out.json");
   EXPECT_EQ(missing.exit_code, 2);
@@ -115,7 +117,7 @@ TEST(CliBenchInsertion, BadArgumentsAndMissingOutputFoldersAreUsageErrorsBeforeT
   EXPECT_EQ(run_needle_sim(line + "--depth -1 --speed 0.005").exit_code, 2);
   EXPECT_EQ(run_needle_sim(line + "--depth 0.05 --speed 0.005 --hold -1").exit_code, 2);
   EXPECT_EQ(run_needle_sim(line + "--depth 0.05 --speed 0.005 --syringe water --plunger-force 11").exit_code, 2);
-  EXPECT_EQ(run_needle_sim(line + "--depth 0.05 --speed 0.005 --syringe saline").exit_code, 2);  // no force
+  EXPECT_EQ(run_needle_sim(line + "--depth 0.05 --speed 0.005 --syringe saline").exit_code, 2);    // no force
   EXPECT_EQ(run_needle_sim(line + "--depth 0.05 --speed 0.005 --plunger-force 11").exit_code, 2);  // no syringe
   EXPECT_EQ(run_needle_sim(line + "--depth 0.05 --speed 0.005 --syringe air --plunger-force 1e6").exit_code, 2);
   EXPECT_EQ(run_needle_sim("bench insertion --scenario " + scenario +

@@ -11,7 +11,8 @@ namespace {
 
 TEST(CliBenchRender, JsonRowsCarryTheContractKeys) {
   auto json_path = test_output_dir("cli_bench_render") / "render.json";
-  ProcessResult r = run_needle_sim("bench render --spheres 4,8 --frames 2 --size 64x48 --msaa 1 --json " + quoted(json_path));
+  ProcessResult r =
+      run_needle_sim("bench render --spheres 4,8 --frames 2 --size 64x48 --msaa 1 --json " + quoted(json_path));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   nlohmann::json rows = nlohmann::json::parse(std::ifstream(json_path));
   // One row per sphere and renderer variant, the variants in turn.

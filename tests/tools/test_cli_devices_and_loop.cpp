@@ -29,15 +29,16 @@ TEST(CliDevices, WithADisplayListsTheGamepadsPresent) {
 
 TEST(CliBenchLoop, JsonRowsCarryTheContractKeys) {
   auto json_path = test_output_dir("cli_bench_loop") / "loop.json";
-  ProcessResult r = run_needle_sim("bench loop --rates 500 --seconds 0.3 --device mouse --render-load --json " +
-                                   quoted(json_path));
+  ProcessResult r =
+      run_needle_sim("bench loop --rates 500 --seconds 0.3 --device mouse --render-load --json " + quoted(json_path));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   nlohmann::json rows = nlohmann::json::parse(std::ifstream(json_path));
   ASSERT_EQ(rows.size(), 4u);  // haptic and bare, alone and under the rendering load
   int haptic = 0, loaded = 0;
   for (const auto& row : rows) {
-    for (const char* key : {"loop", "rate_hz", "render_load", "period_err_p50_us", "period_err_p99_us",
-                            "period_err_p999_us", "period_err_max_us", "overruns", "compute_p50_us", "compute_p99_us"}) {
+    for (const char* key :
+         {"loop", "rate_hz", "render_load", "period_err_p50_us", "period_err_p99_us", "period_err_p999_us",
+          "period_err_max_us", "overruns", "compute_p50_us", "compute_p99_us"}) {
       ASSERT_TRUE(row.contains(key)) << key << " in " << row.dump();
     }
     EXPECT_EQ(row["rate_hz"], 500);

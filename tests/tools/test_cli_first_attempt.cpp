@@ -1,9 +1,9 @@
 // The acceptance test of the trainee's screen: a script that knows only what the window shows does
-// the penetrable sphere with the mouse, on its first attempt, and passes. It reads the window's pixels (xwd) and nothing else: the entry
-// and target rings over the 3D view by their colours, the trainee panel's gauges by theirs (how far
-// a bar is filled, against its own tolerance tick or band), the step's progress bar; it moves the
-// real mouse with xdotool. No file of the task, scene or scenario is read and no position is computed
-// from them: where to go is where the rings are drawn, how far is how full the bars are.
+// the penetrable sphere with the mouse, on its first attempt, and passes. It reads the window's pixels (xwd) and
+// nothing else: the entry and target rings over the 3D view by their colours, the trainee panel's gauges by theirs (how
+// far a bar is filled, against its own tolerance tick or band), the step's progress bar; it moves the real mouse with
+// xdotool. No file of the task, scene or scenario is read and no position is computed from them: where to go is where
+// the rings are drawn, how far is how full the bars are.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -42,8 +42,8 @@ Rgb on_screen(unsigned colour) {  // an IM_COL32: R in the low byte
   return {encoded(int(colour & 0xff)), encoded(int((colour >> 8) & 0xff)), encoded(int((colour >> 16) & 0xff))};
 }
 
-const Rgb kEntry = on_screen(ui::kEntryColour), kTarget = on_screen(ui::kTargetColour), kAxis = on_screen(ui::kAxisColour),
-          kBand = on_screen(ui::kBandColour);
+const Rgb kEntry = on_screen(ui::kEntryColour), kTarget = on_screen(ui::kTargetColour),
+          kAxis = on_screen(ui::kAxisColour), kBand = on_screen(ui::kBandColour);
 const Rgb kWhite{255, 255, 255};
 // ImGui's dark style: a progress bar's fill (PlotHistogram, 0.90 0.70 0.00) and its frame (FrameBg,
 // 0.16 0.29 0.48 at 0.54 over the window's background).
@@ -61,7 +61,8 @@ struct Screen {
 };
 
 uint32_t big_endian(const std::string& d, size_t at) {
-  return uint32_t(uint8_t(d[at])) << 24 | uint32_t(uint8_t(d[at + 1])) << 16 | uint32_t(uint8_t(d[at + 2])) << 8 | uint8_t(d[at + 3]);
+  return uint32_t(uint8_t(d[at])) << 24 | uint32_t(uint8_t(d[at + 1])) << 16 | uint32_t(uint8_t(d[at + 2])) << 8 |
+         uint8_t(d[at + 3]);
 }
 
 Screen read_xwd(const fs::path& file) {
@@ -69,8 +70,8 @@ Screen read_xwd(const fs::path& file) {
   const std::string d((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   Screen s;
   if (d.size() < 100) return s;
-  const uint32_t header = big_endian(d, 0), width = big_endian(d, 16), height = big_endian(d, 20), line = big_endian(d, 48),
-                 colours = big_endian(d, 76);
+  const uint32_t header = big_endian(d, 0), width = big_endian(d, 16), height = big_endian(d, 20),
+                 line = big_endian(d, 48), colours = big_endian(d, 76);
   const size_t start = header + size_t(colours) * 12;
   if (d.size() < start + size_t(line) * height) return s;
   s.width = int(width), s.height = int(height);
@@ -136,15 +137,13 @@ class Desk {
   explicit Desk(const fs::path& dir) : dir_(dir) {
     for (display_ = 91; fs::exists("/tmp/.X" + std::to_string(display_) + "-lock"); ++display_) {
     }
-    std::system(("Xvfb :" + std::to_string(display_) + " -screen 0 1600x900x24 -nolisten tcp > /dev/null 2>&1 & echo $! > " +
-                 quoted(dir / "xvfb.pid"))
+    std::system(("Xvfb :" + std::to_string(display_) +
+                 " -screen 0 1600x900x24 -nolisten tcp > /dev/null 2>&1 & echo $! > " + quoted(dir / "xvfb.pid"))
                     .c_str());
     for (int i = 0; i < 100 && !fs::exists("/tmp/.X11-unix/X" + std::to_string(display_)); ++i)
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
-  ~Desk() {
-    std::system(("kill $(cat " + quoted(dir_ / "xvfb.pid") + ") 2>/dev/null").c_str());
-  }
+  ~Desk() { std::system(("kill $(cat " + quoted(dir_ / "xvfb.pid") + ") 2>/dev/null").c_str()); }
   std::string env() const { return "DISPLAY=:" + std::to_string(display_) + " "; }
   std::string output(const std::string& command) const { return run_command(env() + command + " 2>/dev/null").output; }
   void run(const std::string& command) const { std::system((env() + command + " > /dev/null 2>&1").c_str()); }
@@ -210,8 +209,8 @@ void settle(double seconds) { std::this_thread::sleep_for(std::chrono::milliseco
 // What the screen says now.
 struct Reading {
   Screen screen;
-  int panel = 0;           // the trainee panel's left edge
-  int progress = 0;        // pixels of the progress bar filled
+  int panel = 0;     // the trainee panel's left edge
+  int progress = 0;  // pixels of the progress bar filled
   std::optional<Bar> distance, axis, depth;
 };
 
@@ -246,7 +245,8 @@ std::function<void(const std::string&)> log_;  // where align says how it went
 
 void align(const Desk& desk, int step_done_at, Clock::time_point until) {
   const auto done = [&](const Reading& r) {
-    return r.progress > step_done_at || fill(r.axis) <= 10 || (r.axis && r.axis->tick >= 0 && r.axis->fill_end < r.axis->tick - 2);
+    return r.progress > step_done_at || fill(r.axis) <= 10 ||
+           (r.axis && r.axis->tick >= 0 && r.axis->fill_end < r.axis->tick - 2);
   };
   const auto look = [&](bool swing, int drag) {
     desk.turn(swing ? drag : 0, swing ? 0 : drag);
@@ -291,8 +291,9 @@ void align(const Desk& desk, int step_done_at, Clock::time_point until) {
 TEST(CliFirstAttempt, DISABLED_AScriptThatReadsOnlyTheScreenPassesThePenetrableSphereWithTheMouse) {
   const fs::path dir = process_folder(test_output_dir("cli_first_attempt"));
   Desk desk(dir);
-  desk.start(needle_sim_exe().string() + " run --device mouse --size 1280x720 --db " + quoted(dir / "sessions.db") + " --out " +
-           quoted(dir / "out") + " > " + quoted(dir / "run.log") + " 2>&1 & echo $! > " + quoted(dir / "run.pid"));
+  desk.start(needle_sim_exe().string() + " run --device mouse --size 1280x720 --db " + quoted(dir / "sessions.db") +
+             " --out " + quoted(dir / "out") + " > " + quoted(dir / "run.log") + " 2>&1 & echo $! > " +
+             quoted(dir / "run.pid"));
   std::string said;
   const Clock::time_point began = Clock::now();
   const auto log = [&](const std::string& line) {
@@ -352,7 +353,8 @@ TEST(CliFirstAttempt, DISABLED_AScriptThatReadsOnlyTheScreenPassesThePenetrableS
     on_the_ring();
   }
   r = read(desk);
-  log("approach: progress " + std::to_string(r.progress) + ", " + std::to_string(left) + " px reckoned left at its end");
+  log("approach: progress " + std::to_string(r.progress) + ", " + std::to_string(left) +
+      " px reckoned left at its end");
   ASSERT_GT(r.progress, approached) << said;
   Clock::time_point until;
 
@@ -380,7 +382,8 @@ TEST(CliFirstAttempt, DISABLED_AScriptThatReadsOnlyTheScreenPassesThePenetrableS
   // fill is inside its tolerance tick and the step ends.
   const int pivoted = r.progress;
   align(desk, pivoted, Clock::now() + std::chrono::seconds(27));
-  for (until = Clock::now() + std::chrono::seconds(3); read(desk).progress == pivoted && Clock::now() < until;) settle(0.2);
+  for (until = Clock::now() + std::chrono::seconds(3); read(desk).progress == pivoted && Clock::now() < until;)
+    settle(0.2);
   r = read(desk);
   log("pivot: progress " + std::to_string(r.progress));
   ASSERT_GT(r.progress, pivoted) << said;
@@ -398,13 +401,15 @@ TEST(CliFirstAttempt, DISABLED_AScriptThatReadsOnlyTheScreenPassesThePenetrableS
       break;
     }
     // Well inside the tolerance (the tick): hold; inside it but near its edge, a notch more.
-    if (r.distance->tick >= 0 && r.distance->fill_end - r.distance->left < 0.6 * (r.distance->tick - r.distance->left)) {
+    if (r.distance->tick >= 0 &&
+        r.distance->fill_end - r.distance->left < 0.6 * (r.distance->tick - r.distance->left)) {
       settle(0.3);
       continue;
     }
     const int now = fill(r.distance);
-    log("advance: distance " + std::to_string(now) + " px (tolerance at " + std::to_string(r.distance->tick - r.distance->left) +
-        "), off the axis " + std::to_string(fill(r.axis)) + " px");
+    log("advance: distance " + std::to_string(now) + " px (tolerance at " +
+        std::to_string(r.distance->tick - r.distance->left) + "), off the axis " + std::to_string(fill(r.axis)) +
+        " px");
     if (now > best + 4) {
       desk.wheel(-1);
       settle(0.3);
@@ -425,13 +430,16 @@ TEST(CliFirstAttempt, DISABLED_AScriptThatReadsOnlyTheScreenPassesThePenetrableS
   settle(0.5);
   const std::pair<int, int> at = desk.cursor();
   desk.move(at.first, std::max(5, at.second - 150));
-  for (until = Clock::now() + std::chrono::seconds(10); !fs::exists(dir / "out" / "score.json") && Clock::now() < until;) settle(0.2);
+  for (until = Clock::now() + std::chrono::seconds(10);
+       !fs::exists(dir / "out" / "score.json") && Clock::now() < until;)
+    settle(0.2);
   desk.run("kill $(cat " + quoted(dir / "run.pid") + ")");
   settle(1.0);
 
   ASSERT_TRUE(fs::exists(dir / "out" / "score.json")) << said << run_command("cat " + quoted(dir / "run.log")).output;
   const nlohmann::json score = nlohmann::json::parse(std::ifstream(dir / "out" / "score.json"));
-  for (const nlohmann::json& step : score["steps"]) EXPECT_EQ(step["outcome"], "completed") << step["id"] << "\n" << said;
+  for (const nlohmann::json& step : score["steps"])
+    EXPECT_EQ(step["outcome"], "completed") << step["id"] << "\n" << said;
   EXPECT_TRUE(score["passed"].get<bool>()) << score.dump(2) << "\n" << said;
   std::printf("first attempt from the screen alone: score %.1f, %s\n%s", score["score"].get<double>(),
               score["passed"].get<bool>() ? "passed" : "not passed", said.c_str());

@@ -33,7 +33,8 @@ TEST(CliHapticsBench, PrecisionRowsCarryTheContractKeys) {
   const auto rows = rows_of("bench precision --horizon 0.008", test::output_dir().string() + "/bench_precision.json");
   ASSERT_EQ(rows.size(), 14u);  // 2 integrators × 7 steps
   for (const auto& row : rows)
-    for (const char* key : {"integrator", "dt_s", "time_per_step_us", "error", "drift_mps", "fitted_order", "theoretical_order"})
+    for (const char* key :
+         {"integrator", "dt_s", "time_per_step_us", "error", "drift_mps", "fitted_order", "theoretical_order"})
       EXPECT_TRUE(row.contains(key)) << key;
   EXPECT_EQ(rows.front()["dt_s"].get<double>(), 0.004);
   EXPECT_EQ(rows.back()["dt_s"].get<double>(), 6.25e-5);
@@ -43,7 +44,8 @@ TEST(CliHapticsBench, BadArgumentsAreUsageErrors) {
   EXPECT_EQ(test::run_needle_sim_split("bench tick --ticks 0").exit_code, 2);
   const auto huge = test::run_needle_sim_split("bench tick --ticks 9223372036854775807");
   EXPECT_EQ(huge.exit_code, 2);
-  EXPECT_NE(huge.err.find("--ticks: expected a whole number from 1 to 100000000, got '9223372036854775807'"), std::string::npos)
+  EXPECT_NE(huge.err.find("--ticks: expected a whole number from 1 to 100000000, got '9223372036854775807'"),
+            std::string::npos)
       << huge.err;
   EXPECT_EQ(test::run_needle_sim_split("bench precision --horizon 0.001").exit_code, 2);
   EXPECT_EQ(test::run_needle_sim_split("bench stability --sustained 1").exit_code, 2);
@@ -53,7 +55,8 @@ TEST(CliHapticsBench, BadArgumentsAreUsageErrors) {
 TEST(CliHapticsBench, TheBenchGroupListsItsBenches) {
   const auto help = test::run_needle_sim_split("bench --help");
   EXPECT_EQ(help.exit_code, 0);
-  for (const char* bench : {"bench deform", "bench loop", "bench precision", "bench render", "bench stability", "bench tick"})
+  for (const char* bench :
+       {"bench deform", "bench loop", "bench precision", "bench render", "bench stability", "bench tick"})
     EXPECT_NE(help.out.find(std::string("  needle-sim ") + bench), std::string::npos) << bench << "\n" << help.out;
   const auto bare = test::run_needle_sim_split("bench");
   EXPECT_EQ(bare.exit_code, 2);

@@ -39,8 +39,9 @@ TEST(CliHapticsModel, AUrdfThatUrdfdomRejectsIsOneLine) {
     <parent link="base"/><child link="arm"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint></robot>)";
   const auto r = test::run_needle_sim_split("model --robot " + file + " --q 0");
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(r.err, "needle-sim model: error: " + file + ": not a valid URDF document: Inertial: mass [nan] is not a float; "
-                   "Could not parse inertial element for Link [arm]\n");
+  EXPECT_EQ(r.err, "needle-sim model: error: " + file +
+                       ": not a valid URDF document: Inertial: mass [nan] is not a float; "
+                       "Could not parse inertial element for Link [arm]\n");
 }
 
 TEST(CliHapticsModel, MissingFileIsAnError) {

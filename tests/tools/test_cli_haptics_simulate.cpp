@@ -15,15 +15,16 @@ TEST(CliHapticsSimulate, WritesTicksCsvAndSummaryWithTheIssueKeys) {
   const std::string out = test::output_dir().string() + "/simulate_holonomic";
   std::filesystem::remove_all(out);
   const auto r = test::run_needle_sim_split("simulate --scenario " + test::source_dir().string() +
-                                      "/assets/scenarios/holonomic_sphere.json --out " + out);
+                                            "/assets/scenarios/holonomic_sphere.json --out " + out);
   ASSERT_EQ(r.exit_code, 0);
   std::ifstream summary_file(out + "/summary.json");
   ASSERT_TRUE(summary_file);
   const auto summary = nlohmann::json::parse(summary_file);
-  for (const char* key : {"position_rms_free_m", "position_max_free_m", "position_rms_contact_m", "position_max_contact_m",
-                          "force_rms_N", "force_max_N", "max_penetration_m", "max_lateral_speed_mps", "max_axis_deviation_m",
-                          "energy_error_J", "faults", "punctures", "tissue_work_J", "hand_work_J", "hand_work_min_J",
-                          "world_dissipated_min_J", "saturated_s", "passivity_damped_s"})
+  for (const char* key :
+       {"position_rms_free_m", "position_max_free_m", "position_rms_contact_m", "position_max_contact_m", "force_rms_N",
+        "force_max_N", "max_penetration_m", "max_lateral_speed_mps", "max_axis_deviation_m", "energy_error_J", "faults",
+        "punctures", "tissue_work_J", "hand_work_J", "hand_work_min_J", "world_dissipated_min_J", "saturated_s",
+        "passivity_damped_s"})
     EXPECT_TRUE(summary.contains(key)) << key;
   EXPECT_EQ(summary.size(), 18u) << "exactly the issues' keys";
   EXPECT_TRUE(summary["punctures"].empty());  // a rigid sphere: no tissue

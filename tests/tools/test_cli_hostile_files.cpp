@@ -78,15 +78,17 @@ TEST(CliHostileFiles, ADeeplyNestedUrdfIsRefusedBeforeItIsParsed) {
   for (int k = 0; k < 100000; ++k) xml += "<link>";
   for (int k = 0; k < 100000; ++k) xml += "</link>";
   std::ofstream(dir / "deep.urdf") << xml << "</robot>\n";
-  expect_refused(within_ten_seconds("model --robot " + quoted(dir / "deep.urdf") + " --q 0"),
-                 (dir / "deep.urdf").string() + ": not a valid URDF document: elements nested deeper than 64 levels (line 1)");
+  expect_refused(
+      within_ten_seconds("model --robot " + quoted(dir / "deep.urdf") + " --q 0"),
+      (dir / "deep.urdf").string() + ": not a valid URDF document: elements nested deeper than 64 levels (line 1)");
 }
 
 TEST(CliHostileFiles, AFifoOrADeviceGivenAsARobotIsRefusedWithoutReadingIt) {
   const fs::path fifo = folder("fifo") / "robot.urdf";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   for (const std::string& path : {fifo.string(), std::string("/dev/zero")})  // nobody writes the FIFO; zeros never end
-    expect_refused(within_ten_seconds("model --robot " + quoted(fs::path(path)) + " --q 0"), path + ": not a regular file (a device or a pipe)");
+    expect_refused(within_ten_seconds("model --robot " + quoted(fs::path(path)) + " --q 0"),
+                   path + ": not a regular file (a device or a pipe)");
 }
 
 // The thesis's rigid-sphere scenario with `pointer` set to `value`, written into `dir`.
@@ -116,12 +118,14 @@ TEST(CliHostileFiles, AScenarioThatWouldHangOrFailInsideIsRefusedNamingTheKey) {
 TEST(CliHostileFiles, ATaskWithATolerancePastItsRangeIsRefusedNamingTheKey) {
   const fs::path dir = folder("task");
   json t = json::parse(std::ifstream(kAssets / "tasks/rigid_sphere.json"));
-  for (const char* key : {"scene", "scenario"}) t[key] = fs::weakly_canonical(kAssets / "tasks" / t[key].get<std::string>()).string();
+  for (const char* key : {"scene", "scenario"})
+    t[key] = fs::weakly_canonical(kAssets / "tasks" / t[key].get<std::string>()).string();
   t["steps"][0]["condition"]["within_m"] = 1e300;
   std::ofstream(dir / "rigid_sphere.json") << t.dump(1);
-  expect_refused(within_ten_seconds("run --headless --task " + quoted(dir / "rigid_sphere.json") + " --out " + quoted(dir / "out") +
-                                    " --db " + quoted(dir / "s.db")),
-                 (dir / "rigid_sphere.json").string() + ": /steps/0/condition/within_m: must be in (0, 1] m, got 1e+300");
+  expect_refused(
+      within_ten_seconds("run --headless --task " + quoted(dir / "rigid_sphere.json") + " --out " +
+                         quoted(dir / "out") + " --db " + quoted(dir / "s.db")),
+      (dir / "rigid_sphere.json").string() + ": /steps/0/condition/within_m: must be in (0, 1] m, got 1e+300");
 }
 
 TEST(CliHostileFiles, ACheckedRecordingWithNaNJointsIsRefusedAsDamagedAtItsTick) {
@@ -148,12 +152,14 @@ TEST(CliHostileFiles, ACheckedRecordingWithNaNJointsIsRefusedAsDamagedAtItsTick)
   const uint32_t header_crc = haptics::crc32(&bytes[block], 20);
   std::memcpy(&bytes[block + 20], &header_crc, 4);
   const fs::path bad = dir / "nan_joints.nrec";
-  std::ofstream(bad, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  std::ofstream(bad, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
 
-  expect_refused(within_ten_seconds("run --headless --size 160x120 --device " + quoted(fs::path("replay:" + bad.string())) +
-                                    " --out " + quoted(dir / "replay") + " --db " + quoted(dir / "s.db")),
-                 bad.string() + ": tick 1000 at byte " + std::to_string(block + haptics::kBlockHeaderBytes) +
-                     ": reading joint_rad[0] = nan, outside [-1e+06, 1e+06]: not what a run records (damaged)");
+  expect_refused(
+      within_ten_seconds("run --headless --size 160x120 --device " + quoted(fs::path("replay:" + bad.string())) +
+                         " --out " + quoted(dir / "replay") + " --db " + quoted(dir / "s.db")),
+      bad.string() + ": tick 1000 at byte " + std::to_string(block + haptics::kBlockHeaderBytes) +
+          ": reading joint_rad[0] = nan, outside [-1e+06, 1e+06]: not what a run records (damaged)");
 }
 
 }  // namespace

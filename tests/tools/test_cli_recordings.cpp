@@ -12,8 +12,8 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "cli_process.hpp"
 #include "haptics/recording/session_format.hpp"
@@ -32,7 +32,8 @@ std::vector<uint8_t> file_bytes(const fs::path& path) {
 }
 
 void write_bytes(const fs::path& path, const std::vector<uint8_t>& bytes) {
-  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
 }
 
 struct RunOutput {
@@ -42,8 +43,9 @@ struct RunOutput {
 };
 
 RunOutput run(const std::string& arguments, const fs::path& out, const fs::path& db) {
-  RunOutput r{run_needle_sim("run --headless --size 160x120 --trainee ana " + arguments + " --out " + quoted(out) + " --db " + quoted(db)),
-        out, std::nullopt};
+  RunOutput r{run_needle_sim("run --headless --size 160x120 --trainee ana " + arguments + " --out " + quoted(out) +
+                             " --db " + quoted(db)),
+              out, std::nullopt};
   if (fs::exists(out / "score.json")) r.score = nlohmann::json::parse(std::ifstream(out / "score.json"));
   return r;
 }
@@ -54,7 +56,8 @@ RunOutput replay(const fs::path& recording, const fs::path& out, const fs::path&
 
 // A headless run of `task` (a shipped one's name, or a file) by `op`; its recording.
 fs::path live_run(const fs::path& dir, const std::string& task, const std::string& op) {
-  const fs::path file = task.find('/') == std::string::npos ? source_dir() / "assets/tasks" / (task + ".json") : fs::path(task);
+  const fs::path file =
+      task.find('/') == std::string::npos ? source_dir() / "assets/tasks" / (task + ".json") : fs::path(task);
   const RunOutput live = run("--task " + quoted(file) + " --operator " + op, dir / "live", dir / "sessions.db");
   EXPECT_EQ(live.process.exit_code, 0) << live.process.output;
   return live.score ? fs::path((*live.score)["recording"].get<std::string>()) : fs::path();
@@ -77,7 +80,8 @@ TEST(CliRecordings, DamageIsRefusedByReplayAndReportNamingTheFileAndTheOffset) {
   const std::vector<uint8_t> good = file_bytes(recording);
   const uint64_t block = block_offset(good, 3000);
   const fs::path copy = dir / "copy.nrec";
-  const std::string damaged = copy.string() + ": block at byte " + std::to_string(block) + ": records checksum mismatch (damaged)";
+  const std::string damaged =
+      copy.string() + ": block at byte " + std::to_string(block) + ": records checksum mismatch (damaged)";
 
   std::vector<uint8_t> bad = good;  // 0xFF over a record
   std::fill(bad.begin() + long(block) + 30, bad.begin() + long(block) + 300, 0xFF);
@@ -102,7 +106,8 @@ TEST(CliRecordings, DamageIsRefusedByReplayAndReportNamingTheFileAndTheOffset) {
   write_bytes(copy, bad);
   r = replay(copy, dir / "rate", dir / "sessions.db");
   EXPECT_EQ(r.process.exit_code, 1) << r.process.output;
-  EXPECT_TRUE(says(r.process, copy.string() + ": header: checksum mismatch: the header was changed or damaged")) << r.process.output;
+  EXPECT_TRUE(says(r.process, copy.string() + ": header: checksum mismatch: the header was changed or damaged"))
+      << r.process.output;
 
   // Nothing refused was stored: the database holds the live session alone.
   training::SessionStore store(dir / "sessions.db");
@@ -133,8 +138,8 @@ TEST(CliRecordings, ACutRecordingReplaysIncompleteAndAnEmptyOneIsAnError) {
   // Cut 2 s in, before the first step (the touch) ended: stored only when asked (--store).
   RunOutput r = replay(cut_file, dir / "cut", dir / "sessions.db", " --store");
   EXPECT_EQ(r.process.exit_code, 0) << r.process.output;
-  EXPECT_TRUE(says(r.process, "note: " + cut_file.string() + ": cut at byte " + std::to_string(block_offset(good, 2000)) +
-                                  " after 2000 ticks"))
+  EXPECT_TRUE(says(r.process, "note: " + cut_file.string() + ": cut at byte " +
+                                  std::to_string(block_offset(good, 2000)) + " after 2000 ticks"))
       << r.process.output;
   EXPECT_TRUE(says(r.process, "stays incomplete")) << r.process.output;
   EXPECT_FALSE(r.score) << "a cut replay has no score";
@@ -163,7 +168,8 @@ TEST(CliRecordings, ACutRecordingReplaysIncompleteAndAnEmptyOneIsAnError) {
   write_bytes(cut_file, {good.begin(), good.begin() + long(block_offset(good, 0))});
   r = replay(cut_file, dir / "empty", dir / "sessions.db");
   EXPECT_EQ(r.process.exit_code, 1) << r.process.output;
-  EXPECT_TRUE(says(r.process, cut_file.string() + ": no ticks recorded (its run stopped before its first tick)")) << r.process.output;
+  EXPECT_TRUE(says(r.process, cut_file.string() + ": no ticks recorded (its run stopped before its first tick)"))
+      << r.process.output;
   EXPECT_FALSE(r.score);
 }
 
@@ -185,7 +191,8 @@ TEST(CliRecordings, AReplayScoresTheTaskAsRecordedNotAsItsFileIsNow) {
   std::ofstream(task_file) << task.dump(2);
   const RunOutput r = replay(recording, dir / "replay", dir / "sessions.db");
   ASSERT_EQ(r.process.exit_code, 0) << r.process.output;
-  EXPECT_TRUE(says(r.process, "note: " + task_file.string() + " has changed since the recording: the replay runs the task "
+  EXPECT_TRUE(says(r.process, "note: " + task_file.string() +
+                                  " has changed since the recording: the replay runs the task "
                                   "as it was recorded"))
       << r.process.output;
   ASSERT_TRUE(r.score);
@@ -218,14 +225,17 @@ struct LiveRecording {
 LiveRecording record_under_gains(const fs::path& dir, const std::string& task_name,
                                  const std::function<void(nlohmann::json&)>& edit) {
   nlohmann::json task = nlohmann::json::parse(std::ifstream(source_dir() / "assets/tasks" / (task_name + ".json")));
-  const fs::path scenario_file = (source_dir() / "assets/tasks" / task["scenario"].get<std::string>()).lexically_normal();
+  const fs::path scenario_file =
+      (source_dir() / "assets/tasks" / task["scenario"].get<std::string>()).lexically_normal();
   nlohmann::json scenario = nlohmann::json::parse(std::ifstream(scenario_file));
   for (const char* key : {"master_urdf", "virtual_urdf"})
     scenario[key] = (scenario_file.parent_path() / scenario[key].get<std::string>()).lexically_normal().string();
-  if (scenario.contains("tissue") && scenario["tissue"].contains("layers"))  // parameter files, from the scenario's folder
+  if (scenario.contains("tissue") &&
+      scenario["tissue"].contains("layers"))  // parameter files, from the scenario's folder
     for (nlohmann::json& layer : scenario["tissue"]["layers"])
       if (layer.contains("parameters") && layer["parameters"].is_string())
-        layer["parameters"] = (scenario_file.parent_path() / layer["parameters"].get<std::string>()).lexically_normal().string();
+        layer["parameters"] =
+            (scenario_file.parent_path() / layer["parameters"].get<std::string>()).lexically_normal().string();
   edit(scenario["gains"]);
   std::ofstream(dir / "scenario.json") << scenario.dump(2);
   task["scene"] = (source_dir() / "assets/tasks" / task["scene"].get<std::string>()).lexically_normal().string();
@@ -279,9 +289,11 @@ TEST(CliRecordings, ARecordingMadeBeforeTheToolLawReplaysUnderTheThesisLaw) {
   const fs::path dir = process_folder(test_output_dir("cli_recordings") / "old_law");
   const LiveRecording live = record_under_gains(dir, "rigid_sphere", [](nlohmann::json& g) { g["law"] = "thesis"; });
   ASSERT_FALSE(live.recording.empty());
-  const RunOutput old = replay_with_gains(dir, live.recording, "before_the_tool_law", [](nlohmann::json& g) { g.erase("law"); });
+  const RunOutput old =
+      replay_with_gains(dir, live.recording, "before_the_tool_law", [](nlohmann::json& g) { g.erase("law"); });
   EXPECT_EQ(without_recording(old.score), live.score);
-  const RunOutput tool = replay_with_gains(dir, live.recording, "named_tool", [](nlohmann::json& g) { g["law"] = "tool"; });
+  const RunOutput tool =
+      replay_with_gains(dir, live.recording, "named_tool", [](nlohmann::json& g) { g["law"] = "tool"; });
   EXPECT_NE(without_recording(tool.score)["metrics"], live.score["metrics"]);
 }
 
@@ -301,14 +313,16 @@ nlohmann::json expect_replayed_without_the_spring(const std::string& folder, con
     ADD_FAILURE() << task << ": no recording";
     return nullptr;
   }
-  const RunOutput old = replay_with_gains(dir, live.recording, "before_the_spring", [&](nlohmann::json& g) { g.erase(key); });
+  const RunOutput old =
+      replay_with_gains(dir, live.recording, "before_the_spring", [&](nlohmann::json& g) { g.erase(key); });
   if (!old.score) {
     ADD_FAILURE() << task << ": the replay without " << key << " scored nothing";
     return nullptr;
   }
   EXPECT_EQ(without_recording(old.score), live.score) << key;
   EXPECT_TRUE(same_commands(live.recording, (*old.score)["recording"].get<std::string>())) << key;
-  const RunOutput spring = replay_with_gains(dir, live.recording, "named_spring", [&](nlohmann::json& g) { g[key] = stiffness; });
+  const RunOutput spring =
+      replay_with_gains(dir, live.recording, "named_spring", [&](nlohmann::json& g) { g[key] = stiffness; });
   if (!spring.score) {
     ADD_FAILURE() << task << ": the replay with " << key << " scored nothing";
     return nullptr;
@@ -347,7 +361,8 @@ TEST(CliRecordings, WhatIsNotARecordingIsRefusedAtOnce) {
   RunOutput r = replay("/dev/zero", dir / "zero", dir / "sessions.db");
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
   EXPECT_EQ(r.process.exit_code, 1) << r.process.output;
-  EXPECT_TRUE(says(r.process, "/dev/zero: not a regular file (a device or a pipe), not a recording")) << r.process.output;
+  EXPECT_TRUE(says(r.process, "/dev/zero: not a regular file (a device or a pipe), not a recording"))
+      << r.process.output;
 
   r = replay(dir, dir / "folder", dir / "sessions.db");
   EXPECT_EQ(r.process.exit_code, 1) << r.process.output;
@@ -369,8 +384,9 @@ TEST(CliRecordings, WhatIsNotARecordingIsRefusedAtOnce) {
   write_bytes(old, v2);
   r = replay(old, dir / "old", dir / "sessions.db");
   EXPECT_EQ(r.process.exit_code, 1) << r.process.output;
-  EXPECT_TRUE(says(r.process, old.string() + ": header: format version 2 has no checksums and does not keep its task: it "
-                                             "can be reviewed (needle-sim report, review) but not replayed"))
+  EXPECT_TRUE(says(r.process, old.string() +
+                                  ": header: format version 2 has no checksums and does not keep its task: it "
+                                  "can be reviewed (needle-sim report, review) but not replayed"))
       << r.process.output;
 }
 

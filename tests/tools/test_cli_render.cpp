@@ -21,8 +21,9 @@ TEST(CliRender, HelpListsTheOptionsAndExitsZero) {
 }
 
 TEST(CliRender, UsageErrorsExitTwoWithOneLine) {
-  for (const char* args : {"render --out x.png", "render --scene a.json --gltf b.gltf --out x.png",
-                           "render --scene a.json --out x.png --size 12by4", "render --scene a.json --out x.png --bogus"}) {
+  for (const char* args :
+       {"render --out x.png", "render --scene a.json --gltf b.gltf --out x.png",
+        "render --scene a.json --out x.png --size 12by4", "render --scene a.json --out x.png --bogus"}) {
     ProcessResult r = run_needle_sim(args);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
     EXPECT_EQ(line_count(r.output), 1u) << args << "\n" << r.output;
@@ -39,8 +40,9 @@ TEST(CliRender, MissingFileExitsOneNamingIt) {
 // The largest size the option allows needs more memory than the CPU device gives: said as too
 // large for this device, not as a raw Vulkan result.
 TEST(CliRender, ASizeTooLargeForTheDeviceIsSaidSo) {
-  const ProcessResult r = run_needle_sim("render --gltf " + quoted(source_dir() / "assets/needle.gltf") +
-                                         " --size 16384x16384 --out " + quoted(test_output_dir("cli_render") / "huge.png"));
+  const ProcessResult r =
+      run_needle_sim("render --gltf " + quoted(source_dir() / "assets/needle.gltf") + " --size 16384x16384 --out " +
+                     quoted(test_output_dir("cli_render") / "huge.png"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("needle-sim render: error: a 16384x16384 image"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("is too large for this device (llvmpipe"), std::string::npos) << r.output;
@@ -72,7 +74,8 @@ TEST(CliRun, HeadlessSceneRunWritesItsPicture) {
 // The window path under Xvfb: one frame presented through the swapchain, captured before
 // present, must match the headless render of the same scene (same passes, other target).
 TEST(CliRun, WindowUnderXvfbPresentsWhatHeadlessRenders) {
-  if (run_command("command -v xvfb-run").exit_code != 0) GTEST_FAIL() << "xvfb-run is not installed (tools/setup.sh installs xvfb)";
+  if (run_command("command -v xvfb-run").exit_code != 0)
+    GTEST_FAIL() << "xvfb-run is not installed (tools/setup.sh installs xvfb)";
   auto dir = test_output_dir("cli_window");
   auto shot = dir / "window.png", headless = dir / "headless.png";
   std::filesystem::remove(shot);

@@ -7,9 +7,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "tests/app/recorded_session.hpp"
 #include "cli_process.hpp"
 #include "engine/rgba_image.hpp"
+#include "tests/app/recorded_session.hpp"
 #include "tests/support/test_paths.hpp"
 
 namespace needle::test {
@@ -103,7 +103,8 @@ TEST(CliReportLayered, TheForceDepthPlotAndThePuncturesTheRunScored) {
   const RecordedSession run = record_session(db, {"epidural", "good", "ana", true});
   ASSERT_FALSE(run.result.punctures.empty());
   const fs::path out = dir / "out";
-  const ProcessResult r = run_needle_sim("report --session " + std::to_string(run.id) + " --db " + quoted(db) + " --out " + quoted(out));
+  const ProcessResult r =
+      run_needle_sim("report --session " + std::to_string(run.id) + " --db " + quoted(db) + " --out " + quoted(out));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
   const engine::RgbaImage plot = engine::read_png(out / "plot_force_depth.png");
@@ -139,7 +140,8 @@ TEST_F(CliReport, IncompleteSessionExportsWhatIsStoredAndSaysSo) {
   const ProcessResult r = report(died_.id, out);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("session " + std::to_string(died_.id) + " is incomplete"), std::string::npos) << r.output;
-  const nlohmann::json j = nlohmann::json::parse(std::ifstream(out / ("session_" + std::to_string(died_.id) + ".json")));
+  const nlohmann::json j =
+      nlohmann::json::parse(std::ifstream(out / ("session_" + std::to_string(died_.id) + ".json")));
   EXPECT_FALSE(j["session"]["complete"].get<bool>());
   EXPECT_TRUE(j["steps"].empty());
   // Its recording holds the samples up to the end: the plots are made from it.
@@ -165,7 +167,8 @@ TEST_F(CliReport, ClearErrors) {
   const ProcessResult none = report(999, dir_ / "none");
   EXPECT_EQ(none.exit_code, 1) << none.output;
   EXPECT_NE(none.output.find("reading session 999: no such session"), std::string::npos) << none.output;
-  const ProcessResult no_db = run_needle_sim("report --session 1 --db " + quoted(dir_ / "nowhere.db") + " --out " + quoted(dir_ / "x"));
+  const ProcessResult no_db =
+      run_needle_sim("report --session 1 --db " + quoted(dir_ / "nowhere.db") + " --out " + quoted(dir_ / "x"));
   EXPECT_EQ(no_db.exit_code, 1) << no_db.output;
   EXPECT_NE(no_db.output.find("nowhere.db: no session database"), std::string::npos) << no_db.output;
   EXPECT_FALSE(fs::exists(dir_ / "nowhere.db"));  // never created by a reader
@@ -176,8 +179,8 @@ TEST_F(CliReport, ClearErrors) {
 }
 
 TEST_F(CliReport, ReviewWithoutADisplayPointsToReport) {
-  const ProcessResult r = run_command("env -u DISPLAY -u WAYLAND_DISPLAY NEEDLE_VALIDATION=1 " + test::needle_sim_exe().string() +
-                                      " review --db " + quoted(db_));
+  const ProcessResult r = run_command("env -u DISPLAY -u WAYLAND_DISPLAY NEEDLE_VALIDATION=1 " +
+                                      test::needle_sim_exe().string() + " review --db " + quoted(db_));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("no display"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("needle-sim report --session ID --out DIR"), std::string::npos) << r.output;
@@ -186,9 +189,10 @@ TEST_F(CliReport, ReviewWithoutADisplayPointsToReport) {
 TEST_F(CliReport, ReviewWindowShowsTheSessionAndItsReplay) {
   const fs::path shot = dir_ / "review_window.png";
   fs::remove(shot);
-  const ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1280x800x24' " + test::needle_sim_exe().string() +
-                                      " review --size 1200x700 --frames 4 --screenshot " + quoted(shot) + " --session " +
-                                      std::to_string(good_.id) + " --db " + quoted(db_));
+  const ProcessResult r =
+      run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1280x800x24' " + test::needle_sim_exe().string() +
+                  " review --size 1200x700 --frames 4 --screenshot " + quoted(shot) + " --session " +
+                  std::to_string(good_.id) + " --db " + quoted(db_));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("presented 4 frames"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
@@ -202,8 +206,9 @@ TEST_F(CliReport, ReviewClassTabExportsWhatReportCohortWrites) {
   const fs::path exports = dir_ / "db" / "exports" / "cohort";
   fs::remove_all(exports);
   const fs::path script = dir_ / "class_tab.sh";
-  std::ofstream(script) << "NEEDLE_VALIDATION=1 " << test::needle_sim_exe().string() << " review --class --size 1200x700 --frames 400 --db "
-                        << quoted(db_) << " &\napp=$!\nid=$(xdotool search --sync --name '^needle-sim review$' | head -1)\n"
+  std::ofstream(script) << "NEEDLE_VALIDATION=1 " << test::needle_sim_exe().string()
+                        << " review --class --size 1200x700 --frames 400 --db " << quoted(db_)
+                        << " &\napp=$!\nid=$(xdotool search --sync --name '^needle-sim review$' | head -1)\n"
                         << "sleep 3; xdotool mousemove --window \"$id\" 1030 76; sleep 0.5; xdotool click 1\n"
                         << "wait $app\n";
   const ProcessResult r = run_command("xvfb-run -a -s '-screen 0 1280x800x24' sh " + quoted(script));
@@ -211,7 +216,8 @@ TEST_F(CliReport, ReviewClassTabExportsWhatReportCohortWrites) {
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
   for (const char* file : {"cohort.json", "cohort_curves.csv", "cohort_failed_steps.csv", "cohort_percentiles.csv"})
     EXPECT_TRUE(fs::is_regular_file(exports / file)) << file << "\n" << r.output;
-  const ProcessResult cohort = run_needle_sim("report --cohort --db " + quoted(db_) + " --out " + quoted(dir_ / "cohort"));
+  const ProcessResult cohort =
+      run_needle_sim("report --cohort --db " + quoted(db_) + " --out " + quoted(dir_ / "cohort"));
   ASSERT_EQ(cohort.exit_code, 0) << cohort.output;
   const nlohmann::json from_window = nlohmann::json::parse(std::ifstream(exports / "cohort.json"));
   EXPECT_EQ(from_window, nlohmann::json::parse(std::ifstream(dir_ / "cohort" / "cohort.json")));

@@ -37,8 +37,9 @@ class CliReviewWindow : public ::testing::Test {
       const fs::path recording = dir_ / "db" / ("session_" + std::to_string(++n) + ".nrec");
       fs::copy_file(s.recording, recording, fs::copy_options::overwrite_existing);
       const training::SessionInfo& i = stored.info;
-      const int64_t id = store.begin_session({i.trainee, i.task, i.task_title, i.task_source, i.device, recording.string(),
-                                              "station-1", i.uid, "2026-03-0" + std::to_string(n) + "T10:00:00Z"});
+      const int64_t id =
+          store.begin_session({i.trainee, i.task, i.task_title, i.task_source, i.device, recording.string(),
+                               "station-1", i.uid, "2026-03-0" + std::to_string(n) + "T10:00:00Z"});
       store.finish_session(id, s.result, "2026-03-0" + std::to_string(n) + "T10:01:00Z");
     }
   }
@@ -63,7 +64,8 @@ TEST_F(CliReviewWindow, TheWholeWindowAt1280x720And1920x1080MatchesGoldens) {
   for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{1920, 1080}}) {
     const std::string size = std::to_string(width) + "x" + std::to_string(height);
     const fs::path shot = dir_ / ("review_" + size + ".png");
-    const ProcessResult r = on_screen(review("--session 1 --size " + size + " --frames 8 --screenshot " + quoted(shot)));
+    const ProcessResult r =
+        on_screen(review("--session 1 --size " + size + " --frames 8 --screenshot " + quoted(shot)));
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
     EXPECT_TRUE(matches_golden(engine::read_png(shot), "review_window_" + size));
@@ -73,14 +75,17 @@ TEST_F(CliReviewWindow, TheWholeWindowAt1280x720And1920x1080MatchesGoldens) {
 // Esc closes the window; so does its Quit button (at the right end of the tabs' bar: 13 px text in a
 // 1280x720 window, the bar 589 px wide). Each within the 60 s the script gives it.
 TEST_F(CliReviewWindow, EscAndTheQuitButtonCloseIt) {
-  const std::string open = review("--size 1280x720") + " & app=$!; id=$(xdotool search --sync --name '^needle-sim review$' | head -1); "
+  const std::string open = review("--size 1280x720") +
+                           " & app=$!; id=$(xdotool search --sync --name '^needle-sim review$' | head -1); "
                            "xdotool mousemove --window $id 300 400; sleep 3; ";
-  const std::string wait = "; for i in $(seq 600); do kill -0 $app 2>/dev/null || break; sleep 0.1; done; "
-                           "if kill -0 $app 2>/dev/null; then echo STILL OPEN; kill $app; fi; wait $app; echo exit $?";
+  const std::string wait =
+      "; for i in $(seq 600); do kill -0 $app 2>/dev/null || break; sleep 0.1; done; "
+      "if kill -0 $app 2>/dev/null; then echo STILL OPEN; kill $app; fi; wait $app; echo exit $?";
   const ProcessResult esc = on_screen(open + "xdotool key Escape" + wait);
   EXPECT_EQ(esc.output.find("STILL OPEN"), std::string::npos) << esc.output;
   EXPECT_NE(esc.output.find("exit 0"), std::string::npos) << esc.output;
-  const ProcessResult quit = on_screen(open + "xdotool mousemove --window $id 545 17; sleep 0.5; xdotool click 1" + wait);
+  const ProcessResult quit =
+      on_screen(open + "xdotool mousemove --window $id 545 17; sleep 0.5; xdotool click 1" + wait);
   EXPECT_EQ(quit.output.find("STILL OPEN"), std::string::npos) << quit.output;
   EXPECT_NE(quit.output.find("exit 0"), std::string::npos) << quit.output;
 }
@@ -90,22 +95,26 @@ TEST_F(CliReviewWindow, EscAndTheQuitButtonCloseIt) {
 // opened on session 2 and clicked alike.
 TEST_F(CliReviewWindow, OneClickOnARowOpensItsSession) {
   // Kept beside the test's output, to look at when they differ.
-  const fs::path clicked = test_output_dir("cli_review_window") / "clicked.png", opened = test_output_dir("cli_review_window") / "opened.png";
-  const ProcessResult click = on_screen(review("--session 1 --size 1280x720 --frames 400 --screenshot " + quoted(clicked)) +
-                                        " & app=$!; id=$(xdotool search --sync --name '^needle-sim review$' | head -1); "
-                                        "sleep 2; xdotool mousemove --window $id 60 115; sleep 0.3; xdotool click 1; sleep 0.3; "
-                                        "xdotool mousemove --window $id 900 300; wait $app");
+  const fs::path clicked = test_output_dir("cli_review_window") / "clicked.png",
+                 opened = test_output_dir("cli_review_window") / "opened.png";
+  const ProcessResult click =
+      on_screen(review("--session 1 --size 1280x720 --frames 400 --screenshot " + quoted(clicked)) +
+                " & app=$!; id=$(xdotool search --sync --name '^needle-sim review$' | head -1); "
+                "sleep 2; xdotool mousemove --window $id 60 115; sleep 0.3; xdotool click 1; sleep 0.3; "
+                "xdotool mousemove --window $id 900 300; wait $app");
   ASSERT_EQ(click.exit_code, 0) << click.output;
   // Opened on session 2, its row clicked the same way (the table's panel then has the focus too).
-  const ProcessResult direct = on_screen(review("--session 2 --size 1280x720 --frames 400 --screenshot " + quoted(opened)) +
-                                         " & app=$!; id=$(xdotool search --sync --name '^needle-sim review$' | head -1); "
-                                         "sleep 2; xdotool mousemove --window $id 60 115; sleep 0.3; xdotool click 1; sleep 0.3; "
-                                         "xdotool mousemove --window $id 900 300; wait $app");
+  const ProcessResult direct =
+      on_screen(review("--session 2 --size 1280x720 --frames 400 --screenshot " + quoted(opened)) +
+                " & app=$!; id=$(xdotool search --sync --name '^needle-sim review$' | head -1); "
+                "sleep 2; xdotool mousemove --window $id 60 115; sleep 0.3; xdotool click 1; sleep 0.3; "
+                "xdotool mousemove --window $id 900 300; wait $app");
   ASSERT_EQ(direct.exit_code, 0) << direct.output;
   const engine::RgbaImage a = engine::read_png(clicked), b = engine::read_png(opened);
   ASSERT_EQ(a.width, b.width);
   ASSERT_EQ(a.height, b.height);
-  EXPECT_LT(double(differing_pixels(a, b)), kMaxDifferingFraction * a.width * a.height) << "the click did not open session 2";
+  EXPECT_LT(double(differing_pixels(a, b)), kMaxDifferingFraction * a.width * a.height)
+      << "the click did not open session 2";
 }
 
 }  // namespace

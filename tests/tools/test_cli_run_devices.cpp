@@ -5,17 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "cli_process.hpp"
-#include "tests/support/desk_plan.hpp"
 #include "haptics/recording/session_format.hpp"
-#include "training/sessions/session_store.hpp"
+#include "tests/support/desk_plan.hpp"
 #include "tests/support/test_paths.hpp"
+#include "training/sessions/session_store.hpp"
 
 namespace needle::test {
 namespace {
@@ -30,8 +29,8 @@ struct RunOutput {
 RunOutput run_headless(const std::string& arguments, const fs::path& out, const fs::path& db) {
   fs::remove_all(out);
   RunOutput run;
-  run.process = run_needle_sim("run --headless --size 160x120 --trainee ana " + arguments + " --out " + quoted(out) + " --db " +
-                               quoted(db));
+  run.process = run_needle_sim("run --headless --size 160x120 --trainee ana " + arguments + " --out " + quoted(out) +
+                               " --db " + quoted(db));
   EXPECT_EQ(run.process.exit_code, 0) << run.process.output;
   EXPECT_EQ(run.process.output.find("Vulkan validation"), std::string::npos) << run.process.output;
   if (run.process.exit_code == 0) run.score = nlohmann::json::parse(std::ifstream(out / "score.json"));
@@ -48,20 +47,24 @@ void PrintTo(const ReplayCase& c, std::ostream* os) { *os << c.task << " with th
 class RunReplay : public testing::TestWithParam<ReplayCase> {};
 
 TEST_P(RunReplay, ReplayingARecordedRunReproducesItsStateAndScore) {
-  const fs::path dir = test_output_dir("cli_run_devices") / (std::string(GetParam().task) + "_" + GetParam().operator_spec);
+  const fs::path dir =
+      test_output_dir("cli_run_devices") / (std::string(GetParam().task) + "_" + GetParam().operator_spec);
   fs::remove_all(dir);
   const fs::path db = dir / "sessions.db";
   const std::string task = (test::source_dir() / "assets/tasks" / (std::string(GetParam().task) + ".json")).string();
-  const RunOutput live = run_headless("--task " + quoted(fs::path(task)) + " --operator " + GetParam().operator_spec, dir / "live", db);
+  const RunOutput live =
+      run_headless("--task " + quoted(fs::path(task)) + " --operator " + GetParam().operator_spec, dir / "live", db);
   ASSERT_TRUE(live.score.contains("recording"));
   // score.json's layered-tissue keys: the punctures in order, the metrics, each step's failure.
   ASSERT_TRUE(live.score.contains("punctures")) << live.score.dump();
-  for (const char* key : {"punctures", "overshoot_m", "bone_contacts", "bone_peak_force_N", "redirections", "forbidden_punctures"})
+  for (const char* key :
+       {"punctures", "overshoot_m", "bone_contacts", "bone_peak_force_N", "redirections", "forbidden_punctures"})
     EXPECT_TRUE(live.score["metrics"].contains(key)) << key;
   for (const nlohmann::json& step : live.score["steps"]) EXPECT_TRUE(step.contains("failure")) << step.dump();
   if (std::string(GetParam().task) == "epidural") {
     ASSERT_FALSE(live.score["punctures"].empty());
-    for (const char* key : {"layer", "t_s", "depth_m", "peak_force_N"}) EXPECT_TRUE(live.score["punctures"][0].contains(key)) << key;
+    for (const char* key : {"layer", "t_s", "depth_m", "peak_force_N"})
+      EXPECT_TRUE(live.score["punctures"][0].contains(key)) << key;
     EXPECT_EQ(live.score["punctures"][0]["layer"], "skin");
     EXPECT_GE(live.score["metrics"]["punctures"].get<int>(), 3);  // skin and the ligaments at least
   }
@@ -73,7 +76,8 @@ TEST_P(RunReplay, ReplayingARecordedRunReproducesItsStateAndScore) {
   const fs::path recording = live.score["recording"].get<std::string>();
   EXPECT_EQ(recording.parent_path(), fs::absolute(dir / "recordings"));
 
-  const RunOutput replay = run_headless("--device " + quoted(fs::path("replay:" + recording.string())), dir / "replay", db);
+  const RunOutput replay =
+      run_headless("--device " + quoted(fs::path("replay:" + recording.string())), dir / "replay", db);
   ASSERT_TRUE(replay.score.contains("recording"));
   nlohmann::json live_score = live.score, replay_score = replay.score;
   live_score.erase("recording");
@@ -107,19 +111,21 @@ INSTANTIATE_TEST_SUITE_P(Tasks, RunReplay,
                          testing::Values(ReplayCase{"penetrable_sphere", "good"}, ReplayCase{"rigid_sphere", "sloppy"},
                                          ReplayCase{"layered_target", "good"}, ReplayCase{"epidural", "good"},
                                          ReplayCase{"epidural", "sloppy"}),
-                         [](const auto& info) { return std::string(info.param.task) + "_" + info.param.operator_spec; });
+                         [](const auto& info) {
+                           return std::string(info.param.task) + "_" + info.param.operator_spec;
+                         });
 
 // `needle-sim run --device mouse` in a window without panels, its session and recording in `dir`.
 std::string mouse_session(const fs::path& dir, const std::string& options) {
   fs::remove_all(dir);
-  return test::needle_sim_exe().string() + " run --device mouse --no-hud " + options + " --out " + quoted(dir) + " --db " +
-         quoted(dir / "sessions.db");
+  return test::needle_sim_exe().string() + " run --device mouse --no-hud " + options + " --out " + quoted(dir) +
+         " --db " + quoted(dir / "sessions.db");
 }
 
 TEST(CliRunDevices, TraineeDevicesNeedTheWindowAndBadOptionsAreUsageErrors) {
   const fs::path dir = test_output_dir("cli_run_devices") / "usage";
-  for (const char* arguments : {"--device mouse", "--device falcon", "--rate 100", "--rate 20000", "--device mouse --operator good",
-                                "--scene x.json --device mouse"}) {
+  for (const char* arguments : {"--device mouse", "--device falcon", "--rate 100", "--rate 20000",
+                                "--device mouse --operator good", "--scene x.json --device mouse"}) {
     ProcessResult r = run_needle_sim(std::string("run --headless ") + arguments + " --out " + quoted(dir) + " --db " +
                                      quoted(dir / "s.db"));
     EXPECT_EQ(r.exit_code, 2) << arguments << "\n" << r.output;
@@ -139,7 +145,8 @@ TEST(CliRunDevices, ABadRecordingIsAnErrorNamingTheFile) {
   // A recording without the context needle-sim run writes (another program's, or version 1).
   const fs::path bare = dir / "bare.nrec";
   const std::vector<uint8_t> header = haptics::encode_header({haptics::kSessionFormatVersion, 500.0, 0, "sim", ""});
-  std::ofstream(bare, std::ios::binary).write(reinterpret_cast<const char*>(header.data()), std::streamsize(header.size()));
+  std::ofstream(bare, std::ios::binary)
+      .write(reinterpret_cast<const char*>(header.data()), std::streamsize(header.size()));
   r = run_needle_sim("run --headless --device " + quoted(fs::path("replay:" + bare.string())));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find(bare.string() + ": header: context"), std::string::npos) << r.output;
@@ -154,16 +161,18 @@ TEST(CliRunDevices, ABadRecordingIsAnErrorNamingTheFile) {
 // No panels: over a panel the mouse belongs to the panel, and at this size they cover the view.
 TEST(CliRunDevices, TheTipComesToRestUnderTheMouseCursor) {
   const fs::path dir = test_output_dir("cli_run_devices") / "mouse";
-  const std::string run = mouse_session(dir, "--size 400x300 --frames 600 --store");  // a --frames run is stored when asked
+  const std::string run =
+      mouse_session(dir, "--size 400x300 --frames 600 --store");  // a --frames run is stored when asked
   const fs::path log = test_output_dir("cli_run_devices") / "mouse.log";
   // Once the loop runs (its real-time line, on the first frame: a loaded machine may take seconds
   // to get there), centre the cursor, then move it 100 px left: two thirds of half the height, -6.7 cm.
-  const std::string drive =
-      "for i in \\$(seq 300); do grep -q '^real-time' " + quoted(log) + " && break; sleep 0.1; done; "
-      "id=\\$(xdotool search --sync --name '^needle-sim\\$' | head -1); xdotool mousemove --window \\$id 200 150; sleep 0.5; "
-      "xdotool mousemove --window \\$id 100 150; sleep 1";
-  ProcessResult r = run_on_virtual_display(run + " > " + quoted(log) + " 2>&1 & " + drive + "; wait \\$!; rc=\\$?; cat " +
-                                           quoted(log) + "; exit \\$rc");
+  const std::string drive = "for i in \\$(seq 300); do grep -q '^real-time' " + quoted(log) +
+                            " && break; sleep 0.1; done; "
+                            "id=\\$(xdotool search --sync --name '^needle-sim\\$' | head -1); xdotool mousemove "
+                            "--window \\$id 200 150; sleep 0.5; "
+                            "xdotool mousemove --window \\$id 100 150; sleep 1";
+  ProcessResult r = run_on_virtual_display(run + " > " + quoted(log) + " 2>&1 & " + drive +
+                                           "; wait \\$!; rc=\\$?; cat " + quoted(log) + "; exit \\$rc");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
 
@@ -185,7 +194,8 @@ TEST(CliRunDevices, TheTipComesToRestUnderTheMouseCursor) {
   ASSERT_LT(centred, recording.records.size()) << "the cursor was never centred";
   const haptics::TickSample& last = recording.records.back();
   const engine::Camera camera = engine::load_scene(source_dir() / "assets/scenes/penetrable_sphere.json").camera;
-  const glm::vec3 tip(float(last.state.needle_tip_m[0]), float(last.state.needle_tip_m[1]), float(last.state.needle_tip_m[2]));
+  const glm::vec3 tip(float(last.state.needle_tip_m[0]), float(last.state.needle_tip_m[1]),
+                      float(last.state.needle_tip_m[2]));
   const std::optional<glm::vec2> on_screen = engine::project_to_screen(camera, {400, 300}, tip);
   ASSERT_TRUE(on_screen);
   EXPECT_NEAR(on_screen->x, 100.0, 2.0) << "the tip under the cursor, within 2 px";
@@ -210,8 +220,9 @@ TEST(CliRunDevices, EveryTraineeDeviceIsRefusedHeadlessSayingItNeedsTheWindow) {
     const ProcessResult r = run_needle_sim(std::string("run --headless --device ") + device + " --out " + quoted(dir) +
                                            " --db " + quoted(dir / "s.db"));
     EXPECT_EQ(r.exit_code, 2) << device << "\n" << r.output;
-    EXPECT_NE(r.output.find(std::string("--device ") + device + ": a trainee's device needs the window (drop --headless)"),
-              std::string::npos)
+    EXPECT_NE(
+        r.output.find(std::string("--device ") + device + ": a trainee's device needs the window (drop --headless)"),
+        std::string::npos)
         << r.output;
   }
   EXPECT_FALSE(fs::exists(dir / "s.db")) << "nothing stored for a refused run";
@@ -219,9 +230,10 @@ TEST(CliRunDevices, EveryTraineeDeviceIsRefusedHeadlessSayingItNeedsTheWindow) {
     const char* device;
     const char* says;
   };
-  for (const Case& c : {Case{"gamepad:16", "an index from 0 to 15"}, Case{"falcon:x", "an index from 0 to 15"},
-                        Case{"replay:", "expected a recording file after replay:"}, Case{"keyboard:1", "keyboard takes nothing"},
-                        Case{"sim:x.json", "a task's sim runs the task's own scenario"}}) {
+  for (const Case& c :
+       {Case{"gamepad:16", "an index from 0 to 15"}, Case{"falcon:x", "an index from 0 to 15"},
+        Case{"replay:", "expected a recording file after replay:"}, Case{"keyboard:1", "keyboard takes nothing"},
+        Case{"sim:x.json", "a task's sim runs the task's own scenario"}}) {
     const ProcessResult r = run_needle_sim(std::string("run --headless --device ") + c.device);
     EXPECT_EQ(r.exit_code, 2) << c.device << "\n" << r.output;
     EXPECT_NE(r.output.find(c.says), std::string::npos) << r.output;
@@ -231,12 +243,16 @@ TEST(CliRunDevices, EveryTraineeDeviceIsRefusedHeadlessSayingItNeedsTheWindow) {
 // `run --device keyboard ARGUMENTS` in the window for `frames` frames, xdotool putting the pointer
 // over it (without a window manager the keys go to the window under it) and then running `keys`;
 // the session's recording, the store having kept (--store) one session on the keyboard.
-haptics::Session keyboard_session_in_window(const fs::path& dir, const std::string& arguments, int frames, const std::string& keys) {
+haptics::Session keyboard_session_in_window(const fs::path& dir, const std::string& arguments, int frames,
+                                            const std::string& keys) {
   fs::remove_all(dir);
-  const std::string run = test::needle_sim_exe().string() + " run --device keyboard " + arguments + " --no-hud --size 400x300 --frames " +
-                          std::to_string(frames) + " --store --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db");
+  const std::string run = test::needle_sim_exe().string() + " run --device keyboard " + arguments +
+                          " --no-hud --size 400x300 --frames " + std::to_string(frames) + " --store --out " +
+                          quoted(dir) + " --db " + quoted(dir / "sessions.db");
   const std::string drive =
-      "id=\\$(xdotool search --sync --name '^needle-sim\\$' | head -1); xdotool mousemove --window \\$id 200 150; sleep 1; " + keys;
+      "id=\\$(xdotool search --sync --name '^needle-sim\\$' | head -1); xdotool mousemove --window \\$id 200 150; "
+      "sleep 1; " +
+      keys;
   const ProcessResult r = run_on_virtual_display(run + " & " + drive + "; wait");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
@@ -253,7 +269,8 @@ haptics::Session keyboard_session_in_window(const fs::path& dir, const std::stri
 // pose a press (1 mm, 1 degree), as the recording shows. No panels: the keys are the device's.
 TEST(CliRunDevices, TheKeyboardMovesTheNeedleInTheWindow) {
   const fs::path dir = test_output_dir("cli_run_devices") / "keyboard";
-  const haptics::Session recording = keyboard_session_in_window(dir, "", 600, "xdotool key --delay 100 Left Left Right w w w d; sleep 1");
+  const haptics::Session recording =
+      keyboard_session_in_window(dir, "", 600, "xdotool key --delay 100 Left Left Right w w w d; sleep 1");
   EXPECT_EQ(recording.header.device, "keyboard");
   ASSERT_FALSE(recording.records.empty());
   const haptics::DeviceReading& last = recording.records.back().reading;
@@ -273,9 +290,9 @@ TEST(CliRunDevices, TheKeyboardMovesTheNeedleInTheWindow) {
 // (xdotool keydown, 1.5 s, keyup) presses the plunger with the force PlungerMapping makes of it,
 // rising to its hold and let go, as the recording shows tick by tick.
 TEST(CliRunDevices, TheSpaceBarPressesTheSyringesPlunger) {
-  const haptics::Session recording =
-      keyboard_session_in_window(test_output_dir("cli_run_devices") / "space_bar", "--task " + quoted(source_dir() / "assets/tasks/epidural.json"),
-                                 1600, "xdotool keydown space; sleep 1.5; xdotool keyup space; sleep 1");
+  const haptics::Session recording = keyboard_session_in_window(
+      test_output_dir("cli_run_devices") / "space_bar", "--task " + quoted(source_dir() / "assets/tasks/epidural.json"),
+      1600, "xdotool keydown space; sleep 1.5; xdotool keyup space; sleep 1");
   ASSERT_FALSE(recording.records.empty());
   double most = 0.0;
   bool rising = false;
@@ -313,7 +330,8 @@ TEST(CliRunDevices, AGamepadThatIsNotThereIsRefusedNamingIt) {
   const fs::path dir = test_output_dir("cli_run_devices") / "gamepad";
   fs::remove_all(dir);
   const std::string output = run_each_in_the_window({"gamepad", "gamepad:3"}, dir);
-  EXPECT_TRUE(refused_with(output, "needle-sim run: error: gamepad: none connected (no gamepad with a standard mapping is present)"))
+  EXPECT_TRUE(refused_with(
+      output, "needle-sim run: error: gamepad: none connected (no gamepad with a standard mapping is present)"))
       << output;
   EXPECT_TRUE(refused_with(output, "needle-sim run: error: gamepad:3: no such gamepad connected")) << output;
   EXPECT_FALSE(fs::exists(dir / "sessions.db")) << "no session begun for a device that is not there";
@@ -341,9 +359,9 @@ TEST(CliRunDevices, AReplayPlaysInTheWindow) {
                                       dir / "sessions.db");
   ASSERT_TRUE(live.score.contains("recording"));
   const std::string recording = live.score["recording"].get<std::string>();
-  const ProcessResult r = run_on_virtual_display(test::needle_sim_exe().string() + " run --device " +
-                                                 quoted(fs::path("replay:" + recording)) + " --size 200x150 --frames 5 --store --out " +
-                                                 quoted(dir / "replay") + " --db " + quoted(dir / "sessions.db"));
+  const ProcessResult r = run_on_virtual_display(
+      test::needle_sim_exe().string() + " run --device " + quoted(fs::path("replay:" + recording)) +
+      " --size 200x150 --frames 5 --store --out " + quoted(dir / "replay") + " --db " + quoted(dir / "sessions.db"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("presented 5 frames"), std::string::npos) << r.output;
   training::SessionStore store(dir / "sessions.db");
@@ -359,9 +377,9 @@ TEST(CliRunDevices, AKilledRunLeavesItsRecordingAndAnIncompleteSession) {
   const fs::path dir = test_output_dir("cli_run_devices") / "killed";
   const std::string run = mouse_session(dir, "--size 200x150 --store");
   // Kill once the recording holds over a second of ticks (10 s at most).
-  const std::string kill_later =
-      "for i in \\$(seq 200); do [ \\$(cat " + quoted(dir) + "/recordings/*.nrec 2>/dev/null | wc -c) -gt 700000 ] && break; sleep 0.05; done; "
-      "kill -9 \\$pid";
+  const std::string kill_later = "for i in \\$(seq 200); do [ \\$(cat " + quoted(dir) +
+                                 "/recordings/*.nrec 2>/dev/null | wc -c) -gt 700000 ] && break; sleep 0.05; done; "
+                                 "kill -9 \\$pid";
   ProcessResult r = run_on_virtual_display(run + " & pid=\\$!; " + kill_later + "; wait \\$pid; echo killed \\$?");
   EXPECT_NE(r.output.find("killed 137"), std::string::npos) << r.output;  // 128 + SIGKILL
 

@@ -9,8 +9,8 @@
 
 #include "cli_process.hpp"
 #include "tests/engine/image_compare.hpp"
-#include "training/sessions/session_store.hpp"
 #include "tests/support/test_paths.hpp"
+#include "training/sessions/session_store.hpp"
 
 namespace needle::test {
 namespace {
@@ -19,8 +19,8 @@ namespace fs = std::filesystem;
 
 nlohmann::json run_task(const std::string& operator_spec, const fs::path& dir) {
   fs::remove_all(dir);
-  ProcessResult r = run_needle_sim("run --headless --size 320x240 --operator " + operator_spec + " --trainee ana --out " +
-                                   quoted(dir) + " --db " + quoted(dir / "sessions.db"));
+  ProcessResult r = run_needle_sim("run --headless --size 320x240 --operator " + operator_spec +
+                                   " --trainee ana --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db"));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
   return nlohmann::json::parse(std::ifstream(dir / "score.json"));
@@ -35,7 +35,8 @@ TEST(CliRunTask, GoodOperatorPassesAndEverythingIsWritten) {
     EXPECT_TRUE(fs::is_regular_file(dir / picture)) << picture;
   }
   // The task has no ultrasound probe: no ultrasound image is made.
-  for (const auto& entry : fs::directory_iterator(dir)) EXPECT_NE(entry.path().filename().string().rfind("ultrasound", 0), 0u) << entry.path();
+  for (const auto& entry : fs::directory_iterator(dir))
+    EXPECT_NE(entry.path().filename().string().rfind("ultrasound", 0), 0u) << entry.path();
   training::SessionStore store(dir / "sessions.db");
   std::vector<training::SessionInfo> sessions = store.sessions();
   ASSERT_EQ(sessions.size(), 1u);
@@ -60,9 +61,10 @@ double speckle_share(const engine::RgbaImage& image, uint32_t x0, uint32_t y0, u
 // in `dir`, at its end; no picture when it fails or validation speaks.
 engine::RgbaImage review_screenshot(const fs::path& dir) {
   const fs::path shot = dir / "review.png";
-  const ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1280x800x24' " + test::needle_sim_exe().string() +
-                                      " review --size 1200x700 --frames 4 --screenshot " + quoted(shot) + " --session 1 --db " +
-                                      quoted(dir / "sessions.db"));
+  const ProcessResult r =
+      run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1280x800x24' " + test::needle_sim_exe().string() +
+                  " review --size 1200x700 --frames 4 --screenshot " + quoted(shot) + " --session 1 --db " +
+                  quoted(dir / "sessions.db"));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
   return r.exit_code == 0 ? engine::read_png(shot) : engine::RgbaImage{};
@@ -75,11 +77,13 @@ engine::RgbaImage review_screenshot(const fs::path& dir) {
 TEST(CliRunTask, AnUltrasoundTaskWritesTheProbesImageAtEachStep) {
   const fs::path dir = test_output_dir("cli_run_task") / "ultrasound";
   fs::remove_all(dir);
-  ProcessResult r = run_needle_sim("run --headless --size 320x240 --task " + quoted(source_dir() / "assets/tasks/sphere_ultrasound.json") +
-                                   " --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db"));
+  ProcessResult r = run_needle_sim("run --headless --size 320x240 --task " +
+                                   quoted(source_dir() / "assets/tasks/sphere_ultrasound.json") + " --out " +
+                                   quoted(dir) + " --db " + quoted(dir / "sessions.db"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
-  for (const char* picture : {"ultrasound_step_1.png", "ultrasound_step_2.png", "ultrasound_step_3.png", "ultrasound_final.png"}) {
+  for (const char* picture :
+       {"ultrasound_step_1.png", "ultrasound_step_2.png", "ultrasound_step_3.png", "ultrasound_final.png"}) {
     ASSERT_TRUE(fs::is_regular_file(dir / picture)) << picture;
   }
   const engine::RgbaImage insert = engine::read_png(dir / "ultrasound_step_2.png");
@@ -99,8 +103,9 @@ TEST(CliRunTask, AnUltrasoundTaskWritesTheProbesImageAtEachStep) {
 TEST(CliRunTask, TheReviewOfALayeredTaskShowsTheUltrasoundImage) {
   const fs::path dir = test_output_dir("cli_run_task") / "layered_review";
   fs::remove_all(dir);
-  ProcessResult r = run_needle_sim("run --headless --size 320x240 --task " + quoted(source_dir() / "assets/tasks/layered_target.json") +
-                                   " --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db"));
+  ProcessResult r = run_needle_sim("run --headless --size 320x240 --task " +
+                                   quoted(source_dir() / "assets/tasks/layered_target.json") + " --out " + quoted(dir) +
+                                   " --db " + quoted(dir / "sessions.db"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const engine::RgbaImage review = review_screenshot(dir);
   ASSERT_EQ(review.width, 1200u);
@@ -114,10 +119,10 @@ TEST(CliRunTask, TheWindowShowsTheUltrasoundImageBesideTheView) {
   const fs::path dir = test_output_dir("cli_run_task") / "ultrasound_window";
   fs::remove_all(dir);
   const fs::path shot = dir / "window.png";
-  ProcessResult r = run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' " + test::needle_sim_exe().string() +
-                                " run --task " + quoted(source_dir() / "assets/tasks/sphere_ultrasound.json") +
-                                " --size 640x480 --frames 4 --screenshot " + quoted(shot) + " --out " + quoted(dir) + " --db " +
-                                quoted(dir / "sessions.db"));
+  ProcessResult r = run_command(
+      "NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' " + test::needle_sim_exe().string() + " run --task " +
+      quoted(source_dir() / "assets/tasks/sphere_ultrasound.json") + " --size 640x480 --frames 4 --screenshot " +
+      quoted(shot) + " --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
   const engine::RgbaImage image = engine::read_png(shot);
@@ -138,13 +143,15 @@ TEST(CliRunTask, WindowClosedMidTaskIsStoredOnlyWithStore) {
   fs::remove_all(dir);
   const auto run = [&](const std::string& flags) {
     return run_command("NEEDLE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' " + test::needle_sim_exe().string() +
-                       " run --size 480x360 --frames 5 " + flags + " --out " + quoted(dir) + " --db " + quoted(dir / "sessions.db"));
+                       " run --size 480x360 --frames 5 " + flags + " --out " + quoted(dir) + " --db " +
+                       quoted(dir / "sessions.db"));
   };
   const ProcessResult look = run("");
   ASSERT_EQ(look.exit_code, 0) << look.output;
-  EXPECT_NE(look.output.find("the session is not stored: a run with --frames is stored only with --store; its recording is "
-                             "removed"),
-            std::string::npos)
+  EXPECT_NE(
+      look.output.find("the session is not stored: a run with --frames is stored only with --store; its recording is "
+                       "removed"),
+      std::string::npos)
       << look.output;
   EXPECT_TRUE(training::SessionStore(dir / "sessions.db").sessions().empty());
   EXPECT_TRUE(fs::is_empty(dir / "recordings")) << "no recording left of a session that never happened";
@@ -170,19 +177,22 @@ TEST(CliRunTask, UnknownOperatorAndDeviceAreClearErrors) {
   // A device nobody knows is said to be unknown, with the list, not that it "needs the window".
   const ProcessResult nonsense = run_needle_sim("run --headless --device nonsense");
   EXPECT_EQ(nonsense.exit_code, 2) << nonsense.output;
-  EXPECT_NE(nonsense.output.find("--device: device 'nonsense': unknown device (expected sim, mouse, keyboard, gamepad[:N], "
-                                 "falcon[:N] or replay:FILE)"),
-            std::string::npos)
+  EXPECT_NE(
+      nonsense.output.find("--device: device 'nonsense': unknown device (expected sim, mouse, keyboard, gamepad[:N], "
+                           "falcon[:N] or replay:FILE)"),
+      std::string::npos)
       << nonsense.output;
   // A script with a hand mass of 0: the error names the script and the pointer in it.
   const fs::path dir = test_output_dir("cli_run_task") / "massless";
   fs::create_directories(dir);
-  std::ofstream(dir / "massless.json") << R"({"hand": {"mass_kg": 0, "waypoints": [{"t": 0, "p": [0.3, 0, 0.2], "dir": [1, 0, 0]}]}})";
-  const ProcessResult massless = run_needle_sim("run --headless --task " + quoted(source_dir() / "assets/tasks/rigid_sphere.json") +
-                                                " --operator " + quoted(dir / "massless.json") + " --out " + quoted(dir / "out") +
-                                                " --db " + quoted(dir / "s.db"));
+  std::ofstream(dir / "massless.json")
+      << R"({"hand": {"mass_kg": 0, "waypoints": [{"t": 0, "p": [0.3, 0, 0.2], "dir": [1, 0, 0]}]}})";
+  const ProcessResult massless = run_needle_sim(
+      "run --headless --task " + quoted(source_dir() / "assets/tasks/rigid_sphere.json") + " --operator " +
+      quoted(dir / "massless.json") + " --out " + quoted(dir / "out") + " --db " + quoted(dir / "s.db"));
   EXPECT_EQ(massless.exit_code, 1) << massless.output;
-  EXPECT_NE(massless.output.find((dir / "massless.json").string() + ": /hand/mass_kg: must be in (0, 10] kg"), std::string::npos)
+  EXPECT_NE(massless.output.find((dir / "massless.json").string() + ": /hand/mass_kg: must be in (0, 10] kg"),
+            std::string::npos)
       << massless.output;
 }
 

@@ -16,15 +16,15 @@
 #include "cli_process.hpp"
 #include "haptics/recording/session_format.hpp"
 #include "tests/support/desk_plan.hpp"
-#include "training/sessions/session_store.hpp"
 #include "tests/support/test_paths.hpp"
+#include "training/sessions/session_store.hpp"
 
 namespace needle::test {
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr engine::Extent kWindow{960, 540};  // inside the virtual display's 1024x768
+constexpr engine::Extent kWindow{960, 540};   // inside the virtual display's 1024x768
 constexpr double kPlanStep_s = 0.05;          // an xdotool input every 50 ms of the plan
 constexpr const char* kSettle = "sleep 0.4";  // a few frames, so the app sees a button change on its own
 
@@ -82,7 +82,8 @@ MouseScript mouse_plan_script(const std::string& name, PlanMaker make_plan) {
     lines << "mousemove --window WID " << std::lround(0.5 * kWindow.width + input.cursor.x() * half) << " "
           << std::lround(half - input.cursor.y() * half) << "\n";
     if (input.notches != 0.0)
-      lines << "click --repeat " << std::lround(std::abs(input.notches)) << " --delay 5 " << (input.notches > 0 ? 4 : 5) << "\n";
+      lines << "click --repeat " << std::lround(std::abs(input.notches)) << " --delay 5 " << (input.notches > 0 ? 4 : 5)
+            << "\n";
     lines << "sleep " << kPlanStep_s << "\n";
   }
   return {lines.str(), device_start, view.metres_per_half_height(0.0) / half};
@@ -91,15 +92,17 @@ MouseScript mouse_plan_script(const std::string& name, PlanMaker make_plan) {
 // Waits (up to `seconds`) until `pattern` is in `count` lines of the app's output, else stops the
 // script saying `what`.
 std::string wait_for(const std::string& pattern, int seconds, const std::string& what, int count = 1) {
-  return "n=0; until [ $(grep -c '" + pattern + "' \"$log\") -ge " + std::to_string(count) + " ]; do n=$((n+1)); if [ $n -gt " +
-         std::to_string(seconds * 10) + " ]; then echo 'driver: " + what + "'; kill $app; exit 1; fi; sleep 0.1; done\n";
+  return "n=0; until [ $(grep -c '" + pattern + "' \"$log\") -ge " + std::to_string(count) +
+         " ]; do n=$((n+1)); if [ $n -gt " + std::to_string(seconds * 10) + " ]; then echo 'driver: " + what +
+         "'; kill $app; exit 1; fi; sleep 0.1; done\n";
 }
 
 // The script's start: needle-sim with no arguments in the background, its output in $log, its
 // window in $id with the pointer over it (the virtual display has no window manager: the keys go
 // to the window under the pointer).
 std::string open_start_screen(const UserFolders& user, const std::string& environment = "") {
-  return "set -u\n" + user.environment() + environment + "log=" + quoted(user.log()) + "\n" + test::needle_sim_exe().string() +
+  return "set -u\n" + user.environment() + environment + "log=" + quoted(user.log()) + "\n" +
+         test::needle_sim_exe().string() +
          " > \"$log\" 2>&1 &\napp=$!\nid=$(xdotool search --sync --name '^needle-sim$' | head -1)\n"
          "xdotool mousemove --window \"$id\" 480 500; sleep 2\n";
 }
@@ -132,7 +135,8 @@ void expect_the_first_reading_is_the_placed_cursor(const training::SessionInfo& 
   const haptics::Session recording = haptics::read_session(session.recording_path);
   ASSERT_FALSE(recording.records.empty());
   for (int i = 0; i < 2; ++i)
-    EXPECT_NEAR(recording.records.front().reading.position_m[i], script.device_start[i], script.pixel_m) << "axis " << i;
+    EXPECT_NEAR(recording.records.front().reading.position_m[i], script.device_start[i], script.pixel_m)
+        << "axis " << i;
 }
 
 // The start screen with the keyboard remembered and no trainee: `choose` (xdotool lines) picks
@@ -143,19 +147,20 @@ void start_and_finish_with_the_mouse(const std::string& folder, const std::strin
                                      const MouseScript& script, size_t steps) {
   const UserFolders user(test_output_dir("cli_start_screen") / folder);
   {  // the window's size and the keyboard, remembered from an earlier run; no trainee yet
-    std::ofstream(user.settings()) << R"({"version": 1, "device": "keyboard", "window": {"width": 960, "height": 540}})";
+    std::ofstream(user.settings())
+        << R"({"version": 1, "device": "keyboard", "window": {"width": 960, "height": 540}})";
   }
   const fs::path plan = user.root / "plan.xdo";
   std::ofstream(plan) << script.lines;
-  const ProcessResult r = drive(user, open_start_screen(user)
-                                          // The name field has the keyboard: type, Esc leaves it.
-                                          + "xdotool type --delay 50 'ana b'; sleep 0.5; xdotool key Escape; sleep 0.5\n" +
-                                          choose + "sleep 0.5; xdotool key Return\n" +
-                                          wait_for("^real-time: ", 60, "the task did not start") + "sleep 1\n" +
-                                          "sed \"s/WID/$id/\" " + quoted(plan) + " | xdotool -\n" +
-                                          wait_for("^score ", 30, "the task did not end") +
-                                          "sleep 1; xdotool key Escape; sleep 2; xdotool key Escape\n"  // Back, then Quit
-                                          + kWaitForTheApp);
+  const ProcessResult r =
+      drive(user, open_start_screen(user)
+                      // The name field has the keyboard: type, Esc leaves it.
+                      + "xdotool type --delay 50 'ana b'; sleep 0.5; xdotool key Escape; sleep 0.5\n" + choose +
+                      "sleep 0.5; xdotool key Return\n" + wait_for("^real-time: ", 60, "the task did not start") +
+                      "sleep 1\n" + "sed \"s/WID/$id/\" " + quoted(plan) + " | xdotool -\n" +
+                      wait_for("^score ", 30, "the task did not end") +
+                      "sleep 1; xdotool key Escape; sleep 2; xdotool key Escape\n"  // Back, then Quit
+                      + kWaitForTheApp);
   const std::vector<training::SessionInfo> sessions = sessions_of(user);
   ASSERT_EQ(sessions.size(), 1u) << r.output;
   const training::SessionInfo& session = sessions[0];
@@ -194,10 +199,11 @@ TEST(CliStartScreen, ATraineeDoesTheLayeredTargetWithTheMouse) {
   const PlanMaker plan = [](const training::Task& t, const DeskStart& s, const Eigen::Vector3d& d) {
     return layered_target_plan(t, s, d);
   };
-  start_and_finish_with_the_mouse("mouse_layered", "layered_target",
-                                  "xdotool key Down; sleep 0.7; xdotool key Down; sleep 0.7; xdotool key Down; sleep 0.7; "
-                                  "xdotool key Left; ",
-                                  mouse_plan_script("layered_target", plan), 4);
+  start_and_finish_with_the_mouse(
+      "mouse_layered", "layered_target",
+      "xdotool key Down; sleep 0.7; xdotool key Down; sleep 0.7; xdotool key Down; sleep 0.7; "
+      "xdotool key Left; ",
+      mouse_plan_script("layered_target", plan), 4);
 }
 
 // The keyboard chosen with Right on the start screen, then its keys in the task's window: each
@@ -206,11 +212,13 @@ TEST(CliStartScreen, ATraineeDoesTheLayeredTargetWithTheMouse) {
 // stored) Esc stops the task (the session stays incomplete) and Esc quits. E tilts: R is Retry.
 TEST(CliStartScreen, TheKeyboardsKeysMoveAndTurnTheNeedleInTheWindow) {
   const UserFolders user(test_output_dir("cli_start_screen") / "keyboard");
-  std::ofstream(user.settings()) << R"({"version": 1, "trainee": "eve", "device": "mouse", "window": {"width": 640, "height": 360}})";
-  const ProcessResult r = drive(user, open_start_screen(user) + "xdotool key Right; sleep 0.5; xdotool key Return\n" +
-                                          wait_for("^real-time: ", 60, "the task did not start") + "sleep 1\n" +
-                                          "xdotool key --delay 100 d d d d d e e e w w w w Left Left shift+Up\n" +
-                                          "sleep 16; xdotool key Escape; sleep 2; xdotool key Escape\n" + kWaitForTheApp);
+  std::ofstream(user.settings())
+      << R"({"version": 1, "trainee": "eve", "device": "mouse", "window": {"width": 640, "height": 360}})";
+  const ProcessResult r =
+      drive(user, open_start_screen(user) + "xdotool key Right; sleep 0.5; xdotool key Return\n" +
+                      wait_for("^real-time: ", 60, "the task did not start") + "sleep 1\n" +
+                      "xdotool key --delay 100 d d d d d e e e w w w w Left Left shift+Up\n" +
+                      "sleep 16; xdotool key Escape; sleep 2; xdotool key Escape\n" + kWaitForTheApp);
   const std::vector<training::SessionInfo> sessions = sessions_of(user);
   ASSERT_EQ(sessions.size(), 1u) << r.output;
   const training::SessionInfo& session = sessions[0];
@@ -241,14 +249,16 @@ TEST(CliStartScreen, TheKeyboardsKeysMoveAndTurnTheNeedleInTheWindow) {
 // the sphere's centre): it ends at once and the score panel's choices can be driven.
 void write_quick_task(const fs::path& file, const std::string& name) {
   const fs::path assets = source_dir() / "assets";
-  const nlohmann::json task = {
-      {"name", name},
-      {"title", "Quick " + name},
-      {"description", "ends at once"},
-      {"scene", (assets / "scenes/penetrable_sphere.json").string()},
-      {"scenario", (assets / "scenarios/nonholonomic_needle.json").string()},
-      {"markers", {{{"name", "centre"}, {"point", {0.4, 0.0, 0.0}}}}},
-      {"steps", {{{"id", "out"}, {"instruction", "Stay out."}, {"condition", {{"type", "withdrawn"}, {"marker", "centre"}, {"within_m", 0.01}}}}}}};
+  const nlohmann::json task = {{"name", name},
+                               {"title", "Quick " + name},
+                               {"description", "ends at once"},
+                               {"scene", (assets / "scenes/penetrable_sphere.json").string()},
+                               {"scenario", (assets / "scenarios/nonholonomic_needle.json").string()},
+                               {"markers", {{{"name", "centre"}, {"point", {0.4, 0.0, 0.0}}}}},
+                               {"steps",
+                                {{{"id", "out"},
+                                  {"instruction", "Stay out."},
+                                  {"condition", {{"type", "withdrawn"}, {"marker", "centre"}, {"within_m", 0.01}}}}}}};
   std::ofstream(file) << task.dump(2);
 }
 
@@ -256,7 +266,8 @@ void write_quick_task(const fs::path& file, const std::string& name) {
 // run is a session of its own in the store, and the trainee the settings remembered is used.
 TEST(CliStartScreen, TheScorePanelsNextTaskRetryAndBackLeadWhereTheySay) {
   const UserFolders user(test_output_dir("cli_start_screen") / "flow");
-  std::ofstream(user.settings()) << R"({"version": 1, "trainee": "carla", "device": "keyboard", "window": {"width": 960, "height": 540}})";
+  std::ofstream(user.settings())
+      << R"({"version": 1, "trainee": "carla", "device": "keyboard", "window": {"width": 960, "height": 540}})";
   const fs::path assets = user.root / "assets";
   fs::create_directories(assets / "tasks");
   write_quick_task(assets / "tasks" / "a.json", "quick_a");
@@ -298,10 +309,12 @@ TEST(CliStartScreen, TheDesktopLauncherOpensTheStartScreen) {
   fs::create_directories(home);
   const fs::path log = home / "needle-sim.log";
   const ProcessResult r = run_on_virtual_display(
-      "cd / && env -u XDG_CONFIG_HOME -u XDG_DATA_HOME HOME=" + quoted(home) + " " + entry["Exec"] + " > " + quoted(log) +
+      "cd / && env -u XDG_CONFIG_HOME -u XDG_DATA_HOME HOME=" + quoted(home) + " " + entry["Exec"] + " > " +
+      quoted(log) +
       " 2>&1 & app=\\$!; id=\\$(xdotool search --sync --name '^needle-sim\\$' | head -1); "
       "xdotool mousemove --window \\$id 100 100; sleep 2; xdotool key Escape; sleep 1; xdotool key Escape; "
-      "wait \\$app; rc=\\$?; cat " + quoted(log) + "; exit \\$rc");
+      "wait \\$app; rc=\\$?; cat " +
+      quoted(log) + "; exit \\$rc");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("Vulkan validation"), std::string::npos) << r.output;
   const nlohmann::json settings = nlohmann::json::parse(std::ifstream(home / ".config/needle-sim/settings.json"));
@@ -321,16 +334,16 @@ TEST(CliStartScreen, NoTasksFolderStillOpensTheScreen) {
 
 TEST(CliStartScreen, WithoutADisplayItSaysSoAndRunStillWorks) {
   const UserFolders user(test_output_dir("cli_start_screen") / "no_display");
-  const ProcessResult bare =
-      run_command("env -u DISPLAY -u WAYLAND_DISPLAY XDG_CONFIG_HOME=" + quoted(user.config) + " " + needle_sim_exe().string());
+  const ProcessResult bare = run_command("env -u DISPLAY -u WAYLAND_DISPLAY XDG_CONFIG_HOME=" + quoted(user.config) +
+                                         " " + needle_sim_exe().string());
   EXPECT_EQ(bare.exit_code, 2) << bare.output;
   EXPECT_NE(bare.output.find("no display"), std::string::npos) << bare.output;
   EXPECT_NE(bare.output.find("needle-sim run"), std::string::npos) << bare.output;
   EXPECT_FALSE(fs::exists(user.settings())) << "nothing written";
   // README's main command: the guided task, headless.
-  const ProcessResult run = run_command("env -u DISPLAY -u WAYLAND_DISPLAY NEEDLE_VALIDATION=1 " + needle_sim_exe().string() +
-                                        " run --size 160x120 --out " + quoted(user.root / "out") + " --db " +
-                                        quoted(user.data / "s.db"));
+  const ProcessResult run =
+      run_command("env -u DISPLAY -u WAYLAND_DISPLAY NEEDLE_VALIDATION=1 " + needle_sim_exe().string() +
+                  " run --size 160x120 --out " + quoted(user.root / "out") + " --db " + quoted(user.data / "s.db"));
   EXPECT_EQ(run.exit_code, 0) << run.output;
   EXPECT_TRUE(fs::is_regular_file(user.root / "out" / "score.json")) << run.output;
 }

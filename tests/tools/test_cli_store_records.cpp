@@ -36,7 +36,8 @@ TEST(CliStoreRecords, AStoredScoreNoRunStoresIsRefusedByEveryReport) {
       owner.script(std::string("UPDATE sessions SET score = ") + score + " WHERE id = 1", "");
     }
     for (const std::string& command : {"report --session 1", "report --cohort"}) {
-      const ProcessResult r = run_needle_sim(command + " --db " + quoted(db) + " --out " + quoted(db.parent_path() / "out"));
+      const ProcessResult r =
+          run_needle_sim(command + " --db " + quoted(db) + " --out " + quoted(db.parent_path() / "out"));
       EXPECT_EQ(r.exit_code, 1) << command << "\n" << r.output;
       EXPECT_TRUE(says(r, db.string() + ": session 1: the stored score ")) << r.output;
       EXPECT_TRUE(says(r, "is outside what a run stores (0 to 100): the store is damaged or was altered")) << r.output;
@@ -51,14 +52,15 @@ TEST(CliStoreRecords, AHealthyStoreARunCannotWriteIsNotCalledDamaged) {
   fs::copy_file(db, folder.dir() / "sessions.db");
   ASSERT_EQ(folder.make_read_only(), "");
   const fs::path ro = folder.dir() / "sessions.db";
-  const ProcessResult run = run_needle_sim("run --headless --size 160x120 --task " +
-                                           quoted(source_dir() / "assets/tasks/rigid_sphere.json") + " --out " +
-                                           quoted(db.parent_path() / "run") + " --db " + quoted(ro));
+  const ProcessResult run =
+      run_needle_sim("run --headless --size 160x120 --task " + quoted(source_dir() / "assets/tasks/rigid_sphere.json") +
+                     " --out " + quoted(db.parent_path() / "run") + " --db " + quoted(ro));
   EXPECT_EQ(run.exit_code, 1) << run.output;
   EXPECT_TRUE(says(run, ro.string() + ": the session database cannot be written: ")) << run.output;
   EXPECT_FALSE(says(run, "restore a copy")) << run.output;
   EXPECT_FALSE(says(run, "simulated")) << "refused before the run\n" << run.output;
-  const ProcessResult report = run_needle_sim("report --cohort --db " + quoted(ro) + " --out " + quoted(db.parent_path() / "c"));
+  const ProcessResult report =
+      run_needle_sim("report --cohort --db " + quoted(ro) + " --out " + quoted(db.parent_path() / "c"));
   EXPECT_EQ(report.exit_code, 0) << report.output;
 }
 

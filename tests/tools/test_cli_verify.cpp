@@ -11,8 +11,8 @@
 #include "app/recording_bytes.hpp"
 #include "cli_process.hpp"
 #include "tests/support/process_folder.hpp"
-#include "training/sessions/sqlite_connection.hpp"
 #include "training/sessions/session_store.hpp"
+#include "training/sessions/sqlite_connection.hpp"
 
 namespace needle::test {
 namespace {
@@ -29,8 +29,8 @@ std::string file_bytes(const fs::path& file) {
 // A scripted run of the rigid sphere (44 s of session, seconds of wall time) into `db`: its score.json.
 nlohmann::json run_into(const fs::path& db, const fs::path& out, const std::string& trainee) {
   const ProcessResult r = run_needle_sim("run --headless --size 160x120 --trainee " + trainee + " --task " +
-                                         quoted(source_dir() / "assets/tasks/rigid_sphere.json") + " --out " + quoted(out) +
-                                         " --db " + quoted(db));
+                                         quoted(source_dir() / "assets/tasks/rigid_sphere.json") + " --out " +
+                                         quoted(out) + " --db " + quoted(db));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   return nlohmann::json::parse(std::ifstream(out / "score.json"));
 }
@@ -60,7 +60,8 @@ training::Verification listed(const fs::path& db, int64_t id) {
 class CliVerify : public testing::Test {
  protected:
   void SetUp() override {
-    dir_ = process_folder(test_output_dir("cli_verify") / testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ =
+        process_folder(test_output_dir("cli_verify") / testing::UnitTest::GetInstance()->current_test_info()->name());
     db_ = dir_ / "sessions.db";
     score_ = run_into(db_, dir_ / "run", "ana");
   }
@@ -93,7 +94,8 @@ TEST_F(CliVerify, AScoreTheOwnerRaisedIsAMismatchNamingBothScores) {
   EXPECT_TRUE(says(r, std::string("score: stored 100, replay ") + replayed)) << r.output;
   EXPECT_TRUE(says(r, "passed: stored yes, replay no") || score_["passed"].get<bool>()) << r.output;
   const std::string csv = file_bytes(dir_ / "v" / "verify_mismatches.csv");
-  EXPECT_NE(csv.find(std::string("1,mismatch,\"score: stored 100, replay ") + replayed + "\""), std::string::npos) << csv;
+  EXPECT_NE(csv.find(std::string("1,mismatch,\"score: stored 100, replay ") + replayed + "\""), std::string::npos)
+      << csv;
   EXPECT_EQ(listed(db_, 1), training::Verification::kMismatch);
 }
 
@@ -132,9 +134,11 @@ TEST_F(CliVerify, AnotherSessionsRecordingIsAMismatchAndTheReportRefusesIt) {
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_TRUE(says(r, "session 2: MISMATCH")) << r.output;
   EXPECT_TRUE(says(r, "the recording of another session (uid ")) << r.output;
-  const ProcessResult report = run_needle_sim("report --session 2 --db " + quoted(db_) + " --out " + quoted(dir_ / "report"));
+  const ProcessResult report =
+      run_needle_sim("report --session 2 --db " + quoted(db_) + " --out " + quoted(dir_ / "report"));
   EXPECT_EQ(report.exit_code, 1) << report.output;
-  EXPECT_TRUE(says(report, score_["recording"].get<std::string>() + ": the recording of another session (uid ")) << report.output;
+  EXPECT_TRUE(says(report, score_["recording"].get<std::string>() + ": the recording of another session (uid "))
+      << report.output;
   EXPECT_TRUE(says(report, "not of session 2 (uid ")) << report.output;
   EXPECT_FALSE(fs::exists(dir_ / "report" / "plot_force.png")) << "no plots of another session's recording";
 }

@@ -26,8 +26,8 @@ std::string run_args(const fs::path& out, const fs::path& db) {
 }
 
 TEST(CliWrites, RenderIntoAFullDeviceIsAnError) {
-  const ProcessResult r = run_needle_sim("render --gltf " + quoted(source_dir() / "assets/needle.gltf") +
-                                         " --size 64x48 --out /dev/full");
+  const ProcessResult r =
+      run_needle_sim("render --gltf " + quoted(source_dir() / "assets/needle.gltf") + " --size 64x48 --out /dev/full");
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_TRUE(says(r, "/dev/full: cannot write: No space left on device")) << r.output;
   EXPECT_FALSE(says(r, "wrote")) << r.output;
@@ -39,7 +39,8 @@ TEST(CliWrites, AnOutputFolderThatCannotBeMadeIsAnErrorNamingIt) {
   { std::ofstream(dir / "plain") << "x"; }
   for (const fs::path& out : {dir / "plain" / "out", fs::path("/proc/needle-sim-out")}) {
     const ProcessResult r =
-        run_needle_sim("simulate --scenario " + quoted(source_dir() / "assets/scenarios/holonomic_sphere.json") + " --out " + quoted(out));
+        run_needle_sim("simulate --scenario " + quoted(source_dir() / "assets/scenarios/holonomic_sphere.json") +
+                       " --out " + quoted(out));
     EXPECT_EQ(r.exit_code, 1) << r.output;
     EXPECT_TRUE(says(r, out.string() + ": cannot create the folder: ")) << r.output;
     EXPECT_FALSE(says(r, "filesystem error")) << r.output;
@@ -116,7 +117,8 @@ TEST(CliWrites, ReportReadsADatabaseInAFolderItCannotWrite) {
   const ReadOnlyFolder folder(dir / "ro");
   fs::copy_file(dir / "sessions.db", folder.dir() / "sessions.db");
   ASSERT_EQ(folder.make_read_only(), "");
-  const ProcessResult r = run_needle_sim("report --session 1 --db " + quoted(folder.dir() / "sessions.db") + " --out " + quoted(dir / "report"));
+  const ProcessResult r = run_needle_sim("report --session 1 --db " + quoted(folder.dir() / "sessions.db") + " --out " +
+                                         quoted(dir / "report"));
   EXPECT_EQ(r.exit_code, 0) << r.output;  // the recording is found by its absolute path
   EXPECT_TRUE(fs::is_regular_file(dir / "report" / "session_1.json")) << r.output;
   EXPECT_TRUE(fs::is_regular_file(dir / "report" / "plot_force.png")) << r.output;

@@ -7,9 +7,9 @@
 #include <numbers>
 
 #include "tests/support/allocation_counter.hpp"
+#include "tests/support/test_paths.hpp"
 #include "tool_states.hpp"
 #include "training/scoring/session_scorer.hpp"
-#include "tests/support/test_paths.hpp"
 
 namespace needle::training {
 namespace {

@@ -37,7 +37,8 @@ class CohortViewTest : public testing::Test {
     add("ana", "pivot_drill", "st-1", "2026-11-01T09:00:00Z", scored(40, false, false));
     add("ben", "pivot_drill", "st-2", "2026-11-03T09:00:00Z", scored(90, true, true));
     add("ben", "rigid_sphere", "st-2", "2026-11-04T09:00:00Z", scored(70, true, false));
-    store_->begin_session({"cyd", "pivot_drill", "Pivot drill", "", "sim", "", "st-1", "", "2026-11-05T09:00:00Z"});  // incomplete
+    store_->begin_session(
+        {"cyd", "pivot_drill", "Pivot drill", "", "sim", "", "st-1", "", "2026-11-05T09:00:00Z"});  // incomplete
   }
   void add(const std::string& trainee, const std::string& task, const std::string& station, const std::string& at,
            const SessionResult& result) {
@@ -108,7 +109,8 @@ TEST_F(CohortViewTest, LayeredMetricsOnlyForTasksThatPunctured) {
       if (p.task == task && p.metric == metric) return p.n;
     return size_t(99);
   };
-  for (const char* metric : {"punctures", "overshoot_m", "bone_contacts", "bone_peak_force_N", "redirections", "forbidden_punctures"}) {
+  for (const char* metric :
+       {"punctures", "overshoot_m", "bone_contacts", "bone_peak_force_N", "redirections", "forbidden_punctures"}) {
     EXPECT_EQ(n_of("pivot_drill", metric), 0u) << metric;
     EXPECT_EQ(n_of("rigid_sphere", metric), 0u) << metric;
   }
@@ -136,7 +138,8 @@ TEST_F(CohortViewTest, FiltersByTaskTraineeStationAndDates) {
 TEST(CohortFilter, DatesAreDaysOfTheCalendar) {
   for (const char* day : {"2026-01-31", "2024-02-29", "2000-02-29", "2026-12-31"})
     EXPECT_NO_THROW(check_cohort_filter({"", "", "", day, ""})) << day;
-  for (const char* day : {"2026-13-45", "2026-02-30", "2026-02-29", "1900-02-29", "2026-04-31", "2026-00-10", "2026-01-00"})
+  for (const char* day :
+       {"2026-13-45", "2026-02-30", "2026-02-29", "1900-02-29", "2026-04-31", "2026-00-10", "2026-01-00"})
     EXPECT_THROW(check_cohort_filter({"", "", "", "", day}), std::invalid_argument) << day;
 }
 

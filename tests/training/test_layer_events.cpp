@@ -17,7 +17,7 @@ using haptics::ContactState;
 Task spine() {
   Task t;
   t.name = "spine";
-  t.layers = {{"skin", false, 1.2}, {"fat", false, 0.0}, {"flavum", false, 5.0},
+  t.layers = {{"skin", false, 1.2},     {"fat", false, 0.0},  {"flavum", false, 5.0},
               {"epidural", false, 0.0}, {"dura", false, 1.0}, {"bone", true, 0.0}};
   Step s;
   s.id = "in";
@@ -31,7 +31,8 @@ Task spine() {
 
 // The needle pointing down (-z): pitch 90 degrees turns +x onto -z.
 haptics::ToolSnapshot down(double t, double z, int layer, uint32_t passed, double force = 0.0, int bone = -1) {
-  haptics::ToolSnapshot s = test::state(t, {0, 0, z}, std::numbers::pi / 2, layer >= 0 ? ContactState::kTissue : ContactState::kFree);
+  haptics::ToolSnapshot s =
+      test::state(t, {0, 0, z}, std::numbers::pi / 2, layer >= 0 ? ContactState::kTissue : ContactState::kFree);
   s.tissue.tip_layer = layer;
   s.tissue.punctured_layers = passed;
   s.tissue.axial_force_N = force;
@@ -133,8 +134,9 @@ TEST(LayerEvents, TheScorerCountsThemPerStepAndListsThePunctures) {
   EXPECT_EQ(r.steps[0].record.outcome, StepOutcome::kForbiddenPuncture);
   EXPECT_EQ(r.steps[0].failure, "dura punctured (forbidden)");
   EXPECT_FALSE(r.score.passed);
-  EXPECT_NE(std::find(r.score.reasons_failed.begin(), r.score.reasons_failed.end(), "step in: dura punctured (forbidden)"),
-            r.score.reasons_failed.end());
+  EXPECT_NE(
+      std::find(r.score.reasons_failed.begin(), r.score.reasons_failed.end(), "step in: dura punctured (forbidden)"),
+      r.score.reasons_failed.end());
   ASSERT_EQ(r.punctures.size(), 3u);
   EXPECT_EQ(r.punctures[0].layer, "skin");
   EXPECT_EQ(r.punctures[1].layer, "flavum");

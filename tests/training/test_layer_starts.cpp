@@ -25,7 +25,8 @@ json scenario_json(const char* name) {
 // A scenario's tissue is in the robots' base frame; the axes below are in the world.
 std::vector<LayerStart> starts_in(const char* scenario, const Vec3& origin, const Vec3& direction) {
   const haptics::Scenario s = haptics::load_scenario((test::source_dir() / "assets/scenarios" / scenario).string());
-  return layer_starts_along(s.scene.tissue, {s.base_in_world.x(), s.base_in_world.y(), s.base_in_world.z()}, origin, direction);
+  return layer_starts_along(s.scene.tissue, {s.base_in_world.x(), s.base_in_world.y(), s.base_in_world.z()}, origin,
+                            direction);
 }
 
 // The start found for `layer`, or NaN.

@@ -25,7 +25,8 @@ TEST(LoopHealth, OnTimeLoopReadsNominal) {
   EXPECT_DOUBLE_EQ(h.period_max_ms, 1.0);
   EXPECT_EQ(h.late_ticks, 0u);
   EXPECT_FALSE(h.degraded());
-  EXPECT_EQ(training::describe(h), "haptic loop 1000.0 Hz (nominal 1000), period p99 1.00 ms, worst 1.00 ms, 0 late ticks of 1000");
+  EXPECT_EQ(training::describe(h),
+            "haptic loop 1000.0 Hz (nominal 1000), period p99 1.00 ms, worst 1.00 ms, 0 late ticks of 1000");
 }
 
 TEST(LoopHealth, StallsCountAsLateAndLowerTheRate) {

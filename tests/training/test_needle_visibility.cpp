@@ -69,10 +69,10 @@ Task probe_task(double out_of_plane_max_s) {
 TEST(NeedleVisibility, ATipOutOfThePlaneTooLongEndsTheStep) {
   const Task t = probe_task(1.0);
   TaskProgress p(t);
-  p.feed(state(0.0, {0, 0, 0.01}));                               // above the skin: no rule
+  p.feed(state(0.0, {0, 0, 0.01}));                                  // above the skin: no rule
   p.feed(state(1.0, {0, 0.005, -0.005}, 0, ContactState::kTissue));  // out of plane, in tissue: the clock starts
   p.feed(state(1.9, {0, 0.005, -0.01}, 0, ContactState::kTissue));
-  p.feed(state(2.0, {0, 0.0, -0.01}, 0, ContactState::kTissue));     // back in plane at 1 s: the clock stops
+  p.feed(state(2.0, {0, 0.0, -0.01}, 0, ContactState::kTissue));  // back in plane at 1 s: the clock stops
   p.feed(state(2.5, {0, 0.005, -0.012}, 0, ContactState::kTissue));
   p.feed(state(3.4, {0, 0.005, -0.012}, 0, ContactState::kTissue));
   EXPECT_EQ(p.records()[0].outcome, StepOutcome::kActive);
@@ -90,7 +90,8 @@ SessionResult scored(const Task& t, double y_offset) {
   scorer.feed(test::sample(state(0.0, {-0.01, y_offset, 0.005})));
   // Enters at (−10 mm, y, 0) and goes 45° down in x, 1 mm a tick of 0.1 s, to the target's depth.
   for (int k = 0; k <= 25; ++k)
-    scorer.feed(test::sample(state(0.1 + 0.1 * k, {-0.01 + 0.001 * k, y_offset, -0.001 * k}, 0.0, ContactState::kTissue)));
+    scorer.feed(
+        test::sample(state(0.1 + 0.1 * k, {-0.01 + 0.001 * k, y_offset, -0.001 * k}, 0.0, ContactState::kTissue)));
   return scorer.result();
 }
 

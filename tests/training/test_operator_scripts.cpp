@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "training/tasks/scripted_operator.hpp"
 #include "tests/support/test_paths.hpp"
+#include "training/tasks/scripted_operator.hpp"
 
 namespace needle::training {
 namespace {
@@ -59,17 +59,18 @@ std::string script_error(const std::string& name, const std::string& text) {
 }
 
 TEST(OperatorScriptFiles, ABadHandIsAnErrorNamingTheScriptAndThePointer) {
-  const std::string waypoints = R"("waypoints": [{"t": 0, "p": [0.3, 0, 0.2], "dir": [1, 0, 0]}, {"t": 2, "p": [0.3, 0, 0.1], "dir": [1, 0, 0]}])";
+  const std::string waypoints =
+      R"("waypoints": [{"t": 0, "p": [0.3, 0, 0.2], "dir": [1, 0, 0]}, {"t": 2, "p": [0.3, 0, 0.1], "dir": [1, 0, 0]}])";
   const std::string path = (kOutput / "").string();
   EXPECT_EQ(script_error("mass_negative", R"({"hand": {"mass_kg": -1, )" + waypoints + "}}"),
             path + "mass_negative.json: /hand/mass_kg: must be in (0, 10] kg, got -1");
   EXPECT_EQ(script_error("mass_zero", R"({"hand": {"mass_kg": 0, )" + waypoints + "}}"),
             path + "mass_zero.json: /hand/mass_kg: must be in (0, 10] kg, got 0");
-  EXPECT_EQ(script_error("unknown_key", R"({"hand": {"speed": 3, )" + waypoints + "}}").rfind(
-                path + "unknown_key.json: /hand/speed: unknown key (allowed: mass_kg, ", 0),
+  EXPECT_EQ(script_error("unknown_key", R"({"hand": {"speed": 3, )" + waypoints + "}}")
+                .rfind(path + "unknown_key.json: /hand/speed: unknown key (allowed: mass_kg, ", 0),
             0u);
-  EXPECT_EQ(script_error("unknown_top", R"({"hands": {}, "hand": {)" + waypoints + "}}").rfind(
-                path + "unknown_top.json: /hands: unknown key (allowed: description, hand)", 0),
+  EXPECT_EQ(script_error("unknown_top", R"({"hands": {}, "hand": {)" + waypoints + "}}")
+                .rfind(path + "unknown_top.json: /hands: unknown key (allowed: description, hand)", 0),
             0u);
 }
 
@@ -80,10 +81,11 @@ TEST(OperatorScriptFiles, WaypointTimesMustBeFiniteOrderedAndWithinTheLongestSes
             path + "forever.json: /hand/waypoints/1/t: must be in [0, 1800] s, got 1e+308");
   EXPECT_EQ(script_error("backwards", R"({"hand": {"waypoints": [{"t": 5, )" + p + R"(}, {"t": 2, )" + p + "}]}}"),
             path + "backwards.json: /hand/waypoints/1/t: must be after the waypoint before it (5.000000 s)");
-  EXPECT_EQ(script_error("not_json", R"({"hand": )"), path + "not_json.json: /: not valid JSON: " +
-                                                          std::string("[json.exception.parse_error.101] parse error at line 1, "
-                                                                      "column 10: syntax error while parsing value - unexpected "
-                                                                      "end of input; expected '[', '{', or a literal"));
+  EXPECT_EQ(script_error("not_json", R"({"hand": )"),
+            path + "not_json.json: /: not valid JSON: " +
+                std::string("[json.exception.parse_error.101] parse error at line 1, "
+                            "column 10: syntax error while parsing value - unexpected "
+                            "end of input; expected '[', '{', or a literal"));
 }
 
 }  // namespace

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numbers>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "tests/support/test_paths.hpp"
 #include "tool_states.hpp"
@@ -20,7 +20,9 @@ using haptics::ContactState;
 using test::sample;
 using test::state;
 
-Task shipped(const char* name) { return load_task(needle::test::source_dir() / "assets/tasks" / (std::string(name) + ".json")); }
+Task shipped(const char* name) {
+  return load_task(needle::test::source_dir() / "assets/tasks" / (std::string(name) + ".json"));
+}
 
 std::map<std::string, ScoreComponent> by_name(const Score& s) {
   std::map<std::string, ScoreComponent> out;
@@ -48,7 +50,8 @@ void free_run(SessionScorer& scorer, const Vec3& from, const Vec3& to, double se
 TEST(ScoreApplies, ARunThatNeverEntersTissueScoresNothingForTissueMetrics) {
   const Task task = shipped("penetrable_sphere");
   EXPECT_FALSE(task.scoring.measures.force_steadiness);
-  EXPECT_TRUE(task.scoring.measures.lateral_load && task.scoring.measures.tip_error && task.scoring.measures.axis_deviation);
+  EXPECT_TRUE(task.scoring.measures.lateral_load && task.scoring.measures.tip_error &&
+              task.scoring.measures.axis_deviation);
   SessionScorer scorer(task);
   // Towards the entry (0.329, 0, 0.071) from 10 cm above it, stopping 3 cm short: never touching.
   free_run(scorer, {0.30, 0.0, 0.17}, {0.31, 0.0, 0.10}, 3.0, 110.0, std::numbers::pi / 4);
@@ -169,7 +172,8 @@ TEST(ScoreApplies, ScoreJsonSaysWhichComponentsApplied) {
   const nlohmann::json j = result_json(scorer.result());
   std::map<std::string, nlohmann::json> c;
   for (const nlohmann::json& x : j["components"]) c[x["name"].get<std::string>()] = x;
-  for (const char* key : {"name", "value", "weight", "points", "applied", "status"}) EXPECT_TRUE(c["completion"].contains(key)) << key;
+  for (const char* key : {"name", "value", "weight", "points", "applied", "status"})
+    EXPECT_TRUE(c["completion"].contains(key)) << key;
   EXPECT_EQ(c["tip_error"]["status"], "not_applicable");
   EXPECT_EQ(c["tip_error"]["applied"], false);
   EXPECT_EQ(c["lateral_load"]["status"], "not_reached");
@@ -183,7 +187,8 @@ TEST(ScoreApplies, TimeInTissueIsTheTicksInTissue) {
   const Task task = shipped("penetrable_sphere");
   SessionScorer scorer(task);
   for (int k = 0; k <= 300; ++k)
-    scorer.feed(sample(state(k * 0.01, {0.33, 0.0, 0.07}, 0.0, k > 100 && k <= 250 ? ContactState::kTissue : ContactState::kFree)));
+    scorer.feed(sample(
+        state(k * 0.01, {0.33, 0.0, 0.07}, 0.0, k > 100 && k <= 250 ? ContactState::kTissue : ContactState::kFree)));
   EXPECT_NEAR(scorer.result().overall.tissue_time_s, 1.5, 1e-9);  // ticks 101..250, 0.01 s each
 }
 

@@ -87,7 +87,8 @@ TEST(SessionCheck, TheReviewShowsTheLatestCheckAgainstWhatIsStoredNow) {
   EXPECT_EQ(verification_status(s).verdict, Verification::kUnverified);
   EXPECT_NE(verification_status(s).line.find("never checked"), std::string::npos);
 
-  s.check = SessionCheck{3, CheckOutcome::kVerified, s.info.score, result_digest(s), "", "2026-11-23T10:00:00Z", "dr-lee"};
+  s.check =
+      SessionCheck{3, CheckOutcome::kVerified, s.info.score, result_digest(s), "", "2026-11-23T10:00:00Z", "dr-lee"};
   s.info.check = CheckOutcome::kVerified;
   s.info.checked_score = s.info.score;
   EXPECT_EQ(verification(s.info), Verification::kVerified);
@@ -103,10 +104,16 @@ TEST(SessionCheck, TheReviewShowsTheLatestCheckAgainstWhatIsStoredNow) {
   EXPECT_EQ(verification(s.info), Verification::kMismatch);
   s.info.check = CheckOutcome::kUnverifiable;
   EXPECT_EQ(verification(s.info), Verification::kUnverified);
-  s.check = SessionCheck{3, CheckOutcome::kUnverifiable, s.info.score, result_digest(s), "x.nrec: block at byte 9: damaged\nmore",
-                         "2026-11-23T10:00:00Z", ""};
+  s.check = SessionCheck{3,
+                         CheckOutcome::kUnverifiable,
+                         s.info.score,
+                         result_digest(s),
+                         "x.nrec: block at byte 9: damaged\nmore",
+                         "2026-11-23T10:00:00Z",
+                         ""};
   EXPECT_EQ(verification_status(s).line,
-            "unverified: its recording could not be replayed (checked 2026-11-23T10:00:00Z): x.nrec: block at byte 9: damaged");
+            "unverified: its recording could not be replayed (checked 2026-11-23T10:00:00Z): x.nrec: block at byte 9: "
+            "damaged");
   EXPECT_STREQ(verification_word(Verification::kMismatch), "mismatch");
 }
 

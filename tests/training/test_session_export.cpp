@@ -6,9 +6,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "tests/support/test_paths.hpp"
 #include "training/scoring/metric_fields.hpp"
 #include "training/sessions/session_export.hpp"
-#include "tests/support/test_paths.hpp"
 
 namespace needle::training {
 namespace {

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <filesystem>
 
+#include "tests/support/test_paths.hpp"
 #include "tool_states.hpp"
 #include "training/sessions/session_series.hpp"
-#include "tests/support/test_paths.hpp"
 
 namespace needle::training {
 namespace {
@@ -25,7 +25,8 @@ std::vector<haptics::TickSample> joint_samples() {
   out[0].state.environment_force_n[0] = 3.0;
   out[0].state.environment_force_n[1] = 4.0;  // |F_v| = 5
   out[0].state.operator_force_n[2] = 2.0;     // |F_h| = 2
-  out[1].state = test::state(0.001, origin + 0.02 * Vec3{r, 0.0, -r} + Vec3{0.0, 0.01, 0.0}, 0.0, haptics::ContactState::kTissue);
+  out[1].state =
+      test::state(0.001, origin + 0.02 * Vec3{r, 0.0, -r} + Vec3{0.0, 0.01, 0.0}, 0.0, haptics::ContactState::kTissue);
   out[1].state.multiplier_count = 2;
   out[1].state.multipliers[0] = 3.0;
   out[1].state.multipliers[1] = -4.0;  // |lambda| = 5
@@ -70,7 +71,7 @@ TEST(SessionSeries, JointDeviceSessionOnThePenetrableTask) {
   EXPECT_EQ(p.depth.title, "Depth along the insertion axis");  // the marker's name in words
   ASSERT_EQ(p.depth.lines.size(), 1u);
   expect_values(p.depth.lines[0], {0.0, 20.0, -5.0}, 1e-6);  // the sideways 10 mm does not count
-  ASSERT_EQ(p.depth.guides.size(), 2u);  // the insert step's band, 2.5 to 3.5 cm
+  ASSERT_EQ(p.depth.guides.size(), 2u);                      // the insert step's band, 2.5 to 3.5 cm
   EXPECT_NEAR(p.depth.guides[0].value, 25.0, 1e-9);
   EXPECT_NEAR(p.depth.guides[1].value, 35.0, 1e-9);
 

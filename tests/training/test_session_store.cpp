@@ -13,12 +13,12 @@
 #include <iterator>
 #include <thread>
 
+#include "tests/support/full_disk.hpp"
+#include "tests/support/stored_sessions.hpp"
+#include "tests/support/test_paths.hpp"
 #include "training/scoring/metric_fields.hpp"
 #include "training/sessions/session_store.hpp"
 #include "training/sessions/sqlite_connection.hpp"
-#include "tests/support/stored_sessions.hpp"
-#include "tests/support/full_disk.hpp"
-#include "tests/support/test_paths.hpp"
 
 namespace needle::training {
 namespace {
@@ -151,7 +151,8 @@ std::vector<char> bytes_of(const fs::path& file) {
 // A closed store of `sessions` finished sessions: everything in the main file, no WAL left.
 void fill(const fs::path& file, int sessions) {
   SessionStore store(file);
-  for (int k = 0; k < sessions; ++k) store.finish_session(store.begin_session("ana", small_task(), "sim", ""), a_result());
+  for (int k = 0; k < sessions; ++k)
+    store.finish_session(store.begin_session("ana", small_task(), "sim", ""), a_result());
 }
 
 std::string open_error(const fs::path& file, bool read_only) {
@@ -176,14 +177,17 @@ TEST(SessionStore, ADamagedOrCutDatabaseIsRefusedWhenOpenedAndLeftAsItIs) {
   std::vector<char> bad = good;  // the last page zeroed
   std::fill(bad.end() - 4096, bad.end(), 0);
   std::ofstream(file, std::ios::binary).write(bad.data(), std::streamsize(bad.size()));
-  for (bool read_only : {false, true}) EXPECT_EQ(open_error(file, read_only).rfind(damaged, 0), 0u) << open_error(file, read_only);
+  for (bool read_only : {false, true})
+    EXPECT_EQ(open_error(file, read_only).rfind(damaged, 0), 0u) << open_error(file, read_only);
   EXPECT_EQ(bytes_of(file), bad) << "a refused file is not touched";
 
   // Cut to half, as a copy that stopped short.
   std::ofstream(file, std::ios::binary).write(good.data(), std::streamsize(good.size() / 2));
-  for (bool read_only : {false, true}) EXPECT_EQ(open_error(file, read_only).rfind(damaged, 0), 0u) << open_error(file, read_only);
+  for (bool read_only : {false, true})
+    EXPECT_EQ(open_error(file, read_only).rfind(damaged, 0), 0u) << open_error(file, read_only);
 
-  std::ofstream(file, std::ios::binary) << "not a database at all, but long enough to have a header........................";
+  std::ofstream(file, std::ios::binary)
+      << "not a database at all, but long enough to have a header........................";
   EXPECT_EQ(open_error(file, true).rfind(damaged, 0), 0u) << open_error(file, true);
 }
 
@@ -216,7 +220,8 @@ TEST(SessionStore, AHealthyDatabaseAWriterCannotWriteIsNotCalledDamaged) {
   const std::string error = open_error(folder.dir() / "sessions.db", false);
   EXPECT_EQ(error.find("the session database is damaged"), std::string::npos) << error;
   EXPECT_EQ(error.find("restore a copy"), std::string::npos) << error;
-  EXPECT_NE(error.find((folder.dir() / "sessions.db").string() + ": the session database cannot be written: "), std::string::npos)
+  EXPECT_NE(error.find((folder.dir() / "sessions.db").string() + ": the session database cannot be written: "),
+            std::string::npos)
       << error;
   const bool mounted = error.find("its file system is mounted read-only") != std::string::npos;
   EXPECT_TRUE(mounted || error.find("may not write") != std::string::npos) << error;

@@ -57,7 +57,8 @@ TEST(SessionTable, SortsByEachColumn) {
 TEST(SessionTable, TraineeSortIgnoresCaseAndASecondColumnBreaksTies) {
   EXPECT_EQ(ids("", {{SessionColumn::kTrainee, false}, {SessionColumn::kScore, false}}),
             (std::vector<int64_t>{1, 4, 2, 3}));  // ana 80, ana 91, bo, Carla
-  EXPECT_EQ(ids("", {{SessionColumn::kTrainee, true}, {SessionColumn::kScore, true}}), (std::vector<int64_t>{3, 2, 4, 1}));
+  EXPECT_EQ(ids("", {{SessionColumn::kTrainee, true}, {SessionColumn::kScore, true}}),
+            (std::vector<int64_t>{3, 2, 4, 1}));
 }
 
 TEST(SessionTable, FilterTermsAllMatchIgnoringCaseAndMinusExcludes) {

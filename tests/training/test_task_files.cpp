@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
-#include "training/tasks/task.hpp"
 #include "tests/support/test_paths.hpp"
+#include "training/tasks/task.hpp"
 
 namespace needle::training {
 namespace {
@@ -234,8 +234,9 @@ TEST(TaskFiles, LayerConditionsAndForbiddenLayersNameTheScenariosLayers) {
 
   json j = layered_task();
   j["steps"][0]["condition"]["layer"] = "musle";
-  expect_error(j, "unknown_layer", "/steps/0/condition/layer",
-               "no layer named \"musle\" in the scenario's tissue (its layers: \"skin\", \"fat\", \"muscle\", \"bone\")");
+  expect_error(
+      j, "unknown_layer", "/steps/0/condition/layer",
+      "no layer named \"musle\" in the scenario's tissue (its layers: \"skin\", \"fat\", \"muscle\", \"bone\")");
   j = layered_task();
   j["steps"][0]["condition"]["layer"] = "bone";
   expect_error(j, "bone_holds_no_tip", "/steps/0/condition/layer", "layer \"bone\" is rigid");

@@ -235,7 +235,7 @@ TEST(TaskProgress, TouchingAForbiddenRigidLayerEndsTheStep) {
   EXPECT_EQ(p.records()[0].outcome, StepOutcome::kRigidTouched);
   EXPECT_EQ(p.records()[0].layer, 3);
   EXPECT_EQ(step_failure_reason(t, p.records()[0]), "bone touched (forbidden)");
-  p.feed(in_layer(0.55, 1, 0b11));     // off the bone for 50 ms and on it again: the penalty's chatter,
+  p.feed(in_layer(0.55, 1, 0b11));    // off the bone for 50 ms and on it again: the penalty's chatter,
   p.feed(in_layer(0.6, 1, 0b11, 3));  // the same touch, no new fault; the skin is punctured
   EXPECT_EQ(p.records()[1].outcome, StepOutcome::kCompleted);
   // A completed step has no failure reason; a forbidden fault wins over success on the same state.

@@ -23,7 +23,8 @@ json shipped(const std::string& name) {
   const fs::path tasks = test::source_dir() / "assets/tasks";
   json t = json::parse(std::ifstream(tasks / (name + ".json")));
   for (const char* key : {"scene", "scenario", "patient"})
-    if (t.contains(key) && t[key] != "random") t[key] = fs::weakly_canonical(tasks / t[key].get<std::string>()).string();
+    if (t.contains(key) && t[key] != "random")
+      t[key] = fs::weakly_canonical(tasks / t[key].get<std::string>()).string();
   return t;
 }
 
@@ -90,17 +91,20 @@ TEST(TaskRanges, EveryNumberPastItsRangeNamesTheFileThePointerTheRangeAndTheValu
   };
   for (const Case& c : cases) {
     json t = shipped(c.task);
-    if (std::string(c.pointer).rfind("/section/", 0) == 0) t["section"] = {{"point", {0.33, 0.0, 0.05}}, {"normal", {0.0, 1.0, 0.0}}};
+    if (std::string(c.pointer).rfind("/section/", 0) == 0)
+      t["section"] = {{"point", {0.33, 0.0, 0.05}}, {"normal", {0.0, 1.0, 0.0}}};
     ASSERT_TRUE(t.contains(json::json_pointer(c.pointer).parent_pointer())) << c.pointer;
     t[json::json_pointer(c.pointer)] = c.value;
     char value[32];
     std::snprintf(value, sizeof value, "%g", c.value);
-    EXPECT_EQ(error_of(t), task_file().string() + ": " + c.pointer + ": must be in " + c.range + ", got " + value) << c.pointer;
+    EXPECT_EQ(error_of(t), task_file().string() + ": " + c.pointer + ": must be in " + c.range + ", got " + value)
+        << c.pointer;
   }
 }
 
 TEST(TaskRanges, EveryProbeFieldIsRequired) {
-  for (const char* key : {"position", "direction", "lateral", "depth_m", "width_m", "frequency_MHz", "slice_thickness_m"}) {
+  for (const char* key :
+       {"position", "direction", "lateral", "depth_m", "width_m", "frequency_MHz", "slice_thickness_m"}) {
     json t = shipped("sphere_ultrasound");
     t["ultrasound"]["probe"].erase(key);
     EXPECT_EQ(error_of(t), task_file().string() + ": /ultrasound/probe/" + key + ": missing");
@@ -112,13 +116,19 @@ TEST(TaskRanges, EveryProbeFieldIsRequired) {
 TEST(TaskRanges, APatientTasksKeysAreChecked) {
   json t = shipped("epidural_patient_bmi22");
   t["steps"][1]["condition"]["interspace"] = "L6-L7";
-  EXPECT_EQ(error_of(t), task_file().string() + ": /steps/1/condition/interspace: \"L6-L7\", expected L1-L2, L2-L3, L3-L4, L4-L5 or L5-S1");
+  EXPECT_EQ(error_of(t),
+            task_file().string() +
+                ": /steps/1/condition/interspace: \"L6-L7\", expected L1-L2, L2-L3, L3-L4, L4-L5 or L5-S1");
   json on_block = shipped("layered_target");
   on_block["patient"] = "random";
-  EXPECT_EQ(error_of(on_block), task_file().string() + ": /patient: the task's /scenario has no generated patient (tissue.patient) to replace");
+  EXPECT_EQ(
+      error_of(on_block),
+      task_file().string() + ": /patient: the task's /scenario has no generated patient (tissue.patient) to replace");
   json landmarks = shipped("layered_target");
   landmarks["steps"][0]["guidance"]["landmarks"] = true;
-  EXPECT_EQ(error_of(landmarks), task_file().string() + ": /steps/0/guidance/landmarks: landmarks need a generated patient (the task's /scenario has none)");
+  EXPECT_EQ(error_of(landmarks),
+            task_file().string() +
+                ": /steps/0/guidance/landmarks: landmarks need a generated patient (the task's /scenario has none)");
   json missing = shipped("epidural_patient_bmi22");
   missing["patient"] = "/nonexistent/patient.json";
   EXPECT_EQ(error_of(missing), task_file().string() + ": /patient: file not found: /nonexistent/patient.json");
@@ -129,7 +139,8 @@ TEST(TaskRanges, APatientTasksKeysAreChecked) {
 TEST(TaskRanges, AtMost64MarkersAnd64Steps) {
   json task = shipped("penetrable_sphere");
   const size_t markers = task["markers"].size(), steps = task["steps"].size();
-  for (size_t i = markers; i < 64; ++i) task["markers"].push_back({{"name", "m" + std::to_string(i)}, {"point", {0, 0, 0}}});
+  for (size_t i = markers; i < 64; ++i)
+    task["markers"].push_back({{"name", "m" + std::to_string(i)}, {"point", {0, 0, 0}}});
   for (size_t i = steps; i < 64; ++i) {
     task["steps"].push_back(task["steps"][0]);
     task["steps"].back()["id"] = "s" + std::to_string(i);
@@ -145,8 +156,9 @@ TEST(TaskRanges, AtMost64MarkersAnd64Steps) {
 }
 
 TEST(TaskRanges, TheShippedTasksAreInsideEveryRange) {
-  for (const char* name : {"rigid_sphere", "penetrable_sphere", "sphere_ultrasound", "layered_target", "epidural", "epidural_patient_bmi22",
-                           "epidural_patient_bmi30", "epidural_patient_bmi40", "epidural_patient_random"}) {
+  for (const char* name :
+       {"rigid_sphere", "penetrable_sphere", "sphere_ultrasound", "layered_target", "epidural",
+        "epidural_patient_bmi22", "epidural_patient_bmi30", "epidural_patient_bmi40", "epidural_patient_random"}) {
     EXPECT_EQ(error_of(shipped(name)), "no error") << name;
   }
 }
@@ -174,7 +186,8 @@ TEST(TaskRanges, TheSyringeAndTheStepThatSeeksItsLossAreCheckedOnLoad) {
   t = shipped("epidural");
   t.erase("syringe");
   EXPECT_EQ(error_of(t), file + "/steps/2/stop_at_loss: needs the task's syringe (/syringe)");
-  t = shipped("layered_target");  // its tissue's parameter sets give their injection keys: any task on it may have a syringe
+  t = shipped(
+      "layered_target");  // its tissue's parameter sets give their injection keys: any task on it may have a syringe
   t["syringe"] = {{"fluid", "saline"}, {"technique", "continuous"}, {"space", "fat"}};
   EXPECT_EQ(error_of(t), "no error");
 }

@@ -27,9 +27,10 @@ SessionInfo info(std::string trainee, std::string task, bool complete, double sc
 }
 
 TEST(TraineeHistory, TraineesMostRecentFirstAndTheLastAndBestScorePerTask) {
-  const std::vector<SessionInfo> sessions = {  // newest first, as the store lists them
-      info("bo", "rigid_sphere", false, 0.0),          info("ana", "penetrable_sphere", true, 71.0),
-      info("ana", "penetrable_sphere", false, 0.0),    info("ana", "penetrable_sphere", true, 85.0),
+  const std::vector<SessionInfo> sessions = {
+      // newest first, as the store lists them
+      info("bo", "rigid_sphere", false, 0.0),         info("ana", "penetrable_sphere", true, 71.0),
+      info("ana", "penetrable_sphere", false, 0.0),   info("ana", "penetrable_sphere", true, 85.0),
       info("Carla", "penetrable_sphere", true, 90.0), info("ana", "rigid_sphere", true, 60.0),
   };
   EXPECT_EQ(known_trainees(sessions), (std::vector<std::string>{"bo", "ana", "Carla"}));
@@ -70,7 +71,10 @@ void write_task(const fs::path& file, const std::string& name, std::optional<int
   nlohmann::json task = {{"name", name},
                          {"scene", (test::source_dir() / "assets/scenes/penetrable_sphere.json").string()},
                          {"markers", {{{"name", "p"}, {"point", {0.4, 0.0, 0.0}}}}},
-                         {"steps", {{{"id", "s"}, {"instruction", "x"}, {"condition", {{"type", "tip_near"}, {"marker", "p"}, {"within_m", 0.01}}}}}}};
+                         {"steps",
+                          {{{"id", "s"},
+                            {"instruction", "x"},
+                            {"condition", {{"type", "tip_near"}, {"marker", "p"}, {"within_m", 0.01}}}}}}};
   if (order) task["order"] = *order;
   std::ofstream(file) << task.dump();
 }
@@ -101,7 +105,8 @@ TEST(TaskCatalog, ABrokenTaskIsListedWithItsErrorAndAMissingFolderIsAnError) {
   std::ofstream(dir / "notes.txt") << "not a task";
   const std::vector<TaskEntry> tasks = find_tasks(dir);
   ASSERT_EQ(tasks.size(), 2u);
-  EXPECT_NE(tasks[0].error.find((dir / "a_broken.json").string() + ": /colour: unknown key"), std::string::npos) << tasks[0].error;
+  EXPECT_NE(tasks[0].error.find((dir / "a_broken.json").string() + ": /colour: unknown key"), std::string::npos)
+      << tasks[0].error;
   EXPECT_NE(tasks[1].error.find("not valid JSON"), std::string::npos) << tasks[1].error;
   EXPECT_THROW(find_tasks(dir / "missing"), TaskError);
 }

@@ -48,7 +48,9 @@ void presents_and_follows_a_resize(float render_scale, Presentation way) {
 
 TEST(WindowTarget, PresentsAndFollowsAResize) { presents_and_follows_a_resize(1.0f, Presentation::Fifo); }
 
-TEST(WindowTarget, PresentsAndFollowsAResizeAtHalfRenderScale) { presents_and_follows_a_resize(0.5f, Presentation::Fifo); }
+TEST(WindowTarget, PresentsAndFollowsAResizeAtHalfRenderScale) {
+  presents_and_follows_a_resize(0.5f, Presentation::Fifo);
+}
 
 TEST(WindowTarget, PresentsAndFollowsAResizeThroughSharedMemory) {
   presents_and_follows_a_resize(1.0f, Presentation::SharedMemory);

@@ -16,9 +16,9 @@ std::vector<unsigned char> skin_texels(int size) {
       h = (h ^ (h >> 13)) * 0x5bd1e995u;
       const int noise = static_cast<int>((h >> 24) % 17) - 8;
       const int pore = (x % 8 == 3 && y % 8 == 5) ? -18 : 0;
-      rgba.insert(rgba.end(), {static_cast<unsigned char>(222 + noise + pore),
-                               static_cast<unsigned char>(170 + noise + pore),
-                               static_cast<unsigned char>(148 + noise + pore), 255});
+      rgba.insert(rgba.end(),
+                  {static_cast<unsigned char>(222 + noise + pore), static_cast<unsigned char>(170 + noise + pore),
+                   static_cast<unsigned char>(148 + noise + pore), 255});
     }
   return rgba;
 }
@@ -26,8 +26,8 @@ std::vector<unsigned char> skin_texels(int size) {
 }  // namespace
 
 tinygltf::Model make_sphere(int parallels, int meridians, const std::vector<int>& lod_steps) {
-  const std::string name = "sphere_" + std::to_string(parallels) +
-                           (parallels == meridians ? "" : "x" + std::to_string(meridians));
+  const std::string name =
+      "sphere_" + std::to_string(parallels) + (parallels == meridians ? "" : "x" + std::to_string(meridians));
   GltfBuilder b(name + ".bin");
   const int tissue = b.add_material("tissue", {0.85f, 0.52f, 0.48f, 1.0f}, 0.0f, 0.55f);
   MeshData mesh = sphere_mesh(kThesisSphereRadius, parallels, meridians);
@@ -43,7 +43,8 @@ tinygltf::Model make_needle() {
   const int steel = b.add_material("steel", {0.78f, 0.78f, 0.80f, 1.0f}, 1.0f, 0.25f);
   const int hub = b.add_material("hub", {0.15f, 0.55f, 0.85f, 1.0f}, 0.0f, 0.45f);
   const int tip_mesh = b.add_mesh("tip", revolution_mesh({{0.0, 0.0}, {-tip_length, shaft_radius}}, 24), steel);
-  const int shaft_mesh = b.add_mesh("shaft", revolution_mesh({{-tip_length, shaft_radius}, {shaft_end, shaft_radius}}, 24), steel);
+  const int shaft_mesh =
+      b.add_mesh("shaft", revolution_mesh({{-tip_length, shaft_radius}, {shaft_end, shaft_radius}}, 24), steel);
   const int hub_mesh = b.add_mesh(
       "hub",
       revolution_mesh({{shaft_end, shaft_radius}, {shaft_end, hub_radius}, {hub_end, hub_radius}, {hub_end, 0.0}}, 24),
@@ -75,14 +76,15 @@ tinygltf::Model make_tissue_block() {
                           {"bone", -0.040f, -0.050f, {0.92f, 0.90f, 0.82f, 1.0f}, 0.7f, -1}};
   for (const Layer& layer : layers) {
     const int material = b.add_material(layer.name, layer.color, 0.0f, layer.roughness, layer.texture);
-    b.add_root_node(layer.name,
-                    b.add_mesh(layer.name, box_mesh({-half, -half, layer.bottom}, {half, half, layer.top}, cell), material));
+    b.add_root_node(
+        layer.name,
+        b.add_mesh(layer.name, box_mesh({-half, -half, layer.bottom}, {half, half, layer.top}, cell), material));
   }
   return b.take();
 }
 
 tinygltf::Model make_lumbar_section() {
-  constexpr float half = 0.05f;    // m: a 10 cm square section
+  constexpr float half = 0.05f;     // m: a 10 cm square section
   constexpr float window = 0.006f;  // half the interlaminar window along x (the spine's axis)
   GltfBuilder b("lumbar_section.bin");
   struct Part {
@@ -96,7 +98,11 @@ tinygltf::Model make_lumbar_section() {
       {"skin", {-half, -half, -0.003f}, {half, half, 0.0f}, {0.93f, 0.76f, 0.66f, 1.0f}, 0.6f},
       {"subcutaneous fat", {-half, -half, -0.015f}, {half, half, -0.003f}, {0.98f, 0.88f, 0.55f, 1.0f}, 0.5f},
       {"supraspinous ligament", {-half, -half, -0.021f}, {half, half, -0.015f}, ligament, 0.45f},
-      {"interspinous ligament", {-window, -half, -0.043f}, {window, half, -0.021f}, ligament * 0.9f + glm::vec4(0, 0, 0, 0.1f), 0.45f},
+      {"interspinous ligament",
+       {-window, -half, -0.043f},
+       {window, half, -0.021f},
+       ligament * 0.9f + glm::vec4(0, 0, 0, 0.1f),
+       0.45f},
       {"upper lamina", {-half, -half, -0.043f}, {-window, half, -0.021f}, bone, 0.7f},
       {"lower lamina", {window, -half, -0.043f}, {half, half, -0.021f}, bone, 0.7f},
       {"ligamentum flavum", {-half, -half, -0.048f}, {half, half, -0.043f}, {0.95f, 0.82f, 0.35f, 1.0f}, 0.4f},

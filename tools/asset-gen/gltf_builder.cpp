@@ -13,8 +13,8 @@ GltfBuilder::GltfBuilder(const std::string& bin_uri) {
   model_.defaultScene = 0;
 }
 
-int GltfBuilder::add_material(const std::string& name, const glm::vec4& base_color, float metallic,
-                              float roughness, int base_color_texture) {
+int GltfBuilder::add_material(const std::string& name, const glm::vec4& base_color, float metallic, float roughness,
+                              int base_color_texture) {
   tinygltf::Material material;
   material.name = name;
   material.pbrMetallicRoughness.baseColorFactor = {base_color.r, base_color.g, base_color.b, base_color.a};
@@ -47,8 +47,8 @@ int GltfBuilder::add_texture(const std::string& uri, int width, int height, std:
   return static_cast<int>(model_.textures.size()) - 1;
 }
 
-int append_accessor(tinygltf::Model& model, const void* data, size_t bytes, size_t count, int type,
-                    int component_type, int target) {
+int append_accessor(tinygltf::Model& model, const void* data, size_t bytes, size_t count, int type, int component_type,
+                    int target) {
   if (model.buffers.empty()) model.buffers.emplace_back();
   std::vector<unsigned char>& buffer = model.buffers[0].data;
   buffer.resize((buffer.size() + 3) / 4 * 4, 0);  // every view starts 4-byte aligned
@@ -90,16 +90,18 @@ int GltfBuilder::add_mesh(const std::string& name, const MeshData& mesh, int mat
   primitive.material = material;
   const size_t n = mesh.positions.size();
   const int position = append_accessor(model_, mesh.positions.data(), n * sizeof(glm::vec3), n, TINYGLTF_TYPE_VEC3,
-                                    TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TARGET_ARRAY_BUFFER);
+                                       TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TARGET_ARRAY_BUFFER);
   glm::vec3 lo(mesh.positions[0]), hi(mesh.positions[0]);
   for (const glm::vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
   model_.accessors[static_cast<size_t>(position)].minValues = {lo.x, lo.y, lo.z};  // required by glTF
   model_.accessors[static_cast<size_t>(position)].maxValues = {hi.x, hi.y, hi.z};
   primitive.attributes["POSITION"] = position;
-  primitive.attributes["NORMAL"] = append_accessor(model_, mesh.normals.data(), n * sizeof(glm::vec3), n, TINYGLTF_TYPE_VEC3,
-                                                TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TARGET_ARRAY_BUFFER);
-  primitive.attributes["TEXCOORD_0"] = append_accessor(model_, mesh.uvs.data(), n * sizeof(glm::vec2), n, TINYGLTF_TYPE_VEC2,
-                                                    TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TARGET_ARRAY_BUFFER);
+  primitive.attributes["NORMAL"] =
+      append_accessor(model_, mesh.normals.data(), n * sizeof(glm::vec3), n, TINYGLTF_TYPE_VEC3,
+                      TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TARGET_ARRAY_BUFFER);
+  primitive.attributes["TEXCOORD_0"] =
+      append_accessor(model_, mesh.uvs.data(), n * sizeof(glm::vec2), n, TINYGLTF_TYPE_VEC2,
+                      TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TARGET_ARRAY_BUFFER);
   primitive.indices = append_indices(model_, mesh.indices, n);
   if (!mesh.coarser_indices.empty()) {
     tinygltf::Value::Array levels;

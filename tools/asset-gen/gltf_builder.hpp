@@ -12,8 +12,8 @@ namespace needle::asset_gen {
 
 // Appends `bytes` to buffer 0 (created if needed) as a 4-byte-aligned bufferView and adds an
 // accessor of `count` elements over it; returns the accessor's index.
-int append_accessor(tinygltf::Model& model, const void* data, size_t bytes, size_t count, int type,
-                    int component_type, int target = 0);
+int append_accessor(tinygltf::Model& model, const void* data, size_t bytes, size_t count, int type, int component_type,
+                    int target = 0);
 
 class GltfBuilder {
  public:

@@ -10,8 +10,8 @@ namespace needle::asset_gen {
 
 MeshData sphere_mesh(double radius, int parallels, int meridians) {
   if (parallels < 2 || meridians < 3)
-    throw std::invalid_argument("sphere: needs at least 2 parallels and 3 meridians, got " +
-                                std::to_string(parallels) + " x " + std::to_string(meridians));
+    throw std::invalid_argument("sphere: needs at least 2 parallels and 3 meridians, got " + std::to_string(parallels) +
+                                " x " + std::to_string(meridians));
   const auto p = static_cast<uint32_t>(parallels);
   const auto m = static_cast<uint32_t>(meridians);
   MeshData mesh;
@@ -32,9 +32,10 @@ MeshData sphere_mesh(double radius, int parallels, int meridians) {
 
 std::vector<uint32_t> sphere_indices(int parallels, int meridians, int step) {
   if (step < 1 || parallels % step != 0 || meridians % step != 0 || parallels / step < 2 || meridians / step < 3)
-    throw std::invalid_argument("sphere: step " + std::to_string(step) + " does not divide " + std::to_string(parallels) +
-                                " x " + std::to_string(meridians) + " into a sphere");
-  const auto p = static_cast<uint32_t>(parallels), m = static_cast<uint32_t>(meridians), s = static_cast<uint32_t>(step);
+    throw std::invalid_argument("sphere: step " + std::to_string(step) + " does not divide " +
+                                std::to_string(parallels) + " x " + std::to_string(meridians) + " into a sphere");
+  const auto p = static_cast<uint32_t>(parallels), m = static_cast<uint32_t>(meridians),
+             s = static_cast<uint32_t>(step);
   // Quad (i, j): a = (i, j), b = (i, j+s), c = (i+s, j+s), d = (i+s, j); (a, b, c) and (a, c, d)
   // turn counter-clockwise seen from outside. At the poles one of them is degenerate: skipped.
   auto at = [m](uint32_t i, uint32_t j) { return i * (m + 1) + j; };

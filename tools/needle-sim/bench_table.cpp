@@ -49,9 +49,7 @@ void BenchTable::print(const std::string& title) const {
   std::fflush(stdout);
 }
 
-void BenchTable::write_json(const std::string& path) const {
-  io::write_file(path, rows_.dump(2) + "\n");
-}
+void BenchTable::write_json(const std::string& path) const { io::write_file(path, rows_.dump(2) + "\n"); }
 
 void BenchTable::emit(const std::string& title, const std::optional<std::string>& json_path) const {
   print(title);

@@ -56,9 +56,10 @@ int run(const FeelFlags& f) {
         for (const haptics::PhaseFeel& p : haptics::feel_by_phase(run.ticks, s.period_s)) {
           const bool free = p.phase == haptics::FeelPhase::Free;
           table.add_row({s.name, haptics::control_law_name(law), tool ? (on ? "on" : "off") : "-",
-                         haptics::feel_phase_name(p.phase), p.seconds, free ? nlohmann::json(rest) : nlohmann::json(nullptr),
-                         p.force_band_rms_N, p.force_hf_rms_N, number_or_null(p.max_lateral_speed_mps), p.tracking_rms_m,
-                         run_s, faults, run.summary.hand_work_min_J, run.summary.world_dissipated_min_J,
+                         haptics::feel_phase_name(p.phase), p.seconds,
+                         free ? nlohmann::json(rest) : nlohmann::json(nullptr), p.force_band_rms_N, p.force_hf_rms_N,
+                         number_or_null(p.max_lateral_speed_mps), p.tracking_rms_m, run_s, faults,
+                         run.summary.hand_work_min_J, run.summary.world_dissipated_min_J,
                          run.summary.passivity_damped_s});
         }
       }

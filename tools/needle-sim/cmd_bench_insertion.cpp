@@ -32,7 +32,8 @@ std::string layer_name(const haptics::TissueModel& model, int layer) {
 }
 
 nlohmann::json run_json(const haptics::TissueModel& model, const haptics::InsertionRun& run,
-                        const std::vector<haptics::LayerBoundary>& boundaries, const haptics::SyringeInsertionRun* syringe) {
+                        const std::vector<haptics::LayerBoundary>& boundaries,
+                        const haptics::SyringeInsertionRun* syringe) {
   nlohmann::json samples = nlohmann::json::array(), punctures = nlohmann::json::array(), rest = nlohmann::json::array();
   for (size_t k = 0; k < run.samples.size(); ++k) {
     const auto& s = run.samples[k];
@@ -114,7 +115,8 @@ int run(const InsertionFlags& f) {
   plan.hold_s = hold;
   plan.period_s = scenario.period_s;
   if (f.syringe.empty() != !f.plunger_force)
-    throw UsageError(f.syringe.empty() ? "--plunger-force: given without --syringe" : "--syringe: needs --plunger-force N");
+    throw UsageError(f.syringe.empty() ? "--plunger-force: given without --syringe"
+                                       : "--syringe: needs --plunger-force N");
   std::optional<haptics::SyringeInsertionRun> syringe;
   if (!f.syringe.empty()) {
     haptics::SyringeDrive drive{scenario.syringe.value_or(haptics::SyringeParams{}), *f.plunger_force};
@@ -124,7 +126,8 @@ int run(const InsertionFlags& f) {
         throw UsageError("--syringe: " + scenario_path + ": layer \"" + layer.name + "\" has no injection parameters");
     syringe = haptics::run_syringe_insertion(scenario.scene.tissue, plan, drive);
   }
-  const haptics::InsertionRun run = syringe ? syringe->insertion : haptics::run_kinematic_insertion(scenario.scene.tissue, plan);
+  const haptics::InsertionRun run =
+      syringe ? syringe->insertion : haptics::run_kinematic_insertion(scenario.scene.tissue, plan);
   // The layers along the line as far as the tip went (and the rigid surface that stopped it).
   const double reached = run.hard_stop ? std::min(depth, run.hard_stop->depth_m + 1e-3) : depth;
   const auto boundaries = haptics::layer_boundaries(scenario.scene.tissue, plan.from, plan.dir, reached);
@@ -141,11 +144,15 @@ int run(const InsertionFlags& f) {
   if (syringe) {
     BenchTable losses({"layer", "depth_m", "pressure_before_Pa", "pressure_after_Pa"});
     for (const auto& l : syringe->losses)
-      losses.add_row({layer_name(scenario.scene.tissue, l.layer), l.depth_m, l.pressure_before_Pa, l.pressure_after_Pa});
-    losses.print("losses of resistance: " + f.syringe + ", the thumb on the plunger with " + std::to_string(*f.plunger_force) + " N");
+      losses.add_row(
+          {layer_name(scenario.scene.tissue, l.layer), l.depth_m, l.pressure_before_Pa, l.pressure_after_Pa});
+    losses.print("losses of resistance: " + f.syringe + ", the thumb on the plunger with " +
+                 std::to_string(*f.plunger_force) + " N");
     std::printf("plunger_work_J %.6g\n", syringe->work_J);
   }
-  if (json_path) io::write_file(*json_path, run_json(scenario.scene.tissue, run, boundaries, syringe ? &*syringe : nullptr).dump(1) + "\n");
+  if (json_path)
+    io::write_file(*json_path,
+                   run_json(scenario.scene.tissue, run, boundaries, syringe ? &*syringe : nullptr).dump(1) + "\n");
   if (plot_path) {
     char title[160];
     std::snprintf(title, sizeof title, "%s: %.3g mm/s in, %.3g s held, out", scenario.name.c_str(), speed * 1e3, hold);
@@ -169,15 +176,18 @@ Runner declare(CLI::App& app) {
       ->required();
   add_number(app, "--speed", f->speed, kInsertionSpeed_mps, "MPS", "constant speed in and out (m/s)")->required();
   add_number(app, "--hold", f->hold, kInsertionHold_s, "S", "seconds held at the deepest point");
-  add_choice(app, "--syringe", f->syringe, {"saline", "air"},
-             "a loss-of-resistance syringe on the needle, its thumb pressing from the first layer that holds the plunger\n"
-             "(the scenario's syringe, or the default one, with this fluid; docs/TISSUE.md, \"The syringe\")");
-  add_number(app, "--plunger-force", f->plunger_force, kPlungerForce_N, "N", "the thumb's force on the plunger (with --syringe)");
-  add_output_file(app, "--json", f->json, "OUT",
-                  "samples {t, depth_m, axial_force_N, layer} (with --syringe also plunger_pressure_Pa, plunger_travel_m),\n"
-                  "punctures {layer, depth_m, peak_force_N}, tissue_work_J, tick_us_median, hard_stop, boundaries (the\n"
-                  "layers along the line at rest); with --syringe loss_of_resistance {depth_m, layer, pressure_before_Pa,\n"
-                  "pressure_after_Pa} and plunger_work_J");
+  add_choice(
+      app, "--syringe", f->syringe, {"saline", "air"},
+      "a loss-of-resistance syringe on the needle, its thumb pressing from the first layer that holds the plunger\n"
+      "(the scenario's syringe, or the default one, with this fluid; docs/TISSUE.md, \"The syringe\")");
+  add_number(app, "--plunger-force", f->plunger_force, kPlungerForce_N, "N",
+             "the thumb's force on the plunger (with --syringe)");
+  add_output_file(
+      app, "--json", f->json, "OUT",
+      "samples {t, depth_m, axial_force_N, layer} (with --syringe also plunger_pressure_Pa, plunger_travel_m),\n"
+      "punctures {layer, depth_m, peak_force_N}, tissue_work_J, tick_us_median, hard_stop, boundaries (the\n"
+      "layers along the line at rest); with --syringe loss_of_resistance {depth_m, layer, pressure_before_Pa,\n"
+      "pressure_after_Pa} and plunger_work_J");
   add_output_file(app, "--plot", f->plot, "OUT.png", "force against depth with the layer boundaries");
   app.footer("The whole drive, in, held and out (2 depth / speed + hold), lasts at most " +
              std::to_string(int(io::kMaxSessionSeconds)) + " s of simulated time.");

@@ -38,10 +38,10 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 struct Workload {
-  training::NewSession session;   // station and uid set per copy
+  training::NewSession session;  // station and uid set per copy
   training::SessionResult result;
-  std::string recording;          // the bytes the run recorded
-  size_t chunk_bytes = 0;         // 50 ms of ticks
+  std::string recording;   // the bytes the run recorded
+  size_t chunk_bytes = 0;  // 50 ms of ticks
 };
 
 // One station: `count` copies of the session, the finishing commit's latency (ms) of each written
@@ -161,12 +161,15 @@ VerifyRow measure_verify(const std::string& location, const Workload& w, const h
     }
   }
   const auto t0 = Clock::now();
-  const std::vector<app::VerifiedSession> checked = app::verify_sessions(location, ids, jobs, [](const app::VerifiedSession&) {});
+  const std::vector<app::VerifiedSession> checked =
+      app::verify_sessions(location, ids, jobs, [](const app::VerifiedSession&) {});
   VerifyRow row;
   row.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   for (const app::VerifiedSession& v : checked) {
-    if (v.check.outcome == training::CheckOutcome::kVerified) ++row.verified;
-    else ++row.not_verified;
+    if (v.check.outcome == training::CheckOutcome::kVerified)
+      ++row.verified;
+    else
+      ++row.not_verified;
   }
   row.sessions_per_min = double(count) / row.seconds * 60.0;
   return row;
@@ -222,13 +225,16 @@ int run(const StoreFlags& f) {
     w.result = *result;
     std::ifstream in(run.recording_path(), std::ios::binary);
     w.recording.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    w.session = {"bench", run.task().name, run.task().title, run.task().source, "sim", run.recording_path().string(), "", "", ""};
+    w.session = {
+        "bench", run.task().name, run.task().title, run.task().source, "sim", run.recording_path().string(), "", "",
+        ""};
     w.chunk_bytes = std::max<size_t>(1, size_t(double(w.recording.size()) / result->overall.duration_s * 0.05));
   }
   // What verify cannot beat: the replays alone, the session's recording read from its file and
   // replayed as many times as verify replays copies, as many at once, no store.
   const haptics::Session recorded = haptics::read_session(w.session.recording_path);
-  const double replays_s = verify_count > 0 ? bare_replays_s(w.session.recording_path, verify_count, jobs, scratch) : 0.0;
+  const double replays_s =
+      verify_count > 0 ? bare_replays_s(w.session.recording_path, verify_count, jobs, scratch) : 0.0;
 
   // Store rows: "stored", "lost" as said above. Verify rows: "stations" the jobs, "stored" the
   // sessions verified, "lost" those not; "replays_s" the replays alone (bare_replays_s), "vs_replays"
@@ -245,22 +251,23 @@ int run(const StoreFlags& f) {
       const std::string location =
           postgres ? *server : (scratch / ("shared_" + std::to_string(stations) + ".db")).string();
       const Row r = measure(location, w, stations, per_station, prefix);
-      table.add_row({"store", postgres ? "postgresql" : "sqlite", stations, stations * per_station, r.sessions_per_min, r.p99_ms,
-                     r.bytes_per_session, w.recording.size(), r.stored, r.lost, r.duplicated, r.failed_stations, nullptr,
-                     nullptr});
+      table.add_row({"store", postgres ? "postgresql" : "sqlite", stations, stations * per_station, r.sessions_per_min,
+                     r.p99_ms, r.bytes_per_session, w.recording.size(), r.stored, r.lost, r.duplicated,
+                     r.failed_stations, nullptr, nullptr});
     }
     if (verify_count == 0) continue;
     const std::string location = postgres ? *server : (scratch / "verify.db").string();
     fs::create_directories(scratch / "recordings");
     const VerifyRow v = measure_verify(location, w, recorded, verify_count, jobs,
                                        "bench-" + std::to_string(::getpid()) + "-verify", scratch / "recordings");
-    table.add_row({"verify", postgres ? "postgresql" : "sqlite", jobs, verify_count, v.sessions_per_min, nullptr, nullptr,
-                   w.recording.size(), v.verified, v.not_verified, 0, 0, replays_s, v.seconds / replays_s});
+    table.add_row({"verify", postgres ? "postgresql" : "sqlite", jobs, verify_count, v.sessions_per_min, nullptr,
+                   nullptr, w.recording.size(), v.verified, v.not_verified, 0, 0, replays_s, v.seconds / replays_s});
   }
   fs::remove_all(scratch);
   table.emit("bench store: stations storing a " + std::to_string(w.result.overall.duration_s).substr(0, 4) +
                  " s scripted session (" + std::to_string(per_station) + " each, recording in 50 ms chunks) at once; " +
-                 "verify --all over " + std::to_string(verify_count) + " stored copies, " + std::to_string(jobs) + " at a time",
+                 "verify --all over " + std::to_string(verify_count) + " stored copies, " + std::to_string(jobs) +
+                 " at a time",
              f.json);
   return 0;
 }

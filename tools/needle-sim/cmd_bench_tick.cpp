@@ -35,7 +35,8 @@ class SyringeTick {
     params_.fluid = fluid;
     for (const haptics::TissueLayer& layer : tissue_.layers())
       if (!layer.mechanics.rigid && !layer.injection)
-        throw UsageError("--syringe: " + scenario.source + ": layer \"" + layer.name + "\" has no injection parameters");
+        throw UsageError("--syringe: " + scenario.source + ": layer \"" + layer.name +
+                         "\" has no injection parameters");
     state_ = haptics::syringe_at_rest(params_);
   }
   void tick(const haptics::Teleoperation& tele) {
@@ -61,8 +62,8 @@ constexpr double kPatientSettle_s = 24.0;
 // (scenario, its workload, ticks, substeps, syringe) => the table's rows of their times: one, or with a
 // syringe one without and one with it, blocks of 1000 ticks of each alternating so that both rows
 // see the same machine.
-void time_ticks(BenchTable& table, const haptics::Scenario& scenario, haptics::TickWorkload& workload, int substeps, long ticks,
-                const std::optional<haptics::SyringeFluid>& fluid, const std::string& fluid_name) {
+void time_ticks(BenchTable& table, const haptics::Scenario& scenario, haptics::TickWorkload& workload, int substeps,
+                long ticks, const std::optional<haptics::SyringeFluid>& fluid, const std::string& fluid_name) {
   std::optional<SyringeTick> syringe;
   if (fluid) syringe.emplace(scenario, *fluid, scenario.period_s);
   const int variants = fluid ? 2 : 1;
@@ -79,8 +80,8 @@ void time_ticks(BenchTable& table, const haptics::Scenario& scenario, haptics::T
   for (int variant = 0; variant < variants; ++variant) {
     double worst = 0;
     for (double u : us[variant]) worst = std::max(worst, u);
-    table.add_row({scenario.name, substeps, variant == 0 ? "none" : fluid_name, long(us[variant].size()), percentile(us[variant], 0.5),
-                   percentile(us[variant], 0.99), worst});
+    table.add_row({scenario.name, substeps, variant == 0 ? "none" : fluid_name, long(us[variant].size()),
+                   percentile(us[variant], 0.5), percentile(us[variant], 0.99), worst});
   }
 }
 
@@ -98,7 +99,8 @@ int run(const TickFlags& f) {
     haptics::TickWorkload workload(scenario, settle);
     time_ticks(table, scenario, workload, substeps, ticks, fluid, f.syringe);
   }
-  const haptics::Scenario patient = haptics::load_scenario((asset_dir() / "scenarios" / "epidural_patient.json").string());
+  const haptics::Scenario patient =
+      haptics::load_scenario((asset_dir() / "scenarios" / "epidural_patient.json").string());
   haptics::TickWorkload on_patient(patient, kPatientSettle_s);
   time_ticks(table, patient, on_patient, patient.virtual_substeps, ticks, fluid, f.syringe);
   table.emit("servo tick in nonholonomic contact (" + scenario.name + " at t = " + std::to_string(settle) + " s, " +
@@ -119,14 +121,18 @@ Runner declare(CLI::App& app) {
   add_choice(app, "--syringe", f->syringe, {"saline", "air"},
              "also time the tick with a loss-of-resistance syringe of this fluid pressed with 11 N (the scenario's\n"
              "tissue must give its layers' injection keys; e.g. assets/scenarios/epidural.json with --settle 20)");
-  add_output_file(app, "--json", f->json, "FILE", "also write the rows as JSON (scenario, syringe, median_us, p99_us, max_us, ...)");
-  app.footer("rows: 1, 2 and 4 virtual sub-steps per tick (the scenarios use 1), then the generated patient's "
-             "(assets/scenarios/epidural_patient.json at 24 s: the shaft through skin, fat, supraspinous and interspinous ligament); "
-             "with --syringe each without and with it");
+  add_output_file(app, "--json", f->json, "FILE",
+                  "also write the rows as JSON (scenario, syringe, median_us, p99_us, max_us, ...)");
+  app.footer(
+      "rows: 1, 2 and 4 virtual sub-steps per tick (the scenarios use 1), then the generated patient's "
+      "(assets/scenarios/epidural_patient.json at 24 s: the shaft through skin, fat, supraspinous and interspinous "
+      "ligament); "
+      "with --syringe each without and with it");
   return [f] { return run(*f); };
 }
 
-const CommandRegistrar reg{{"bench tick", "the cost of one full servo tick in nonholonomic contact and on the patient", declare}};
+const CommandRegistrar reg{
+    {"bench tick", "the cost of one full servo tick in nonholonomic contact and on the patient", declare}};
 
 }  // namespace
 }  // namespace needle::cli

@@ -85,10 +85,12 @@ int run(const PatientFlags& f) {
   report["layers"] = layers;
   io::write_file(out / "patient.json", report.dump(2) + "\n");
   const nlohmann::json& l34 = report["L3-L4"];
-  std::printf("%s: BMI %.1f, skin to epidural at L3-L4 %.1f mm, fat %.1f mm; %zu fields, %.1f MB; generated in %.2f s -> %s\n",
-              f.patient->c_str(), params.bmi(), l34["skin_to_epidural_m"].is_number() ? l34["skin_to_epidural_m"].get<double>() * 1e3 : 0.0,
-              patient.fat_thickness_m * 1e3, fields.size(), double(patient.field_bytes) / (1 << 20), generation_s,
-              (out / "patient.json").string().c_str());
+  std::printf(
+      "%s: BMI %.1f, skin to epidural at L3-L4 %.1f mm, fat %.1f mm; %zu fields, %.1f MB; generated in %.2f s -> %s\n",
+      f.patient->c_str(), params.bmi(),
+      l34["skin_to_epidural_m"].is_number() ? l34["skin_to_epidural_m"].get<double>() * 1e3 : 0.0,
+      patient.fat_thickness_m * 1e3, fields.size(), double(patient.field_bytes) / (1 << 20), generation_s,
+      (out / "patient.json").string().c_str());
   return 0;
 }
 
@@ -98,7 +100,9 @@ Runner declare(CLI::App& app) {
   add_text(app, "--out", f->out, "DIR",
            "writes DIR/patient.json (the dimensions and the midline depths), DIR/fields/*.nsdf and DIR/meshes/*.glb")
       ->required();
-  app.footer("the patient's frame: x to its right, y cranial, z out of the back, the skin over L3-L4 on the midline at the origin");
+  app.footer(
+      "the patient's frame: x to its right, y cranial, z out of the back, the skin over L3-L4 on the midline at the "
+      "origin");
   return [f] { return run(*f); };
 }
 

@@ -86,7 +86,9 @@ int run(const RunOptions& o) {
 
   const bool in_window = !o.headless && engine::Window::display_available();
   // A window closed after --frames frames is a look at the window, not a session, unless --store.
-  task.store = o.store ? app::StoreWhen::kAlways : in_window && o.frames ? app::StoreWhen::kNever : app::StoreWhen::kUnderWay;
+  task.store = o.store                 ? app::StoreWhen::kAlways
+               : in_window && o.frames ? app::StoreWhen::kNever
+                                       : app::StoreWhen::kUnderWay;
   if (!o.headless && !in_window) std::printf("no display: running headless\n");
   if (o.scene) {
     const engine::Scene scene = engine::load_scene(*o.scene);

@@ -135,9 +135,10 @@ int main(int argc, char** argv) {
   }
   const CLI::App* app = chosen(root);
   if (app != &root && (start.db || start.station || start.debug)) {
-    std::fprintf(stderr,
-                 "needle-sim: --db, --station and --debug before a command are the start screen's; give them after '%s'\n",
-                 full_name(app).substr(root.get_name().size() + 1).c_str());
+    std::fprintf(
+        stderr,
+        "needle-sim: --db, --station and --debug before a command are the start screen's; give them after '%s'\n",
+        full_name(app).substr(root.get_name().size() + 1).c_str());
     return 2;
   }
   if (app == &root) {

@@ -45,7 +45,8 @@ long draw_trainee_frames_until(const std::atomic<bool>& stop) {
     content.panel = [&session] { session.draw_panel(); };
     const auto start = std::chrono::steady_clock::now();
     for (; !stop.load(std::memory_order_relaxed); ++frames)
-      frame.draw(target, scene, content, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      frame.draw(target, scene, content,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     frame.renderer().wait_idle();
   }
   fs::remove_all(scratch);

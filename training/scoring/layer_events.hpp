@@ -21,10 +21,10 @@ struct PunctureRecord {
 
 // What happened on one state.
 struct LayerEvents {
-  uint32_t passed = 0;         // layers the track passed into on this state (bit per layer)
-  uint32_t punctured = 0;      // of those, the membranes (a puncture force): the pops
-  bool bone_entry = false;     // a rigid layer met (chatter within kDebounce_s is the same contact)
-  bool redirection = false;    // re-advanced deeper after a withdrawal to a shallower layer
+  uint32_t passed = 0;               // layers the track passed into on this state (bit per layer)
+  uint32_t punctured = 0;            // of those, the membranes (a puncture force): the pops
+  bool bone_entry = false;           // a rigid layer met (chatter within kDebounce_s is the same contact)
+  bool redirection = false;          // re-advanced deeper after a withdrawal to a shallower layer
   double run_m = kNotApplicableRun;  // the current or last run after a puncture: travel along the needle
   static constexpr double kNotApplicableRun = -1.0;
 };

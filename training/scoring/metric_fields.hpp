@@ -26,7 +26,8 @@ struct MetricLabel {
 // The normalized jerk as the score reads it, 1 at a minimum-jerk movement, 0 at the default reference
 // (docs/SCORING.md, "Smoothness"): the number a reader compares, where the jerk spans decades.
 inline double smoothness_shown(double normalized_jerk) {
-  return std::isnan(normalized_jerk) ? normalized_jerk : smoothness_score(normalized_jerk, ScoreReferences{}.normalized_jerk);
+  return std::isnan(normalized_jerk) ? normalized_jerk
+                                     : smoothness_score(normalized_jerk, ScoreReferences{}.normalized_jerk);
 }
 
 // Calls f(name, field) for each field; field is a double& or a uint32_t& (const if m is). An f
@@ -70,9 +71,12 @@ void for_each_metric(M& m, F&& f) {
   visit("interspace_entered", m.interspace_entered, {"interspace entered (1 = L1-L2)", "-", 1.0, true, 0});
   visit("entry_angle_deg", m.entry_angle_deg, {"needle off the approach at entry", "deg", 1.0, true, 1});
   visit("lor_depth_m", m.lor_depth_m, {"depth at the loss of resistance", "mm", 1000.0, true, 1});
-  visit("lor_depth_error_m", m.lor_depth_error_m, {"loss of resistance past the patient's depth", "mm", 1000.0, true, 1});
-  visit("advance_after_loss_m", m.advance_after_loss_m, {"advanced after the loss of resistance", "mm", 1000.0, true, 1});
-  visit("loss_pressure_before_Pa", m.loss_pressure_before_Pa, {"plunger pressure before the loss", "kPa", 1e-3, true, 1});
+  visit("lor_depth_error_m", m.lor_depth_error_m,
+        {"loss of resistance past the patient's depth", "mm", 1000.0, true, 1});
+  visit("advance_after_loss_m", m.advance_after_loss_m,
+        {"advanced after the loss of resistance", "mm", 1000.0, true, 1});
+  visit("loss_pressure_before_Pa", m.loss_pressure_before_Pa,
+        {"plunger pressure before the loss", "kPa", 1e-3, true, 1});
   visit("loss_pressure_after_Pa", m.loss_pressure_after_Pa, {"plunger pressure after the loss", "kPa", 1e-3, true, 1});
   visit("false_losses", m.false_losses, {"false losses of resistance", "count", 1.0, true, 0});
   visit("pressure_applied_s", m.pressure_applied_s, {"plunger pressed", "s", 1.0, true, 1});

@@ -5,7 +5,8 @@
 
 namespace needle::training {
 
-PatientTechniqueTracker::PatientTechniqueTracker(const Task& task) : task_(task), epidural_(task.layer_index("epidural space")) {}
+PatientTechniqueTracker::PatientTechniqueTracker(const Task& task)
+    : task_(task), epidural_(task.layer_index("epidural space")) {}
 
 void PatientTechniqueTracker::feed(const haptics::ToolSnapshot& s, const Vec3* entry) {
   if (!task_.landmarks) return;
@@ -20,7 +21,8 @@ void PatientTechniqueTracker::feed(const haptics::ToolSnapshot& s, const Vec3* e
   if (!in_ && interspace_ < 0) {  // the first entry into the skin
     entry_ = skin_met_.value_or(*entry);
     interspace_ = interspace_at(l, entry_);
-    if (interspace_ >= 0) entry_angle_deg_ = angle_between(a, l.directions[size_t(interspace_)]) * 180.0 / std::numbers::pi;
+    if (interspace_ >= 0)
+      entry_angle_deg_ = angle_between(a, l.directions[size_t(interspace_)]) * 180.0 / std::numbers::pi;
   }
   in_ = true;
   if (epidural_ >= 0 && std::isnan(lor_depth_m_) && s.tissue.tip_layer == epidural_ && interspace_ >= 0) {

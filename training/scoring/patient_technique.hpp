@@ -28,8 +28,8 @@ class PatientTechniqueTracker {
   int epidural_ = -1;  // the layer's index
   bool in_ = false;
   int interspace_ = -1;
-  Vec3 entry_{};                   // where the needle met the skin, at rest
-  std::optional<Vec3> skin_met_;   // where the tip last met the skin's surface, pressing it
+  Vec3 entry_{};                  // where the needle met the skin, at rest
+  std::optional<Vec3> skin_met_;  // where the tip last met the skin's surface, pressing it
   double entry_angle_deg_ = kNotApplicable, lor_depth_m_ = kNotApplicable, lor_error_m_ = kNotApplicable;
 };
 

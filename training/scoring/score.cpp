@@ -57,8 +57,10 @@ Metrics combine_metrics(const std::vector<StepResult>& steps) {
     m.bone_peak_force_N = std::max(m.bone_peak_force_N, x.bone_peak_force_N);
     m.redirections += x.redirections;
     m.forbidden_punctures += x.forbidden_punctures;
-    // The syringe's: counts and times add up (not applicable when no step has them), the loss's are the step's that had it.
-    for (auto [total, step] : {std::pair{&m.false_losses, x.false_losses}, std::pair{&m.pressure_applied_s, x.pressure_applied_s}})
+    // The syringe's: counts and times add up (not applicable when no step has them), the loss's are the step's that had
+    // it.
+    for (auto [total, step] :
+         {std::pair{&m.false_losses, x.false_losses}, std::pair{&m.pressure_applied_s, x.pressure_applied_s}})
       if (!std::isnan(step)) *total = (std::isnan(*total) ? 0.0 : *total) + step;
     for (auto [last, step] : {std::pair{&m.advance_after_loss_m, x.advance_after_loss_m},
                               std::pair{&m.loss_pressure_before_Pa, x.loss_pressure_before_Pa},
@@ -76,7 +78,8 @@ Metrics combine_metrics(const std::vector<StepResult>& steps) {
 }
 
 long completed_steps(const std::vector<StepResult>& steps) {
-  return std::count_if(steps.begin(), steps.end(), [](const StepResult& s) { return s.record.outcome == StepOutcome::kCompleted; });
+  return std::count_if(steps.begin(), steps.end(),
+                       [](const StepResult& s) { return s.record.outcome == StepOutcome::kCompleted; });
 }
 
 bool component_reached(const std::string& name, const Metrics& m, bool every_step_completed) {
@@ -94,8 +97,9 @@ bool component_reached(const std::string& name, const Metrics& m, bool every_ste
   if (name == "overshoot") return !std::isnan(m.overshoot_m);
   if (name == "bone_contacts") return punctured || m.bone_contacts > 0;
   if (name == "redirections") return punctured || m.redirections > 0;
-  if (name == "loss_of_resistance") return !std::isnan(m.advance_after_loss_m);  // a loss was found in the syringe's space
-  return true;  // completion
+  if (name == "loss_of_resistance")
+    return !std::isnan(m.advance_after_loss_m);  // a loss was found in the syringe's space
+  return true;                                   // completion
 }
 
 double smoothness_score(double normalized_jerk, double reference) {
@@ -106,9 +110,12 @@ double smoothness_score(double normalized_jerk, double reference) {
 
 const char* component_status_name(ComponentStatus status) {
   switch (status) {
-    case ComponentStatus::kApplied: return "applied";
-    case ComponentStatus::kNotReached: return "not_reached";
-    case ComponentStatus::kNotApplicable: return "not_applicable";
+    case ComponentStatus::kApplied:
+      return "applied";
+    case ComponentStatus::kNotReached:
+      return "not_reached";
+    case ComponentStatus::kNotApplicable:
+      return "not_applicable";
   }
   return "applied";
 }
@@ -132,7 +139,8 @@ Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& step
       {"lateral_load", falling(m.lateral_load_Ns, r.lateral_load_Ns), w.lateral_load, task.lateral_load},
       {"peak_force", peak <= safe ? 1.0 : clamp01(1.0 - (peak - safe) / safe), w.peak_force, true},
       {"force_steadiness", falling(m.force_sd_N, r.force_sd_N), w.force_steadiness, task.force_steadiness},
-      {"path_efficiency", m.path_length_m > 0.0 ? clamp01(m.ideal_path_m / m.path_length_m) : 0.0, w.path_efficiency, true},
+      {"path_efficiency", m.path_length_m > 0.0 ? clamp01(m.ideal_path_m / m.path_length_m) : 0.0, w.path_efficiency,
+       true},
       {"smoothness", smoothness_score(m.normalized_jerk, r.normalized_jerk), w.smoothness, true},
       {"time", m.duration_s <= r.time_s ? 1.0 : r.time_s / m.duration_s, w.time, true},
       {"retries", 1.0 / (1.0 + m.reinsertions + m.rigid_contacts), w.retries, true},
@@ -140,7 +148,8 @@ Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& step
   // Only a task with an ultrasound probe weighs the needle's visibility, only a task on a layered
   // tissue the technique through its layers (their weights are 0 otherwise; docs/SCORING.md).
   if (w.needle_visibility > 0.0)
-    parts.push_back({"needle_visibility", std::isnan(m.needle_visibility) ? 0.0 : m.needle_visibility, w.needle_visibility, true});
+    parts.push_back(
+        {"needle_visibility", std::isnan(m.needle_visibility) ? 0.0 : m.needle_visibility, w.needle_visibility, true});
   if (w.overshoot > 0.0) parts.push_back({"overshoot", falling(m.overshoot_m, r.overshoot_m), w.overshoot, true});
   if (w.bone_contacts > 0.0) parts.push_back({"bone_contacts", 1.0 / (1.0 + m.bone_contacts), w.bone_contacts, true});
   if (w.redirections > 0.0) parts.push_back({"redirections", 1.0 / (1.0 + m.redirections), w.redirections, true});
@@ -175,10 +184,12 @@ Score score_session(const ScoringSpec& spec, const std::vector<StepResult>& step
   for (const StepResult& s : steps)
     if (s.record.outcome == StepOutcome::kForbiddenPuncture || s.record.outcome == StepOutcome::kRigidTouched ||
         s.record.outcome == StepOutcome::kAdvancedPastLoss)
-      score.reasons_failed.push_back("step " + s.id + ": " + (s.failure.empty() ? step_outcome_name(s.record.outcome) : s.failure));
+      score.reasons_failed.push_back("step " + s.id + ": " +
+                                     (s.failure.empty() ? step_outcome_name(s.record.outcome) : s.failure));
   if (m.faults > 0) score.reasons_failed.push_back(std::to_string(m.faults) + " safety fault(s)");
   if (peak > safe)
-    score.reasons_failed.push_back("peak force at the hand " + format(peak) + " N above the safe limit " + format(safe) + " N");
+    score.reasons_failed.push_back("peak force at the hand " + format(peak) + " N above the safe limit " +
+                                   format(safe) + " N");
   score.passed = score.reasons_failed.empty();
   return score;
 }

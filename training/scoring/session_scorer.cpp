@@ -2,7 +2,8 @@
 
 namespace needle::training {
 
-SessionScorer::SessionScorer(const Task& task) : task_(task), progress_(task), layers_(task), patient_(task), syringe_(task) {
+SessionScorer::SessionScorer(const Task& task)
+    : task_(task), progress_(task), layers_(task), patient_(task), syringe_(task) {
   steps_.reserve(task.steps.size());
   for (const Step& step : task.steps) steps_.emplace_back(task, step);
 }
@@ -56,7 +57,8 @@ void SessionScorer::feed(const haptics::TickSample& sample) {
   steps_[step].add(s, events);
   progress_.feed(s);
   // The state that ends a step also starts the next: its path begins where the last one ended.
-  if (!progress_.finished() && progress_.current_step() != step) steps_[progress_.current_step()].add(s, ContactEvents{.entry = events.entry});
+  if (!progress_.finished() && progress_.current_step() != step)
+    steps_[progress_.current_step()].add(s, ContactEvents{.entry = events.entry});
 }
 
 SessionResult SessionScorer::result() const {

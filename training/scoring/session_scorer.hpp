@@ -23,7 +23,7 @@ struct SessionResult {
   std::vector<StepResult> steps;
   Metrics overall;
   Score score;
-  bool finished = false;  // every step ended (completed or not)
+  bool finished = false;                  // every step ended (completed or not)
   std::vector<PunctureResult> punctures;  // in order (layered tissue; at most LayerEventTracker::kMaxPunctures)
 };
 

@@ -22,8 +22,7 @@ void StepMetricsAccumulator::add(const haptics::ToolSnapshot& state, const Conta
   tip_ = vec3(state.needle_tip_m);
   path_.add(t, tip_);
   if (axis_ >= 0) {
-    last_deviation_rad_ =
-        angle_between(haptics::needle_axis(state), planned_direction(task_.markers[axis_], tip_));
+    last_deviation_rad_ = angle_between(haptics::needle_axis(state), planned_direction(task_.markers[axis_], tip_));
     deviation_sq_sum_ += last_deviation_rad_ * last_deviation_rad_;
   }
   const double lateral = lateral_load_N(state);
@@ -73,7 +72,8 @@ void StepMetricsAccumulator::add(const haptics::ToolSnapshot& state, const Conta
     if (y->loss_settled) m_.loss_pressure_after_Pa = y->pressure_after_Pa;
     if (y->advance_m >= 0.0) m_.advance_after_loss_m = y->advance_m;  // since the loss, in this step or an earlier one
   }
-  if (state.tissue.bone_layer >= 0) m_.bone_peak_force_N = std::max(m_.bone_peak_force_N, norm(vec3(state.tissue.bone_force_n)));
+  if (state.tissue.bone_layer >= 0)
+    m_.bone_peak_force_N = std::max(m_.bone_peak_force_N, norm(vec3(state.tissue.bone_force_n)));
   if (events.fault) {
     if (m_.faults++ == 0) m_.first_fault = state.fault;
   }

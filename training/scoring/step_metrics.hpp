@@ -13,12 +13,12 @@ namespace needle::training {
 
 // Contact events the session tracks across steps and attributes to the step they happen in.
 struct ContactEvents {
-  bool withdrawal = false;   // tissue -> free
-  bool reinsertion = false;  // free -> tissue after an earlier insertion
-  bool rigid_entry = false;  // -> rigid surface
-  bool fault = false;        // a fault latched on this state
-  const Vec3* entry = nullptr;  // while in tissue: where the needle entered it
-  const LayerEvents* layers = nullptr;  // the layered tissue's events on this state, when tracked
+  bool withdrawal = false;                 // tissue -> free
+  bool reinsertion = false;                // free -> tissue after an earlier insertion
+  bool rigid_entry = false;                // -> rigid surface
+  bool fault = false;                      // a fault latched on this state
+  const Vec3* entry = nullptr;             // while in tissue: where the needle entered it
+  const LayerEvents* layers = nullptr;     // the layered tissue's events on this state, when tracked
   const SyringeEvents* syringe = nullptr;  // the syringe's, in a task with one
 };
 

@@ -11,7 +11,8 @@ const SyringeEvents& SyringeEventTracker::feed(const haptics::ToolSnapshot& s) {
   e.pressing = s.syringe.thumb_force_N > kPressing_N;
   e.false_loss = e.loss = e.loss_settled = false;
   const int space = task_.syringe ? task_.syringe->space : -1;
-  if (detector_.add(s.time_s, s.syringe.flow_m3_per_s, s.syringe.pressure_Pa, s.syringe.layer, s.syringe.thumb_force_N)) {
+  if (detector_.add(s.time_s, s.syringe.flow_m3_per_s, s.syringe.pressure_Pa, s.syringe.layer,
+                    s.syringe.thumb_force_N)) {
     if (detector_.current().layer != space) {
       e.false_loss = true;
     } else if (!found_) {

@@ -18,12 +18,12 @@ inline constexpr double kPressing_N = 0.5;
 
 // What happened on one state.
 struct SyringeEvents {
-  bool pressing = false;      // the thumb presses the plunger
-  bool false_loss = false;    // a loss of resistance began outside the syringe's space
-  bool loss = false;          // the loss of resistance in the space began (the first)
-  bool loss_settled = false;  // its pressure after was read
+  bool pressing = false;                                     // the thumb presses the plunger
+  bool false_loss = false;                                   // a loss of resistance began outside the syringe's space
+  bool loss = false;                                         // the loss of resistance in the space began (the first)
+  bool loss_settled = false;                                 // its pressure after was read
   double pressure_before_Pa = 0.0, pressure_after_Pa = 0.0;  // of the loss in the space, once known
-  double advance_m = -1.0;    // since that loss: the tip's furthest advance along the needle (−1 before it)
+  double advance_m = -1.0;  // since that loss: the tip's furthest advance along the needle (−1 before it)
 };
 
 class SyringeEventTracker {
@@ -35,10 +35,10 @@ class SyringeEventTracker {
   const Task& task_;
   haptics::LossDetector detector_;
   SyringeEvents events_;
-  bool found_ = false;       // the loss in the space happened
-  bool settled_ = false;     // and its pressure after was read
-  double loss_t_ = 0.0;      // when it began
-  Vec3 tip_{}, axis_{};      // where the tip was then and along which axis
+  bool found_ = false;    // the loss in the space happened
+  bool settled_ = false;  // and its pressure after was read
+  double loss_t_ = 0.0;   // when it began
+  Vec3 tip_{}, axis_{};   // where the tip was then and along which axis
 };
 
 }  // namespace needle::training

@@ -69,8 +69,8 @@ CohortView cohort_view(const SessionStore& store, const CohortFilter& filter) {
   check_cohort_filter(filter);
   CohortView view;
   view.filter = filter;
-  std::map<std::pair<std::string, std::string>, LearningCurve> curves;       // (task, trainee)
-  std::map<std::pair<std::string, std::string>, StepFailures> failures;      // (task, step)
+  std::map<std::pair<std::string, std::string>, LearningCurve> curves;        // (task, trainee)
+  std::map<std::pair<std::string, std::string>, StepFailures> failures;       // (task, step)
   std::map<std::pair<std::string, std::string>, std::vector<double>> values;  // (task, metric)
   std::vector<std::string> metric_order = {"score", "duration_s", "time_to_target_s"};
   const Metrics names_of;
@@ -121,7 +121,8 @@ CohortView cohort_view(const SessionStore& store, const CohortFilter& filter) {
   for (const std::string& task : tasks) {
     const std::vector<double>& p = values[{task, "punctures"}];
     if (std::any_of(p.begin(), p.end(), [](double v) { return v > 0.0; })) continue;
-    for (const char* metric : {"punctures", "overshoot_m", "bone_contacts", "bone_peak_force_N", "redirections", "forbidden_punctures"})
+    for (const char* metric :
+         {"punctures", "overshoot_m", "bone_contacts", "bone_peak_force_N", "redirections", "forbidden_punctures"})
       values[{task, metric}].clear();
   }
   for (const std::string& task : tasks)

@@ -51,10 +51,10 @@ struct Percentiles {
 
 struct CohortView {
   CohortFilter filter;
-  std::vector<LearningCurve> curves;        // by task, then trainee
-  std::vector<StepFailures> most_failed;    // most failures first (then the larger share)
-  std::vector<Percentiles> percentiles;     // by task, then metric (score, duration_s, then the Metrics fields)
-  size_t sessions = 0;                      // complete sessions that passed the filter
+  std::vector<LearningCurve> curves;      // by task, then trainee
+  std::vector<StepFailures> most_failed;  // most failures first (then the larger share)
+  std::vector<Percentiles> percentiles;   // by task, then metric (score, duration_s, then the Metrics fields)
+  size_t sessions = 0;                    // complete sessions that passed the filter
 };
 
 // What the filters can choose: the tasks, trainees and stations of the complete sessions, each

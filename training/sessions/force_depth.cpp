@@ -30,7 +30,8 @@ ForceDepth force_depth(const std::vector<haptics::TickSample>& samples, const Ta
   for (size_t i = 0; i < samples.size(); ++i) {
     const haptics::ToolSnapshot& s = samples[i].state;
     scorer.feed(samples[i]);
-    const bool loss = syringe && losses.add(s.time_s, s.syringe.flow_m3_per_s, s.syringe.pressure_Pa, s.syringe.layer, s.syringe.thumb_force_N);
+    const bool loss = syringe && losses.add(s.time_s, s.syringe.flow_m3_per_s, s.syringe.pressure_Pa, s.syringe.layer,
+                                            s.syringe.thumb_force_N);
     const haptics::TissueSnapshot& t = s.tissue;
     const bool touching = t.tip_layer >= 0 || t.surface_layer >= 0 || t.punctured_layers != 0;
     if (!touching) {
@@ -57,14 +58,17 @@ ForceDepth force_depth(const std::vector<haptics::TickSample>& samples, const Ta
     if (syringe) {
       Series& p = out.pressure.lines.back();
       const double kPa = 1e-3 * s.syringe.pressure_Pa;
-      if (p.t.empty() || std::abs(depth - p.t.back()) >= kDepthStep_mm || std::abs(kPa - p.v.back()) >= kPressureStep_kPa || loss) {
+      if (p.t.empty() || std::abs(depth - p.t.back()) >= kDepthStep_mm ||
+          std::abs(kPa - p.v.back()) >= kPressureStep_kPa || loss) {
         p.t.push_back(depth);
         p.v.push_back(kPa);
       }
       if (loss) {
         const int layer = losses.current().layer;
-        const std::string name = layer >= 0 && size_t(layer) < task->layers.size() ? task->layers[size_t(layer)].name : "no layer";
-        out.losses.push_back({depth, 1e-3 * losses.current().pressure_before_Pa, layer == task->syringe->space ? name : name + " (false)"});
+        const std::string name =
+            layer >= 0 && size_t(layer) < task->layers.size() ? task->layers[size_t(layer)].name : "no layer";
+        out.losses.push_back({depth, 1e-3 * losses.current().pressure_before_Pa,
+                              layer == task->syringe->space ? name : name + " (false)"});
       }
     }
     if (t.tip_layer >= 0 && size_t(t.tip_layer) < entered.size() && !entered[size_t(t.tip_layer)]) {

@@ -34,9 +34,11 @@ LoopHealth loop_health(const std::vector<haptics::TickSample>& samples, double n
 
 std::string describe(const LoopHealth& h) {
   char line[200];
-  std::snprintf(line, sizeof line, "haptic loop %.1f Hz (nominal %g), period p99 %.2f ms, worst %.2f ms, %llu late ticks of %llu%s",
-                h.rate_hz, h.nominal_hz, h.period_p99_ms, h.period_max_ms, static_cast<unsigned long long>(h.late_ticks),
-                static_cast<unsigned long long>(h.ticks), h.degraded() ? ": degraded" : "");
+  std::snprintf(line, sizeof line,
+                "haptic loop %.1f Hz (nominal %g), period p99 %.2f ms, worst %.2f ms, %llu late ticks of %llu%s",
+                h.rate_hz, h.nominal_hz, h.period_p99_ms, h.period_max_ms,
+                static_cast<unsigned long long>(h.late_ticks), static_cast<unsigned long long>(h.ticks),
+                h.degraded() ? ": degraded" : "");
   return line;
 }
 

@@ -15,10 +15,10 @@ namespace needle::training {
 struct LoopHealth {
   uint64_t ticks = 0;
   double nominal_hz = 0.0;
-  double rate_hz = 0.0;        // ticks / the sum of their periods
+  double rate_hz = 0.0;  // ticks / the sum of their periods
   double period_p99_ms = 0.0;
   double period_max_ms = 0.0;
-  uint64_t late_ticks = 0;     // periods longer than kLatePeriods nominal ones
+  uint64_t late_ticks = 0;  // periods longer than kLatePeriods nominal ones
 
   // Degraded: the rate 5 % under nominal, or more than 1 % of the ticks late (design values: the
   // device then holds a command for two periods or more often enough to matter to the feel).

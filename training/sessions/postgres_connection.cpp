@@ -4,8 +4,8 @@
 #include <netdb.h>
 #include <poll.h>
 
-#include <cerrno>
 #include <bit>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -99,8 +99,11 @@ pg_conn* open_connection(const std::string& uri, const std::string& shown) {
     }
   }
   // libpq treats 1 as 2 and 0 as no limit.
-  const int timeout_s = timeout_text.empty() ? kConnectSeconds : std::atoi(timeout_text.c_str()) == 1 ? 2 : std::atoi(timeout_text.c_str());
-  const Clock::time_point deadline = timeout_s > 0 ? Clock::now() + std::chrono::seconds(timeout_s) : Clock::time_point::max();
+  const int timeout_s = timeout_text.empty()                   ? kConnectSeconds
+                        : std::atoi(timeout_text.c_str()) == 1 ? 2
+                                                               : std::atoi(timeout_text.c_str());
+  const Clock::time_point deadline =
+      timeout_s > 0 ? Clock::now() + std::chrono::seconds(timeout_s) : Clock::time_point::max();
   // The store's defaults first, the URI after them: what the URI sets wins.
   const std::string defaults[][2] = {{"connect_timeout", std::to_string(kConnectSeconds)},
                                      {"keepalives", "1"},
@@ -151,8 +154,8 @@ pg_conn* open_connection(const std::string& uri, const std::string& shown) {
 // Type OIDs (PostgreSQL's pg_type.dat) of the columns the store reads. Results come in binary (a
 // recording's bytes as they are, half the hex text's size, nothing to decode): each column is read
 // by its type, and a type not here is an error, never bytes taken for something else.
-constexpr Oid kBool = 16, kBytea = 17, kChar = 18, kName = 19, kInt8 = 20, kInt2 = 21, kInt4 = 23, kText = 25, kOid = 26,
-              kFloat4 = 700, kFloat8 = 701, kBpchar = 1042, kVarchar = 1043, kNumeric = 1700, kVoid = 2278;
+constexpr Oid kBool = 16, kBytea = 17, kChar = 18, kName = 19, kInt8 = 20, kInt2 = 21, kInt4 = 23, kText = 25,
+              kOid = 26, kFloat4 = 700, kFloat8 = 701, kBpchar = 1042, kVarchar = 1043, kNumeric = 1700, kVoid = 2278;
 
 // A big-endian (network order) unsigned integer of `bytes` bytes at `p`.
 uint64_t big_endian(const char* p, int bytes) {
@@ -165,7 +168,8 @@ uint64_t big_endian(const char* p, int bytes) {
 // scale, then the base-10000 digits.
 double numeric_value(const char* p, int length) {
   if (length < 8) return std::nan("");
-  const int count = int(big_endian(p, 2)), weight = int(int16_t(big_endian(p + 2, 2))), sign = int(big_endian(p + 4, 2));
+  const int count = int(big_endian(p, 2)), weight = int(int16_t(big_endian(p + 2, 2))),
+            sign = int(big_endian(p + 4, 2));
   if (sign == 0xC000 || length < 8 + 2 * count) return std::nan("");
   double v = 0.0;
   for (int i = 0; i < count; ++i) v += double(big_endian(p + 8 + 2 * i, 2)) * std::pow(10000.0, weight - i);
@@ -178,18 +182,34 @@ std::optional<SqlValue> column_value(const PGresult* r, int row, int c) {
   const char* p = PQgetvalue(r, row, c);
   const int length = PQgetlength(r, row, c);
   switch (PQftype(r, c)) {
-    case kInt8: return SqlValue{int64_t(big_endian(p, 8))};
-    case kInt4: return SqlValue{int64_t{int32_t(uint32_t(big_endian(p, 4)))}};
-    case kInt2: return SqlValue{int64_t{int16_t(uint16_t(big_endian(p, 2)))}};
-    case kOid: return SqlValue{int64_t(big_endian(p, 4))};
-    case kBool: return SqlValue{int64_t{p[0] != 0}};
-    case kFloat8: return SqlValue{std::bit_cast<double>(big_endian(p, 8))};
-    case kFloat4: return SqlValue{double(std::bit_cast<float>(uint32_t(big_endian(p, 4))))};
-    case kNumeric: return SqlValue{numeric_value(p, length)};
-    case kBytea: return SqlValue{SqlBlob{std::string(p, size_t(length))}};
-    case kText: case kName: case kChar: case kBpchar: case kVarchar: return SqlValue{std::string(p, size_t(length))};
-    case kVoid: return SqlValue{SqlNull{}};
-    default: return std::nullopt;
+    case kInt8:
+      return SqlValue{int64_t(big_endian(p, 8))};
+    case kInt4:
+      return SqlValue{int64_t{int32_t(uint32_t(big_endian(p, 4)))}};
+    case kInt2:
+      return SqlValue{int64_t{int16_t(uint16_t(big_endian(p, 2)))}};
+    case kOid:
+      return SqlValue{int64_t(big_endian(p, 4))};
+    case kBool:
+      return SqlValue{int64_t{p[0] != 0}};
+    case kFloat8:
+      return SqlValue{std::bit_cast<double>(big_endian(p, 8))};
+    case kFloat4:
+      return SqlValue{double(std::bit_cast<float>(uint32_t(big_endian(p, 4))))};
+    case kNumeric:
+      return SqlValue{numeric_value(p, length)};
+    case kBytea:
+      return SqlValue{SqlBlob{std::string(p, size_t(length))}};
+    case kText:
+    case kName:
+    case kChar:
+    case kBpchar:
+    case kVarchar:
+      return SqlValue{std::string(p, size_t(length))};
+    case kVoid:
+      return SqlValue{SqlNull{}};
+    default:
+      return std::nullopt;
   }
 }
 
@@ -221,7 +241,8 @@ PostgresConnection::PostgresConnection(const std::string& uri, bool read_only) :
     script("SET client_min_messages = warning", "setting up the connection");  // no NOTICE on stderr
     // The server's statement timeout, unless the URI's options, the role or the server set one; the
     // client waits that long and its margin for any answer.
-    const SqlResult set = query("SELECT setting FROM pg_settings WHERE name = 'statement_timeout'", {}, "reading the statement timeout");
+    const SqlResult set =
+        query("SELECT setting FROM pg_settings WHERE name = 'statement_timeout'", {}, "reading the statement timeout");
     int64_t ms = set.rows.empty() ? 0 : std::strtoll(set.rows[0].text(0).c_str(), nullptr, 10);
     if (ms <= 0) {
       ms = kStatementSeconds * 1000;
@@ -268,7 +289,8 @@ PostgresConnection::Result PostgresConnection::await(const std::string& what) {
   }
 }
 
-SqlResult PostgresConnection::query(const std::string& sql, const std::vector<SqlValue>& params, const std::string& what) {
+SqlResult PostgresConnection::query(const std::string& sql, const std::vector<SqlValue>& params,
+                                    const std::string& what) {
   std::vector<std::string> texts(params.size());
   std::vector<const char*> values(params.size(), nullptr);
   std::vector<int> lengths(params.size(), 0), formats(params.size(), 0);
@@ -276,14 +298,17 @@ SqlResult PostgresConnection::query(const std::string& sql, const std::vector<Sq
     std::visit(
         [&](const auto& v) {
           using T = std::decay_t<decltype(v)>;
-          if constexpr (std::is_same_v<T, SqlNull>) return;
-          else if constexpr (std::is_same_v<T, int64_t>) texts[i] = std::to_string(v);
+          if constexpr (std::is_same_v<T, SqlNull>)
+            return;
+          else if constexpr (std::is_same_v<T, int64_t>)
+            texts[i] = std::to_string(v);
           else if constexpr (std::is_same_v<T, double>) {
             if (std::isnan(v)) return;
             char buffer[32];
             std::snprintf(buffer, sizeof buffer, "%.17g", v);  // round-trips every double
             texts[i] = buffer;
-          } else if constexpr (std::is_same_v<T, std::string>) texts[i] = v;
+          } else if constexpr (std::is_same_v<T, std::string>)
+            texts[i] = v;
           else {
             texts[i] = v.bytes;
             formats[i] = 1;  // binary: the bytes as they are
@@ -294,7 +319,8 @@ SqlResult PostgresConnection::query(const std::string& sql, const std::vector<Sq
         params[i]);
   }
   const std::string numbered = numbered_placeholders(sql);
-  if (!PQsendQueryParams(conn_, numbered.c_str(), int(params.size()), nullptr, values.data(), lengths.data(), formats.data(), 1))
+  if (!PQsendQueryParams(conn_, numbered.c_str(), int(params.size()), nullptr, values.data(), lengths.data(),
+                         formats.data(), 1))
     fail(what);
   const Result r = await(what);
   if (!succeeded(r.get())) fail(what);
@@ -304,8 +330,9 @@ SqlResult PostgresConnection::query(const std::string& sql, const std::vector<Sq
     for (int c = 0; c < PQnfields(r.get()); ++c) {
       std::optional<SqlValue> value = column_value(r.get(), row, c);
       if (!value)
-        throw SessionStoreError(shown_ + ": " + what + ": column " + PQfname(r.get(), c) + " is of a type the store does not read (OID " +
-                                std::to_string(PQftype(r.get(), c)) + ")");
+        throw SessionStoreError(shown_ + ": " + what + ": column " + PQfname(r.get(), c) +
+                                " is of a type the store does not read (OID " + std::to_string(PQftype(r.get(), c)) +
+                                ")");
       values_of_row.values.push_back(std::move(*value));
     }
     out.rows.push_back(std::move(values_of_row));

@@ -22,9 +22,9 @@ namespace needle::training {
 // closed; TCP keepalives find a dead peer of an idle connection in kKeepaliveIdleSeconds +
 // kKeepaliveCount x kKeepaliveIntervalSeconds, and data left unacknowledged for kTcpUserTimeoutSeconds
 // ends it.
-inline constexpr int kConnectSeconds = 5;           // half the 10 s a trainee may wait for a run to start
-inline constexpr int kStatementSeconds = 30;        // the slowest statement: a migration or a cohort's read
-inline constexpr int kAnswerMarginSeconds = 5;      // the server's own timeout speaks first
+inline constexpr int kConnectSeconds = 5;       // half the 10 s a trainee may wait for a run to start
+inline constexpr int kStatementSeconds = 30;    // the slowest statement: a migration or a cohort's read
+inline constexpr int kAnswerMarginSeconds = 5;  // the server's own timeout speaks first
 inline constexpr int kKeepaliveIdleSeconds = 10;
 inline constexpr int kKeepaliveIntervalSeconds = 5;
 inline constexpr int kKeepaliveCount = 3;

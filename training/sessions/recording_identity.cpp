@@ -4,7 +4,8 @@
 
 namespace needle::training {
 
-std::string check_recording_identity(const std::string& file, const haptics::SessionHeader& header, const SessionInfo& info) {
+std::string check_recording_identity(const std::string& file, const haptics::SessionHeader& header,
+                                     const SessionInfo& info) {
   const std::string session = "session " + std::to_string(info.id);
   std::string recorded;
   if (!header.context.empty()) {
@@ -16,8 +17,8 @@ std::string check_recording_identity(const std::string& file, const haptics::Ses
   if (recorded.empty() || info.uid.empty())
     return file + ": made before recordings named their session: that it is " + session + "'s cannot be checked";
   if (recorded != info.uid)
-    throw haptics::RecordingError(file + ": the recording of another session (uid " + recorded + "), not of " + session +
-                                  " (uid " + info.uid + "): refused");
+    throw haptics::RecordingError(file + ": the recording of another session (uid " + recorded + "), not of " +
+                                  session + " (uid " + info.uid + "): refused");
   return "";
 }
 

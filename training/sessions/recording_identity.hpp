@@ -17,6 +17,7 @@ inline constexpr const char* kRecordingSessionKey = "session_uid";
 // `info`'s session, else a note that it cannot be told (a recording, or a session, from before they
 // kept uids). Throws haptics::RecordingError naming the store's session and the file when the
 // recording names another session, or its context is not JSON.
-std::string check_recording_identity(const std::string& file, const haptics::SessionHeader& header, const SessionInfo& info);
+std::string check_recording_identity(const std::string& file, const haptics::SessionHeader& header,
+                                     const SessionInfo& info);
 
 }  // namespace needle::training

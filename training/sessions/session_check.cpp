@@ -23,10 +23,12 @@ void compare_number(std::vector<std::string>& out, const std::string& what, doub
   if (!same(stored, replay)) out.push_back(what + ": stored " + number(stored) + ", replay " + number(replay));
 }
 
-void compare_metrics(std::vector<std::string>& out, const std::string& of, const Metrics& stored, const Metrics& replay) {
+void compare_metrics(std::vector<std::string>& out, const std::string& of, const Metrics& stored,
+                     const Metrics& replay) {
   for_each_metric(stored, [&](const char* name, const auto& s) {
     for_each_metric(replay, [&](const char* other, const auto& r) {
-      if (std::strcmp(name, other) == 0) compare_number(out, std::string("metric ") + name + " of " + of, double(s), double(r));
+      if (std::strcmp(name, other) == 0)
+        compare_number(out, std::string("metric ") + name + " of " + of, double(s), double(r));
     });
   });
 }
@@ -35,9 +37,12 @@ void compare_metrics(std::vector<std::string>& out, const std::string& of, const
 
 const char* check_outcome_name(CheckOutcome outcome) {
   switch (outcome) {
-    case CheckOutcome::kVerified: return "verified";
-    case CheckOutcome::kMismatch: return "mismatch";
-    case CheckOutcome::kUnverifiable: return "unverifiable";
+    case CheckOutcome::kVerified:
+      return "verified";
+    case CheckOutcome::kMismatch:
+      return "mismatch";
+    case CheckOutcome::kUnverifiable:
+      return "unverifiable";
   }
   return "unverifiable";
 }
@@ -59,7 +64,8 @@ std::vector<std::string> result_differences(const StoredSession& stored, const S
                   (replay.score.passed ? "yes" : "no"));
   compare_number(out, "duration_s", stored.info.duration_s, replay.overall.duration_s);
   if (stored.steps.size() != replay.steps.size())
-    out.push_back("steps: stored " + std::to_string(stored.steps.size()) + ", replay " + std::to_string(replay.steps.size()));
+    out.push_back("steps: stored " + std::to_string(stored.steps.size()) + ", replay " +
+                  std::to_string(replay.steps.size()));
   for (size_t k = 0; k < std::min(stored.steps.size(), replay.steps.size()); ++k) {
     const StepResult &s = stored.steps[k], &r = replay.steps[k];
     const std::string step = "step " + std::to_string(k + 1) + " (" + r.id + ")";
@@ -78,7 +84,9 @@ std::vector<std::string> result_differences(const StoredSession& stored, const S
                   std::to_string(rc.size()));
   for (size_t k = 0; k < std::min(stored.components.size(), rc.size()); ++k) {
     const ScoreComponent& s = stored.components[k];
-    if (s.name != rc[k].name) out.push_back("score component " + std::to_string(k + 1) + ": stored \"" + s.name + "\", replay \"" + rc[k].name + "\"");
+    if (s.name != rc[k].name)
+      out.push_back("score component " + std::to_string(k + 1) + ": stored \"" + s.name + "\", replay \"" + rc[k].name +
+                    "\"");
     compare_number(out, "score component " + rc[k].name + " value", s.value, rc[k].value);
     compare_number(out, "score component " + rc[k].name + " weight", s.weight, rc[k].weight);
   }
@@ -90,15 +98,18 @@ std::string result_digest(const StoredSession& stored) {
   std::string text = number(i.score) + (i.passed ? " passed " : " failed ") + number(i.duration_s) + " " +
                      (i.complete ? "complete" : "incomplete") + "\n";
   const auto metrics = [&](const Metrics& m) {
-    for_each_metric(m, [&](const char* name, const auto& value) { text += std::string(name) + "=" + number(double(value)) + " "; });
+    for_each_metric(
+        m, [&](const char* name, const auto& value) { text += std::string(name) + "=" + number(double(value)) + " "; });
     text += "\n";
   };
   for (const StepResult& s : stored.steps) {
-    text += s.id + " " + step_outcome_name(s.record.outcome) + " " + number(s.record.start_s) + " " + number(s.record.end_s) + "\n";
+    text += s.id + " " + step_outcome_name(s.record.outcome) + " " + number(s.record.start_s) + " " +
+            number(s.record.end_s) + "\n";
     metrics(s.metrics);
   }
   metrics(stored.overall);
-  for (const ScoreComponent& c : stored.components) text += c.name + " " + number(c.value) + " " + number(c.weight) + "\n";
+  for (const ScoreComponent& c : stored.components)
+    text += c.name + " " + number(c.value) + " " + number(c.weight) + "\n";
   char hex[9];
   std::snprintf(hex, sizeof hex, "%08x", unsigned(haptics::crc32(text.data(), text.size())));
   return hex;
@@ -111,7 +122,8 @@ Verification verification(const SessionInfo& info) {
 }
 
 VerificationStatus verification_status(const StoredSession& stored) {
-  if (!stored.check) return {Verification::kUnverified, "unverified: never checked against its recording (needle-sim verify)"};
+  if (!stored.check)
+    return {Verification::kUnverified, "unverified: never checked against its recording (needle-sim verify)"};
   const SessionCheck& c = *stored.check;
   const std::string when = " (checked " + c.checked_at + (c.checked_by.empty() ? "" : " by " + c.checked_by) + ")";
   const std::string first = c.detail.substr(0, c.detail.find('\n'));
@@ -130,9 +142,12 @@ VerificationStatus verification_status(const StoredSession& stored) {
 
 const char* verification_word(Verification v) {
   switch (v) {
-    case Verification::kVerified: return "verified";
-    case Verification::kMismatch: return "mismatch";
-    case Verification::kUnverified: return "unverified";
+    case Verification::kVerified:
+      return "verified";
+    case Verification::kMismatch:
+      return "mismatch";
+    case Verification::kUnverified:
+      return "unverified";
   }
   return "unverified";
 }

@@ -1,9 +1,8 @@
 #include "training/sessions/session_export.hpp"
 
-
 #include "io/file_write.hpp"
-#include "training/sessions/export_format.hpp"
 #include "training/scoring/metric_fields.hpp"
+#include "training/sessions/export_format.hpp"
 
 namespace needle::training {
 using nlohmann::json;
@@ -109,13 +108,14 @@ std::string punctures_csv(int64_t session_id, const std::vector<PunctureResult>&
   std::string out = "session_id,index,layer,t_s,depth_m,peak_force_N\n";
   for (size_t k = 0; k < punctures.size(); ++k) {
     const PunctureResult& p = punctures[k];
-    out += std::to_string(session_id) + "," + std::to_string(k) + "," + csv_field(p.layer) + "," + csv_number(p.t_s) + "," +
-           csv_number(p.depth_m) + "," + csv_number(p.peak_force_N) + "\n";
+    out += std::to_string(session_id) + "," + std::to_string(k) + "," + csv_field(p.layer) + "," + csv_number(p.t_s) +
+           "," + csv_number(p.depth_m) + "," + csv_number(p.peak_force_N) + "\n";
   }
   return out;
 }
 
-fs::path export_session(const StoredSession& session, const fs::path& dir, const std::vector<PunctureResult>* punctures) {
+fs::path export_session(const StoredSession& session, const fs::path& dir,
+                        const std::vector<PunctureResult>* punctures) {
   io::make_folder(dir);
   const std::string stem = "session_" + std::to_string(session.info.id);
   const fs::path json_file = dir / (stem + ".json");

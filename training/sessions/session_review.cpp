@@ -24,7 +24,8 @@ fs::path fetch_stored_recording(const SessionStore& store, const SessionInfo& in
   return file;
 }
 
-fs::path locate_recording(const SessionStore& store, const fs::path& db_file, const SessionInfo& info, fs::path& fetched) {
+fs::path locate_recording(const SessionStore& store, const fs::path& db_file, const SessionInfo& info,
+                          fs::path& fetched) {
   // A server's session carries its recording; a file's names it beside the file.
   if (store.engine() == SqlEngine::kPostgres) fetched = fetch_stored_recording(store, info);
   return fetched.empty() ? resolve_recording(db_file, info.recording_path) : fetched;
@@ -60,14 +61,16 @@ SessionReview load_session_review(const SessionStore& store, const fs::path& db_
       if (samples.empty()) r.recording_problem = r.recording_file.string() + ": the recording has no samples";
     } catch (const std::exception& e) {
       r.recording_problem = e.what();
-      if (!r.recording_file.empty() && !fs::exists(r.recording_file)) r.recording_problem = r.recording_file.string() + ": recording not found";
+      if (!r.recording_file.empty() && !fs::exists(r.recording_file))
+        r.recording_problem = r.recording_file.string() + ": recording not found";
     }
     std::error_code ignored;
     if (!fetched.empty()) fs::remove(fetched, ignored);
   }
   r.plots = session_plots(samples, r.task ? &*r.task : nullptr);
   if (!r.has_recording()) {
-    for (Plot* p : {&r.plots.force, &r.plots.lateral, &r.plots.depth, &r.plots.tracking}) p->missing = r.recording_problem;
+    for (Plot* p : {&r.plots.force, &r.plots.lateral, &r.plots.depth, &r.plots.tracking})
+      p->missing = r.recording_problem;
   } else if (!r.task) {
     r.plots.depth.missing = r.task_problem;
   }

@@ -20,13 +20,13 @@ namespace needle::training {
 struct SessionReview {
   StoredSession stored;
   std::optional<Task> task;
-  std::string task_problem;                    // why `task` is empty
-  std::filesystem::path recording_file;        // resolved; empty when the session names none
-  std::vector<haptics::ToolSnapshot> states;   // the recorded states, for the replay
-  std::string recording_problem;               // why `states` is empty ("no recording", unreadable...)
-  haptics::RecordingEnd recording_end;         // closed, or cut short (the run was killed), or unchecked
-  std::vector<std::string> recording_notes;    // what to tell the reader about it (haptics::recording_notes)
-  LoopHealth loop;                             // how the haptic loop kept time while it recorded
+  std::string task_problem;                   // why `task` is empty
+  std::filesystem::path recording_file;       // resolved; empty when the session names none
+  std::vector<haptics::ToolSnapshot> states;  // the recorded states, for the replay
+  std::string recording_problem;              // why `states` is empty ("no recording", unreadable...)
+  haptics::RecordingEnd recording_end;        // closed, or cut short (the run was killed), or unchecked
+  std::vector<std::string> recording_notes;   // what to tell the reader about it (haptics::recording_notes)
+  LoopHealth loop;                            // how the haptic loop kept time while it recorded
   SessionPlots plots;
   ForceDepth force_depth;  // a layered task's axial force against depth and its punctures (docs/REVIEW.md)
 

@@ -16,18 +16,18 @@ struct Migration {
 // SQLite's triggers keeping a complete session's rows in TABLE as they are (migration 4): no row
 // added to, changed in or removed from a complete session. SQLite has no trigger for several
 // events at once, nor a variable table name: one trigger an event, spelled out per table.
-#define FINAL_ROWS_SQLITE(table)                                                                         \
-  "CREATE TRIGGER " #table "_final_insert BEFORE INSERT ON " #table                                      \
-  " WHEN (SELECT status FROM sessions WHERE id = NEW.session_id) = 'complete' BEGIN"                     \
+#define FINAL_ROWS_SQLITE(table)                                                                          \
+  "CREATE TRIGGER " #table "_final_insert BEFORE INSERT ON " #table                                       \
+  " WHEN (SELECT status FROM sessions WHERE id = NEW.session_id) = 'complete' BEGIN"                      \
   " SELECT RAISE(ABORT, 'permission denied: the session is complete, and a finished session is final'); " \
   "END;\n"                                                                                                \
-  "CREATE TRIGGER " #table "_final_update BEFORE UPDATE ON " #table                                      \
-  " WHEN (SELECT status FROM sessions WHERE id = OLD.session_id) = 'complete'"                           \
-  " OR (SELECT status FROM sessions WHERE id = NEW.session_id) = 'complete' BEGIN"                       \
+  "CREATE TRIGGER " #table "_final_update BEFORE UPDATE ON " #table                                       \
+  " WHEN (SELECT status FROM sessions WHERE id = OLD.session_id) = 'complete'"                            \
+  " OR (SELECT status FROM sessions WHERE id = NEW.session_id) = 'complete' BEGIN"                        \
   " SELECT RAISE(ABORT, 'permission denied: the session is complete, and a finished session is final'); " \
   "END;\n"                                                                                                \
-  "CREATE TRIGGER " #table "_final_delete BEFORE DELETE ON " #table                                      \
-  " WHEN (SELECT status FROM sessions WHERE id = OLD.session_id) = 'complete' BEGIN"                     \
+  "CREATE TRIGGER " #table "_final_delete BEFORE DELETE ON " #table                                       \
+  " WHEN (SELECT status FROM sessions WHERE id = OLD.session_id) = 'complete' BEGIN"                      \
   " SELECT RAISE(ABORT, 'permission denied: the session is complete, and a finished session is final'); " \
   "END;\n"
 
@@ -186,8 +186,7 @@ const Migration kMigrations[] = {
     CREATE TRIGGER session_final_delete BEFORE DELETE ON sessions WHEN OLD.status = 'complete' BEGIN
       SELECT RAISE(ABORT, 'permission denied: the session is complete, and a finished session is final');
     END;
-    )sql"
-     FINAL_ROWS_SQLITE(step_results) FINAL_ROWS_SQLITE(metrics) FINAL_ROWS_SQLITE(score_components)
+    )sql" FINAL_ROWS_SQLITE(step_results) FINAL_ROWS_SQLITE(metrics) FINAL_ROWS_SQLITE(score_components)
          FINAL_ROWS_SQLITE(recording_chunks),
      R"sql(
     CREATE TABLE session_checks (

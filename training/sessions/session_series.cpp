@@ -93,12 +93,17 @@ SessionPlots session_plots(const std::vector<haptics::TickSample>& samples, cons
     return p;
   }
   const double scale = task ? task->force_scale : 1.0;
-  p.force.lines.push_back(series("force at the hand", samples, [scale](const auto& s) { return hand_force_N(s.state, scale); }));
-  p.force.lines.push_back(series("force along the needle (tissue)", samples, [](const auto& s) { return s.state.tissue.axial_force_N; }));
-  p.force.lines.push_back(series("force on bone or a rigid surface", samples, [](const auto& s) { return norm3(s.state.environment_force_n); }));
-  p.force.lines.push_back(series("the hand's push (sensed)", samples, [](const auto& s) { return norm3(s.state.operator_force_n); }));
+  p.force.lines.push_back(
+      series("force at the hand", samples, [scale](const auto& s) { return hand_force_N(s.state, scale); }));
+  p.force.lines.push_back(
+      series("force along the needle (tissue)", samples, [](const auto& s) { return s.state.tissue.axial_force_N; }));
+  p.force.lines.push_back(series("force on bone or a rigid surface", samples,
+                                 [](const auto& s) { return norm3(s.state.environment_force_n); }));
+  p.force.lines.push_back(
+      series("the hand's push (sensed)", samples, [](const auto& s) { return norm3(s.state.operator_force_n); }));
   if (task) p.force.guides.push_back({task->scoring.safe_force_N, "safe limit at the hand"});
-  p.lateral.lines.push_back(series("sideways load on the needle", samples, [](const auto& s) { return lateral_load_N(s.state); }));
+  p.lateral.lines.push_back(
+      series("sideways load on the needle", samples, [](const auto& s) { return lateral_load_N(s.state); }));
   p.depth = depth_plot(samples, task);
   if (joint_space(samples)) {
     p.tracking.lines.push_back(series("lag of the needle behind the hand", samples, joint_tracking_mrad));
@@ -106,7 +111,8 @@ SessionPlots session_plots(const std::vector<haptics::TickSample>& samples, cons
     // The recording holds neither the workspace scale, the device-to-scene rotation nor the
     // coupling stiffness, so the stretch in metres is not derivable; its force K * stretch is.
     p.tracking = {"How hard the hand pulls the needle along", "N", "t (s)", {}, {}, {}};
-    p.tracking.lines.push_back(series("pull between the hand and the needle", samples, [](const auto& s) { return norm3(s.state.operator_force_n); }));
+    p.tracking.lines.push_back(series("pull between the hand and the needle", samples,
+                                      [](const auto& s) { return norm3(s.state.operator_force_n); }));
   }
   return p;
 }

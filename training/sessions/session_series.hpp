@@ -27,9 +27,9 @@ struct Plot {
   std::string title;
   std::string unit;
   std::string x_label = "t (s)";  // the x axis: a session's time, or (a learning curve) the attempt
-  std::vector<Series> lines;   // empty when the plot cannot be made
+  std::vector<Series> lines;      // empty when the plot cannot be made
   std::vector<Guide> guides;
-  std::string missing;         // why there are no lines, shown instead of the plot
+  std::string missing;  // why there are no lines, shown instead of the plot
 };
 
 struct SessionPlots {

@@ -39,9 +39,10 @@ std::string session_select(int version) {
   char outcome[160], score[160];
   std::snprintf(outcome, sizeof outcome, latest_check, "c.outcome");
   std::snprintf(score, sizeof score, latest_check, "c.score");
-  return std::string("SELECT s.id, r.name, t.name, coalesce(s.device, ''), s.started_at, coalesce(s.ended_at, ''), s.status, "
-                     "coalesce(s.score, 0), coalesce(s.passed, 0), coalesce(s.duration_s, 0), "
-                     "coalesce(s.recording_path, ''), t.title, t.source, ") +
+  return std::string(
+             "SELECT s.id, r.name, t.name, coalesce(s.device, ''), s.started_at, coalesce(s.ended_at, ''), s.status, "
+             "coalesce(s.score, 0), coalesce(s.passed, 0), coalesce(s.duration_s, 0), "
+             "coalesce(s.recording_path, ''), t.title, t.source, ") +
          (version >= 3 ? "coalesce(s.station, ''), coalesce(s.uid, '')" : "'', ''") + ", " +
          (version >= 4 ? std::string(outcome) + ", " + score : "NULL, NULL") +
          " FROM sessions s JOIN trainees r ON r.id = s.trainee_id JOIN tasks t ON t.id = s.task_id ";
@@ -87,9 +88,9 @@ void check_stored_numbers(const std::string& db, const SessionInfo& i) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", v);
     throw StoredValueError(db + ": session " + std::to_string(i.id) + ": the stored " + what + " " + text +
-                            " is outside what a run stores (" + (what == "score" ? "0 to 100" : "0 or more") +
-                            "): the store is damaged or was altered; needle-sim verify --session " + std::to_string(i.id) +
-                            " checks it against its recording");
+                           " is outside what a run stores (" + (what == "score" ? "0 to 100" : "0 or more") +
+                           "): the store is damaged or was altered; needle-sim verify --session " +
+                           std::to_string(i.id) + " checks it against its recording");
   };
   if (!i.complete) return;
   if (!(i.score >= 0.0 && i.score <= 100.0)) refuse("score", i.score);
@@ -156,7 +157,8 @@ SessionStore::SessionStore(const std::string& location, ReadOnly) : db_(connect(
 
 SessionStore::SessionStore(const std::string& location, int schema_version) {
   if (schema_version < 1 || schema_version > kSessionSchemaVersion)
-    throw SessionStoreError(shown_location(location) + ": cannot make schema version " + std::to_string(schema_version));
+    throw SessionStoreError(shown_location(location) + ": cannot make schema version " +
+                            std::to_string(schema_version));
   db_ = connect(location, false);
   migrate_schema(*db_, schema_version);
 }
@@ -180,9 +182,10 @@ int64_t SessionStore::begin_session(const NewSession& n) {
       return db_->query("SELECT id FROM " + table + " WHERE name = ?", {values.at(0)}, what).rows.at(0).integer(0);
     };
     const int64_t trainee_id = id_of("INSERT INTO trainees(name) VALUES (?)", "trainees", {n.trainee});
-    const int64_t task_id =
-        id_of("INSERT INTO tasks(name, title, source) VALUES (?, ?, ?)", "tasks", {n.task, n.task_title, n.task_source});
-    std::vector<SqlValue> values{trainee_id, task_id, n.started_at.empty() ? utc_timestamp() : n.started_at, n.recording_path, n.device};
+    const int64_t task_id = id_of("INSERT INTO tasks(name, title, source) VALUES (?, ?, ?)", "tasks",
+                                  {n.task, n.task_title, n.task_source});
+    std::vector<SqlValue> values{trainee_id, task_id, n.started_at.empty() ? utc_timestamp() : n.started_at,
+                                 n.recording_path, n.device};
     std::string sql = "INSERT INTO sessions(trainee_id, task_id, started_at, status, recording_path, device";
     if (schema_version() >= 3) {  // tests make older databases through this program
       sql += ", station, uid) VALUES (?, ?, ?, 'incomplete', ?, ?, ?, ?) RETURNING id";
@@ -209,20 +212,23 @@ void SessionStore::finish_session(int64_t id, const SessionResult& result, const
   if (open.rows.empty()) throw SessionStoreError(db_->name() + ": " + what + ": no incomplete session with that id");
   const auto write_metrics = [&](int64_t index, const Metrics& m) {
     for_each_metric(m, [&](const char* name, auto value) {
-      db_->query("INSERT INTO metrics VALUES (?, ?, ?, ?)", {id, index, std::string(name), static_cast<double>(value)}, what);
+      db_->query("INSERT INTO metrics VALUES (?, ?, ?, ?)", {id, index, std::string(name), static_cast<double>(value)},
+                 what);
     });
   };
   for (size_t i = 0; i < result.steps.size(); ++i) {
     const StepResult& s = result.steps[i];
-    db_->query("INSERT INTO step_results VALUES (?, ?, ?, ?, ?, ?)",
-               {id, int64_t(i), s.id, std::string(step_outcome_name(s.record.outcome)), s.record.start_s, s.record.end_s},
-               what);
+    db_->query(
+        "INSERT INTO step_results VALUES (?, ?, ?, ?, ?, ?)",
+        {id, int64_t(i), s.id, std::string(step_outcome_name(s.record.outcome)), s.record.start_s, s.record.end_s},
+        what);
     write_metrics(int64_t(i), s.metrics);
   }
   write_metrics(-1, result.overall);
   for (size_t i = 0; i < result.score.components.size(); ++i) {
     const ScoreComponent& c = result.score.components[i];
-    db_->query("INSERT INTO score_components VALUES (?, ?, ?, ?, ?)", {id, int64_t(i), c.name, c.value, c.weight}, what);
+    db_->query("INSERT INTO score_components VALUES (?, ?, ?, ?, ?)", {id, int64_t(i), c.name, c.value, c.weight},
+               what);
   }
   const SqlResult done = db_->query(
       "UPDATE sessions SET status = 'complete', ended_at = ?, score = ?, passed = ?, duration_s = ? "
@@ -236,7 +242,8 @@ void SessionStore::finish_session(int64_t id, const SessionResult& result, const
 
 std::vector<SessionInfo> SessionStore::sessions() const {
   std::vector<SessionInfo> out;
-  for (const SqlRow& row : db_->query(session_select(schema_version()) + "ORDER BY s.id DESC", {}, "listing sessions").rows)
+  for (const SqlRow& row :
+       db_->query(session_select(schema_version()) + "ORDER BY s.id DESC", {}, "listing sessions").rows)
     out.push_back(session_info(row));
   return out;
 }
@@ -264,32 +271,43 @@ StoredSession SessionStore::load(int64_t id) const {
     r.record.end_s = row.real(3);
     out.steps.push_back(r);
   }
-  for (const SqlRow& row : db_->query("SELECT step_index, name, value FROM metrics WHERE session_id = ?", {id}, what).rows) {
+  for (const SqlRow& row :
+       db_->query("SELECT step_index, name, value FROM metrics WHERE session_id = ?", {id}, what).rows) {
     const int64_t index = row.integer(0);
     if (index < -1 || index >= int64_t(out.steps.size()))
-      throw SessionStoreError(db_->name() + ": " + what + ": a metric of step " + std::to_string(index) + ", which it has not");
+      throw SessionStoreError(db_->name() + ": " + what + ": a metric of step " + std::to_string(index) +
+                              ", which it has not");
     // Names this program does not know (from a newer one) are skipped.
     set_metric(index < 0 ? out.overall : out.steps[size_t(index)].metrics, row.text(1), row.real(2));
   }
   if (version >= 2) {
     for (const SqlRow& row :
-         db_->query("SELECT name, value, weight FROM score_components WHERE session_id = ? ORDER BY position", {id}, what).rows)
+         db_->query("SELECT name, value, weight FROM score_components WHERE session_id = ? ORDER BY position", {id},
+                    what)
+             .rows)
       out.components.push_back({row.text(0), row.real(1), row.real(2)});
     // The store keeps a component's value and weight; whether it applied follows from them and the
     // session's metrics as the score decided it (a score from before the statuses: any points, applied).
     const bool every_step_completed = !out.steps.empty() && completed_steps(out.steps) == long(out.steps.size());
     for (ScoreComponent& c : out.components)
-      c.status = c.weight == 0.0                                                                ? ComponentStatus::kNotApplicable
-                 : c.value > 0.0 || component_reached(c.name, out.overall, every_step_completed) ? ComponentStatus::kApplied
-                                                                                                 : ComponentStatus::kNotReached;
+      c.status = c.weight == 0.0 ? ComponentStatus::kNotApplicable
+                 : c.value > 0.0 || component_reached(c.name, out.overall, every_step_completed)
+                     ? ComponentStatus::kApplied
+                     : ComponentStatus::kNotReached;
   }
   if (version >= 4) {
-    const SqlResult c = db_->query("SELECT outcome, score, digest, detail, checked_at, checked_by FROM session_checks "
-                                   "WHERE session_id = ? ORDER BY id DESC LIMIT 1",
-                                   {id}, what);
+    const SqlResult c = db_->query(
+        "SELECT outcome, score, digest, detail, checked_at, checked_by FROM session_checks "
+        "WHERE session_id = ? ORDER BY id DESC LIMIT 1",
+        {id}, what);
     if (!c.rows.empty()) {
-      SessionCheck check{id, CheckOutcome::kUnverifiable, c.rows[0].real(1), c.rows[0].text(2), c.rows[0].text(3),
-                         c.rows[0].text(4), c.rows[0].text(5)};
+      SessionCheck check{id,
+                         CheckOutcome::kUnverifiable,
+                         c.rows[0].real(1),
+                         c.rows[0].text(2),
+                         c.rows[0].text(3),
+                         c.rows[0].text(4),
+                         c.rows[0].text(5)};
       check_outcome_from_name(c.rows[0].text(0), check.outcome);
       out.check = check;
     }
@@ -302,7 +320,8 @@ StoredSession SessionStore::load(int64_t id) const {
 TraineeRename SessionStore::rename_trainee(const std::string& from, const std::string& to) {
   const std::string what = "renaming trainee \"" + from + "\" to \"" + to + "\"";
   if (to.empty() || to.size() > kMaxNameBytes)
-    throw SessionStoreError(db_->name() + ": " + what + ": a name has 1 to " + std::to_string(kMaxNameBytes) + " bytes");
+    throw SessionStoreError(db_->name() + ": " + what + ": a name has 1 to " + std::to_string(kMaxNameBytes) +
+                            " bytes");
   SqlTransaction transaction(*db_, what);
   if (!db_->query("SELECT 1 FROM trainees WHERE name = ?", {to}, what).rows.empty())
     throw SessionStoreError(db_->name() + ": " + what + ": a trainee named \"" + to + "\" exists already");
@@ -317,9 +336,10 @@ TraineeRename SessionStore::rename_trainee(const std::string& from, const std::s
 
 std::vector<TraineeRename> SessionStore::trainee_renames() const {
   std::vector<TraineeRename> out;
-  for (const SqlRow& row : db_->query("SELECT old_name, new_name, renamed_at, renamed_by FROM trainee_renames ORDER BY id",
-                                      {}, "reading the trainees' renames")
-                               .rows)
+  for (const SqlRow& row :
+       db_->query("SELECT old_name, new_name, renamed_at, renamed_by FROM trainee_renames ORDER BY id", {},
+                  "reading the trainees' renames")
+           .rows)
     out.push_back({row.text(0), row.text(1), row.text(2), row.text(3)});
   return out;
 }
@@ -328,11 +348,14 @@ void SessionStore::record_check(const SessionCheck& c) {
   const std::string at = c.checked_at.empty() ? utc_timestamp() : c.checked_at;
   const std::string what = "keeping the check of session " + std::to_string(c.session_id);
   const std::string by = engine() == SqlEngine::kPostgres ? "session_user" : "?";
-  std::vector<SqlValue> values{c.session_id, at, std::string(check_outcome_name(c.outcome)), c.score, c.digest, c.detail};
+  std::vector<SqlValue> values{c.session_id, at,       std::string(check_outcome_name(c.outcome)),
+                               c.score,      c.digest, c.detail};
   if (engine() == SqlEngine::kSqlite) values.emplace_back(c.checked_by);
-  db_->query("INSERT INTO session_checks(session_id, checked_at, outcome, score, digest, detail, checked_by) "
-             "VALUES (?, ?, ?, ?, ?, ?, " + by + ")",
-             values, what);
+  db_->query(
+      "INSERT INTO session_checks(session_id, checked_at, outcome, score, digest, detail, checked_by) "
+      "VALUES (?, ?, ?, ?, ?, ?, " +
+          by + ")",
+      values, what);
 }
 
 std::optional<SessionInfo> SessionStore::find_uid(const std::string& uid) const {
@@ -342,14 +365,16 @@ std::optional<SessionInfo> SessionStore::find_uid(const std::string& uid) const 
 }
 
 void SessionStore::append_recording(int64_t id, int64_t offset, const std::string& bytes) {
-  const std::string what = "storing the recording of session " + std::to_string(id) + " from byte " + std::to_string(offset);
+  const std::string what =
+      "storing the recording of session " + std::to_string(id) + " from byte " + std::to_string(offset);
   const int64_t crc = haptics::crc32(bytes.data(), bytes.size());
   db_->query("INSERT INTO recording_chunks VALUES (?, ?, ?, ?)", {id, offset, SqlBlob{bytes}, crc}, what);
 }
 
 int64_t SessionStore::recording_bytes(int64_t id) const {
-  return db_->query("SELECT coalesce(max(byte_offset + length(bytes)), 0) FROM recording_chunks WHERE session_id = ?", {id},
-                    "measuring the recording of session " + std::to_string(id))
+  return db_
+      ->query("SELECT coalesce(max(byte_offset + length(bytes)), 0) FROM recording_chunks WHERE session_id = ?", {id},
+              "measuring the recording of session " + std::to_string(id))
       .rows.at(0)
       .integer(0);
 }
@@ -370,8 +395,8 @@ std::optional<std::string> SessionStore::recording(int64_t id) const {
       const int64_t offset = row.integer(0);
       const std::string& bytes = row.blob(1);
       if (offset != int64_t(out.size()))
-        throw SessionStoreError(db_->name() + ": " + what + ": chunk at byte " + std::to_string(offset) + ", expected " +
-                                std::to_string(out.size()) + " (a chunk is missing or overlaps)");
+        throw SessionStoreError(db_->name() + ": " + what + ": chunk at byte " + std::to_string(offset) +
+                                ", expected " + std::to_string(out.size()) + " (a chunk is missing or overlaps)");
       if (int64_t(haptics::crc32(bytes.data(), bytes.size())) != row.integer(2))
         throw SessionStoreError(db_->name() + ": " + what + ": chunk at byte " + std::to_string(offset) +
                                 ": checksum mismatch (damaged)");
@@ -383,13 +408,14 @@ std::optional<std::string> SessionStore::recording(int64_t id) const {
 }
 
 void SessionStore::keep_for_server(int64_t id, const std::string& server) {
-  db_->query("INSERT INTO outbox VALUES (?, ?) ON CONFLICT(session_id) DO UPDATE SET server = excluded.server", {id, server},
-             "keeping session " + std::to_string(id) + " to send");
+  db_->query("INSERT INTO outbox VALUES (?, ?) ON CONFLICT(session_id) DO UPDATE SET server = excluded.server",
+             {id, server}, "keeping session " + std::to_string(id) + " to send");
 }
 
 std::vector<int64_t> SessionStore::outbox() const {
   std::vector<int64_t> ids;
-  for (const SqlRow& row : db_->query("SELECT session_id FROM outbox ORDER BY session_id", {}, "reading the outbox").rows)
+  for (const SqlRow& row :
+       db_->query("SELECT session_id FROM outbox ORDER BY session_id", {}, "reading the outbox").rows)
     ids.push_back(row.integer(0));
   return ids;
 }

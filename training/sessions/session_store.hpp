@@ -22,12 +22,12 @@ namespace needle::training {
 struct SessionInfo {
   int64_t id = 0;
   std::string trainee;
-  std::string task;        // Task::name
-  std::string task_title;  // Task::title
-  std::string task_source; // the task file (Task::source): review loads its markers and scene
-  std::string device;      // "" when not recorded (sessions from schema 1)
-  std::string started_at;  // ISO 8601 UTC, "2026-11-21T12:00:00Z"
-  std::string ended_at;    // "" while incomplete
+  std::string task;         // Task::name
+  std::string task_title;   // Task::title
+  std::string task_source;  // the task file (Task::source): review loads its markers and scene
+  std::string device;       // "" when not recorded (sessions from schema 1)
+  std::string started_at;   // ISO 8601 UTC, "2026-11-21T12:00:00Z"
+  std::string ended_at;     // "" while incomplete
   bool complete = false;
   double score = 0.0;  // valid when complete
   bool passed = false;

@@ -10,12 +10,14 @@ namespace fs = std::filesystem;
 
 int64_t send_session(const StoredSession& local, const fs::path& recording, SessionStore& remote) {
   const SessionInfo& info = local.info;
-  if (info.uid.empty()) throw SessionStoreError(remote.name() + ": session " + std::to_string(info.id) + " has no uid to send it by");
+  if (info.uid.empty())
+    throw SessionStoreError(remote.name() + ": session " + std::to_string(info.id) + " has no uid to send it by");
   const std::optional<SessionInfo> found = remote.find_uid(info.uid);
   if (found && found->complete) return found->id;
-  const int64_t id = found ? found->id
-                           : remote.begin_session({info.trainee, info.task, info.task_title, info.task_source, info.device,
-                                                   info.recording_path, info.station, info.uid, info.started_at});
+  const int64_t id =
+      found ? found->id
+            : remote.begin_session({info.trainee, info.task, info.task_title, info.task_source, info.device,
+                                    info.recording_path, info.station, info.uid, info.started_at});
   if (!recording.empty()) {
     std::ifstream in(recording, std::ios::binary);
     if (!in) throw SessionStoreError(recording.string() + ": cannot read the recording to send it");

@@ -31,9 +31,9 @@ using SqlValue = std::variant<SqlNull, int64_t, double, std::string, SqlBlob>;
 
 struct SqlRow {
   std::vector<SqlValue> values;
-  double real(size_t c) const;        // NULL: NaN
-  int64_t integer(size_t c) const;    // NULL: 0
-  std::string text(size_t c) const;   // NULL: ""
+  double real(size_t c) const;       // NULL: NaN
+  int64_t integer(size_t c) const;   // NULL: 0
+  std::string text(size_t c) const;  // NULL: ""
   const std::string& blob(size_t c) const;
 };
 

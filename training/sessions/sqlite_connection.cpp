@@ -42,7 +42,7 @@ bool is_damage(int rc) {
 // permissions.
 std::string why_not_writable(const std::string& file) {
   const std::filesystem::path folder = std::filesystem::absolute(file).parent_path();
-  struct statvfs fs{};
+  struct statvfs fs {};
   if (::statvfs(folder.c_str(), &fs) == 0 && (fs.f_flag & ST_RDONLY)) return "its file system is mounted read-only";
   if (::access(file.c_str(), W_OK) != 0) return "this user may not write it";
   return "this user may not write its folder, where SQLite keeps the -wal and -shm files beside it";
@@ -122,7 +122,8 @@ SqliteConnection::SqliteConnection(const std::string& file, bool read_only) : fi
 
 SqliteConnection::~SqliteConnection() { sqlite3_close(db_); }
 
-SqlResult SqliteConnection::query(const std::string& sql, const std::vector<SqlValue>& params, const std::string& what) {
+SqlResult SqliteConnection::query(const std::string& sql, const std::vector<SqlValue>& params,
+                                  const std::string& what) {
   const auto fail = [&](const char* step) -> void {
     throw SessionStoreError(file_ + ": " + what + ": " + step + ": " + sqlite3_errmsg(db_));
   };
@@ -134,13 +135,16 @@ SqlResult SqliteConnection::query(const std::string& sql, const std::vector<SqlV
     const int rc = std::visit(
         [&](const auto& v) {
           using T = std::decay_t<decltype(v)>;
-          if constexpr (std::is_same_v<T, SqlNull>) return sqlite3_bind_null(raw, k);
-          else if constexpr (std::is_same_v<T, int64_t>) return sqlite3_bind_int64(raw, k, v);
+          if constexpr (std::is_same_v<T, SqlNull>)
+            return sqlite3_bind_null(raw, k);
+          else if constexpr (std::is_same_v<T, int64_t>)
+            return sqlite3_bind_int64(raw, k, v);
           else if constexpr (std::is_same_v<T, double>)
             return std::isnan(v) ? sqlite3_bind_null(raw, k) : sqlite3_bind_double(raw, k, v);
           else if constexpr (std::is_same_v<T, std::string>)
             return sqlite3_bind_text(raw, k, v.data(), int(v.size()), SQLITE_TRANSIENT);
-          else return sqlite3_bind_blob(raw, k, v.bytes.data(), int(v.bytes.size()), SQLITE_TRANSIENT);
+          else
+            return sqlite3_bind_blob(raw, k, v.bytes.data(), int(v.bytes.size()), SQLITE_TRANSIENT);
         },
         params[i]);
     if (rc != SQLITE_OK) fail("binding a value");
@@ -153,9 +157,15 @@ SqlResult SqliteConnection::query(const std::string& sql, const std::vector<SqlV
     SqlRow row;
     for (int c = 0; c < sqlite3_column_count(raw); ++c) {
       switch (sqlite3_column_type(raw, c)) {
-        case SQLITE_NULL: row.values.emplace_back(SqlNull{}); break;
-        case SQLITE_INTEGER: row.values.emplace_back(int64_t{sqlite3_column_int64(raw, c)}); break;
-        case SQLITE_FLOAT: row.values.emplace_back(sqlite3_column_double(raw, c)); break;
+        case SQLITE_NULL:
+          row.values.emplace_back(SqlNull{});
+          break;
+        case SQLITE_INTEGER:
+          row.values.emplace_back(int64_t{sqlite3_column_int64(raw, c)});
+          break;
+        case SQLITE_FLOAT:
+          row.values.emplace_back(sqlite3_column_double(raw, c));
+          break;
         case SQLITE_BLOB: {
           const auto* p = static_cast<const char*>(sqlite3_column_blob(raw, c));
           row.values.emplace_back(SqlBlob{std::string(p, p + sqlite3_column_bytes(raw, c))});
@@ -195,12 +205,17 @@ void SqliteConnection::commit(const std::string& what) {
 
 void SqliteConnection::rollback() noexcept { sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr); }
 
-int SqliteConnection::user_version() { return int(query("PRAGMA user_version", {}, "reading the schema version").rows.at(0).integer(0)); }
-
-void SqliteConnection::set_user_version(int version) {
-  script("PRAGMA user_version = " + std::to_string(version), "setting the schema version");  // a number: no value from outside
+int SqliteConnection::user_version() {
+  return int(query("PRAGMA user_version", {}, "reading the schema version").rows.at(0).integer(0));
 }
 
-std::string SqliteConnection::journal_mode() { return query("PRAGMA journal_mode", {}, "reading the journal mode").rows.at(0).text(0); }
+void SqliteConnection::set_user_version(int version) {
+  script("PRAGMA user_version = " + std::to_string(version),
+         "setting the schema version");  // a number: no value from outside
+}
+
+std::string SqliteConnection::journal_mode() {
+  return query("PRAGMA journal_mode", {}, "reading the journal mode").rows.at(0).text(0);
+}
 
 }  // namespace needle::training

@@ -30,8 +30,7 @@ bool condition_holds(const Task& task, const Condition& c, const haptics::ToolSn
     case ConditionType::kWithdrawn:
       return distance(tip, task.markers[c.marker].position) > c.within_m;
     case ConditionType::kAxisAligned:
-      return angle_between(haptics::needle_axis(state), planned_direction(task.markers[c.marker], tip)) <=
-             c.within_rad;
+      return angle_between(haptics::needle_axis(state), planned_direction(task.markers[c.marker], tip)) <= c.within_rad;
     case ConditionType::kDepthInBand: {
       const double depth = depth_along(task.markers[c.marker], tip);
       return depth >= c.min && depth <= c.max;
@@ -44,7 +43,8 @@ bool condition_holds(const Task& task, const Condition& c, const haptics::ToolSn
       // In tissue, between the interspace's spinous processes along the spine, near the midline.
       if (!task.landmarks || state.contact != haptics::ContactState::kTissue) return false;
       const PatientLandmarks& l = *task.landmarks;
-      return interspace_at(l, tip) == c.interspace && std::abs(tip[0] - l.entries[size_t(c.interspace)][0]) <= kInterspaceHalfWidth_m;
+      return interspace_at(l, tip) == c.interspace &&
+             std::abs(tip[0] - l.entries[size_t(c.interspace)][0]) <= kInterspaceHalfWidth_m;
     }
     case ConditionType::kForceHeld: {
       const double force = norm(vec3(state.environment_force_n));

@@ -11,7 +11,8 @@ std::vector<LayerStart> layer_starts_along(const haptics::TissueModel& tissue, c
   if (tissue.empty()) return out;
   const Vec3 o = origin - tissue_frame_in_world;
   const auto layer_at = [&](double depth) {
-    return tissue.layer_at(Eigen::Vector3d(o[0] + depth * direction[0], o[1] + depth * direction[1], o[2] + depth * direction[2]));
+    return tissue.layer_at(
+        Eigen::Vector3d(o[0] + depth * direction[0], o[1] + depth * direction[1], o[2] + depth * direction[2]));
   };
   double before = -kLayerSearchBehind_m;
   int layer = layer_at(before);

@@ -15,7 +15,8 @@ Vec3 world(const Eigen::Vector3d& model_point, const haptics::Scenario& s) {
 }  // namespace
 
 void inline_patient(const Task& task, nlohmann::json& scenario, const fs::path& scenario_folder, uint64_t seed) {
-  if (!scenario.contains("tissue") || !scenario["tissue"].is_object() || !scenario["tissue"].contains("patient")) return;
+  if (!scenario.contains("tissue") || !scenario["tissue"].is_object() || !scenario["tissue"].contains("patient"))
+    return;
   nlohmann::json& tissue = scenario["tissue"];
   namespace anatomy = haptics::anatomy;
   try {
@@ -24,12 +25,14 @@ void inline_patient(const Task& task, nlohmann::json& scenario, const fs::path& 
     else if (!task.patient.empty())
       tissue["patient"] = anatomy::patient_json(anatomy::load_patient(task.patient));
     else if (tissue["patient"].is_string())
-      tissue["patient"] = anatomy::patient_json(anatomy::load_patient((scenario_folder / tissue["patient"].get<std::string>()).string()));
+      tissue["patient"] = anatomy::patient_json(
+          anatomy::load_patient((scenario_folder / tissue["patient"].get<std::string>()).string()));
   } catch (const anatomy::PatientError& e) {
     throw TaskError(e.what());
   }
-  const fs::path tissues = tissue.contains("tissues") && tissue["tissues"].is_string() ? scenario_folder / tissue["tissues"].get<std::string>()
-                                                                                       : scenario_folder / ".." / "tissues";
+  const fs::path tissues = tissue.contains("tissues") && tissue["tissues"].is_string()
+                               ? scenario_folder / tissue["tissues"].get<std::string>()
+                               : scenario_folder / ".." / "tissues";
   tissue["tissues"] = fs::weakly_canonical(tissues).string();
 }
 

@@ -17,7 +17,8 @@ namespace needle::training {
 // patient file, or for "random" the patient random_patient(seed) draws, or the scenario's own file
 // read; its tissues folder absolute). Nothing for a scenario on no patient. TaskError naming the
 // patient file when it does not read.
-void inline_patient(const Task& task, nlohmann::json& scenario, const std::filesystem::path& scenario_folder, uint64_t seed);
+void inline_patient(const Task& task, nlohmann::json& scenario, const std::filesystem::path& scenario_folder,
+                    uint64_t seed);
 
 // (scenario that runs) => the landmarks of its patient, world frame; nothing without one.
 std::optional<PatientLandmarks> patient_landmarks(const haptics::Scenario& scenario);

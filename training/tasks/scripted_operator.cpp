@@ -13,8 +13,9 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 fs::path operator_script_path(const Task& task, const std::string& spec) {
-  fs::path path = (spec == "good" || spec == "sloppy") ? fs::path(task.source).parent_path() / (task.name + "_" + spec + ".json")
-                                                        : fs::path(spec);
+  fs::path path = (spec == "good" || spec == "sloppy")
+                      ? fs::path(task.source).parent_path() / (task.name + "_" + spec + ".json")
+                      : fs::path(spec);
   if (!fs::is_regular_file(path)) throw TaskError(path.string() + ": /: operator script not found");
   return path;
 }
@@ -32,7 +33,8 @@ json task_scenario_json(const Task& task, uint64_t seed) {
       scenario["tissue"]["layers"].is_array()) {
     for (json& layer : scenario["tissue"]["layers"]) {
       if (layer.is_object() && layer.contains("parameters") && layer["parameters"].is_string())
-        layer["parameters"] = fs::absolute(task.scenario.parent_path() / layer["parameters"].get<std::string>()).string();
+        layer["parameters"] =
+            fs::absolute(task.scenario.parent_path() / layer["parameters"].get<std::string>()).string();
     }
   }
   inline_patient(task, scenario, task.scenario.parent_path(), seed);
@@ -50,7 +52,8 @@ haptics::Scenario write_scenario(const json& scenario, const fs::path& file) {
   return haptics::load_scenario(file.string());
 }
 
-haptics::Scenario scenario_with_operator(const Task& task, const fs::path& script, const fs::path& merged_file, uint64_t seed) {
+haptics::Scenario scenario_with_operator(const Task& task, const fs::path& script, const fs::path& merged_file,
+                                         uint64_t seed) {
   json scenario = task_scenario_json(task, seed);
   // The script is read strictly here, so its errors name it and not the merged scenario.
   const json operator_script = io::read_json_file<TaskError>(script);
@@ -65,7 +68,8 @@ haptics::Scenario scenario_with_operator(const Task& task, const fs::path& scrip
     // A reaction to the loss of resistance may come as late as the script's end, and lasts its waypoints.
     if (read.thumb && read.thumb->on_loss) end_s += read.thumb->on_loss->waypoints.back().t;
     if (read.thumb && !task.syringe)
-      throw TaskError(script.string() + ": /hand/thumb: the task " + task.name + " has no syringe for the thumb to press");
+      throw TaskError(script.string() + ": /hand/thumb: the task " + task.name +
+                      " has no syringe for the thumb to press");
   } catch (const haptics::ScenarioError& e) {
     throw TaskError(e.what());  // already "SCRIPT: /hand/...: what"
   }

@@ -29,7 +29,8 @@ std::string point_name(const Task& task, const Step& step, int marker) {
 }
 
 std::string layer_name(const Task& task, int layer) {
-  if (task.hide_layer_names || layer < 0 || size_t(layer) >= task.layers.size()) return "layer " + std::to_string(layer + 1);
+  if (task.hide_layer_names || layer < 0 || size_t(layer) >= task.layers.size())
+    return "layer " + std::to_string(layer + 1);
   return task.layers[size_t(layer)].name;
 }
 
@@ -50,7 +51,8 @@ std::string point_line(const Task& task, const Step& step, const StepCue& cue) {
   append(parts, along(cue.to_point_view[0], "right", "left"));
   append(parts, along(cue.to_point_view[1], "up", "down"));
   append(parts, along(cue.to_point_view[2], "away from you", "towards you"));
-  return point_name(task, step, cue.point) + format(" %.1f mm away", cue.distance_m * 1000.0) + (parts.empty() ? "" : ": " + parts);
+  return point_name(task, step, cue.point) + format(" %.1f mm away", cue.distance_m * 1000.0) +
+         (parts.empty() ? "" : ": " + parts);
 }
 
 std::string axis_line(const StepCue& cue) {
@@ -58,10 +60,12 @@ std::string axis_line(const StepCue& cue) {
   std::string line = format("off the axis %.0f deg", cue.off_axis_deg);
   if (aligned) return line + format(": on it (within %.0f deg)", cue.within_deg);
   std::string parts;
-  if (std::abs(cue.turn_deg) >= 1.0) append(parts, format(cue.turn_deg > 0 ? "turn clockwise %.0f deg" : "turn anticlockwise %.0f deg",
-                                                          std::abs(cue.turn_deg)));
+  if (std::abs(cue.turn_deg) >= 1.0)
+    append(parts, format(cue.turn_deg > 0 ? "turn clockwise %.0f deg" : "turn anticlockwise %.0f deg",
+                         std::abs(cue.turn_deg)));
   if (std::abs(cue.tilt_deg) >= 1.0)
-    append(parts, format(cue.tilt_deg > 0 ? "tilt the hub away %.0f deg" : "tilt the hub towards you %.0f deg", std::abs(cue.tilt_deg)));
+    append(parts, format(cue.tilt_deg > 0 ? "tilt the hub away %.0f deg" : "tilt the hub towards you %.0f deg",
+                         std::abs(cue.tilt_deg)));
   return parts.empty() ? line : line + ": " + parts;
 }
 
@@ -73,17 +77,23 @@ std::string depth_line(const Task& task, const StepCue& cue) {
     return format("depth %.0f mm along the planned axis", mm);
   }
   const double lo = cue.band_min_m * 1000.0, hi = cue.band_max_m * 1000.0;
-  if (mm < lo) return format("depth %.0f mm: %.0f mm deeper", mm, lo - mm) + format(" to the band (%.0f-%.0f mm)", lo, hi);
-  if (mm > hi) return format("depth %.0f mm: %.0f mm back", mm, mm - hi) + format(" to the band (%.0f-%.0f mm)", lo, hi);
+  if (mm < lo)
+    return format("depth %.0f mm: %.0f mm deeper", mm, lo - mm) + format(" to the band (%.0f-%.0f mm)", lo, hi);
+  if (mm > hi)
+    return format("depth %.0f mm: %.0f mm back", mm, mm - hi) + format(" to the band (%.0f-%.0f mm)", lo, hi);
   return format("depth %.0f mm: in the band (%.0f-%.0f mm)", mm, lo, hi);
 }
 
 const char* contact_words(ContactRequirement c) {
   switch (c) {
-    case ContactRequirement::kRigidSurface: return ", on the surface";
-    case ContactRequirement::kTissue: return ", in the tissue";
-    case ContactRequirement::kFree: return ", out of contact";
-    case ContactRequirement::kAny: break;
+    case ContactRequirement::kRigidSurface:
+      return ", on the surface";
+    case ContactRequirement::kTissue:
+      return ", in the tissue";
+    case ContactRequirement::kFree:
+      return ", out of contact";
+    case ContactRequirement::kAny:
+      break;
   }
   return "";
 }
@@ -126,7 +136,8 @@ std::string condition_words(const Task& task, const Step& step) {
 
 int gauge_marker(const Task& task, size_t step) {
   const auto usable = [&](int m) {
-    return m >= 0 && (task.markers[size_t(m)].kind == MarkerKind::kAxis || task.markers[size_t(m)].kind == MarkerKind::kSurfaceNormal);
+    return m >= 0 && (task.markers[size_t(m)].kind == MarkerKind::kAxis ||
+                      task.markers[size_t(m)].kind == MarkerKind::kSurfaceNormal);
   };
   for (size_t k = step + 1; k-- > 0;) {
     const Step& s = task.steps[k];
@@ -165,7 +176,8 @@ StepCue step_cue(const Task& task, size_t step_index, const haptics::ToolSnapsho
     // terms): the tilt changes the angle to the view's direction, the swing turns about it.
     const Vec3& away = view.forward;
     cue.tilt_deg = (std::acos(std::clamp(dot(wanted, away) / norm(wanted), -1.0, 1.0)) -
-                    std::acos(std::clamp(dot(now, away) / norm(now), -1.0, 1.0))) * kDeg;
+                    std::acos(std::clamp(dot(now, away) / norm(now), -1.0, 1.0))) *
+                   kDeg;
     const Vec3 p0 = now - dot(now, away) * away, p = wanted - dot(wanted, away) * away;
     cue.turn_deg = std::atan2(dot(cross(p0, p), away), dot(p0, p)) * kDeg;
   }
@@ -177,7 +189,8 @@ StepCue step_cue(const Task& task, size_t step_index, const haptics::ToolSnapsho
   return cue;
 }
 
-std::vector<std::string> cue_lines(const Task& task, size_t step_index, const haptics::ToolSnapshot& state, const StepCue& cue) {
+std::vector<std::string> cue_lines(const Task& task, size_t step_index, const haptics::ToolSnapshot& state,
+                                   const StepCue& cue) {
   const Step& step = task.steps.at(step_index);
   const Condition& c = step.condition;
   std::vector<std::string> lines;
@@ -189,16 +202,21 @@ std::vector<std::string> cue_lines(const Task& task, size_t step_index, const ha
       break;
     }
     case ConditionType::kTipInLayer:
-      lines.push_back("tip in " + (state.tissue.tip_layer < 0 ? std::string("no layer") : layer_name(task, state.tissue.tip_layer)) +
-                      (state.tissue.tip_layer == c.layer ? ": there, hold it" : "; the step wants it in " + layer_name(task, c.layer)));
+      lines.push_back(
+          "tip in " +
+          (state.tissue.tip_layer < 0 ? std::string("no layer") : layer_name(task, state.tissue.tip_layer)) +
+          (state.tissue.tip_layer == c.layer ? ": there, hold it"
+                                             : "; the step wants it in " + layer_name(task, c.layer)));
       break;
     case ConditionType::kPunctured:
       lines.push_back("push on until the " + layer_name(task, c.layer) + " gives");
       break;
     case ConditionType::kWithdrawn:
       if (state.contact != haptics::ContactState::kFree)
-        lines.push_back(state.contact == haptics::ContactState::kTissue ? "pull the needle out of the tissue" : "lift the tip off the surface");
-      else if (const double d = distance(vec3(state.needle_tip_m), task.markers[size_t(c.marker)].position); d <= c.within_m)
+        lines.push_back(state.contact == haptics::ContactState::kTissue ? "pull the needle out of the tissue"
+                                                                        : "lift the tip off the surface");
+      else if (const double d = distance(vec3(state.needle_tip_m), task.markers[size_t(c.marker)].position);
+               d <= c.within_m)
         lines.push_back(format("move the tip %.0f mm further away", (c.within_m - d) * 1000.0));
       break;
     default:
@@ -206,7 +224,8 @@ std::vector<std::string> cue_lines(const Task& task, size_t step_index, const ha
   }
   if (cue.point >= 0) lines.push_back(point_line(task, step, cue));
   if (cue.axis >= 0) lines.push_back(axis_line(cue));
-  if (cue.gauge >= 0 && (c.type == ConditionType::kDepthInBand || step.guidance.depth_gauge >= 0)) lines.push_back(depth_line(task, cue));
+  if (cue.gauge >= 0 && (c.type == ConditionType::kDepthInBand || step.guidance.depth_gauge >= 0))
+    lines.push_back(depth_line(task, cue));
   return lines;
 }
 

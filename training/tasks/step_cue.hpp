@@ -58,6 +58,7 @@ std::string condition_words(const Task& task, const Step& step);
 // 3 mm away from you", "off the axis 14°: turn clockwise 12°, tilt the hub away 8°", "depth 12 mm:
 // 13 mm deeper to the band (25-35 mm)", "force 0.8 N: press harder (1.2-2.0 N)"; empty when the step
 // has nothing to measure.
-std::vector<std::string> cue_lines(const Task& task, size_t step, const haptics::ToolSnapshot& state, const StepCue& cue);
+std::vector<std::string> cue_lines(const Task& task, size_t step, const haptics::ToolSnapshot& state,
+                                   const StepCue& cue);
 
 }  // namespace needle::training

@@ -4,8 +4,8 @@
 #pragma once
 
 #include <array>
-#include <filesystem>
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -44,14 +44,14 @@ struct Marker {
 };
 
 enum class ConditionType {
-  kTipNear,        // tip within `within_m` of a point marker
-  kAxisAligned,    // needle axis within `within_rad` of an axis or surface-normal marker
-  kDepthInBand,    // depth of the tip along an axis marker (from its origin) in [min, max] m
-  kForceHeld,      // |environment force| in [min, max] N, held for hold_s
-  kTargetReached,  // tip within `within_m` of a point marker while inside tissue
-  kWithdrawn,      // no contact and the tip farther than `within_m` from a point marker
-  kTipInLayer,     // the layered tissue's layer `layer` holds the tip (ToolSnapshot::tissue.tip_layer)
-  kPunctured,      // the needle's track has passed into layer `layer` (ToolSnapshot::tissue.punctured_layers)
+  kTipNear,            // tip within `within_m` of a point marker
+  kAxisAligned,        // needle axis within `within_rad` of an axis or surface-normal marker
+  kDepthInBand,        // depth of the tip along an axis marker (from its origin) in [min, max] m
+  kForceHeld,          // |environment force| in [min, max] N, held for hold_s
+  kTargetReached,      // tip within `within_m` of a point marker while inside tissue
+  kWithdrawn,          // no contact and the tip farther than `within_m` from a point marker
+  kTipInLayer,         // the layered tissue's layer `layer` holds the tip (ToolSnapshot::tissue.tip_layer)
+  kPunctured,          // the needle's track has passed into layer `layer` (ToolSnapshot::tissue.punctured_layers)
   kInterspaceEntered,  // the needle is in tissue and entered the skin over the patient's interspace `interspace`
 };
 
@@ -65,8 +65,8 @@ struct Condition {
   double min = 0.0, max = 0.0;  // depth (m) or force (N) band
   double hold_s = 0.0;          // the condition must hold this long without a break
   ContactRequirement contact = ContactRequirement::kAny;
-  int layer = -1;               // tip_in_layer, punctured: index in Task::layers
-  int interspace = -1;          // interspace_entered: 0 = L1-L2 ... 4 = L5-S1
+  int layer = -1;       // tip_in_layer, punctured: index in Task::layers
+  int interspace = -1;  // interspace_entered: 0 = L1-L2 ... 4 = L5-S1
 };
 
 // What the panels draw during a step; marker indices, -1 when absent.
@@ -164,13 +164,14 @@ inline constexpr int kMaxTaskOrder = 1000000;
 // draws when asked and what the patient's conditions and metrics measure against. Set by
 // apply_patient from the scenario a session runs (a random patient is drawn for each attempt).
 struct PatientLandmarks {
-  static constexpr int kInterspaces = 5;  // L1-L2 ... L5-S1
+  static constexpr int kInterspaces = 5;        // L1-L2 ... L5-S1
   std::array<Vec3, kInterspaces> entries{};     // the skin on the midline between the spinous processes
   std::array<Vec3, kInterspaces> directions{};  // the midline approach, towards the interlaminar window's centre
-  std::array<double, kInterspaces> skin_to_epidural_m{};  // along that approach, the patient's own (NaN where bone is in the way)
-  std::array<Vec3, kInterspaces + 1> spinous_tips{};      // L1 ... L5, then the sacrum's crest at S1
-  std::array<Vec3, 2> crest_tops{};  // the iliac crests' highest points: Tuffier's line between them
-  std::string patient;               // the patient's parameters as JSON (what the session ran)
+  std::array<double, kInterspaces>
+      skin_to_epidural_m{};  // along that approach, the patient's own (NaN where bone is in the way)
+  std::array<Vec3, kInterspaces + 1> spinous_tips{};  // L1 ... L5, then the sacrum's crest at S1
+  std::array<Vec3, 2> crest_tops{};                   // the iliac crests' highest points: Tuffier's line between them
+  std::string patient;                                // the patient's parameters as JSON (what the session ran)
 };
 
 // The interspace whose spinous processes' tips bracket `point` along the spine (y), −1 beyond them.
@@ -191,7 +192,7 @@ struct Task {
   std::string text;  // the file's text as it was read (a recording keeps it for the replay)
   std::string name;
   std::string title;
-  std::string description;         // one line for the start screen; may be empty
+  std::string description;  // one line for the start screen; may be empty
   // The task's place in the start screen's list (docs/TASKS.md, "Top level"): tasks with an order
   // come first, lowest first; those without follow in file-name order.
   std::optional<int> order;
@@ -215,14 +216,14 @@ struct Task {
   // from the scenario's geometry at rest (training/tasks/layer_starts.hpp), computed once on load
   // for the depth gauge; empty otherwise.
   std::vector<std::vector<LayerStart>> layer_starts;
-  std::optional<SectionPlaneSpec> section_plane;        // the section view's plane, when the task fixes it
+  std::optional<SectionPlaneSpec> section_plane;  // the section view's plane, when the task fixes it
   // The patient a task on a generated patient runs on: "" the scenario's own, a patient file
   // (resolved), or "random" (one drawn from the generator's ranges for each attempt).
   std::string patient;
   // The landmarks of the patient a session runs on (apply_patient); none before one runs, and for
   // a task on no patient.
   std::optional<PatientLandmarks> landmarks;
-  std::optional<TaskSyringe> syringe;                   // the loss-of-resistance syringe on the needle, when it has one
+  std::optional<TaskSyringe> syringe;  // the loss-of-resistance syringe on the needle, when it has one
   // An untimed practice run of the task (docs/TASKS.md, "Practice"): no step has a time limit.
   bool practice = false;
 

@@ -26,8 +26,9 @@ class TaskReader : io::StrictJsonReader<TaskError> {
   TaskReader(std::string file, fs::path folder) : StrictJsonReader(std::move(file)), folder_(std::move(folder)) {}
 
   Task task(const json& root) {
-    object(root, "", {"name", "title", "description", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps", "scoring",
-                      "ultrasound", "section", "hide_layer_names", "order", "patient", "syringe"});
+    object(root, "",
+           {"name", "title", "description", "scene", "scenario", "normal_marker_spacing_m", "markers", "steps",
+            "scoring", "ultrasound", "section", "hide_layer_names", "order", "patient", "syringe"});
     Task t;
     ScenarioTissue tissue;
     t.name = name(member(root, "", "name"), "/name");
@@ -42,8 +43,10 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       t.scenario = existing_file(root["scenario"], "/scenario", folder_);
       tissue = scenario_tissue(t.scenario);
       t.force_scale = tissue.force_scale;
-      for (const haptics::TissueLayer& l : tissue.tissue.layers()) t.layers.push_back({l.name, l.mechanics.rigid, l.mechanics.puncture_force_N});
-      for (const auto& l : tissue.patient_layers) t.layers.push_back({l.name, l.mechanics.rigid, l.mechanics.puncture_force_N});
+      for (const haptics::TissueLayer& l : tissue.tissue.layers())
+        t.layers.push_back({l.name, l.mechanics.rigid, l.mechanics.puncture_force_N});
+      for (const auto& l : tissue.patient_layers)
+        t.layers.push_back({l.name, l.mechanics.rigid, l.mechanics.puncture_force_N});
       on_patient_ = !tissue.patient_layers.empty();
     }
     if (root.contains("patient")) t.patient = patient(root["patient"], "/patient");
@@ -55,7 +58,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     if (root.contains("order")) t.order = static_cast<int>(whole(root["order"], "/order", 0, kMaxTaskOrder));
     if (root.contains("hide_layer_names")) t.hide_layer_names = boolean(root["hide_layer_names"], "/hide_layer_names");
     if (root.contains("normal_marker_spacing_m"))
-      t.normal_marker_spacing_m = in_range(root["normal_marker_spacing_m"], "/normal_marker_spacing_m", limits::kMarkerSpacing);
+      t.normal_marker_spacing_m =
+          in_range(root["normal_marker_spacing_m"], "/normal_marker_spacing_m", limits::kMarkerSpacing);
     const json& markers = member(root, "", "markers");
     if (!markers.is_array() || markers.size() > limits::kMaxMarkers)
       fail("/markers", "expected an array of at most " + std::to_string(limits::kMaxMarkers) + " markers");
@@ -81,8 +85,9 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       t.steps.push_back(step(t, steps[i], at));
       if (!ids.insert(t.steps.back().id).second) fail(at + "/id", "\"" + t.steps.back().id + "\" is used twice");
     }
-    t.scoring = scoring(root.contains("scoring") ? root["scoring"] : json::object(), "/scoring", t.ultrasound_probe.has_value(),
-                        !t.layers.empty() && t.layers.size() > 1, t.syringe.has_value());
+    t.scoring =
+        scoring(root.contains("scoring") ? root["scoring"] : json::object(), "/scoring", t.ultrasound_probe.has_value(),
+                !t.layers.empty() && t.layers.size() > 1, t.syringe.has_value());
     t.scoring.measures = score_measures(t);
     return t;
   }
@@ -91,9 +96,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
   // A task's name is its key in the session store and part of its recordings' file names.
   std::string name(const json& value, const std::string& at) const {
     const std::string n = string(value, at);
-    const bool safe = std::all_of(n.begin(), n.end(), [](char c) {
-      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
-    });
+    const bool safe = std::all_of(
+        n.begin(), n.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; });
     if (!safe || n.size() > kMaxNameBytes)
       fail(at, "\"" + (n.size() > 80 ? n.substr(0, 80) + "..." : n) + "\": a task name is 1 to " +
                    std::to_string(kMaxNameBytes) + " letters, digits, '_' or '-'");
@@ -112,7 +116,10 @@ class TaskReader : io::StrictJsonReader<TaskError> {
   ScenarioTissue scenario_tissue(const fs::path& scenario) const {
     try {
       const haptics::Scenario s = haptics::load_scenario(scenario.string(), false);
-      return {s.scene.tissue, {s.base_in_world.x(), s.base_in_world.y(), s.base_in_world.z()}, s.gains.force_scale, s.patient_layers};
+      return {s.scene.tissue,
+              {s.base_in_world.x(), s.base_in_world.y(), s.base_in_world.z()},
+              s.gains.force_scale,
+              s.patient_layers};
     } catch (const haptics::ScenarioError& e) {
       fail("/scenario", e.what());
     }
@@ -147,14 +154,17 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       fail(at, "no layer named \"" + name + "\" in the scenario's tissue (its layers: " + names + ")");
     }
     if (t.layers[size_t(index)].rigid != rigid)
-      fail(at, "layer \"" + name + "\" is " + (rigid ? "not rigid (expected a rigid layer, bone)" : "rigid (bone is never punctured nor holds the tip)"));
+      fail(at, "layer \"" + name + "\" is " +
+                   (rigid ? "not rigid (expected a rigid layer, bone)"
+                          : "rigid (bone is never punctured nor holds the tip)"));
     return index;
   }
 
   // {"punctured": [layer, ...], "touched": [rigid layer, ...]}: a bit per layer.
   void forbidden(const Task& t, Step& s, const json& value, const std::string& at) const {
     object(value, at, {"punctured", "touched"});
-    const std::pair<const char*, uint32_t*> lists[] = {{"punctured", &s.forbidden_punctures}, {"touched", &s.forbidden_touches}};
+    const std::pair<const char*, uint32_t*> lists[] = {{"punctured", &s.forbidden_punctures},
+                                                       {"touched", &s.forbidden_touches}};
     for (const auto& [key, mask] : lists) {
       if (!value.contains(key)) continue;
       const json& list = value[key];
@@ -192,7 +202,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       object(sphere, at + "/surface_normal", {"centre", "radius"});
       m.kind = MarkerKind::kSurfaceNormal;
       m.position = point(member(sphere, at + "/surface_normal", "centre"), at + "/surface_normal/centre");
-      m.radius_m = in_range(member(sphere, at + "/surface_normal", "radius"), at + "/surface_normal/radius", limits::kTolerance);
+      m.radius_m =
+          in_range(member(sphere, at + "/surface_normal", "radius"), at + "/surface_normal/radius", limits::kTolerance);
     }
     return m;
   }
@@ -258,7 +269,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     } else if (type == "interspace_entered") {
       object(value, at, {"type", "interspace", "hold_s", "contact"});
       c.type = ConditionType::kInterspaceEntered;
-      if (!on_patient_) fail(at + "/type", "interspace_entered needs a generated patient (the task's /scenario has none)");
+      if (!on_patient_)
+        fail(at + "/type", "interspace_entered needs a generated patient (the task's /scenario has none)");
       const std::string name = string(member(value, at, "interspace"), at + "/interspace");
       c.interspace = interspace_index(name);
       if (c.interspace < 0) fail(at + "/interspace", "\"" + name + "\", expected L1-L2, L2-L3, L3-L4, L4-L5 or L5-S1");
@@ -293,7 +305,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     Guidance g;
     if (value.contains("landmarks")) {
       g.landmarks = boolean(value["landmarks"], at + "/landmarks");
-      if (g.landmarks && !on_patient_) fail(at + "/landmarks", "landmarks need a generated patient (the task's /scenario has none)");
+      if (g.landmarks && !on_patient_)
+        fail(at + "/landmarks", "landmarks need a generated patient (the task's /scenario has none)");
     }
     if (value.contains("entry")) g.entry = point_ref(t, value["entry"], at + "/entry");
     if (value.contains("axis")) g.axis = axis_ref(t, value["axis"], at + "/axis");
@@ -319,7 +332,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
     probe.position = point(member(p, where, "position"), where + "/position");
     probe.direction = unit(member(p, where, "direction"), where + "/direction");
     probe.lateral = unit(member(p, where, "lateral"), where + "/lateral");
-    if (std::abs(dot(probe.direction, probe.lateral)) > 1e-6) fail(where + "/lateral", "must be perpendicular to direction");
+    if (std::abs(dot(probe.direction, probe.lateral)) > 1e-6)
+      fail(where + "/lateral", "must be perpendicular to direction");
     const std::tuple<const char*, double*, const io::Range&> sizes[] = {
         {"depth_m", &probe.depth_m, limits::kProbeDepth},
         {"width_m", &probe.width_m, limits::kProbeWidth},
@@ -342,8 +356,9 @@ class TaskReader : io::StrictJsonReader<TaskError> {
   }
 
   Step step(const Task& t, const json& value, const std::string& at) const {
-    object(value, at, {"id", "instruction", "condition", "time_limit_s", "tip_fixed_within_m", "tip_out_of_plane_max_s",
-                       "forbidden", "guidance", "stop_at_loss"});
+    object(value, at,
+           {"id", "instruction", "condition", "time_limit_s", "tip_fixed_within_m", "tip_out_of_plane_max_s",
+            "forbidden", "guidance", "stop_at_loss"});
     Step s;
     s.id = string(member(value, at, "id"), at + "/id");
     s.instruction = string(member(value, at, "instruction"), at + "/instruction");
@@ -354,14 +369,15 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       s.tip_fixed_within_m = in_range(value["tip_fixed_within_m"], at + "/tip_fixed_within_m", limits::kTolerance);
     if (value.contains("tip_out_of_plane_max_s")) {
       if (!t.ultrasound_probe) fail(at + "/tip_out_of_plane_max_s", "needs the task's ultrasound probe (/ultrasound)");
-      s.tip_out_of_plane_max_s = in_range(value["tip_out_of_plane_max_s"], at + "/tip_out_of_plane_max_s", io::kSessionDurationRange);
+      s.tip_out_of_plane_max_s =
+          in_range(value["tip_out_of_plane_max_s"], at + "/tip_out_of_plane_max_s", io::kSessionDurationRange);
     }
     if (value.contains("forbidden")) forbidden(t, s, value["forbidden"], at + "/forbidden");
     if (value.contains("stop_at_loss")) {
       if (!t.syringe) fail(at + "/stop_at_loss", "needs the task's syringe (/syringe)");
       object(value["stop_at_loss"], at + "/stop_at_loss", {"within_m"});
-      s.stop_at_loss_within_m =
-          in_range(member(value["stop_at_loss"], at + "/stop_at_loss", "within_m"), at + "/stop_at_loss/within_m", limits::kTolerance);
+      s.stop_at_loss_within_m = in_range(member(value["stop_at_loss"], at + "/stop_at_loss", "within_m"),
+                                         at + "/stop_at_loss/within_m", limits::kTolerance);
     }
     if (value.contains("guidance")) s.guidance = guidance(t, s, value["guidance"], at + "/guidance");
     return s;
@@ -377,8 +393,10 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       s.weights.redirections = ScoreWeights::kDefaultRedirections;
     }
     if (syringe) s.weights.loss_of_resistance = ScoreWeights::kDefaultLossOfResistance;
-    if (value.contains("safe_force_N")) s.safe_force_N = in_range(value["safe_force_N"], at + "/safe_force_N", limits::kSafeForce);
-    if (value.contains("pass_score")) s.pass_score = in_range(value["pass_score"], at + "/pass_score", limits::kPassScore);
+    if (value.contains("safe_force_N"))
+      s.safe_force_N = in_range(value["safe_force_N"], at + "/safe_force_N", limits::kSafeForce);
+    if (value.contains("pass_score"))
+      s.pass_score = in_range(value["pass_score"], at + "/pass_score", limits::kPassScore);
     s.weights = weights(value.contains("weights") ? value["weights"] : json::object(), at + "/weights", s.weights);
     if (value.contains("references")) s.references = references(value["references"], at + "/references");
     return s;
@@ -388,8 +406,8 @@ class TaskReader : io::StrictJsonReader<TaskError> {
   ScoreWeights weights(const json& value, const std::string& at, ScoreWeights w) const {
     object(value, at,
            {"completion", "tip_error", "axis_deviation", "lateral_load", "peak_force", "force_steadiness",
-            "path_efficiency", "smoothness", "time", "retries", "needle_visibility", "overshoot", "bone_contacts", "redirections",
-            "loss_of_resistance"});
+            "path_efficiency", "smoothness", "time", "retries", "needle_visibility", "overshoot", "bone_contacts",
+            "redirections", "loss_of_resistance"});
     if (value.contains("needle_visibility") && w.needle_visibility == 0.0)
       fail(at + "/needle_visibility", "needs the task's ultrasound probe (/ultrasound)");
     for (const char* key : {"overshoot", "bone_contacts", "redirections"})
@@ -418,15 +436,16 @@ class TaskReader : io::StrictJsonReader<TaskError> {
       total += *field;
     }
     if (total <= 0.0) fail(at, "the weights add up to 0");
-    if (!std::isfinite(total)) fail(at, "the weights add up to more than a number can hold (give them as points, e.g. 30)");
+    if (!std::isfinite(total))
+      fail(at, "the weights add up to more than a number can hold (give them as points, e.g. 30)");
     for (const auto& [key, field] : fields) *field *= 100.0 / total;
     return w;
   }
 
   ScoreReferences references(const json& value, const std::string& at) const {
     object(value, at,
-           {"tip_error_m", "axis_deviation_deg", "lateral_load_Ns", "force_sd_N", "normalized_jerk", "time_s", "overshoot_m",
-            "loss_advance_m"});
+           {"tip_error_m", "axis_deviation_deg", "lateral_load_Ns", "force_sd_N", "normalized_jerk", "time_s",
+            "overshoot_m", "loss_advance_m"});
     ScoreReferences r;
     const std::tuple<const char*, double*, const io::Range&> fields[] = {
         {"tip_error_m", &r.tip_error_m, limits::kTipErrorReference},

@@ -35,9 +35,10 @@ const char* step_outcome_name(StepOutcome outcome) {
 }
 
 bool step_outcome_from_name(const std::string& name, StepOutcome& outcome) {
-  for (const StepOutcome o : {StepOutcome::kPending, StepOutcome::kActive, StepOutcome::kCompleted,
-                              StepOutcome::kTimedOut, StepOutcome::kTipMoved, StepOutcome::kTipLost,
-                              StepOutcome::kForbiddenPuncture, StepOutcome::kRigidTouched, StepOutcome::kAdvancedPastLoss})
+  for (const StepOutcome o :
+       {StepOutcome::kPending, StepOutcome::kActive, StepOutcome::kCompleted, StepOutcome::kTimedOut,
+        StepOutcome::kTipMoved, StepOutcome::kTipLost, StepOutcome::kForbiddenPuncture, StepOutcome::kRigidTouched,
+        StepOutcome::kAdvancedPastLoss})
     if (name == step_outcome_name(o)) {
       outcome = o;
       return true;
@@ -54,7 +55,7 @@ std::string step_outcome_words(StepOutcome outcome) {
 std::string step_failure_reason(const Task& task, const StepRecord& record) {
   const auto layer = [&] {
     return record.layer >= 0 && size_t(record.layer) < task.layers.size() ? task.layers[size_t(record.layer)].name
-                                                                           : "layer " + std::to_string(record.layer);
+                                                                          : "layer " + std::to_string(record.layer);
   };
   switch (record.outcome) {
     case StepOutcome::kPending:
@@ -135,8 +136,8 @@ void TaskProgress::feed(const haptics::ToolSnapshot& state) {
   // A touch is the tip meeting bone it was not on; leaving and meeting it again within the
   // contact debounce is the penalty's chatter (docs/SCORING.md), the same touch.
   const int bone = state.tissue.bone_layer;
-  const bool new_touch = bone != bone_before_ && !(bone_before_ < 0 && bone_left_s_ >= 0.0 &&
-                                                   state.time_s - bone_left_s_ < kBoneDebounce_s);
+  const bool new_touch = bone != bone_before_ &&
+                         !(bone_before_ < 0 && bone_left_s_ >= 0.0 && state.time_s - bone_left_s_ < kBoneDebounce_s);
   const bool touched_now = bone >= 0 && bone < 32 && new_touch && (step.forbidden_touches >> bone & 1u);
   if (bone < 0 && bone_before_ >= 0) bone_left_s_ = state.time_s;
   punctured_before_ = state.tissue.punctured_layers;
@@ -149,8 +150,7 @@ void TaskProgress::feed(const haptics::ToolSnapshot& state) {
   else if (loss_found_ && advanced > step.stop_at_loss_within_m) {
     records_[current_].advanced_m = advanced;
     end_step(StepOutcome::kAdvancedPastLoss, state);
-  }
-  else if (condition_met() && state.time_s - held_since_s_ >= step.condition.hold_s)
+  } else if (condition_met() && state.time_s - held_since_s_ >= step.condition.hold_s)
     end_step(StepOutcome::kCompleted, state);
   else if (step.tip_fixed_within_m > 0.0 && distance(vec3(state.needle_tip_m), tip_at_start_) > step.tip_fixed_within_m)
     end_step(StepOutcome::kTipMoved, state);

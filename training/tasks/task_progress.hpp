@@ -13,15 +13,16 @@
 namespace needle::training {
 
 enum class StepOutcome {
-  kPending,    // not started
-  kActive,     // the current step
-  kCompleted,  // its condition held for its hold time
-  kTimedOut,   // its time limit passed first
-  kTipMoved,   // the tip drifted beyond tip_fixed_within_m first
-  kTipLost,    // the tip, in tissue, stayed out of the ultrasound slice for tip_out_of_plane_max_s first
+  kPending,            // not started
+  kActive,             // the current step
+  kCompleted,          // its condition held for its hold time
+  kTimedOut,           // its time limit passed first
+  kTipMoved,           // the tip drifted beyond tip_fixed_within_m first
+  kTipLost,            // the tip, in tissue, stayed out of the ultrasound slice for tip_out_of_plane_max_s first
   kForbiddenPuncture,  // the track passed into one of the step's forbidden_punctures (StepRecord::layer)
   kRigidTouched,       // the tip met one of the step's forbidden_touches, a rigid layer (StepRecord::layer)
-  kAdvancedPastLoss,   // the tip went on past the loss of resistance further than stop_at_loss_within_m (StepRecord::advanced_m)
+  kAdvancedPastLoss,   // the tip went on past the loss of resistance further than stop_at_loss_within_m
+                       // (StepRecord::advanced_m)
 };
 
 const char* step_outcome_name(StepOutcome outcome);                          // "pending", "completed", ...
@@ -67,9 +68,9 @@ class TaskProgress {
   double last_s_ = 0.0;
   Vec3 tip_at_start_{};
   double out_of_plane_since_s_ = std::numeric_limits<double>::quiet_NaN();  // the tip in tissue, out of the slice
-  uint32_t punctured_before_ = 0;  // the previous state's punctured layers
-  int bone_before_ = -1;           // and the rigid layer it touched
-  double bone_left_s_ = -1.0;      // when the tip last left a rigid layer (-1: never on one)
+  uint32_t punctured_before_ = 0;                                           // the previous state's punctured layers
+  int bone_before_ = -1;                                                    // and the rigid layer it touched
+  double bone_left_s_ = -1.0;  // when the tip last left a rigid layer (-1: never on one)
   // The loss of resistance in a step that seeks it (Step::stop_at_loss_within_m): the syringe's flow
   // starting in the task's syringe space, where the tip was then and along which axis.
   bool flowing_before_ = false;

@@ -34,7 +34,8 @@ TaskSyringe read_task_syringe(const nlohmann::json& j, const std::string& file, 
   const std::string space = r.string(r.member(j, at, "space"), at + "/space");
   for (size_t i = 0; i < layers.size(); ++i)
     if (layers[i].name == space && !layers[i].mechanics.rigid) s.space = int(i);
-  if (s.space < 0) r.fail(at + "/space", "no soft layer named \"" + space + "\" in the scenario's tissue (its layers: " + names + ")");
+  if (s.space < 0)
+    r.fail(at + "/space", "no soft layer named \"" + space + "\" in the scenario's tissue (its layers: " + names + ")");
   return s;
 }
 

@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "haptics/syringe/syringe_model.hpp"
 #include "haptics/sim/scenario.hpp"
+#include "haptics/syringe/syringe_model.hpp"
 
 namespace needle::training {
 

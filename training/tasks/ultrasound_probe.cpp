@@ -27,7 +27,8 @@ Vec3 UltrasoundProbeSpec::elevation() const {
 bool in_image_slice(const UltrasoundProbeSpec& probe, const Vec3& p) {
   const Vec3 offset = p - probe.position;
   const std::array<Slab, 3> all = slabs(probe);
-  return std::all_of(all.begin(), all.end(), [&](const Slab& s) { return std::abs(dot(offset, s.axis) - s.centre) <= s.half; });
+  return std::all_of(all.begin(), all.end(),
+                     [&](const Slab& s) { return std::abs(dot(offset, s.axis) - s.centre) <= s.half; });
 }
 
 double share_in_image_slice(const UltrasoundProbeSpec& probe, const Vec3& entry, const Vec3& tip) {

@@ -9,7 +9,7 @@
 namespace needle::training {
 
 struct UltrasoundProbeSpec {
-  Vec3 position{};                // centre of the transducer face, world (m)
+  Vec3 position{};                 // centre of the transducer face, world (m)
   Vec3 direction{0.0, 0.0, -1.0};  // the beams', unit
   Vec3 lateral{1.0, 0.0, 0.0};     // along the array, unit, perpendicular to direction
   double depth_m = 0.05;

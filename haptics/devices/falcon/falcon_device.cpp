@@ -87,8 +87,8 @@ FalconDevice::FalconDevice(FalconOptions options) : options_(std::move(options))
 FalconDevice::~FalconDevice() { close(); }
 
 void FalconDevice::control(uint8_t request, uint16_t value, uint16_t index, const char* what) {
-  const int rc = libusb_control_transfer(handle_, ftdi::kRequestTypeOut, request, value, index, nullptr, 0,
-                                         kControlTimeoutMs);
+  const int rc =
+      libusb_control_transfer(handle_, ftdi::kRequestTypeOut, request, value, index, nullptr, 0, kControlTimeoutMs);
   if (rc < 0) throw DeviceError(std::string("falcon: FTDI request failed (") + what + "): " + usb_error(rc));
 }
 
@@ -99,8 +99,8 @@ void FalconDevice::set_baud(double baud, const char* what) {
 
 void FalconDevice::send_blocking(const uint8_t* bytes, int count, const char* what) {
   int sent = 0;
-  const int rc = libusb_bulk_transfer(handle_, ftdi::kEndpointOut, const_cast<uint8_t*>(bytes), count, &sent,
-                                      kControlTimeoutMs);
+  const int rc =
+      libusb_bulk_transfer(handle_, ftdi::kEndpointOut, const_cast<uint8_t*>(bytes), count, &sent, kControlTimeoutMs);
   if (rc != 0 || sent != count)
     throw DeviceError(std::string("falcon: USB write failed (") + what + "): " + usb_error(rc));
 }
@@ -192,8 +192,9 @@ void FalconDevice::open() {
   if (rc != 0) {
     handle_ = nullptr;
     close();
-    throw DeviceError("falcon: cannot open USB 0403:cb48: " + usb_error(rc) +
-                      (rc == LIBUSB_ERROR_ACCESS ? " (install tools/udev/99-novint-falcon.rules, see docs/DEVICES.md)" : ""));
+    throw DeviceError(
+        "falcon: cannot open USB 0403:cb48: " + usb_error(rc) +
+        (rc == LIBUSB_ERROR_ACCESS ? " (install tools/udev/99-novint-falcon.rules, see docs/DEVICES.md)" : ""));
   }
   libusb_set_auto_detach_kernel_driver(handle_, 1);  // ftdi_sio may have bound the serial port
   if ((rc = libusb_claim_interface(handle_, 0)) != 0) {
@@ -203,10 +204,12 @@ void FalconDevice::open() {
   try {
     if (!firmware.empty()) {
       bool loaded = false;
-      for (int attempt = 0; attempt < options_.firmware_retries && !loaded; ++attempt) loaded = upload_firmware(firmware);
+      for (int attempt = 0; attempt < options_.firmware_retries && !loaded; ++attempt)
+        loaded = upload_firmware(firmware);
       if (!loaded)
         throw DeviceError("falcon: firmware " + options_.firmware_path + " not accepted after " +
-                          std::to_string(options_.firmware_retries) + " attempts (echo mismatch or no bootloader answer)");
+                          std::to_string(options_.firmware_retries) +
+                          " attempts (echo mismatch or no bootloader answer)");
     }
     enter_normal_mode();
     start_streaming();
@@ -220,11 +223,12 @@ void FalconDevice::start_streaming() {
   in_ = libusb_alloc_transfer(0);
   out_ = libusb_alloc_transfer(0);
   if (in_ == nullptr || out_ == nullptr) throw DeviceError("falcon: cannot allocate USB transfers");
-  libusb_fill_bulk_transfer(in_, handle_, ftdi::kEndpointIn, in_buffer_, sizeof in_buffer_, &FalconDevice::transfer_done,
-                            this, 0);
+  libusb_fill_bulk_transfer(in_, handle_, ftdi::kEndpointIn, in_buffer_, sizeof in_buffer_,
+                            &FalconDevice::transfer_done, this, 0);
   libusb_fill_bulk_transfer(out_, handle_, ftdi::kEndpointOut, out_buffer_, sizeof out_buffer_,
                             &FalconDevice::transfer_done, this, 0);
-  if (const int rc = libusb_submit_transfer(in_); rc != 0) throw DeviceError("falcon: cannot start reading: " + usb_error(rc));
+  if (const int rc = libusb_submit_transfer(in_); rc != 0)
+    throw DeviceError("falcon: cannot start reading: " + usb_error(rc));
   in_flight_ = true;
   // The firmware answers each command frame with a status frame: prime it with a zero command.
   write(DeviceCommand{});
@@ -240,7 +244,8 @@ void FalconDevice::transfer_done(libusb_transfer* transfer) {
   self->in_flight_ = false;
   if (transfer->status == LIBUSB_TRANSFER_COMPLETED) {
     uint8_t payload[kUsbPacket];
-    const std::size_t n = strip_ftdi_status(transfer->buffer, static_cast<std::size_t>(transfer->actual_length), payload);
+    const std::size_t n =
+        strip_ftdi_status(transfer->buffer, static_cast<std::size_t>(transfer->actual_length), payload);
     if (self->assembler_.feed(payload, n, self->status_) > 0) ++self->sequence_;
   }
 }

@@ -33,8 +33,8 @@ struct FalconOptions {
 };
 
 struct UsbPresence {
-  int count = 0;            // Falcons on the bus
-  std::string error;        // why the bus could not be scanned, empty when it could
+  int count = 0;      // Falcons on the bus
+  std::string error;  // why the bus could not be scanned, empty when it could
 };
 
 // Scans the USB bus for 0403:cb48 (no device is opened).

@@ -27,7 +27,8 @@ FalconHotplug::FalconHotplug() {
     return;
   }
   const int rc = libusb_hotplug_register_callback(
-      context_, static_cast<libusb_hotplug_event>(LIBUSB_HOTPLUG_EVENT_DEVICE_ARRIVED | LIBUSB_HOTPLUG_EVENT_DEVICE_LEFT),
+      context_,
+      static_cast<libusb_hotplug_event>(LIBUSB_HOTPLUG_EVENT_DEVICE_ARRIVED | LIBUSB_HOTPLUG_EVENT_DEVICE_LEFT),
       LIBUSB_HOTPLUG_ENUMERATE, kVendorId, kProductId, LIBUSB_HOTPLUG_MATCH_ANY, on_event, &counts_, &handle_);
   if (rc != LIBUSB_SUCCESS) {
     reason_ = std::string("hotplug registration failed: ") + libusb_error_name(rc);

@@ -34,9 +34,9 @@ struct Geometry {
 };
 
 struct LegAngles {
-  Vec3 hip{};    // t1, actuated (the encoders measure these)
-  Vec3 knee{};   // t2
-  Vec3 shin{};   // t3
+  Vec3 hip{};   // t1, actuated (the encoders measure these)
+  Vec3 knee{};  // t2
+  Vec3 shin{};  // t3
 };
 
 // Closed form. False when the position is outside the reachable set (no real solution).

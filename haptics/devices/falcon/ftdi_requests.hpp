@@ -11,11 +11,11 @@ inline constexpr uint8_t kRequestTypeOut = 0x40;
 inline constexpr uint8_t kEndpointIn = 0x81;
 inline constexpr uint8_t kEndpointOut = 0x02;
 
-inline constexpr uint8_t kReset = 0x00;       // wValue: 0 reset, 1 purge RX, 2 purge TX
-inline constexpr uint8_t kModemCtrl = 0x01;   // wValue: (mask << 8) | level
+inline constexpr uint8_t kReset = 0x00;      // wValue: 0 reset, 1 purge RX, 2 purge TX
+inline constexpr uint8_t kModemCtrl = 0x01;  // wValue: (mask << 8) | level
 inline constexpr uint8_t kSetFlowCtrl = 0x02;
 inline constexpr uint8_t kSetBaudRate = 0x03;
-inline constexpr uint8_t kSetData = 0x04;     // wValue: bits | parity << 8 | stop << 11
+inline constexpr uint8_t kSetData = 0x04;  // wValue: bits | parity << 8 | stop << 11
 inline constexpr uint8_t kSetLatencyTimer = 0x09;
 
 inline constexpr uint16_t kResetSio = 0, kPurgeRx = 1, kPurgeTx = 2;

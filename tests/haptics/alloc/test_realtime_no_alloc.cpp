@@ -8,8 +8,8 @@
 #include <new>
 #include <thread>
 
-#include "haptics/realtime/haptic_loop.hpp"
 #include "haptics/devices/desk_device.hpp"
+#include "haptics/realtime/haptic_loop.hpp"
 #include "haptics/realtime/sim_session.hpp"
 #include "haptics/realtime/syringe_servo_step.hpp"
 #include "haptics/realtime/task_space_step.hpp"
@@ -28,7 +28,7 @@ void* operator new(std::size_t size) {
 void* operator new(std::size_t size, std::align_val_t align) {
   g_allocations.fetch_add(1, std::memory_order_relaxed);
   if (void* p = std::aligned_alloc(static_cast<std::size_t>(align), (size + static_cast<std::size_t>(align) - 1) &
-                                                                     ~(static_cast<std::size_t>(align) - 1)))
+                                                                        ~(static_cast<std::size_t>(align) - 1)))
     return p;
   throw std::bad_alloc();
 }
@@ -82,7 +82,8 @@ TEST(RealtimeNoAlloc, TheSyringeAndTheThumbsReactionAllocateNothing) {
   ThumbScript thumb;
   thumb.force_N = 11.0;
   thumb.from_s = 17.0;
-  thumb.on_loss = LossReaction{0.2, 1.0, {HandWaypoint{3.0, Eigen::Vector3d(0.2, 0.0, -0.03), -Eigen::Vector3d::UnitZ()}}};
+  thumb.on_loss =
+      LossReaction{0.2, 1.0, {HandWaypoint{3.0, Eigen::Vector3d(0.2, 0.0, -0.03), -Eigen::Vector3d::UnitZ()}}};
   scenario.thumb = thumb;
   SimSession sim(std::move(scenario), 500.0);
   sim.device().open();
