@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
 #include "tests/support/test_paths.hpp"
@@ -96,6 +97,22 @@ TEST(StepCue, TheConditionInWords) {
   EXPECT_EQ(condition_words(axis, axis.steps[0]), "the needle within 5 deg of the planned axis, held 0.5 s");
   const Task penetrable = load_task(needle::test::source_dir() / "assets/tasks/penetrable_sphere.json");
   EXPECT_EQ(condition_words(penetrable, penetrable.steps[4]), "the needle out, over 70 mm from the target");
+  const Task patient = load_task(needle::test::source_dir() / "assets/tasks/epidural_patient_bmi22.json");
+  EXPECT_EQ(condition_words(patient, patient.steps[1]),
+            "the needle in through the skin over the L3-L4 interspace, near the midline, held 0.5 s");
+}
+
+// Every step of every shipped task says its condition in words (a type without words would leave
+// the trainee's panel blank).
+TEST(StepCue, EveryShippedStepHasItsConditionInWords) {
+  for (const auto& file : std::filesystem::directory_iterator(needle::test::source_dir() / "assets/tasks")) {
+    if (file.path().stem().string().ends_with("_good") || file.path().stem().string().ends_with("_sloppy")) continue;
+    const Task t = load_task(file.path());
+    for (const Step& s : t.steps) {
+      const std::string words = condition_words(t, s);
+      EXPECT_FALSE(words.empty() || words.starts_with(",")) << file.path() << " step " << s.id << ": '" << words << "'";
+    }
+  }
 }
 
 // Every shipped task has a depth gauge in every step: the step's own axis, else the one before it.

@@ -128,6 +128,10 @@ std::string condition_words(const Task& task, const Step& step) {
     case ConditionType::kPunctured:
       words = "the " + layer_name(task, c.layer) + " punctured";
       break;
+    case ConditionType::kInterspaceEntered:
+      words = std::string("the needle in through the skin over the ") + interspace_name(c.interspace) +
+              " interspace, near the midline";
+      break;
   }
   if (c.type != ConditionType::kWithdrawn) words += contact_words(c.contact);
   if (c.hold_s > 0.0) words += format(", held %.1f s", c.hold_s);
