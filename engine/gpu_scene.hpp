@@ -52,6 +52,7 @@ class GpuScene {
   std::vector<std::unique_ptr<GpuModel>> models_;
   std::vector<size_t> model_of_asset_;
   std::vector<glm::mat4> transforms_;
+  std::vector<std::optional<size_t>> inside_;  // SceneAsset::inside as an asset's index
   std::vector<DeformableTissue> tissues_;
 };
 

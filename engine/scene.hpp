@@ -29,6 +29,10 @@ struct SceneAsset {
   glm::vec3 scale{1.0f};
   // Tissue that deforms around the needle (GPU deformation pass); none: it stays rigid.
   std::optional<TissueParams> deformation;
+  // The asset (its name) whose closed opaque surface holds this one wholly, as the skin holds a
+  // generated patient's deeper layers: drawn only where it can be seen (DrawItem::inside). Set by
+  // the app for models made in memory; never read from a scene file. Empty: none.
+  std::string inside;
   glm::mat4 transform() const;
 };
 

@@ -36,6 +36,10 @@ struct DrawItem {
   // tissue's reach): chunks touching them are always drawn, the others are culled by rest bounds.
   std::vector<Sphere> moved;
   bool sectioned = false;  // cut by the frame's section (the tissue), not the tool
+  // The item (index into FrameParams::items) whose closed opaque surface holds this one wholly.
+  // Without a section view and with the camera outside that item's reach (its box and moved
+  // spheres) nothing of this one can be seen, so it is not drawn (RendererSettings::cull_inside).
+  std::optional<size_t> inside;
 };
 
 // The section view (docs/RENDERING.md, "Section view"): the sectioned items cut by a plane, the
@@ -90,6 +94,9 @@ struct RendererSettings {
   // With cull_chunks, a sectioned item's chunks wholly on the section's cut-away side are left
   // out (the same picture). Off only to measure what it saves (`bench frame --variants`).
   bool cull_cut_away = true;
+  // Items held inside another's closed surface (DrawItem::inside) left out where they cannot be
+  // seen (the same picture). Off only to measure what it saves (`bench frame --variants`).
+  bool cull_inside = true;
   // The scene's meshes drawn at this fraction of the target's width and height, in
   // [kMinRenderScale, kMaxRenderScale], then
   // upscaled over the target with linear filtering before the overlay, drawn at full resolution:
@@ -143,6 +150,8 @@ class SceneRenderer {
   float render_scale() const;
   // RendererSettings::cull_cut_away from the next frame on (for `bench frame --variants`).
   void set_cull_cut_away(bool on);
+  // RendererSettings::cull_inside from the next frame on (for `bench frame --variants`).
+  void set_cull_inside(bool on);
   // RendererSettings::translucency from the next frame on.
   void set_translucency(Translucency translucency);
   // Each draw uses the mesh shader specialized to what it needs (the default: no discards for

@@ -1,12 +1,14 @@
 #include "engine/passes/mesh_draws.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "engine/passes/frame_uniforms.hpp"
 #include "engine/passes/gpu_model.hpp"
 #include "engine/passes/level_of_detail.hpp"
 #include "engine/passes/mesh_pipelines.hpp"
+#include "engine/screen_projection.hpp"
 
 namespace needle::engine {
 namespace {
@@ -17,6 +19,32 @@ size_t level_to_draw(const GpuPrimitive& p, const glm::mat4& model_to_world, con
   for (const GpuLevel& level : p.levels) triangles.push_back(level.index_count / 3);
   return choose_level(
       triangles, projected_radius_px(world_sphere(p.bounds, model_to_world), camera, {extent.width, extent.height}));
+}
+
+// Where a mesh's vertices may lie, world space: its rest box placed by `transform` and the spheres
+// where a deformation may have moved them (DrawItem::moved).
+Bounds reach_of(const Bounds& rest_box, const glm::mat4& transform, const std::vector<Sphere>& moved) {
+  Bounds reach = world_box(rest_box, transform);
+  for (const Sphere& s : moved) {
+    reach.min = glm::min(reach.min, glm::vec3(s.center - s.radius));
+    reach.max = glm::max(reach.max, glm::vec3(s.center + s.radius));
+  }
+  return reach;
+}
+
+// An item inside another's closed opaque surface cannot be seen without a section view while the
+// whole near plane is outside that surface: the eye outside its reach by more than the distance
+// from the eye to the near plane's corners.
+bool hidden_inside(const FrameParams& params, const DrawItem& item, VkExtent2D extent) {
+  if (!item.inside || params.section) return false;
+  const DrawItem& outer = params.items.at(*item.inside);
+  const Bounds reach = reach_of(outer.model->world_bounds(), outer.transform, outer.moved);
+  const Camera& c = params.camera;
+  const double up = std::tan(0.5 * glm::radians(double(c.fov_y_deg))),
+               across = up * double(extent.width) / std::max(1.0, double(extent.height));
+  const float corner = float(c.near_m * std::sqrt(1.0 + up * up + across * across));
+  return glm::any(glm::lessThan(c.position, reach.min - corner)) ||
+         glm::any(glm::greaterThan(c.position, reach.max + corner));
 }
 
 }  // namespace
@@ -50,8 +78,10 @@ MeshDraws collect_draws(const FrameParams& params, VkExtent2D extent, const Draw
   const bool translucent = params.section && params.section->mode == Section::Mode::Translucent &&
                            options.translucency == Translucency::Blended;
   const glm::vec4 cut_plane = cut ? section_plane(*params.section) : glm::vec4(0.0f);
+  const ViewVolume view = view_volume(view_projection(params.camera, {extent.width, extent.height}));
   MeshDraws draws;
   for (const DrawItem& item : params.items) {
+    if (options.cull_inside && hidden_inside(params, item, extent)) continue;
     for (const MeshInstance& instance : item.model->instances()) {
       glm::mat4 transform = item.transform * instance.world;
       const GpuPrimitive& p = item.model->primitives()[instance.primitive];
@@ -63,20 +93,15 @@ MeshDraws collect_draws(const FrameParams& params, VkExtent2D extent, const Draw
       if (level.index_count == 0) continue;
       const bool sectioned = params.section && item.sectioned;
       const std::vector<IndexRange> all{{level.first_index, level.index_count}};
+      const std::vector<TriangleChunk> chunks =
+          options.cull_chunks ? chunks_in_view(level.chunks, transform, view, item.moved) : level.chunks;
       std::vector<IndexRange> ranges =
           !options.cull_chunks ? all
-          : cut && sectioned
-              ? (options.cull_cut_away ? ranges_kept_by_cut(level.chunks, transform, cut_plane, item.moved) : all)
-          : !m.double_sided ? visible_ranges(level.chunks, transform, params.camera.position, item.moved)
-                            : all;
-      Bounds reach;
-      if (sectioned) {
-        reach = world_box(p.box, transform);
-        for (const Sphere& s : item.moved) {
-          reach.min = glm::min(reach.min, glm::vec3(s.center - s.radius));
-          reach.max = glm::max(reach.max, glm::vec3(s.center + s.radius));
-        }
-      }
+          : cut && sectioned   ? (options.cull_cut_away ? ranges_kept_by_cut(chunks, transform, cut_plane, item.moved)
+                                                        : index_ranges(chunks))
+          : !m.double_sided    ? visible_ranges(chunks, transform, params.camera.position, item.moved)
+                               : index_ranges(chunks);
+      const Bounds reach = sectioned ? reach_of(p.box, transform, item.moved) : Bounds{};
       (translucent && sectioned           ? draws.translucent
        : m.alpha_mode == AlphaMode::Blend ? draws.blended
                                           : draws.opaque)

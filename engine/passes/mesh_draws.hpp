@@ -45,6 +45,7 @@ struct DrawOptions {
   bool level_of_detail = true;
   bool cull_chunks = true;
   bool cull_cut_away = true;
+  bool cull_inside = true;
   bool specialized = true;  // each draw's pipeline specialized to what it needs
   Translucency translucency = Translucency::Blended;
 };

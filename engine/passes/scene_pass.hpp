@@ -54,6 +54,7 @@ class ScenePass {
   void set_render_scale(const TargetImages& target, float scale);
   float render_scale() const { return render_scale_; }
   void set_cull_cut_away(bool on) { options_.cull_cut_away = on; }
+  void set_cull_inside(bool on) { options_.cull_inside = on; }
   void set_specialized_pipelines(bool on) { options_.specialized = on; }
   void set_translucency(Translucency translucency) { options_.translucency = translucency; }
   const VulkanContext& context() const { return context_; }

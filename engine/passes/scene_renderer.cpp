@@ -30,6 +30,7 @@ void SceneRenderer::set_render_scale(const RenderTarget& target, float scale) {
 float SceneRenderer::render_scale() const { return pass_->render_scale(); }
 
 void SceneRenderer::set_cull_cut_away(bool on) { pass_->set_cull_cut_away(on); }
+void SceneRenderer::set_cull_inside(bool on) { pass_->set_cull_inside(on); }
 void SceneRenderer::set_specialized_pipelines(bool on) { pass_->set_specialized_pipelines(on); }
 void SceneRenderer::set_translucency(Translucency translucency) { pass_->set_translucency(translucency); }
 

@@ -159,4 +159,35 @@ std::vector<IndexRange> visible_ranges(const std::vector<TriangleChunk>& chunks,
   return visible_ranges(chunks, glm::vec3(world_to_model * glm::dvec4(glm::dvec3(eye), 1.0)), moved_model);
 }
 
+std::vector<IndexRange> index_ranges(const std::vector<TriangleChunk>& chunks) {
+  std::vector<IndexRange> ranges;
+  for (const TriangleChunk& chunk : chunks) append(ranges, chunk);
+  return ranges;
+}
+
+ViewVolume view_volume(const glm::mat4& m) {
+  const glm::vec4 x(m[0][0], m[1][0], m[2][0], m[3][0]), y(m[0][1], m[1][1], m[2][1], m[3][1]),
+      z(m[0][2], m[1][2], m[2][2], m[3][2]), w(m[0][3], m[1][3], m[2][3], m[3][3]);
+  ViewVolume v{{w + x, w - x, w + y, w - y, w + z, w - z}};
+  for (glm::vec4& plane : v.planes) plane /= glm::length(glm::vec3(plane));
+  return v;
+}
+
+std::vector<TriangleChunk> chunks_in_view(const std::vector<TriangleChunk>& chunks, const glm::mat4& model_to_world,
+                                          const ViewVolume& view, const std::vector<Sphere>& moved) {
+  const glm::dmat4 to_world(model_to_world);
+  const double stretch = stretch_bound(glm::dmat3(to_world));
+  std::vector<TriangleChunk> kept;
+  kept.reserve(chunks.size());
+  for (const TriangleChunk& chunk : chunks) {
+    const glm::dvec3 center(to_world * glm::dvec4(glm::dvec3(chunk.center), 1.0));
+    const double radius = double(chunk.radius) * stretch;
+    const bool outside = std::any_of(view.planes.begin(), view.planes.end(), [&](const glm::vec4& p) {
+      return glm::dot(glm::dvec3(p), center) + double(p.w) < -radius;
+    });
+    if (!outside || touches(center, radius, moved)) kept.push_back(chunk);
+  }
+  return kept;
+}
+
 }  // namespace needle::engine

@@ -5,6 +5,7 @@
 // culling would have discarded, so the picture does not change.
 #pragma once
 
+#include <array>
 #include <glm/glm.hpp>
 #include <vector>
 
@@ -47,6 +48,24 @@ std::vector<IndexRange> visible_ranges(const std::vector<TriangleChunk>& chunks,
 // space. A mirroring transform turns the winding over: then no chunk is culled.
 std::vector<IndexRange> visible_ranges(const std::vector<TriangleChunk>& chunks, const glm::mat4& model_to_world,
                                        const glm::vec3& eye, const std::vector<Sphere>& moved);
+
+// The camera's view volume in world space: six planes (n, w), |n| = 1, with n · p + w ≥ 0 inside.
+struct ViewVolume {
+  std::array<glm::vec4, 6> planes{};
+};
+// The volume a view-projection matrix (clip = M p) draws: −w ≤ x, y ≤ w, and depth within −w ≤ z ≤ w,
+// which holds a 0-to-w depth range too (the planes of Gribb and Hartmann, "Fast extraction of
+// viewing frustum planes from the world-view-projection matrix", 2001).
+ViewVolume view_volume(const glm::mat4& view_projection);
+
+// The chunks (drawn through `model_to_world`) that may show in the view: those whose bounding
+// sphere is not wholly beyond one of its planes, and those touching a `moved` sphere (world
+// space), whose vertices may have left the rest mesh. In the mesh's order.
+std::vector<TriangleChunk> chunks_in_view(const std::vector<TriangleChunk>& chunks, const glm::mat4& model_to_world,
+                                          const ViewVolume& view, const std::vector<Sphere>& moved);
+
+// The index ranges of every chunk, in the mesh's order, adjacent ones merged.
+std::vector<IndexRange> index_ranges(const std::vector<TriangleChunk>& chunks);
 
 // The index ranges to draw of a mesh cut by the section view (Cut): the fragments where
 // plane.xyz · p + plane.w > 0 (world space, plane.xyz unit) are discarded and every face of the

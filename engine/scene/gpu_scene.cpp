@@ -30,6 +30,17 @@ GpuScene::GpuScene(const SceneRenderer& renderer, Scene scene) : scene_(std::mov
     }
     add_deformable(renderer, asset.model ? *asset.model : load_gltf(asset.gltf), a);
   }
+  for (const SceneAsset& asset : scene_.assets) {
+    inside_.emplace_back();
+    if (asset.inside.empty()) continue;
+    const size_t outer = asset_index(asset.inside);
+    if (outer == inside_.size() - 1) throw AssetError(asset.name + ": an asset cannot lie inside itself");
+    const GpuModel& hull = *models_[model_of_asset_[outer]];
+    for (const MeshInstance& instance : hull.instances())
+      if (hull.material_of(instance.primitive).alpha_mode != AlphaMode::Opaque)
+        throw AssetError(asset.name + ": inside '" + asset.inside + "', which is not opaque (it would show it)");
+    inside_.back() = outer;
+  }
 }
 
 // A deformable tissue gets its own vertex buffers, sorted so the pass visits only the vertices
@@ -65,6 +76,7 @@ GpuScene::GpuScene(const SceneRenderer& renderer, const Model& model, const Scen
   scene_.lights = view.lights;
   scene_.background = view.background;
   transforms_.push_back(glm::mat4(1.0f));
+  inside_.emplace_back();
   if (deformation) {
     add_deformable(renderer, model, 0);
   } else {
@@ -95,7 +107,8 @@ FrameParams GpuScene::frame_params(const NeedleLoad* needle) {
     params.items.push_back({models_[model_of_asset_[i]].get(),
                             posed ? needle_pose(needle->tip, needle->axis) : transforms_[i],
                             {},
-                            scene_.assets[i].role == AssetRole::Tissue});
+                            scene_.assets[i].role == AssetRole::Tissue,
+                            inside_[i]});
   }
   const NeedleLoad free_needle;
   std::vector<std::function<void(VkCommandBuffer)>> passes;

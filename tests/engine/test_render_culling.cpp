@@ -3,6 +3,8 @@
 // stays within the golden tolerance of the full mesh at the size it was chosen for.
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include "asset-gen/assets.hpp"
 #include "deformation_fixture.hpp"
 #include "engine/gpu_scene.hpp"
@@ -94,6 +96,93 @@ TEST_F(RenderCulling, TissueLevelOfDetailIsWithinTheGoldenToleranceAt1280x720) {
         EXPECT_GT(differing_pixels(a, rest), 400u) << "load " << i;
     }
   }
+}
+
+// The view leaves out the chunks wholly outside it: with the same eye a narrower field of view
+// draws fewer triangles (the facing test alone depends on the eye only), and the same pixels as
+// drawing every triangle.
+TEST_F(RenderCulling, ChunksOutsideTheViewAreLeftOutAndChangeNoPixel) {
+  const engine::Extent size{320, 240};
+  engine::HeadlessTarget target(device(), size);
+  engine::SceneRenderer culled(device(), target, {1, true, true});
+  engine::SceneRenderer every(device(), target, {1, true, false});
+  engine::GpuScene culled_scene(culled, engine::load_scene(kScene));
+  engine::GpuScene every_scene(every, engine::load_scene(kScene));
+  std::vector<size_t> drawn;
+  for (const float fov : {45.0f, 8.0f}) {
+    engine::FrameParams pa = culled_scene.frame_params(nullptr), pb = every_scene.frame_params(nullptr);
+    pa.camera.fov_y_deg = pb.camera.fov_y_deg = fov;
+    engine::RgbaImage a, b;
+    ASSERT_TRUE(culled.draw(target, pa, &a));
+    ASSERT_TRUE(every.draw(target, pb, &b));
+    EXPECT_EQ(a.pixels, b.pixels) << "field of view " << fov;
+    drawn.push_back(culled.triangles_drawn());
+  }
+  EXPECT_LT(double(drawn[1]), 0.5 * double(drawn[0]));
+}
+
+// A smaller sphere held inside the tissue sphere (SceneAsset::inside): without a section view it
+// cannot be seen, so it is not drawn and the picture is that of the scene without it; with the
+// section's cut, or with the camera inside the outer sphere's box, it is drawn.
+TEST_F(RenderCulling, AnAssetInsideAnotherIsDrawnOnlyWhereItCanBeSeen) {
+  const engine::Extent size{320, 240};
+  engine::HeadlessTarget target(device(), size);
+  engine::SceneRenderer renderer(device(), target, {1, true, true});
+  const engine::Scene outer_only = engine::load_scene(kScene);
+  engine::Scene with_inner = outer_only;
+  engine::SceneAsset inner = with_inner.assets.at(0);
+  inner.name = "inner";
+  inner.deformation.reset();
+  inner.inside = "sphere";
+  inner.scale = glm::vec3(0.5f);
+  inner.translation = glm::vec3(0.5 * kSphereCentre);  // centred in the outer one
+  with_inner.assets.push_back(inner);
+  engine::GpuScene without(renderer, outer_only), with(renderer, with_inner);
+  const auto draw = [&](engine::GpuScene& scene, const std::function<void(engine::FrameParams&)>& change) {
+    engine::FrameParams params = scene.frame_params(nullptr);
+    change(params);
+    engine::RgbaImage image;
+    EXPECT_TRUE(renderer.draw(target, params, &image));
+    return std::pair{image, renderer.triangles_drawn()};
+  };
+  const auto as_is = [](engine::FrameParams&) {};
+  const auto [alone, alone_drawn] = draw(without, as_is);
+  const auto [hidden, hidden_drawn] = draw(with, as_is);
+  EXPECT_EQ(hidden.pixels, alone.pixels);
+  EXPECT_EQ(hidden_drawn, alone_drawn);
+  // Drawn anyway (the culling off), it changes no pixel: it was hidden.
+  renderer.set_cull_inside(false);
+  const auto [drawn_anyway, drawn_anyway_count] = draw(with, as_is);
+  EXPECT_EQ(drawn_anyway.pixels, alone.pixels);
+  EXPECT_GT(drawn_anyway_count, alone_drawn);
+  renderer.set_cull_inside(true);
+  const auto cut = [](engine::FrameParams& p) { p.section = engine::section_through_needle(p.camera, nullptr); };
+  EXPECT_GT(draw(with, cut).second, draw(without, cut).second);
+  const auto inside_outer = [](engine::FrameParams& p) {
+    p.camera.position = glm::vec3(kSphereCentre + glm::dvec3(0.0, -0.75 * kSphereRadius, 0.0));  // between the two
+    p.camera.target = glm::vec3(kSphereCentre);
+  };
+  EXPECT_GT(draw(with, inside_outer).second, draw(without, inside_outer).second);
+}
+
+// The asset an asset lies inside must exist, be another and be opaque (else hiding would change
+// the picture).
+TEST_F(RenderCulling, AnAssetInsideAnUnknownItselfOrATranslucentOneIsRefused) {
+  engine::HeadlessTarget target(device(), {64, 64});
+  engine::SceneRenderer renderer(device(), target);
+  engine::Scene scene = engine::load_scene(kScene);
+  scene.assets[1].inside = "no such asset";
+  EXPECT_THROW(engine::GpuScene(renderer, scene), std::out_of_range);
+  scene.assets[1].inside = "needle";
+  EXPECT_THROW(engine::GpuScene(renderer, scene), engine::AssetError);
+  engine::Model glass = engine::convert_gltf(asset_gen::make_sphere(8, 8), "glass");
+  glass.materials.push_back({});
+  glass.materials.back().alpha_mode = engine::AlphaMode::Blend;
+  glass.primitives[0].material = int(glass.materials.size() - 1);
+  scene.assets[0].model = std::make_shared<const engine::Model>(glass);
+  scene.assets[0].deformation.reset();
+  scene.assets[1].inside = "sphere";
+  EXPECT_THROW(engine::GpuScene(renderer, scene), engine::AssetError);
 }
 
 }  // namespace

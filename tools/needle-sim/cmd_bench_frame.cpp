@@ -72,6 +72,7 @@ struct Variant {
   std::string name;            // as given, "default" for the product's own settings
   std::optional<float> scale;  // scale=S: a fixed render scale
   bool cut_culling = true;     // cut_culling=off: the section's cut-away chunks drawn (to measure the culling)
+  bool inside_culling = true;  // inside_culling=off: the layers held inside the skin drawn without a section
   bool specialized = true;     // specialized=off: every draw with the general mesh shader (to measure the specializing)
   std::optional<engine::WindowTarget::Presentation> presentation;  // present=...; none: the window's own
   std::optional<uint32_t> sweep_frames;  // sweep=N: the ultrasound image made over N frames; none: the window's own
@@ -105,13 +106,16 @@ std::vector<Variant> parse_variants(const std::string& list) {
         v.sweep_frames = uint32_t(parse_whole(value, "--variants sweep=N", kSweepFrames));
       } else if (setting == "cut_culling=off") {
         v.cut_culling = false;
+      } else if (setting == "inside_culling=off") {
+        v.inside_culling = false;
       } else if (setting == "specialized=off") {
         v.specialized = false;
       } else if (setting == "translucency=screen_door") {
         v.translucency = engine::Translucency::ScreenDoor;
       } else {
         throw UsageError("--variants: unknown setting '" + setting +
-                         "' (default, scale=S, cut_culling=off, specialized=off, translucency=screen_door, "
+                         "' (default, scale=S, cut_culling=off, inside_culling=off, specialized=off, "
+                         "translucency=screen_door, "
                          "present=fifo|mailbox|immediate|shm, sweep=N)");
       }
     }
@@ -183,6 +187,7 @@ std::vector<FrameSample> measure(app::TraineeFrame& frame, engine::RenderTarget&
     frame.renderer().set_device_timings(timed);
     frame.set_fixed_render_scale(options.variants[variant].scale ? options.variants[variant].scale : product_scale);
     frame.renderer().set_cull_cut_away(options.variants[variant].cut_culling);
+    frame.renderer().set_cull_inside(options.variants[variant].inside_culling);
     frame.renderer().set_specialized_pipelines(options.variants[variant].specialized);
     frame.renderer().set_translucency(options.variants[variant].translucency);
     const std::optional<engine::WindowTarget::Presentation> presentation =
@@ -385,6 +390,7 @@ Runner declare(CLI::App& app) {
            "settings compared within each row, block by block in turn, ';' between variants and\n"
            "',' between the settings of one: default (the frame's own), scale=S (a fixed render scale),\n"
            "cut_culling=off (the section's cut-away chunks drawn, as before they were culled),\n"
+           "inside_culling=off (a patient's layers inside its skin drawn without a section view),\n"
            "specialized=off (every draw with the general mesh shader, its discards and texture\n"
            "fetch run masked, as before),\n"
            "present=fifo|mailbox|immediate (the window's swapchain and its present mode) or\n"
