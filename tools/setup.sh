@@ -12,6 +12,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libglfw3-dev libx11-dev libxext-dev libxrandr-dev libglm-dev libeigen3-dev libtinygltf-dev libimgui-dev libstb-dev
   libusb-1.0-0-dev libgtest-dev nlohmann-json3-dev liburdfdom-dev libsqlite3-dev sqlite3 libcli11-dev
+  libmeshoptimizer-dev
   postgresql libpq-dev
   xvfb xauth xdotool
   clang libclang-rt-14-dev llvm-14 clang-format

@@ -4,7 +4,9 @@
 // patients: SANITIZE_SKIP (tests/README.md).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <numbers>
+#include <set>
 
 #include "app/echo_scene.hpp"
 #include "app/patient_look.hpp"
@@ -15,7 +17,9 @@
 #include "engine/scene_renderer.hpp"
 #include "engine/screen_projection.hpp"
 #include "engine/ultrasound.hpp"
+#include "haptics/anatomy/patient.hpp"
 #include "tests/engine/image_compare.hpp"
+#include "tests/support/closed_mesh.hpp"
 #include "tests/support/process_folder.hpp"
 #include "tests/support/test_paths.hpp"
 #include "training/tasks/scripted_operator.hpp"
@@ -53,6 +57,53 @@ TEST(PatientScenes, TheThreePatientsBacks) {
     EXPECT_TRUE(matches_golden(image, std::string("patient_back_") + patient));
   }
   EXPECT_TRUE(device().validation_messages().empty()) << device().validation_messages().front();
+}
+
+// Each layer as drawn (app::patient_layer_model: its surface-nets mesh simplified in parts) against
+// the surface-nets mesh it comes from: watertight and wound one way (the parts meet without a crack),
+// its volume within the simplification's bound (a quarter of the spacing times the surface's
+// area), the skin's strip along the midline kept whole, and the whole patient in under a third of
+// the triangles.
+TEST(PatientScenes, EachLayerDrawnIsClosedAndKeepsItsVolumeInFewerTriangles) {
+  const haptics::Scenario scenario = task_scenario("epidural_patient_bmi22");
+  const haptics::anatomy::Patient& patient = *scenario.patient;
+  size_t drawn_total = 0, nets_total = 0;
+  for (size_t i = 0; i < patient.layers.size(); ++i) {
+    SCOPED_TRACE(patient.layers[i].name);
+    const engine::Model model = app::patient_layer_model(patient, i, Eigen::Vector3d::Zero());
+    const std::vector<uint32_t>& drawn = model.primitives.at(0).indices;
+    const std::vector<engine::MeshVertex>& vertices = model.primitives[0].vertices;
+    const haptics::anatomy::SurfaceMesh nets =
+        haptics::anatomy::layer_surface(patient, i, app::patient_layer_look(patient.layers[i].name).stride);
+    ASSERT_EQ(vertices.size(), nets.positions.size());
+    ASSERT_TRUE(watertight(nets.indices));
+    EXPECT_TRUE(watertight(drawn));
+    const auto at = [&](uint32_t v) { return Eigen::Vector3d(nets.positions[v].cast<double>()); };
+    double area = 0.0;
+    for (size_t t = 0; t + 2 < nets.indices.size(); t += 3)
+      area +=
+          0.5 *
+          (at(nets.indices[t + 1]) - at(nets.indices[t])).cross(at(nets.indices[t + 2]) - at(nets.indices[t])).norm();
+    const double spacing = patient.layers[i].shape.grid()->spacing();
+    EXPECT_NEAR(enclosed_volume(drawn, at), enclosed_volume(nets.indices, at), 0.25 * spacing * area);
+    EXPECT_LE(drawn.size(), nets.indices.size());
+    drawn_total += drawn.size(), nets_total += nets.indices.size();
+    if (patient.layers[i].name != "skin") continue;
+    // The strip: every triangle of the surface-nets mesh within 35 mm of the midline is drawn.
+    std::set<std::array<uint32_t, 3>> drawn_triangles;
+    for (size_t t = 0; t + 2 < drawn.size(); t += 3) drawn_triangles.insert({drawn[t], drawn[t + 1], drawn[t + 2]});
+    size_t strip = 0;
+    for (size_t t = 0; t + 2 < nets.indices.size(); t += 3) {
+      bool near = true;
+      for (size_t k = 0; k < 3; ++k)
+        near = near && std::abs(at(nets.indices[t + k]).x() - patient.approaches[0].entry.x()) < 0.035;
+      if (!near) continue;
+      ++strip;
+      EXPECT_TRUE(drawn_triangles.count({nets.indices[t], nets.indices[t + 1], nets.indices[t + 2]}));
+    }
+    EXPECT_GT(strip, 1000u);
+  }
+  EXPECT_LT(3 * drawn_total, nets_total);
 }
 
 // The midsagittal plane through the L3-L4 entry, seen from the patient's right (the task's section):

@@ -7,31 +7,16 @@
 #include <map>
 
 #include "haptics/anatomy/surface_mesh.hpp"
+#include "tests/support/closed_mesh.hpp"
 
 namespace needle::haptics::anatomy {
 namespace {
 
 using Eigen::Vector3d;
 
-// Every edge in exactly two triangles, once each way: a closed, consistently wound surface.
-bool closed(const SurfaceMesh& m) {
-  std::map<std::pair<uint32_t, uint32_t>, int> edges;
-  for (size_t t = 0; t < m.indices.size(); t += 3)
-    for (int e = 0; e < 3; ++e) ++edges[{m.indices[t + size_t(e)], m.indices[t + size_t((e + 1) % 3)]}];
-  for (const auto& [edge, count] : edges)
-    if (count != 1 || edges.count({edge.second, edge.first}) == 0) return false;
-  return !edges.empty();
-}
-
-// The volume the triangles enclose (divergence theorem): positive when they face out.
+bool closed(const SurfaceMesh& m) { return test::closed(m.indices); }
 double enclosed_volume(const SurfaceMesh& m) {
-  double v = 0.0;
-  for (size_t t = 0; t < m.indices.size(); t += 3) {
-    const Vector3d a = m.positions[m.indices[t]].cast<double>(), b = m.positions[m.indices[t + 1]].cast<double>(),
-                   c = m.positions[m.indices[t + 2]].cast<double>();
-    v += a.dot(b.cross(c)) / 6.0;
-  }
-  return v;
+  return test::enclosed_volume(m.indices, [&](uint32_t i) { return Vector3d(m.positions[i].cast<double>()); });
 }
 
 TEST(SurfaceMesh, ASphereIsClosedFacesOutAndHoldsItsVolume) {

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "app/patient_look.hpp"
+#include "app/patient_meshes.hpp"
 #include "asset-gen/gltf_builder.hpp"
 #include "command.hpp"
 #include "haptics/anatomy/patient_report.hpp"
@@ -32,18 +33,19 @@ std::string file_stem(std::string name) {
   return name;
 }
 
-// One layer's region as a binary glTF: a mesh of the grid at the layer's offset, in its colour.
+// One layer's region as a binary glTF: the mesh the window draws of it (app::patient_layer_model),
+// in its colour, in the patient's model frame.
 std::string layer_glb(const Patient& patient, size_t index) {
   const haptics::anatomy::PatientLayer& layer = patient.layers[index];
   const app::LayerLook look = app::patient_layer_look(layer.name);
-  const haptics::anatomy::SurfaceMesh mesh = haptics::anatomy::layer_surface(patient, index, look.stride);
+  const engine::Primitive drawn = app::patient_layer_model(patient, index, Eigen::Vector3d::Zero()).primitives.at(0);
   asset_gen::MeshData data;
-  for (size_t i = 0; i < mesh.positions.size(); ++i) {
-    data.positions.emplace_back(mesh.positions[i].x(), mesh.positions[i].y(), mesh.positions[i].z());
-    data.normals.emplace_back(mesh.normals[i].x(), mesh.normals[i].y(), mesh.normals[i].z());
+  for (const engine::MeshVertex& v : drawn.vertices) {
+    data.positions.push_back(v.position);
+    data.normals.push_back(v.normal);
     data.uvs.emplace_back(0.0f, 0.0f);
   }
-  data.indices = mesh.indices;
+  data.indices = drawn.indices;
   asset_gen::GltfBuilder builder("");
   const int material = builder.add_material(layer.name, look.color, 0.0f, look.roughness);
   builder.add_root_node(layer.name, builder.add_mesh(layer.name, data, material));
