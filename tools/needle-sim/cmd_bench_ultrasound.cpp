@@ -7,13 +7,15 @@
 // interpolate between them, at the spacing chosen for the deformation and, at 256 x 512, at fixed
 // ones (rest_error_m, the interpolation's largest error against the exact rest positions;
 // pixels_unlike_exact, the image's pixels more than a count away from the one with a node at
-// every sample).
+// every sample). A fourth, the generated BMI 22 patient's paramedian view (docs/PATIENTS.md), images
+// twelve sampled distance grids.
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "app/echo_scene.hpp"
 #include "asset_path.hpp"
@@ -79,11 +81,17 @@ std::vector<Case> cases() {
   pushed.surface_point.z -= 0.001;
   pushed.lateral_force_on_tissue_N = {0.0, 0.5, 0.0};
   const engine::UltrasoundProbe sphere_probe = app::task_probe(sphere_task, sphere).probe;
+  // The BMI 22 patient's twelve layer grids seen in the paramedian sagittal oblique view 12 mm off
+  // the L3-L4 entry, tilted 10° to the midline, the needle in the midline at 40 mm.
+  engine::EchoScene patient = app::echo_scene(training::load_task(asset_dir() / "tasks/epidural_patient_bmi22.json"));
+  const engine::UltrasoundProbe paramedian =
+      app::paramedian_sagittal_oblique_probe(patient, {0.33, 0.0, 0.07}, 0.012, 10.0 * std::numbers::pi / 180.0);
   return {{"block", scenario_layers("scenarios/tissue_block_layers.json"), block,
            needle_in_plane({0.315, 0.0, 0.07}, 0.5236, 0.035)},
           {"epidural", scenario_layers("scenarios/lumbar_epidural.json"), epidural,
            needle_in_plane({0.31, 0.0, 0.07}, 0.7854, 0.06)},
-          {"sphere_deformed", std::move(sphere), sphere_probe, pushed}};
+          {"sphere_deformed", std::move(sphere), sphere_probe, pushed},
+          {"patient_paramedian", std::move(patient), paramedian, needle_in_plane({0.33, 0.0, 0.07}, 1.5708, 0.04)}};
 }
 
 // The largest depth difference between the GPU's and the reference's interfaces and needle walls.
