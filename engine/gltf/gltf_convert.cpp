@@ -10,6 +10,7 @@
 
 #include "engine/gltf/gltf_accessor.hpp"
 #include "engine/gltf/gltf_errors.hpp"
+#include "engine/gltf/image_decode.hpp"
 #include "engine/gltf/mesh_normals.hpp"
 #include "engine/gltf_loader.hpp"
 
@@ -37,8 +38,7 @@ tinygltf::Image decoded_image(const Model& gltf, size_t index, const std::string
     asset_fail(file, name, "bufferView size " + std::to_string(bytes.size) + " is not a valid image size");
   tinygltf::Image decoded;
   std::string err, warn;
-  if (!tinygltf::LoadImageData(&decoded, static_cast<int>(index), &err, &warn, 0, 0, bytes.data,
-                               static_cast<int>(bytes.size), nullptr))
+  if (!decode_image(&decoded, static_cast<int>(index), &err, &warn, bytes.data, static_cast<int>(bytes.size)))
     asset_fail(file, name, "cannot decode the image (" + image.mimeType + "): " + err);
   return decoded;
 }

@@ -11,6 +11,7 @@
 
 #include "engine/gltf/gltf_errors.hpp"
 #include "engine/gltf/gltf_uri.hpp"
+#include "engine/gltf/image_decode.hpp"
 #include "io/strict_json.hpp"
 
 namespace needle::engine {
@@ -133,10 +134,10 @@ bool refuse_write(std::string* err, const std::string&, const std::vector<unsign
 
 // Images in a bufferView are decoded by convert_gltf once the bufferView is bounds-checked:
 // tinygltf 2.7 hands them over without checking the bufferView against its buffer.
-bool decode_or_defer(tinygltf::Image* image, int index, std::string* err, std::string* warn, int width, int height,
+bool decode_or_defer(tinygltf::Image* image, int index, std::string* err, std::string* warn, int, int,
                      const unsigned char* bytes, int size, void*) {
   if (image->bufferView >= 0) return true;
-  return tinygltf::LoadImageData(image, index, err, warn, width, height, bytes, size, nullptr);
+  return decode_image(image, index, err, warn, bytes, size);
 }
 
 std::string first_line(const std::string& text) {

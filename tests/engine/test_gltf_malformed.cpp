@@ -213,6 +213,26 @@ TEST_F(GltfMalformed, UndecodableImage) {
   expect_error({"glTF", "image[0]"});
 }
 
+// A PNG whose header declares 16384 x 16384 grey pixels (1 GB as the RGBA texture) is refused from its header.
+TEST_F(GltfMalformed, AnImageOverTheLargestTextureIsRefusedBeforeDecoding) {
+  std::string png("\x89PNG\r\n\x1a\n", 8);
+  const auto be32 = [&](uint32_t v) {
+    for (int shift : {24, 16, 8, 0}) png += char((v >> shift) & 0xff);
+  };
+  be32(13);
+  png += "IHDR";
+  be32(16384);
+  be32(16384);
+  png += std::string("\x08\x00\x00\x00\x00", 5);  // 8 bits, grey, deflate, no filter, no interlace
+  be32(0);                                        // the CRC, which stb_image does not check
+  write_text(dir / "huge.png", png);
+  edit_json(file, [](nlohmann::json& j) {
+    j["images"] = {{{"uri", "huge.png"}}};
+    j["textures"] = {{{"source", 0}}};
+  });
+  expect_error({"image[0]", "16384x16384", "8192 pixels a side"});
+}
+
 TEST_F(GltfMalformed, RequiredExtensionsAreRefused) {
   edit_json(file, [](nlohmann::json& j) {
     j["extensionsUsed"] = {"KHR_draco_mesh_compression"};
