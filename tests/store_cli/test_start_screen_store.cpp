@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/start_screen.hpp"
+#include "tests/support/quick_task.hpp"
 #include "tests/support/stored_sessions.hpp"
 #include "tests/support/test_paths.hpp"
 #include "tests/support/test_postgres.hpp"
@@ -88,19 +89,7 @@ TEST(StartScreenStore, TheStartScreenRunsItsTasksAgainstNeedleDb) {
   fs::create_directories(dir / "assets/tasks");
   std::ofstream(dir / "config/needle-sim/settings.json")
       << R"({"version": 1, "trainee": "carla", "device": "keyboard", "window": {"width": 640, "height": 360}})";
-  const fs::path assets = source_dir() / "assets";
-  std::ofstream(dir / "assets/tasks/quick.json")
-      << nlohmann::json{{"name", "quick"},
-                        {"title", "Quick"},
-                        {"description", "ends at once"},
-                        {"scene", (assets / "scenes/penetrable_sphere.json").string()},
-                        {"scenario", (assets / "scenarios/nonholonomic_needle.json").string()},
-                        {"markers", {{{"name", "centre"}, {"point", {0.4, 0.0, 0.0}}}}},
-                        {"steps",
-                         {{{"id", "out"},
-                           {"instruction", "Stay out."},
-                           {"condition", {{"type", "withdrawn"}, {"marker", "centre"}, {"within_m", 0.01}}}}}}}
-             .dump(2);
+  write_quick_task(dir / "assets/tasks/quick.json", "quick", "Quick");
   const fs::path log = dir / "needle-sim.log", script = dir / "drive.sh";
   std::ofstream(script) << "export XDG_CONFIG_HOME=" << quoted(dir / "config")
                         << " XDG_DATA_HOME=" << quoted(dir / "data") << " NEEDLE_ASSETS=" << quoted(dir / "assets")

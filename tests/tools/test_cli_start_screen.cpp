@@ -16,6 +16,7 @@
 #include "cli_process.hpp"
 #include "haptics/recording/session_format.hpp"
 #include "tests/support/desk_plan.hpp"
+#include "tests/support/quick_task.hpp"
 #include "tests/support/test_paths.hpp"
 #include "training/sessions/session_store.hpp"
 
@@ -245,23 +246,6 @@ TEST(CliStartScreen, TheKeyboardsKeysMoveAndTurnTheNeedleInTheWindow) {
   EXPECT_NEAR(last.position_m[2], 0.1 + 0.004 * d[2], 5e-6) << "W pushes in along the needle";
 }
 
-// A task whose one step holds from the first tick (the tip starts out of the tissue, far from
-// the sphere's centre): it ends at once and the score panel's choices can be driven.
-void write_quick_task(const fs::path& file, const std::string& name) {
-  const fs::path assets = source_dir() / "assets";
-  const nlohmann::json task = {{"name", name},
-                               {"title", "Quick " + name},
-                               {"description", "ends at once"},
-                               {"scene", (assets / "scenes/penetrable_sphere.json").string()},
-                               {"scenario", (assets / "scenarios/nonholonomic_needle.json").string()},
-                               {"markers", {{{"name", "centre"}, {"point", {0.4, 0.0, 0.0}}}}},
-                               {"steps",
-                                {{{"id", "out"},
-                                  {"instruction", "Stay out."},
-                                  {"condition", {{"type", "withdrawn"}, {"marker", "centre"}, {"within_m", 0.01}}}}}}};
-  std::ofstream(file) << task.dump(2);
-}
-
 // Start, then from the score panel Next task (N), Retry (R) and Back (Esc), then Quit (Esc): every
 // run is a session of its own in the store, and the trainee the settings remembered is used.
 TEST(CliStartScreen, TheScorePanelsNextTaskRetryAndBackLeadWhereTheySay) {
@@ -270,8 +254,8 @@ TEST(CliStartScreen, TheScorePanelsNextTaskRetryAndBackLeadWhereTheySay) {
       << R"({"version": 1, "trainee": "carla", "device": "keyboard", "window": {"width": 960, "height": 540}})";
   const fs::path assets = user.root / "assets";
   fs::create_directories(assets / "tasks");
-  write_quick_task(assets / "tasks" / "a.json", "quick_a");
-  write_quick_task(assets / "tasks" / "b.json", "quick_b");
+  write_quick_task(assets / "tasks" / "a.json", "quick_a", "Quick quick_a");
+  write_quick_task(assets / "tasks" / "b.json", "quick_b", "Quick quick_b");
   const ProcessResult r =
       drive(user, open_start_screen(user, "export NEEDLE_ASSETS=" + quoted(assets) + "\n") + "xdotool key Return\n" +
                       wait_for("^score ", 60, "quick_a did not end", 1) + "sleep 1; xdotool key n\n" +
