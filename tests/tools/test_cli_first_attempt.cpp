@@ -177,10 +177,10 @@ class Desk {
   }
   // The right button held while the cursor moves (dx, dy) in small moves a frame or so apart (the
   // app turns the wrist by the cursor's motion from one frame to the next, and a turn spread over
-  // frames is a turn a hand makes: gradual), held a moment before and after so the app sees the
-  // button go down where the cursor is and come up after the last move.
-  void turn(int dx, int dy) const {
-    const int parts = std::max(1, std::max(std::abs(dx), std::abs(dy)) / 4);
+  // frames is a turn a hand makes: gradual, `per_move` pixels a twentieth of a second), held a moment
+  // before and after so the app sees the button go down where the cursor is and come up after the last move.
+  void turn(int dx, int dy, int per_move = 4) const {
+    const int parts = std::max(1, std::max(std::abs(dx), std::abs(dy)) / per_move);
     std::string moves;
     for (int k = 0; k < parts; ++k) {
       const int x = dx * (k + 1) / parts - dx * k / parts, y = dy * (k + 1) / parts - dy * k / parts;
@@ -277,32 +277,39 @@ struct Wrist {
   double drag_per_fill = 0.0;
 };
 
+// How turn_onto_axis turns: in the air briskly, in the tissue slowly (each turn of the needle there
+// pushes the tissue sideways, and a quick one loads it more) and read after the needle has followed.
+struct Turning {
+  double close = 0.0;     // done under this share of the tolerance tick
+  double share = 1.0;     // of what the gauge says is left, a turn at a time
+  double settle_s = 0.3;  // after each turn
+  int per_move = 4;       // pixels of drag a twentieth of a second
+};
 // Turns the wrist towards the pad's dot by as much as the axis gauge says is left (all of the
-// gauge's length when it reads full), `share` of it at a time, until the gauge's fill is under
-// `close` of its tolerance tick (10 px at least, 1.4 deg), the step ends (the progress bar moves) or
-// `until`. The first turn, in the air, learns the wrist's rate: a fixed drag, and how far the fill
-// went down. In tissue the needle follows the wrist slowly: `settle` s before each reading.
-void turn_onto_axis(const Desk& desk, Wrist& wrist, int step_done_at, Clock::time_point until, double close,
-                    double share, double settle_s) {
+// gauge's length when it reads full), `how.share` of it at a time, until the gauge's fill is under
+// `how.close` of its tolerance tick (10 px at least, 1.4 deg), the step ends (the progress bar moves)
+// or `until`. The first turn, in the air, learns the wrist's rate: a fixed drag, and how far the fill
+// went down.
+void turn_onto_axis(const Desk& desk, Wrist& wrist, int step_done_at, Clock::time_point until, const Turning& how) {
   for (int round = 0; round < 6 && Clock::now() < until; ++round) {
     const Reading r = read(desk);
     if (r.progress > step_done_at || !r.axis || !r.pad) return;
     const int f = fill(r.axis), tolerance = r.axis->tick >= 0 ? r.axis->tick - r.axis->left : 0;
-    if (f <= std::max(10.0, close * tolerance) || (r.pad->right == 0.0 && r.pad->up == 0.0)) return;
+    if (f <= std::max(10.0, how.close * tolerance) || (r.pad->right == 0.0 && r.pad->up == 0.0)) return;
     const bool full = f >= r.width - 4;
     double drag = 0.0;
     if (wrist.drag_per_fill <= 0.0) {
       drag = 80.0;
-      desk.turn(int(std::lround(r.pad->right * drag)), int(std::lround(-r.pad->up * drag)));
-      settle(settle_s);
+      desk.turn(int(std::lround(r.pad->right * drag)), int(std::lround(-r.pad->up * drag)), how.per_move);
+      settle(how.settle_s);
       const int after = fill(read(desk).axis);
       if (!full && f - after > 10) wrist.drag_per_fill = drag / (f - after);
       log_("turn: " + std::to_string(f) + " px off, then " + std::to_string(after) + " after an 80 px drag");
       continue;
     }
-    drag = share * wrist.drag_per_fill * (full ? r.width : f);
-    desk.turn(int(std::lround(r.pad->right * drag)), int(std::lround(-r.pad->up * drag)));
-    settle(settle_s);
+    drag = how.share * wrist.drag_per_fill * (full ? r.width : f);
+    desk.turn(int(std::lround(r.pad->right * drag)), int(std::lround(-r.pad->up * drag)), how.per_move);
+    settle(how.settle_s);
     log_("turn: " + std::to_string(f) + " px off the axis, a drag of " + std::to_string(int(drag)) + " px");
   }
 }
@@ -349,7 +356,8 @@ TEST(CliFirstAttempt, AScriptThatReadsOnlyTheScreenPassesThePenetrableSphereWith
   settle(0.6);  // the loop starts on the first frame
 
   // Approach. With the cursor on the entry ring the tip is on the line of sight through the entry,
-  // beyond it or before it, and the distance gauge reads how far in depth alone. The needle starts
+  // beyond it or before it (as the needle starts, beyond, where that line has left the tissue), and
+  // the distance gauge reads how far in depth alone. The needle starts
   // tilted into the screen, so a notch along it moves the tip in depth as well as across: a few
   // notches out (the cursor back on the ring) give the fill a notch takes off, and so how many notches
   // are left. Those are made with the tip half-way along the short part of the planned axis drawn
@@ -359,7 +367,7 @@ TEST(CliFirstAttempt, AScriptThatReadsOnlyTheScreenPassesThePenetrableSphereWith
   const int approached = r.progress;
   const std::optional<std::pair<int, int>> entry = find_ring(r.screen, r.panel, kEntry, true);
   ASSERT_TRUE(entry) << said;
-  const auto [out_end, in_end] = axis_line_ends(r, *entry);
+  const std::pair<int, int> out_end = axis_line_ends(r, *entry).first;
   const std::pair<int, int> above{(entry->first + out_end.first) / 2, (entry->second + out_end.second) / 2};
   log("approach: the entry at " + std::to_string(entry->first) + ", " + std::to_string(entry->second) +
       ", the axis out to " + std::to_string(out_end.first) + ", " + std::to_string(out_end.second));
@@ -380,7 +388,7 @@ TEST(CliFirstAttempt, AScriptThatReadsOnlyTheScreenPassesThePenetrableSphereWith
   notches_then_to(0, above);
   notches_then_to(way * left, above);
   Wrist wrist;
-  turn_onto_axis(desk, wrist, 1 << 30, Clock::now() + std::chrono::seconds(5), 0.0, 1.0, 0.3);
+  turn_onto_axis(desk, wrist, 1 << 30, Clock::now() + std::chrono::seconds(5), {});
   for (Clock::time_point until = Clock::now() + std::chrono::seconds(6);
        read(desk).progress == approached && Clock::now() < until;) {
     desk.wheel(1);
@@ -413,7 +421,8 @@ TEST(CliFirstAttempt, AScriptThatReadsOnlyTheScreenPassesThePenetrableSphereWith
   // reads full), the hand still; in the tissue the needle follows slowly, so each turn is read after
   // it settles and the next is most of what is left, until well inside the tolerance.
   const int pivoted = r.progress;
-  turn_onto_axis(desk, wrist, pivoted, Clock::now() + std::chrono::seconds(20), 0.4, 0.9, 0.8);
+  turn_onto_axis(desk, wrist, pivoted, Clock::now() + std::chrono::seconds(20),
+                 {.close = 0.4, .share = 0.9, .settle_s = 0.8, .per_move = 2});
   for (until = Clock::now() + std::chrono::seconds(3); read(desk).progress == pivoted && Clock::now() < until;)
     settle(0.2);
   r = read(desk);
