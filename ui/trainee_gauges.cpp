@@ -141,8 +141,8 @@ void turn_pad(const training::StepCue& cue) {
   draw->AddLine(ImVec2(corner.x, centre.y), ImVec2(corner.x + side, centre.y), cross);
   draw->AddRect(corner, ImVec2(corner.x + side, corner.y + side), kAxisColour);
   if (!std::isnan(cue.within_deg))
-    draw->AddCircle(centre, reach * float(std::sqrt(std::min(cue.within_deg, kTurnPadFull_deg) / kTurnPadFull_deg)),
-                    IM_COL32(255, 255, 255, 255), 0, 1.5f * unit);
+    draw->AddCircle(centre, reach * float(turn_pad_point(cue.within_deg, 0.0).x), IM_COL32(255, 255, 255, 255), 0,
+                    1.5f * unit);
   const PadPoint p = turn_pad_point(cue.turn_deg, cue.tilt_deg);
   const ImVec2 at(centre.x + reach * float(p.x), centre.y - reach * float(p.y));  // up on the screen is y down
   draw->AddLine(centre, at, kAxisColour, 2.0f * unit);

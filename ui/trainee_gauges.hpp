@@ -1,9 +1,10 @@
 // The trainee panel's gauges, each a bar the width of the panel with its reading in words under it
 // (docs/SCORING.md, "The trainee panel"): the force at the hand against the safe limit, the sideways
 // load on the needle with its warning colours, how far the step's point is, how far off the planned
-// axis the needle points, and the depth along the task's axis with the step's band. Each kind has a
-// colour of its own, the same as its marker over the 3D view where it has one (the entry's cyan, the
-// axis's yellow, the depth band's green). Draw into the current ImGui window.
+// axis the needle points (with a pad showing which way to turn), and the depth along the task's axis
+// with the step's band. Each kind has a colour of its own, the same as its marker over the 3D view
+// where it has one (the entry's cyan, the axis's yellow, the depth band's green). Draw into the
+// current ImGui window.
 #pragma once
 
 #include "training/tasks/step_cue.hpp"
