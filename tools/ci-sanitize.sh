@@ -17,7 +17,7 @@ suites='BenchPrecision|BenchStability|PenaltyOnRobot|ControllerLoop|DeviceSim|Re
 suites+='|SimHolonomic|SimNonholonomic|SimFeel|SimHandPassivity|PassivityClosedLoop|TissueInsertion|TissueSnapshot|RealtimeNoAlloc'
 suites+='|SessionLimits|SessionReviewTest|SessionStoreFailure|SessionsThatCount|ShippedTasks/ScriptedSessions|LayeredSessions|EpiduralTasks/SyringeSessions|ReviewPanels|ReviewPanelsLayered'
 suites+='|CliBench[A-Za-z]*|CliHapticsBench|CliHapticsSimulate|CliRecordings|CliReport|CliReviewWindow|CliReportLayered|CliRunDevices|CliRunTask|CliWrites|Tasks/RunReplay'
-suites+='|CliPostgres|CliHostileFiles|CliVerify'
+suites+='|CliPostgres|CliHostileFiles|CliVerify|CliFirstAttempt'
 # Generating a patient samples about ten million nodes of analytic shapes (Eigen's small vectors):
 # under a second unsanitized, a minute or more sanitized, for each patient a test makes.
 suites+='|PatientGeneration|ShippedPatients/PatientSessions|PatientSessionsRandom|PatientScenes|CliPatient'

@@ -121,6 +121,39 @@ void axis_gauge(const training::StepCue& cue) {
     wrapped_text(kPlainText, "off the planned axis %.0f deg (within %.0f)", cue.off_axis_deg, cue.within_deg);
 }
 
+PadPoint turn_pad_point(double turn_deg, double tilt_deg) {
+  const double angle = std::hypot(turn_deg, tilt_deg);
+  if (!(angle > 0.0)) return {};
+  const double reach = std::sqrt(std::min(angle, kTurnPadFull_deg) / kTurnPadFull_deg);
+  return {reach * turn_deg / angle, reach * tilt_deg / angle};
+}
+
+void turn_pad(const training::StepCue& cue) {
+  if (cue.axis < 0 || std::isnan(cue.off_axis_deg)) return;
+  const float unit = ImGui::GetFontSize() / 13.0f, side = 52.0f * unit, dot = 4.0f * unit;
+  const ImVec2 corner = ImGui::GetCursorScreenPos();
+  const ImVec2 centre(corner.x + 0.5f * side, corner.y + 0.5f * side);
+  const float reach = 0.5f * side - dot - 2.0f * unit;  // the dot stays inside the frame
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->AddRectFilled(corner, ImVec2(corner.x + side, corner.y + side), kTrack);
+  const ImU32 cross = IM_COL32(90, 90, 100, 255);
+  draw->AddLine(ImVec2(centre.x, corner.y), ImVec2(centre.x, corner.y + side), cross);
+  draw->AddLine(ImVec2(corner.x, centre.y), ImVec2(corner.x + side, centre.y), cross);
+  draw->AddRect(corner, ImVec2(corner.x + side, corner.y + side), kAxisColour);
+  if (!std::isnan(cue.within_deg))
+    draw->AddCircle(centre, reach * float(turn_pad_point(cue.within_deg, 0.0).x), IM_COL32(255, 255, 255, 255), 0,
+                    1.5f * unit);
+  const PadPoint p = turn_pad_point(cue.turn_deg, cue.tilt_deg);
+  const ImVec2 at(centre.x + reach * float(p.x), centre.y - reach * float(p.y));  // up on the screen is y down
+  draw->AddLine(centre, at, kAxisColour, 2.0f * unit);
+  draw->AddCircleFilled(at, dot, kAxisColour);
+  ImGui::Dummy(ImVec2(side, side));
+  ImGui::SameLine();
+  ImGui::BeginGroup();
+  wrapped_text(kPlainText, "turn the wrist towards the dot: right is clockwise as seen, up the hub away");
+  ImGui::EndGroup();
+}
+
 void depth_gauge(const training::Task& task, size_t step, const training::StepCue& cue) {
   if (cue.gauge < 0) return;
   const training::Step& s = task.steps[step];

@@ -91,6 +91,7 @@ void draw_running(const TraineeView& v) {
   if (v.cue) {
     distance_gauge(task, shown, *v.cue);
     axis_gauge(*v.cue);
+    turn_pad(*v.cue);
     depth_gauge(task, shown, *v.cue);
   }
   ImGui::Separator();

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
+#include <cmath>
+
 #include "engine/gpu_scene.hpp"
 #include "engine/render_target.hpp"
 #include "engine/scene.hpp"
@@ -13,6 +15,7 @@
 #include "tests/support/test_paths.hpp"
 #include "ui/guidance_overlay.hpp"
 #include "ui/step_banner.hpp"
+#include "ui/trainee_gauges.hpp"
 #include "ui/trainee_panel.hpp"
 #include "vulkan_fixture.hpp"
 
@@ -268,6 +271,23 @@ TEST_F(TraineePanel, StepBannersAt1280x720And1920x1080MatchGoldens) {
   s.time_s = 24.0;
   live(view, task, s);
   EXPECT_TRUE(matches_golden(draw(view, {1920, 1080}), "panel_trainee_banner_timed_out_1920x1080"));
+}
+
+// The turn pad's dot: the way to turn (clockwise as seen to the right, the hub away up), out from the
+// centre as the square root of the angle over the pad's full reach, on the edge past it.
+TEST(TurnPad, TheDotLiesTheWayToTurnAtTheRootOfTheAngle) {
+  const auto expect_at = [](double turn, double tilt, double x, double y) {
+    const ui::PadPoint p = ui::turn_pad_point(turn, tilt);
+    EXPECT_NEAR(p.x, x, 1e-12) << turn << ", " << tilt;
+    EXPECT_NEAR(p.y, y, 1e-12) << turn << ", " << tilt;
+  };
+  expect_at(0.0, 0.0, 0.0, 0.0);                               // on the axis: the centre
+  expect_at(0.25 * ui::kTurnPadFull_deg, 0.0, 0.5, 0.0);       // a quarter of the reach: half-way out, right
+  expect_at(-0.25 * ui::kTurnPadFull_deg, 0.0, -0.5, 0.0);     // anticlockwise: left
+  expect_at(0.0, ui::kTurnPadFull_deg / 9.0, 0.0, 1.0 / 3.0);  // 5 of 45 deg: a third of the way, up
+  expect_at(0.0, -ui::kTurnPadFull_deg, 0.0, -1.0);            // the full reach towards the viewer: the edge, down
+  expect_at(9.0, 12.0, 0.6 * std::sqrt(15.0 / 45.0), 0.8 * std::sqrt(15.0 / 45.0));  // 15 deg, 3 : 4
+  expect_at(30.0, -40.0, 0.6, -0.8);  // 50 deg, past the reach: on the edge
 }
 
 TEST(StepBanner, SaysWhatEndedAndWhyForAFewSeconds) {
