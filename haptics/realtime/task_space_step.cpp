@@ -46,10 +46,13 @@ void TaskSpaceStep::step(const DeviceReading& reading, double dt_s, DeviceComman
   task_space_coupling(coupling_, data_, target_, target_direction_, force, tau_);
   world_.advance(tau_, damping_, dt_s, substeps_);
 
-  // The handle feels the spring's reaction, in device axes.
-  const Eigen::Vector3d reaction = -coupling_.force_scale * (coupling_.device_to_scene.transpose() * force);
-  command.space = CommandSpace::kTaskForce;
-  for (int i = 0; i < 3; ++i) command.force_n[i] = reaction[i];
+  // The handle feels the spring's reaction, in device axes, where the device exerts force: a desk
+  // device's command space is none (ServoTick sets it from the capabilities), so it is sent nothing
+  // and nothing is held back at a limit it does not have (the forces are shown on screen instead).
+  if (command.space == CommandSpace::kTaskForce) {
+    const Eigen::Vector3d reaction = -coupling_.force_scale * (coupling_.device_to_scene.transpose() * force);
+    for (int i = 0; i < 3; ++i) command.force_n[i] = reaction[i];
+  }
 
   publish_virtual_state(world_, scenario_.base_in_world, dt_s, state);
   for (int i = 0; i < 3; ++i) state.operator_force_n[i] = force[i];

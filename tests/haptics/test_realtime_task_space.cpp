@@ -10,13 +10,14 @@
 namespace needle::haptics {
 namespace {
 
-// A handle the test puts where it wants (a position-only device, like the Falcon or the mouse).
+// A handle the test puts where it wants (a position-only device: the Falcon, or without actuators
+// the mouse).
 class HeldHandle : public HapticDevice {
  public:
-  HeldHandle() {
+  explicit HeldHandle(bool exerts_force = true) {
     caps_.name = "held";
-    caps_.command_space = CommandSpace::kTaskForce;
-    caps_.max_force_n = 100.0;
+    caps_.command_space = exerts_force ? CommandSpace::kTaskForce : CommandSpace::kNone;
+    caps_.max_force_n = exerts_force ? 100.0 : 0.0;
   }
   void open() override {}
   void close() noexcept override {}
@@ -38,17 +39,18 @@ class HeldHandle : public HapticDevice {
 };
 
 struct Coupled {
-  explicit Coupled(const TaskCoupling& coupling = {})
+  explicit Coupled(const TaskCoupling& coupling = {}, bool exerts_force = true)
       : scenario(load_scenario(test::source_dir().string() + "/assets/scenarios/holonomic_sphere.json")),
+        handle(exerts_force),
         step(scenario, coupling),
-        rig(handle, step, limits()) {
+        rig(handle, step, limits(exerts_force)) {
     tip_start_world = step.start_tip() + scenario.base_in_world;
     direction_start = step.start_direction();
     rig.run(0, 1, kDt);  // the first reading fixes the mapping
   }
-  static SafetyLimits limits() {
+  static SafetyLimits limits(bool exerts_force) {
     SafetyLimits l;
-    l.max_force_n = 100.0;
+    l.max_force_n = exerts_force ? 100.0 : 0.0;
     l.frozen_min_force_n = 1e9;  // this handle is perfectly still by construction, no hand trembles
     return l;
   }
@@ -109,6 +111,27 @@ TEST(RealtimeTaskSpace, PushingIntoTheRigidSphereIsFeltAlongItsNormal) {
   EXPECT_GT(f.normalized().dot(normal), std::cos(5.0 * M_PI / 180.0));
   EXPECT_NEAR(f.norm(), k * sink, 0.05 * k * sink);
   EXPECT_EQ(c.rig.safety.fault(), FaultCause::kNone);
+}
+
+// A handle without actuators (a desk device) pressed into the sphere: the contact force is the same
+// as the actuated handle's and is reported for the screen, but the device is sent no force and no
+// tick says it was held back at a limit (it has none).
+TEST(RealtimeTaskSpace, AHandleWithoutActuatorsIsSentNothingAndNeverHeldAtALimit) {
+  Coupled felt, shown({}, false);
+  const Eigen::Vector3d centre(0.4, 0.0, 0.0);
+  const Eigen::Vector3d outward = (felt.tip_start_world - centre).normalized();
+  const Eigen::Vector3d push = centre + 0.09 * outward - felt.tip_start_world;  // 10 mm into the sphere
+  felt.hold(push, 2.0);
+  shown.hold(push, 2.0);
+  const ToolSnapshot &a = felt.rig.tick.last_sample().state, &b = shown.rig.tick.last_sample().state;
+  ASSERT_EQ(b.contact, ContactState::kRigidSurface);
+  const Eigen::Vector3d fa(a.operator_force_n), fb(b.operator_force_n);
+  EXPECT_GT(fb.norm(), 1.0);
+  EXPECT_LT((fa - fb).norm(), 1e-9 + 1e-6 * fa.norm());
+  EXPECT_EQ(shown.handle.last.space, CommandSpace::kNone);
+  EXPECT_EQ(Eigen::Vector3d(shown.handle.last.force_n).norm(), 0.0);
+  EXPECT_EQ(b.limits & kLimitForce, 0u);
+  EXPECT_EQ(shown.rig.safety.fault(), FaultCause::kNone);
 }
 
 TEST(RealtimeTaskSpace, DeviceAxesAreTurnedIntoTheSceneAndTheForceBack) {
