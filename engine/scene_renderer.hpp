@@ -94,9 +94,6 @@ struct RendererSettings {
   // With cull_chunks, a sectioned item's chunks wholly on the section's cut-away side are left
   // out (the same picture). Off only to measure what it saves (`bench frame --variants`).
   bool cull_cut_away = true;
-  // Items held inside another's closed surface (DrawItem::inside) left out where they cannot be
-  // seen (the same picture). Off only to measure what it saves (`bench frame --variants`).
-  bool cull_inside = true;
   // The scene's meshes drawn at this fraction of the target's width and height, in
   // [kMinRenderScale, kMaxRenderScale], then
   // upscaled over the target with linear filtering before the overlay, drawn at full resolution:
@@ -105,6 +102,9 @@ struct RendererSettings {
   // missing). docs/RENDERING.md, "Render scale".
   float render_scale = 1.0f;
   Translucency translucency = Translucency::Blended;
+  // Items held inside another's closed surface (DrawItem::inside) left out where they cannot be
+  // seen (the same picture). Off only to measure what it saves (`bench frame --variants`).
+  bool cull_inside = true;
 };
 
 // What one pass of a frame cost, in milliseconds.
