@@ -15,10 +15,6 @@ namespace {
 // regions (the back, the sheets of fat and muscle) become a few large triangles and the bone's
 // processes keep their shape; on llvmpipe the frame pays for every triangle it sets up.
 constexpr double kDrawnErrorPerSpacing = 0.25;
-// Design value: the skin within this distance of the midline keeps every triangle, so that the
-// dent the needle makes (the deformation's support, 4 × 6 mm, around the midline and paramedian
-// entries, at most 10 mm off it) moves enough vertices to look round.
-constexpr double kSkinDetailHalfWidth_m = 0.035;
 
 // (triangles over `positions`, absolute error, borders locked) => meshoptimizer's simplification:
 // edges collapsed while the surface moves less than `error_m` (its quadric error bound).
@@ -37,7 +33,7 @@ std::vector<uint32_t> simplified(const std::vector<uint32_t>& indices, const std
 // The triangles drawn of a layer's mesh, simplified within kDrawnErrorPerSpacing of the grid's
 // spacing in parts, each part's edge locked so that the parts meet without a crack: the walls
 // where the region meets the grid's box (flat, with normals of their own) apart from the tissue's
-// surface, so that no large triangle spans the crease between them; the skin's strip along the
+// surface, so that no large triangle spans the crease between them; the skin's surface along the
 // midline (x = midline_x, model frame) kept whole.
 std::vector<uint32_t> drawn_triangles(const haptics::anatomy::SurfaceMesh& mesh, const haptics::SdfGrid& grid,
                                       int stride, bool skin, double midline_x) {
@@ -58,7 +54,7 @@ std::vector<uint32_t> drawn_triangles(const haptics::anatomy::SurfaceMesh& mesh,
       near_midline = near_midline && std::abs(mesh.positions[tri[k]].x() - midline_x) < kSkinDetailHalfWidth_m;
       wall = wall && on_wall(tri[k]);
     }
-    std::vector<uint32_t>& part = near_midline ? whole : wall ? walls : surface;
+    std::vector<uint32_t>& part = wall ? walls : near_midline ? whole : surface;
     part.insert(part.end(), tri, tri + 3);
   }
   const double error_m = kDrawnErrorPerSpacing * grid.spacing();

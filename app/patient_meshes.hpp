@@ -6,8 +6,16 @@
 
 #include "engine/scene.hpp"
 #include "haptics/sim/scenario.hpp"
+#include "training/tasks/task.hpp"
 
 namespace needle::app {
+
+// The skin's surface within this distance of the midline is drawn with every triangle of its
+// mesh, so that the dent the needle makes moves enough vertices to look round: the band in which
+// the epidural's entry counts as in the interspace (training::kInterspaceHalfWidth_m, a design
+// value). Elsewhere the dent shows on the simplified mesh's larger triangles; every triangle of
+// the band costs the trainee's frame on llvmpipe (docs/BENCHMARKS.md).
+inline constexpr double kSkinDetailHalfWidth_m = training::kInterspaceHalfWidth_m;
 
 // The skin's deformation: the layered block's skin's in its task scene (assets/scenes/
 // tissue_block_task.json: shear modulus 6 kPa, ν 0.45, ε 6 mm, support 4ε), design values there.
