@@ -200,13 +200,6 @@ LayerSample evaluate_layer(uint k, vec3 x) {
   return best;
 }
 
-// The last layer whose region holds x, -1 in none.
-int layer_at(vec3 x) {
-  for (int k = int(echo.counts.z) - 1; k >= 0; --k)
-    if (evaluate_layer(uint(k), x).phi < 0.0) return k;
-  return -1;
-}
-
 // Specialization constants: engine/ultrasound/ultrasound_pass.cpp makes a pipeline for each value
 // an image needs. Lavapipe (Mesa 22.3) runs both sides of every branch under a mask and a loop's
 // body at least once, and reads a uniform block lane by lane, with a bounds check, wherever the

@@ -1,12 +1,12 @@
 #version 450
 // Scan lines: one work item a line finds where its layer changes and what happens there, without
-// visiting every sample: from a sample at a clearance c from every primitive's surface (below),
-// the samples nearer than c share its layer, so the walk jumps past them. At each change it reflects
-// (the crossing placed between its two samples where the crossed surface's φ changes sign), and
-// at the needle's wall with its reverberation tail; it writes the runs of samples between those
-// events with their amplitudes, and the specular echoes, for ultrasound_echoes.comp to turn into
-// every sample's echo. Samples for samples, the CPU reference's walk
-// (engine/ultrasound/echo_model.cpp, trace_scan_lines).
+// visiting every sample: a layer evaluated at a sample at a clearance c from its surface (below)
+// holds or misses every sample nearer than c alike, so the walk evaluates each layer again only
+// where its clearance runs out. At each change it reflects (the crossing placed between its two
+// samples where the crossed surface's φ changes sign), and at the needle's wall with its
+// reverberation tail; it writes the runs of samples between those events with their amplitudes,
+// and the specular echoes, for ultrasound_echoes.comp to turn into every sample's echo. Samples
+// for samples, the CPU reference's walk (engine/ultrasound/echo_model.cpp, trace_scan_lines).
 #extension GL_GOOGLE_include_directive : require
 #define ECHO_IN_STORAGE_BUFFER
 #include "ultrasound.glsl"
@@ -40,44 +40,67 @@ vec2 needle_hit(vec3 origin) {
   return vec2(z0 - t * ad - wall, weight);
 }
 
-// The last layer whose region holds x (-1 in none), and a clearance: how far along the beam from
-// x no primitive's surface is crossed, so no layer's membership changes. A primitive's |φ| is
-// its distance (spheres, capsules, planes); at rest a plane is crossed only where the beam meets
-// it. A grid's |φ| is the distance to within a factor √3 (its trilinear interpolant changes at most
-// that much faster, docs/TISSUE.md): its clearance |φ|/√3. While the tissue is deformed the beam is
-// curved in rest space: half the least (the rest position moves up to twice as fast as the point
-// for a displacement gradient up to 0.5, a design value; docs/RENDERING.md, "How the passes find
-// the layers").
-int layer_and_clearance(vec3 x, vec3 beam, out float clearance) {
+// Whether layer k holds x, and its clearance: how far along the beam from x its membership cannot
+// change. A primitive's |φ| is its distance (spheres, capsules, planes); at rest a plane is crossed
+// only where the beam meets it. A grid's nodes hold a distance (or a lower bound of one), so its
+// trilinear interpolant's partial derivatives are each at most 1 + quantum/spacing (a blend of
+// node differences of at most a spacing and a quantum each; docs/TISSUE.md): along a beam d it
+// changes at most |d|₁ = |dx| + |dy| + |dz| (1 to √3) times that fast. While the tissue is deformed
+// the beam is curved in rest space, any direction: 2√3 times (the rest position moves up to twice
+// as fast as the point for a displacement gradient up to 0.5, a design value; docs/RENDERING.md,
+// "How the passes find the layers"), and a primitive's clearance half its |φ|.
+bool holds(uint k, vec3 x, vec3 beam, out float clearance) {
   bool at_rest = LOADS == 0u;
-  int found = -1;
-  clearance = 1e30;
-  for (int k = int(echo.counts.z) - 1; k >= 0; --k) {
-    uvec4 shape = layers[k].shape;
-    if (shape.w != 0u) {
-      float s = evaluate_grid(shape.w - 1u, layers[k].grid.x, x).phi;
-      clearance = min(clearance, abs(s) * (at_rest ? 0.57735 : 0.288675));
-      if (found < 0 && s < 0.0) found = k;
-      continue;
-    }
-    bool intersection = shape.z == 1u;
-    float phi = intersection ? -1e30 : 1e30;
-    for (uint i = 0; i < shape.y; ++i) {
-      Primitive p = primitives[shape.x + i];
-      float s = evaluate_primitive(p, x).phi;
-      phi = intersection ? max(phi, s) : min(phi, s);
-      float c = abs(s);
-      if (!at_rest) {
-        c *= 0.5;
-      } else if (int(p.a_kind.w) == 1) {
-        float approach = dot(p.b_radius.xyz, beam);  // φ's rate along the beam
-        c = s * approach < 0.0 ? -s / approach : s == 0.0 ? 0.0 : 1e30;
-      }
-      clearance = min(clearance, c);
-    }
-    if (found < 0 && phi < 0.0) found = k;
+  uvec4 shape = layers[k].shape;
+  if (shape.w != 0u) {
+    uint g = shape.w - 1u;
+    float s = evaluate_grid(g, layers[k].grid.x, x).phi;
+    float rate = at_rest ? abs(beam.x) + abs(beam.y) + abs(beam.z) : 3.4641016;
+    clearance = abs(s) / (rate * (1.0 + grids[g].quantum.x / grids[g].origin_spacing.w));
+    return s < 0.0;
   }
-  return found;
+  bool intersection = shape.z == 1u;
+  float phi = intersection ? -1e30 : 1e30;
+  clearance = 1e30;
+  for (uint i = 0; i < shape.y; ++i) {
+    Primitive p = primitives[shape.x + i];
+    float s = evaluate_primitive(p, x).phi;
+    phi = intersection ? max(phi, s) : min(phi, s);
+    float c = abs(s);
+    if (!at_rest) {
+      c *= 0.5;
+    } else if (int(p.a_kind.w) == 1) {
+      float approach = dot(p.b_radius.xyz, beam);  // φ's rate along the beam
+      c = s * approach < 0.0 ? -s / approach : s == 0.0 ? 0.0 : 1e30;
+    }
+    clearance = min(clearance, c);
+  }
+  return phi < 0.0;
+}
+
+// The walk's knowledge of each layer k < 16: bit k of `inside`, whether it held the sample where it
+// was last evaluated, and due[k], the first sample where that may have changed (its clearance runs
+// out there; 0xffffffff past the scene's layers). The loops run over all 16 with constant indices,
+// so that a CPU device (lavapipe) keeps the array in registers.
+uint due[16];
+uint inside = 0u;
+
+// At sample `at`: the last layer known to hold it (-1: none), and the last layer above that whose
+// membership there is not known (-1: none, the sample's layer is `known`). The layers before a
+// layer that holds the sample do not decide it, so they are not needed.
+void decide(uint at, out int known, out int unknown) {
+  known = -1;
+  for (int k = 0; k < 16; ++k) known = due[k] > at && (inside & (1u << k)) != 0u ? k : known;
+  unknown = -1;
+  for (int k = 0; k < 16; ++k) unknown = k > known && due[k] <= at ? k : unknown;
+}
+
+// The first sample where the layers from `known` on may change: the sample after the run of
+// samples in layer `known`.
+uint run_end(int known) {
+  uint end = 0xffffffffu;
+  for (int k = 0; k < 16; ++k) end = k >= known ? min(end, due[k]) : end;
+  return end;
 }
 
 // The sample whose interval (depth(j − 1), depth(j)] holds `depth` (> 0).
@@ -148,31 +171,41 @@ void main() {
   lines[line].run_count = 1u;
   run = Run(0u, -1, 1.0, 0.0);
   store_run(line, 0u, run);
+  for (uint i = 0u; i < 16u; ++i) due[i] = i < echo.counts.z ? 0u : 0xffffffffu;
   uint count = 0u;
   int current = -1;
-  uint j = 0u;
-  while (j < samples) {
-    float z = sample_depth(j);
-    float clearance;
-    int layer = layer_and_clearance(rest_position(origin + z * beam), beam, clearance);
-    if (layer != current) {
-      int k = layer > current ? layer : current;
-      float z_prev = interval_start(j);
-      float phi0 = evaluate_layer(uint(k), rest_position(origin + z_prev * beam)).phi;
-      LayerSample s1 = evaluate_layer(uint(k), rest_position(origin + z * beam));
-      float f = phi0 != s1.phi ? clamp(phi0 / (phi0 - s1.phi), 0.0, 1.0) : 0.0;
-      float depth = z_prev + f * (z - z_prev);
-      if (count < MAX_INTERFACES) lines[line].interfaces[count++] = Interface(depth, current, layer, 0.0);
-      float r = reflection(impedance(current), impedance(layer));
-      float incoming = amplitude_into(j);
-      add_specular(j, f, incoming * abs(r) * specular_factor(s1.normal) * time_gain(depth));
-      begin_run(j, layer, incoming * (1.0 - r * r));
-      current = layer;
+  uint from = 0u;  // the sample the current layer begins at
+  uint at = 0u;    // the walk's frontier: every sample before it has its layer
+  for (;;) {
+    // The next sample whose layer differs from the current one (samples: none). A layer is
+    // evaluated only where its clearance runs out and the sample's layer depends on it: the last
+    // layer not known to miss it, until one is known to hold it. So a layer far from every sample
+    // is evaluated a few times down the line, one the line crosses at every sample near it, and
+    // none of those before the layer the line is in.
+    uint change = samples;
+    int layer = current;
+    for (;;) {
+      int known, unknown;
+      decide(at, known, unknown);
+      if (unknown < 0) {  // the sample's layer is known
+        if (known != current) {
+          change = at;
+          layer = known;
+          break;
+        }
+        at = run_end(known);
+        if (at >= samples) break;
+        decide(at, known, unknown);  // a layer from `known` on is due there: not known
+      }
+      float clearance;
+      bool in_k = holds(uint(unknown), rest_position(origin + sample_depth(at) * beam), beam, clearance);
+      inside = in_k ? inside | (1u << unknown) : inside & ~(1u << unknown);
+      // Samples nearer than the clearance share this one's membership; 0.01 sample of margin for float rounding.
+      uint again = at + uint(clamp(ceil(clearance / echo.image.z - 0.01), 1.0, float(samples)));
+      for (int k = 0; k < 16; ++k) due[k] = k == unknown ? again : due[k];
     }
-    // Samples nearer than the clearance share this one's layer; 0.01 sample of margin for float rounding.
-    uint next = j + uint(clamp(ceil(clearance / echo.image.z - 0.01), 1.0, float(samples)));
-    if (needle_sample >= j && needle_sample < next) {
-      // The needle's wall: in this sample's interval or in one the walk passes, all in this layer.
+    if (needle_sample >= from && needle_sample < change) {
+      // The needle's wall, in the current layer.
       float z_prev = interval_start(needle_sample);
       float span = sample_depth(needle_sample) - z_prev;
       float r = reflection(impedance(current), echo.media.y);
@@ -189,7 +222,22 @@ void main() {
       }
       begin_run(needle_sample, current, incoming * (1.0 - r * r * hit.y));
     }
-    j = next;
+    if (change >= samples) break;
+    // The interface: placed where the surface of the layer that decides (the deeper in the
+    // order of the two) crosses φ = 0 between the sample before and this one.
+    int k = layer > current ? layer : current;
+    float z = sample_depth(change), z_prev = interval_start(change);
+    float phi0 = evaluate_layer(uint(k), rest_position(origin + z_prev * beam)).phi;
+    LayerSample s1 = evaluate_layer(uint(k), rest_position(origin + z * beam));
+    float f = phi0 != s1.phi ? clamp(phi0 / (phi0 - s1.phi), 0.0, 1.0) : 0.0;
+    float depth = z_prev + f * (z - z_prev);
+    if (count < MAX_INTERFACES) lines[line].interfaces[count++] = Interface(depth, current, layer, 0.0);
+    float r = reflection(impedance(current), impedance(layer));
+    float incoming = amplitude_into(change);
+    add_specular(change, f, incoming * abs(r) * specular_factor(s1.normal) * time_gain(depth));
+    begin_run(change, layer, incoming * (1.0 - r * r));
+    current = layer;
+    from = change;
   }
   find_shadow(samples);
   lines[line].shadow_sample = shadow;
