@@ -200,8 +200,10 @@ void main() {
       float clearance;
       bool in_k = holds(uint(unknown), rest_position(origin + sample_depth(at) * beam), beam, clearance);
       inside = in_k ? inside | (1u << unknown) : inside & ~(1u << unknown);
-      // Samples nearer than the clearance share this one's membership; 0.01 sample of margin for float rounding.
-      uint again = at + uint(clamp(ceil(clearance / echo.image.z - 0.01), 1.0, float(samples)));
+      // Samples nearer than the clearance share this one's membership; 0.01 sample of margin for
+      // float rounding. At least the next sample, whatever the float (a NaN's conversion is
+      // undefined): the walk always moves on.
+      uint again = at + max(uint(clamp(ceil(clearance / echo.image.z - 0.01), 1.0, float(samples))), 1u);
       for (int k = 0; k < 16; ++k) due[k] = k == unknown ? again : due[k];
     }
     if (needle_sample >= from && needle_sample < change) {
