@@ -2,8 +2,9 @@
 // "FILE: /json/pointer: what is wrong", thrown as `Error`. Unknown keys are errors, numbers
 // must be finite (and in their key's range where one is given), strings non-empty and without
 // NUL; a file must be a regular one of at most kMaxTextFileBytes (io/file_read.hpp), nested at
-// most kMaxNestingDepth deep (io/input_limits.hpp). A template on the error type: scene,
-// scenario, task and tissue files all read through it, from libraries that do not link each other.
+// most kMaxNestingDepth deep and with no key twice in an object (io/json_text.hpp). A template
+// on the error type: scene, scenario, task and tissue files all read through it, from libraries
+// that do not link each other.
 #pragma once
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 
 #include "io/file_read.hpp"
 #include "io/input_limits.hpp"
+#include "io/json_text.hpp"
 
 namespace needle::io {
 
@@ -30,69 +32,14 @@ std::string read_text_file(const std::filesystem::path& file) {
   return text;
 }
 
-// A JSON document that cannot be read: what() says why ("not valid JSON: ...", "nested deeper
-// than 64 levels").
-struct JsonTextError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-// Counts the containers open while nlohmann's SAX parser reads a document, and stops it at the
-// first one past kMaxNestingDepth. One linear pass: nlohmann's parse callback cannot do this
-// check, as its parser looks through a container's members each time one of them ends, which is
-// quadratic in a long array of objects (a glTF of 100,000 nodes took seconds, a few MiB of `{}`
-// hours). Syntax errors are left to the parse that builds the document, which says where.
-class NestingDepth : public nlohmann::json_sax<nlohmann::json> {
- public:
-  bool too_deep() const { return too_deep_; }
-
-  bool start_object(std::size_t) override { return open(); }
-  bool start_array(std::size_t) override { return open(); }
-  bool end_object() override { return close(); }
-  bool end_array() override { return close(); }
-  bool null() override { return true; }
-  bool boolean(bool) override { return true; }
-  bool number_integer(number_integer_t) override { return true; }
-  bool number_unsigned(number_unsigned_t) override { return true; }
-  bool number_float(number_float_t, const string_t&) override { return true; }
-  bool string(string_t&) override { return true; }
-  bool binary(binary_t&) override { return true; }
-  bool key(string_t&) override { return true; }
-  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
-
- private:
-  bool open() {
-    too_deep_ = ++open_ > kMaxNestingDepth;
-    return !too_deep_;
-  }
-  bool close() {
-    --open_;
-    return true;
-  }
-  int open_ = 0;
-  bool too_deep_ = false;
-};
-
-// The document in `text`, refusing one nested deeper than kMaxNestingDepth before it is built
-// (nlohmann's parser is iterative, but copying, comparing or printing a value recurses once a
-// level). Throws JsonTextError.
-inline nlohmann::json parse_json_text(const std::string& text) {
-  NestingDepth depth;
-  nlohmann::json::sax_parse(text, &depth);
-  if (depth.too_deep()) throw JsonTextError("nested deeper than " + std::to_string(kMaxNestingDepth) + " levels");
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw JsonTextError(std::string("not valid JSON: ") + e.what());
-  }
-}
-
-// The document in `text`, read from `label` (a file name); Error("LABEL: /: not valid JSON: ...").
+// The document in `text`, read from `label` (a file name); Error("LABEL: /POINTER: what"), as
+// "LABEL: /: not valid JSON: ...".
 template <typename Error>
 nlohmann::json parse_json(const std::string& text, const std::string& label) {
   try {
     return parse_json_text(text);
   } catch (const JsonTextError& e) {
-    throw Error(label + ": /: " + e.what());
+    throw Error(label + ": " + e.pointer + ": " + e.what());
   }
 }
 

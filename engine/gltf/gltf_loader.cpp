@@ -70,7 +70,7 @@ void check_uris(const std::string& json_text, const fs::path& folder, const std:
   try {
     root = io::parse_json_text(json_text);  // nested at most io::kMaxNestingDepth: tinygltf recurses once a level
   } catch (const io::JsonTextError& e) {
-    asset_fail(file, "JSON", e.what());
+    asset_fail(file, "JSON", e.located());
   }
   if (!root.is_object()) asset_fail(file, "JSON", "the top level is not an object");
   for (const char* array : {"buffers", "images"}) {

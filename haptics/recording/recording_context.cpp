@@ -34,7 +34,7 @@ json read_recording_context(const std::string& path, const SessionHeader& header
   try {
     context = io::parse_json_text(header.context);
   } catch (const io::JsonTextError& e) {
-    throw fail(e.what());
+    throw fail(e.located());
   }
   if (!context.is_object() || !context.contains("version") || context["version"] != kRecordingContextVersion)
     throw fail("expected version " + std::to_string(kRecordingContextVersion));

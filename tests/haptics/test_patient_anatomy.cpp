@@ -204,6 +204,16 @@ TEST(PatientAnatomy, BadPatientFilesAreOneLineErrorsNamingTheKeyAndTheRange) {
   nlohmann::json missing = good;
   missing.erase("sex");
   EXPECT_EQ(patient_error(missing), "/sex: missing");
+  // Given twice, a reader would keep one of the two seeds: the patient would depend on the reader.
+  const std::string path = test::own_file("patient_twice.json");
+  std::string text = good.dump();
+  std::ofstream(path) << text.insert(text.size() - 1, ",\"seed\":7");
+  try {
+    load_patient(path);
+    ADD_FAILURE() << "a seed given twice was read";
+  } catch (const PatientError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": /seed: the key is given twice in its object");
+  }
 }
 
 // A scenario's patient tissue: the patient's errors name the scenario and the pointer into it.

@@ -78,6 +78,29 @@ TEST(FileRead, JsonNestedPastSixtyFourLevelsIsRefusedBeforeItIsBuilt) {
   }
 }
 
+// nlohmann's parser keeps the last of two equal keys; a reader refuses the document and names the
+// second, by its JSON pointer (RFC 6901: "~" and "/" in a key escaped as "~0" and "~1").
+TEST(FileRead, AKeyGivenTwiceInAnObjectIsRefusedByItsPointer) {
+  const auto error_of = [](const std::string& text) {
+    try {
+      parse_json<TestError>(text, "f.json");
+    } catch (const TestError& e) {
+      return std::string(e.what());
+    }
+    return std::string("read");
+  };
+  EXPECT_EQ(error_of(R"({"seed": 1, "height_m": 1.7, "seed": 2})"),
+            "f.json: /seed: the key is given twice in its object");
+  EXPECT_EQ(error_of(R"({"a": {"b": 1}, "c": [0, {"d": 1, "d": 1}]})"),
+            "f.json: /c/1/d: the key is given twice in its object");
+  EXPECT_EQ(error_of(R"([[], [{"x": [1, 2]}, {"a/b~": 0, "a/b~": 0}]])"),
+            "f.json: /1/1/a~1b~0: the key is given twice in its object");
+  EXPECT_EQ(error_of(R"({"": 1, "": 2})"), "f.json: /: the key is given twice in its object");
+  // The same key in different objects, or as a value, is no repetition.
+  EXPECT_EQ(error_of(R"({"a": {"k": 1}, "b": {"k": 1}, "k": "k", "l": [{"k": 1}, {"k": 2}]})"), "read");
+  EXPECT_EQ(error_of(R"({"a": 1, "A": 2, "a ": 3})"), "read");
+}
+
 // A long array of objects is read in one linear pass: a check of the depth that looked through
 // an array's members at the end of each of them would take hours over these 3 MB (ctest's timeout
 // would fail this test), and the glTF node chain of 100,000 seconds.

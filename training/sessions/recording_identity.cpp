@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/json_text.hpp"
+
 namespace needle::training {
 
 std::string check_recording_identity(const std::string& file, const haptics::SessionHeader& header,
@@ -9,8 +11,12 @@ std::string check_recording_identity(const std::string& file, const haptics::Ses
   const std::string session = "session " + std::to_string(info.id);
   std::string recorded;
   if (!header.context.empty()) {
-    const nlohmann::json context = nlohmann::json::parse(header.context, nullptr, false);
-    if (context.is_discarded()) throw haptics::RecordingError(file + ": header: context: not valid JSON");
+    nlohmann::json context;
+    try {
+      context = io::parse_json_text(header.context);
+    } catch (const io::JsonTextError& e) {
+      throw haptics::RecordingError(file + ": header: context: " + e.located());
+    }
     if (context.is_object() && context.contains(kRecordingSessionKey) && context[kRecordingSessionKey].is_string())
       recorded = context[kRecordingSessionKey].get<std::string>();
   }
