@@ -21,6 +21,7 @@
 #include "tests/engine/image_compare.hpp"
 #include "tests/support/closed_mesh.hpp"
 #include "tests/support/process_folder.hpp"
+#include "tests/support/scan_lines.hpp"
 #include "tests/support/test_paths.hpp"
 #include "training/tasks/scripted_operator.hpp"
 
@@ -141,34 +142,17 @@ TEST(PatientScenes, TheSectionThroughL3L4ShowsEachStructureInItsColour) {
   EXPECT_TRUE(device().validation_messages().empty()) << device().validation_messages().front();
 }
 
-// The paramedian sagittal oblique ultrasound view over L3-L4 (5 MHz, 60 mm wide along the spine,
-// 80 mm deep, 12 mm to the patient's right tilted 10° toward the midline: design values within
-// the 1-2 cm and the medial tilt of the clinical view, app/echo_scene.hpp): the laminae are bright
-// steps that hide what lies below them (the sawtooth), the interlaminar windows between them let the
-// beam through to the flavum, the dura and the front of the canal. The GPU's lines against the
-// double-precision reference, and the image against its golden.
 // The GPU's scan lines against the double-precision reference's, line by line: the same interfaces
-// between the same layers, each between the same two samples, and the same lines in shadow. The
+// between the same layers, each between the same two samples, and the same shadows. The
 // GPU places a crossing by one linear interpolation of φ between its two samples (exact for planes,
 // tests/engine/test_ultrasound.cpp) where the reference bisects to a nanometre; a grid's trilinear
 // φ curves within its 1 mm cells, and where the beam grazes a face (a lamina's edge, a disc's rim)
 // that moves the crossing within its sample interval, 0.13 mm (0.85 of a sample) at the most on
 // these patients.
 void expect_lines_match(const engine::UltrasoundView& view, const engine::UltrasoundProbe& probe) {
-  const std::vector<engine::ScanLine> gpu = view.scan_lines();
-  const std::vector<engine::ScanLine> cpu = engine::trace_scan_lines(view.scene(), probe, nullptr, view.settings());
-  ASSERT_EQ(gpu.size(), cpu.size());
-  const double tolerance_m = probe.depth_m / view.settings().samples;
-  for (size_t i = 0; i < cpu.size(); ++i) {
-    ASSERT_EQ(gpu[i].interfaces.size(), cpu[i].interfaces.size()) << "line " << i;
-    for (size_t k = 0; k < cpu[i].interfaces.size(); ++k) {
-      const engine::EchoInterface &g = gpu[i].interfaces[k], &c = cpu[i].interfaces[k];
-      EXPECT_EQ(g.from_layer, c.from_layer) << "line " << i << " interface " << k;
-      EXPECT_EQ(g.to_layer, c.to_layer) << "line " << i << " interface " << k;
-      EXPECT_NEAR(g.depth_m, c.depth_m, tolerance_m) << "line " << i << " interface " << k;
-    }
-    EXPECT_EQ(std::isinf(gpu[i].shadow_depth_m), std::isinf(cpu[i].shadow_depth_m)) << "line " << i;
-  }
+  const double sample_m = probe.depth_m / view.settings().samples;
+  expect_scan_lines_match(view.scan_lines(), engine::trace_scan_lines(view.scene(), probe, nullptr, view.settings()),
+                          sample_m, sample_m);
 }
 
 // Each line's walk evaluates a layer only where its clearance runs out and the sample's layer
@@ -195,6 +179,12 @@ TEST(PatientScenes, EachPatientsScanLinesAreTheReferencesInFourViews) {
   EXPECT_TRUE(device().validation_messages().empty()) << device().validation_messages().front();
 }
 
+// The paramedian sagittal oblique ultrasound view over L3-L4 (5 MHz, 60 mm wide along the spine,
+// 80 mm deep, 12 mm to the patient's right tilted 10° toward the midline: design values within
+// the 1-2 cm and the medial tilt of the clinical view, app/echo_scene.hpp): the laminae are bright
+// steps that hide what lies below them (the sawtooth), the interlaminar windows between them let the
+// beam through to the flavum, the dura and the front of the canal. The GPU's lines against the
+// double-precision reference, and the image against its golden.
 TEST(PatientScenes, TheParamedianUltrasoundShowsTheLaminaeAndTheWindows) {
   const haptics::Scenario scenario = task_scenario("epidural_patient_bmi22");
   const engine::EchoScene echo = app::echo_scene(scenario, engine::Scene{});

@@ -12,6 +12,7 @@
 #include "engine/ultrasound/ultrasound_pass.hpp"
 #include "engine/vulkan/command_buffer.hpp"
 #include "engine/vulkan/vulkan_context.hpp"
+#include "tests/support/scan_lines.hpp"
 #include "ultrasound_fixture.hpp"
 #include "vulkan_fixture.hpp"
 
@@ -29,28 +30,8 @@ class UltrasoundTest : public VulkanTest {
   void expect_lines_match(engine::UltrasoundView& view, const engine::UltrasoundProbe& probe,
                           const engine::NeedleLoad* needle) {
     view.render(probe, needle);
-    const std::vector<engine::ScanLine> gpu = view.scan_lines();
-    const std::vector<engine::ScanLine> cpu = engine::trace_scan_lines(view.scene(), probe, needle, view.settings());
-    ASSERT_EQ(gpu.size(), cpu.size());
-    const double sample_m = probe.depth_m / view.settings().samples;
-    for (size_t i = 0; i < cpu.size(); ++i) {
-      ASSERT_EQ(gpu[i].interfaces.size(), cpu[i].interfaces.size()) << "line " << i;
-      for (size_t k = 0; k < cpu[i].interfaces.size(); ++k) {
-        const engine::EchoInterface &g = gpu[i].interfaces[k], &c = cpu[i].interfaces[k];
-        EXPECT_EQ(g.from_layer, c.from_layer) << "line " << i << " interface " << k;
-        EXPECT_EQ(g.to_layer, c.to_layer) << "line " << i << " interface " << k;
-        EXPECT_NEAR(g.depth_m, c.depth_m, kDepthTolerance_m) << "line " << i << " interface " << k;
-      }
-      EXPECT_EQ(std::isinf(gpu[i].needle_depth_m), std::isinf(cpu[i].needle_depth_m)) << "line " << i;
-      if (!std::isinf(cpu[i].needle_depth_m)) {
-        EXPECT_NEAR(gpu[i].needle_depth_m, cpu[i].needle_depth_m, kDepthTolerance_m) << "line " << i;
-      }
-      // The shadow begins at a sample: the same one, or the next where float and double part.
-      EXPECT_EQ(std::isinf(gpu[i].shadow_depth_m), std::isinf(cpu[i].shadow_depth_m)) << "line " << i;
-      if (!std::isinf(cpu[i].shadow_depth_m)) {
-        EXPECT_NEAR(gpu[i].shadow_depth_m, cpu[i].shadow_depth_m, 1.01 * sample_m) << "line " << i;
-      }
-    }
+    expect_scan_lines_match(view.scan_lines(), engine::trace_scan_lines(view.scene(), probe, needle, view.settings()),
+                            kDepthTolerance_m, probe.depth_m / view.settings().samples);
   }
 };
 
