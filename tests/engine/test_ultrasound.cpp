@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/glm.hpp>
 
@@ -329,6 +330,48 @@ TEST_F(UltrasoundTest, ASweepMakesTheImageASliceOfLinesAFrame) {
   EXPECT_EQ(view.image().pixels, new_image.pixels);
   EXPECT_FALSE(view.record(after, &needle));
   EXPECT_THROW(view.set_sweep_frames(0), std::invalid_argument);
+}
+
+// As many layers as the shaders take: ten nested spheres (each inside the one before) and, in the
+// innermost, six small disjoint ones side by side under the probe, 70 mm deep. A line's walk follows each layer
+// on its own and leaves those before the one that holds a sample (docs/RENDERING.md, "How the passes
+// find the layers"): every line meets the reference's interfaces, between the same layers, in the
+// same intervals between two samples (a sphere's φ is not linear along a beam that grazes it), at
+// rest and with a needle pressing the tissue (its rest positions).
+TEST_F(UltrasoundTest, TheMostLayersTheShadersTakeAreEachFoundWhereTheReferenceFindsThem) {
+  engine::EchoScene scene;
+  const glm::dvec3 centre{0.33, 0.0, 0.035};
+  for (int k = 0; k < 10; ++k)
+    scene.layers.push_back({"shell " + std::to_string(k),
+                            {{engine::EchoPrimitive::Kind::Sphere, centre, {}, 0.030 - 0.0025 * k}},
+                            false,
+                            k % 2 ? kFat : kMuscle});
+  for (int k = 0; k < 6; ++k)
+    scene.layers.push_back(
+        {"bead " + std::to_string(k),
+         {{engine::EchoPrimitive::Kind::Sphere, centre + glm::dvec3(0.002 * k - 0.005, 0.0, 0.0), {}, 0.0008}},
+         false,
+         kBone});
+  ASSERT_EQ(scene.layers.size(), engine::EchoScene::kMaxLayers);
+  scene.deformation = engine::TissueParams{};
+  engine::UltrasoundView view(device(), scene, {128, 512});
+  engine::NeedleLoad press;
+  press.contact = engine::NeedleContact::Touching;
+  press.axis = {0.0, 0.0, -1.0};
+  press.surface_point = {0.33, 0.0, 0.065};
+  press.tip = {0.33, 0.0, 0.062};
+  for (const engine::NeedleLoad* needle : std::array<const engine::NeedleLoad*, 2>{nullptr, &press}) {
+    engine::UltrasoundProbe probe = block_probe();
+    probe.depth_m = 0.07;  // past the shells' bottom
+    view.render(probe, needle);
+    const std::vector<engine::ScanLine> cpu = engine::trace_scan_lines(scene, probe, needle, view.settings());
+    const double sample_m = probe.depth_m / view.settings().samples;
+    expect_scan_lines_match(view.scan_lines(), cpu, sample_m, sample_m);
+    size_t most = 0;
+    for (const engine::ScanLine& line : cpu) most = std::max(most, line.interfaces.size());
+    EXPECT_EQ(most, 22u) << "the middle lines cross the ten shells both ways and a bead";
+  }
+  EXPECT_TRUE(device().validation_messages().empty()) << device().validation_messages().front();
 }
 
 TEST_F(UltrasoundTest, AScenePastTheShadersLimitsIsRefused) {
