@@ -89,10 +89,11 @@ uint inside = 0u;
 // membership there is not known (-1: none, the sample's layer is `known`). The layers before a
 // layer that holds the sample do not decide it, so they are not needed.
 void decide(uint at, out int known, out int unknown) {
-  known = -1;
-  for (int k = 0; k < 16; ++k) known = due[k] > at && (inside & (1u << k)) != 0u ? k : known;
-  unknown = -1;
-  for (int k = 0; k < 16; ++k) unknown = k > known && due[k] <= at ? k : unknown;
+  uint valid = 0u;  // the layers whose membership at `at` is known
+  for (int k = 0; k < 16; ++k) valid |= due[k] > at ? 1u << k : 0u;
+  known = findMSB(valid & inside);
+  uint after = known < 0 ? 0xffffu : 0xffffu & ~((2u << uint(known)) - 1u);  // the layers after `known`
+  unknown = findMSB(~valid & after);
 }
 
 // The first sample where the layers from `known` on may change: the sample after the run of
