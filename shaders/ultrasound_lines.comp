@@ -85,14 +85,14 @@ bool holds(uint k, vec3 x, vec3 beam, out float clearance) {
 uint due[16];
 uint inside = 0u;
 
-// At sample `at`: the last layer known to hold it (-1: none), and the last layer above that whose
+// At sample `at`: the last layer known to hold it (-1: none), and the last layer after that whose
 // membership there is not known (-1: none, the sample's layer is `known`). The layers before a
 // layer that holds the sample do not decide it, so they are not needed.
 void decide(uint at, out int known, out int unknown) {
   uint valid = 0u;  // the layers whose membership at `at` is known
   for (int k = 0; k < 16; ++k) valid |= due[k] > at ? 1u << k : 0u;
   known = findMSB(valid & inside);
-  uint after = known < 0 ? 0xffffu : 0xffffu & ~((2u << uint(known)) - 1u);  // the layers after `known`
+  uint after = 0xffffu & ~((1u << uint(known + 1)) - 1u);  // the layers after `known`
   unknown = findMSB(~valid & after);
 }
 
