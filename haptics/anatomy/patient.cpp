@@ -87,6 +87,7 @@ Patient generate_patient(const PatientParams& params, const Eigen::Vector3d& l3_
   };
   LatticeField bone = field(s.bone, 8.0 * mm);
   LatticeField crest = field(s.iliac_crest, 8.0 * mm);
+  crest.subtract(bone);  // the crests stand where they are in every adult; a tall one's sacrum reaches them
   LatticeField flavum = field(s.flavum, 4.0 * mm);
   flavum.subtract(bone);
   LatticeField epidural = field(s.canal, 4.0 * mm);

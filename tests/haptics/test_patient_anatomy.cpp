@@ -171,6 +171,32 @@ TEST(PatientGeneration, TheSameParametersGiveTheSameFieldsAndSeedsVary) {
   }
 }
 
+// Every patient the ranges allow is a valid tissue (its layers disjoint or nested, docs/TISSUE.md):
+// the tallest and the shortest at both ends of the BMI, and patients a random draw of the ranges
+// gave whose sacrum and transverse processes reached the iliac crests (each crest is cut where
+// the vertebrae are, as every other structure is cut from the bone).
+TEST(PatientGeneration, PatientsAtTheRangesEdgesAreValidTissue) {
+  struct Case {
+    double height_m, weight_kg;
+    Sex sex;
+    double age_years;
+    Posture posture;
+    uint32_t seed;
+  };
+  for (const Case& c : {Case{2.05, 2.05 * 2.05 * 16.0, Sex::Male, 18, Posture::SittingFlexed, 0},
+                        Case{2.05, 200.0, Sex::Female, 90, Posture::Lateral, 0},
+                        Case{1.45, 1.45 * 1.45 * 16.0, Sex::Female, 90, Posture::Lateral, 0},
+                        Case{1.45, 1.45 * 1.45 * 60.0, Sex::Male, 18, Posture::SittingFlexed, 0},
+                        Case{1.888, 71.1, Sex::Female, 51, Posture::SittingFlexed, 3232122210u},
+                        Case{2.029, 109.1, Sex::Female, 46, Posture::SittingFlexed, 1706456525u},
+                        Case{1.855, 174.0, Sex::Male, 86, Posture::Lateral, 2287157766u}}) {
+    const PatientParams p{c.height_m, c.weight_kg, c.sex, c.age_years, c.posture, c.seed};
+    SCOPED_TRACE(patient_json(p).dump());
+    const Patient patient = generate_patient(p);
+    EXPECT_NO_THROW(geometry_model(patient));
+  }
+}
+
 std::string patient_error(const nlohmann::json& j) {
   const std::string path = test::own_file("patient.json");
   std::ofstream(path) << j.dump();
