@@ -306,6 +306,16 @@ TEST_F(GltfMalformed, DeeplyNestedJsonIsRefusedBeforeTinygltfRecursesIntoIt) {
   expect_error({"JSON", "nested deeper than 64 levels"});
 }
 
+// tinygltf would keep one of the two values; the check before it names the second by its pointer.
+TEST_F(GltfMalformed, AKeyGivenTwiceIsRefusedByItsPointer) {
+  std::string text = read_json(file).dump();
+  const size_t node = text.find("\"nodes\":[{");
+  ASSERT_NE(node, std::string::npos) << text;
+  text.insert(node + std::string("\"nodes\":[{").size(), "\"mesh\":0,");
+  write_text(file, text);
+  expect_error({"JSON: /nodes/0/mesh: the key is given twice in its object"});
+}
+
 TEST_F(GltfMalformed, AMeshWithoutPrimitivesIsRefusedAsSuch) {
   edit_json(file, [](nlohmann::json& j) { j["meshes"][0]["primitives"] = nlohmann::json::array(); });
   expect_error({"meshes[0]", "has no primitives"});

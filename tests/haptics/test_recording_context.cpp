@@ -73,6 +73,8 @@ TEST(RecordingContext, AContextThatCannotRebuildItsSessionIsRefusedNamingTheFile
   no_text.erase("task_text");
   json bad_practice = current_context();
   bad_practice["practice"] = "yes";
+  std::string practice_twice = current_context().dump();  // a reader would keep one of the two
+  practice_twice.insert(practice_twice.size() - 1, ",\"practice\":true,\"practice\":false");
   for (const Case& c :
        {Case{header_with(current_context().dump(), 2), "r.nrec: header: format version 2 has no checksums"},
         Case{header_with(""), "r.nrec: header: context: none (recorded by another program)"},
@@ -80,7 +82,9 @@ TEST(RecordingContext, AContextThatCannotRebuildItsSessionIsRefusedNamingTheFile
         Case{header_with("[1]"), "r.nrec: header: context: expected version 2"},
         Case{header_with(wrong_version.dump()), "r.nrec: header: context: expected version 2"},
         Case{header_with(no_text.dump()), "r.nrec: header: context: missing \"task_text\""},
-        Case{header_with(bad_practice.dump()), "r.nrec: header: context: practice is not true or false"}}) {
+        Case{header_with(bad_practice.dump()), "r.nrec: header: context: practice is not true or false"},
+        Case{header_with(practice_twice),
+             "r.nrec: header: context: /practice: the key is given twice in its object"}}) {
     try {
       read_recording_context("r.nrec", c.header);
       ADD_FAILURE() << c.says;
